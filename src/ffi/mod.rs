@@ -1,0 +1,14 @@
+//! The C ABI declared in `include/weft.h`: conversions, checks, statuses and
+//! errors only. No geometry lives here; every export forwards to the library.
+//!
+//! Each file groups one family of exports; `boundary` holds the rules they
+//! all follow (see its doc).
+
+pub mod boundary;
+pub mod make;
+pub mod mend;
+pub mod mesh;
+pub mod subdivide;
+
+pub use boundary::WeftStatus;
+pub use mesh::{WeftMesh, WeftMeshInfo};

@@ -1,0 +1,62 @@
+//! Weft: subdivision surfaces and mesh tools for computational design.
+//!
+//! The crate's map:
+//! - [`mesh`]: the polygon mesh (`f64` positions, faces as sizes plus flat
+//!   indices) and its validation; [`error`]: the one error type.
+//! - [`topology`]: edges, adjacency, naked and non-manifold parts, components,
+//!   orientability. [`shapes`]: named shapes built in code.
+//! - [`subdivide`]: Catmull-Clark and Loop with the naked-edge modes, and the
+//!   refiner that re-evaluates new positions on a fixed topology.
+//! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
+//!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
+//! - Making: [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
+//! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
+//! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
+//!   checks; the geometry knows nothing of it.
+//!
+//! Everything outside `ffi` is safe Rust.
+#![deny(unsafe_code)]
+
+/// cbindgen:ignore
+pub mod analysis;
+/// cbindgen:ignore
+pub mod cull;
+/// cbindgen:ignore
+pub mod delaunay;
+/// cbindgen:ignore
+pub mod error;
+/// cbindgen:ignore
+pub mod grid;
+/// cbindgen:ignore
+pub mod io;
+/// cbindgen:ignore
+pub mod mesh;
+/// cbindgen:ignore
+pub mod orient;
+/// cbindgen:ignore
+pub mod primitives;
+/// cbindgen:ignore
+pub mod shapes;
+/// cbindgen:ignore
+pub mod stellate;
+/// cbindgen:ignore
+pub mod subdivide;
+/// cbindgen:ignore
+pub mod topology;
+/// cbindgen:ignore
+pub mod triangulate;
+/// cbindgen:ignore
+pub mod voronoi;
+/// cbindgen:ignore
+pub mod weld;
+
+#[allow(unsafe_code)]
+pub mod ffi;
+
+pub use error::{Error, MeshError, Result};
+pub use glam::DVec3;
+pub use mesh::Mesh;
+pub use topology::{MeshInfo, Topology};
+
+/// The library's version, as in `Cargo.toml`.
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
