@@ -63,6 +63,7 @@ impl Failure {
         }
     }
 
+    #[allow(dead_code)] // used by the operation exports
     pub(crate) fn invalid_argument(message: impl Into<String>) -> Failure {
         Failure::new(WeftStatus::InvalidArgument, message)
     }
@@ -232,6 +233,7 @@ pub(crate) fn check_room(name: &str, len: usize, needed: usize) -> Result<(), Fa
 
 /// Reads a C enumeration value, which arrives as a plain integer: an unknown
 /// value is an error, never a Rust enum with an invalid discriminant.
+#[allow(dead_code)] // used by the operation exports
 pub(crate) fn enum_arg<T>(
     value: u32,
     name: &str,

@@ -1,0 +1,148 @@
+/* The mesh handle through the C ABI: construction, accessors, copies, info
+ * on named shapes, and every construction error with its own status. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+
+static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
+                                        0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
+static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
+static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+
+static WeftMesh *make_cube(void) {
+  WeftMesh *mesh = NULL;
+  CHECK_STATUS(weft_mesh_new(cube_positions, 8, cube_sizes, 6, cube_indices, 24, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static void test_construction_and_accessors(void) {
+  WeftMesh *mesh = make_cube();
+  double positions[24];
+  uint32_t sizes[6], indices[24];
+  CHECK(weft_mesh_vertex_count(mesh) == 8);
+  CHECK(weft_mesh_face_count(mesh) == 6);
+  CHECK(weft_mesh_index_count(mesh) == 24);
+  CHECK(memcmp(weft_mesh_positions(mesh), cube_positions, sizeof cube_positions) == 0);
+  CHECK(memcmp(weft_mesh_face_sizes(mesh), cube_sizes, sizeof cube_sizes) == 0);
+  CHECK(memcmp(weft_mesh_face_indices(mesh), cube_indices, sizeof cube_indices) == 0);
+  CHECK_STATUS(weft_mesh_copy_positions(mesh, positions, 24), WEFT_STATUS_OK);
+  CHECK(memcmp(positions, cube_positions, sizeof positions) == 0);
+  CHECK_STATUS(weft_mesh_copy_faces(mesh, sizes, 6, indices, 24), WEFT_STATUS_OK);
+  CHECK(memcmp(indices, cube_indices, sizeof indices) == 0);
+  /* Too small: an error, and nothing written. */
+  positions[0] = -7.0;
+  CHECK_STATUS(weft_mesh_copy_positions(mesh, positions, 23), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_positions has room for 23 elements but 24 are needed");
+  CHECK(positions[0] == -7.0);
+  CHECK_STATUS(weft_mesh_copy_faces(mesh, sizes, 6, indices, 3), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_face_indices");
+  weft_mesh_free(mesh);
+  weft_mesh_free(NULL);
+  CHECK(weft_mesh_vertex_count(NULL) == 0);
+  CHECK(weft_mesh_positions(NULL) == NULL);
+}
+
+static void test_empty_mesh(void) {
+  WeftMesh *mesh = NULL;
+  WeftMeshInfo info;
+  CHECK_STATUS(weft_mesh_new(NULL, 0, NULL, 0, NULL, 0, &mesh), WEFT_STATUS_OK);
+  CHECK(mesh != NULL);
+  CHECK(weft_mesh_vertex_count(mesh) == 0 && weft_mesh_positions(mesh) == NULL);
+  CHECK_STATUS(weft_mesh_info(mesh, &info), WEFT_STATUS_OK);
+  CHECK(info.face_count == 0 && !info.is_closed && info.component_count == 0);
+  weft_mesh_free(mesh);
+}
+
+static void test_info(void) {
+  WeftMesh *cube = make_cube(), *grid = NULL, *fin = NULL;
+  WeftMeshInfo info;
+  /* A 2 x 1 open quad grid. */
+  static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  static const uint32_t grid_sizes[] = {4, 4};
+  static const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4};
+  /* Three triangles on the edge 0-1. */
+  static const double fin_positions[] = {0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0.5, 0, 1};
+  static const uint32_t fin_sizes[] = {3, 3, 3};
+  static const uint32_t fin_indices[] = {0, 1, 2, 1, 0, 3, 0, 1, 4};
+
+  CHECK_STATUS(weft_mesh_info(cube, &info), WEFT_STATUS_OK);
+  CHECK(info.vertex_count == 8 && info.edge_count == 12 && info.face_count == 6);
+  CHECK(info.naked_edge_count == 0 && info.non_manifold_edge_count == 0);
+  CHECK(info.component_count == 1 && info.is_closed && info.is_orientable && info.is_oriented);
+
+  CHECK_STATUS(weft_mesh_new(grid_positions, 6, grid_sizes, 2, grid_indices, 8, &grid), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(grid, &info), WEFT_STATUS_OK);
+  CHECK(info.edge_count == 7 && info.naked_edge_count == 6 && !info.is_closed);
+
+  CHECK_STATUS(weft_mesh_new(fin_positions, 5, fin_sizes, 3, fin_indices, 9, &fin), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(fin, &info), WEFT_STATUS_OK);
+  CHECK(info.non_manifold_edge_count == 1 && info.non_manifold_vertex_count == 2);
+  CHECK(info.naked_edge_count == 6 && !info.is_closed);
+
+  CHECK_STATUS(weft_mesh_info(NULL, &info), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("mesh is NULL");
+  CHECK_STATUS(weft_mesh_info(cube, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_info is NULL");
+  weft_mesh_free(cube);
+  weft_mesh_free(grid);
+  weft_mesh_free(fin);
+}
+
+static void test_construction_errors(void) {
+  static const double square[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  WeftMesh *untouched = (WeftMesh *)&check_failures; /* a sentinel that must not be overwritten */
+  WeftMesh *mesh = untouched;
+  double bad[12];
+  static const uint32_t tri[] = {3}, two[] = {2}, tri_tri[] = {3, 3};
+  static const uint32_t out_of_range[] = {0, 1, 9};
+  static const uint32_t repeated[] = {0, 1, 1};
+  static const uint32_t ok[] = {0, 1, 2};
+
+  CHECK_STATUS(weft_mesh_new(square, 4, tri, 1, out_of_range, 3, &mesh), WEFT_STATUS_INDEX_OUT_OF_RANGE);
+  CHECK_MESSAGE("face 0, corner 2: vertex index 9 is out of range (the mesh has 4 vertices)");
+  CHECK(mesh == untouched);
+
+  CHECK_STATUS(weft_mesh_new(square, 4, two, 1, ok, 2, &mesh), WEFT_STATUS_FACE_TOO_SMALL);
+  CHECK_MESSAGE("face 0 has 2 vertices");
+
+  CHECK_STATUS(weft_mesh_new(square, 4, tri, 1, repeated, 3, &mesh), WEFT_STATUS_REPEATED_INDEX);
+  CHECK_MESSAGE("face 0 uses vertex 1 twice");
+
+  memcpy(bad, square, sizeof bad);
+  bad[7] = NAN;
+  CHECK_STATUS(weft_mesh_new(bad, 4, tri, 1, ok, 3, &mesh), WEFT_STATUS_NON_FINITE_COORDINATE);
+  CHECK_MESSAGE("vertex 2 has a non-finite coordinate");
+  bad[7] = INFINITY;
+  CHECK_STATUS(weft_mesh_new(bad, 4, tri, 1, ok, 3, &mesh), WEFT_STATUS_NON_FINITE_COORDINATE);
+
+  CHECK_STATUS(weft_mesh_new(square, 4, tri_tri, 2, ok, 3, &mesh), WEFT_STATUS_COUNT_MISMATCH);
+  CHECK_MESSAGE("the face sizes add up to 6 indices but 3 indices were given");
+
+  CHECK_STATUS(weft_mesh_new(square, (size_t)1 << 32, tri, 1, ok, 3, &mesh), WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_MESSAGE("vertex count 4294967296 exceeds the limit");
+
+  CHECK_STATUS(weft_mesh_new(NULL, 4, tri, 1, ok, 3, &mesh), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("positions is NULL but its length is 12");
+  CHECK_STATUS(weft_mesh_new(square, 4, tri, 1, NULL, 3, &mesh), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("face_indices is NULL");
+  CHECK_STATUS(weft_mesh_new(square, 4, tri, 1, ok, 3, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_mesh is NULL");
+  CHECK(mesh == untouched);
+}
+
+static void test_version(void) {
+  char expected[32];
+  snprintf(expected, sizeof expected, "%d.%d.%d", WEFT_VERSION_MAJOR, WEFT_VERSION_MINOR, WEFT_VERSION_PATCH);
+  CHECK(strcmp(weft_version(), expected) == 0);
+}
+
+int main(void) {
+  test_construction_and_accessors();
+  test_empty_mesh();
+  test_info();
+  test_construction_errors();
+  test_version();
+  return check_summary("test_mesh");
+}
