@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Runs every test of Weft, start to end: formatting, lints, the Rust tests
+# (with the OpenSubdiv and OpenMesh comparisons and the header check), the C
+# tests (also under AddressSanitizer and UndefinedBehaviorSanitizer), the C#
+# wrapper's tests on Mono, and the Grasshopper compile check.
+# On a fresh Debian machine, run as root, it first installs what is missing.
+set -uo pipefail
+cd "$(dirname "$0")"
+scripts/install-test-deps.sh || exit 1
+
+passed=0 failed=0 failures=()
+suite() { # name, command...
+  local name=$1; shift
+  echo "=== $name"
+  if "$@"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1)); failures+=("$name")
+  fi
+}
+
+suite "cargo fmt --check" cargo fmt --all --check
+suite "cargo clippy" cargo clippy --workspace --all-targets --quiet -- -D warnings
+suite "cargo test" cargo test --workspace
+suite "C tests" tests/c/run.sh
+for script in dotnet/test.sh grasshopper/check.sh fuzz/smoke.sh; do
+  [ -x "$script" ] && suite "$script" "$script"
+done
+
+echo "=== summary"
+[ ${#failures[@]} -gt 0 ] && printf 'failed suite: %s\n' "${failures[@]}"
+echo "test suites: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]
