@@ -1,1 +1,395 @@
-fn main() {}
+//! The `weft` command: mesh files in and out, pictures, and Weft's operations.
+//!
+//! Exit codes: 0 success, 1 a failed operation (unreadable or malformed
+//! input, an output that cannot be written), 2 bad usage (clap's own code).
+
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+use clap::{Parser, Subcommand};
+
+use weft::io::render::{self, RenderOptions};
+use weft::io::{self, Format, IoError, ReadOptions};
+use weft::{Mesh, Topology};
+
+#[derive(Parser)]
+#[command(
+    name = "weft",
+    version,
+    about = "Subdivision surfaces and mesh mending on mesh files (OBJ, PLY, STL, OFF)",
+    after_help = "Examples:\n  weft info part.obj\n  weft render part.obj part.png --size 1024x768\n  weft convert scan.stl scan.ply --weld"
+)]
+struct Cli {
+    /// Merge the corners of STL triangles that sit at identical positions
+    /// when reading (STL stores every triangle's corners separately).
+    #[arg(long, global = true)]
+    weld: bool,
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Counts, naked and non-manifold edges, components, closedness,
+    /// orientation and the bounding box of a mesh.
+    #[command(after_help = "Example:\n  weft info part.obj\n  weft info part.obj --json")]
+    Info {
+        /// The mesh file (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// Print one JSON object instead of text.
+        #[arg(long)]
+        json: bool,
+    },
+    /// A shaded picture: front faces blue-grey, back faces orange, edges
+    /// drawn on coarse meshes, camera fitted in a three-quarter view.
+    #[command(after_help = "Example:\n  weft render part.obj part.png --size 1024x768")]
+    Render {
+        /// The mesh file (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The picture to write (.png).
+        #[arg(value_parser = png_path)]
+        output: PathBuf,
+        /// Picture size in pixels, WIDTHxHEIGHT.
+        #[arg(long, default_value = "800x600", value_parser = picture_size)]
+        size: (u32, u32),
+        /// Draw face edges always, or never (default: when the mesh has fewer than 4000 faces).
+        #[arg(long, value_parser = ["always", "never", "auto"], default_value = "auto")]
+        edges: String,
+    },
+    /// Converts a mesh file; formats follow the extensions.
+    #[command(
+        after_help = "Example:\n  weft convert part.obj part.ply\n  weft convert scan.stl scan.obj --weld"
+    )]
+    Convert {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+        /// Write PLY and STL as text instead of binary.
+        #[arg(long)]
+        ascii: bool,
+        /// Write PLY as big-endian binary.
+        #[arg(long, conflicts_with = "ascii")]
+        big_endian: bool,
+    },
+}
+
+/// A mesh file argument: its extension must name a format.
+fn mesh_path(text: &str) -> Result<PathBuf, String> {
+    let path = PathBuf::from(text);
+    Format::from_path(&path)
+        .map(|_| path)
+        .map_err(|_| "expected a mesh file ending in .obj, .ply, .stl or .off".to_string())
+}
+
+fn png_path(text: &str) -> Result<PathBuf, String> {
+    let path = PathBuf::from(text);
+    match path.extension().and_then(|e| e.to_str()) {
+        Some(e) if e.eq_ignore_ascii_case("png") => Ok(path),
+        _ => Err("expected a picture file ending in .png".to_string()),
+    }
+}
+
+fn picture_size(text: &str) -> Result<(u32, u32), String> {
+    let bad = || {
+        format!(
+            "expected WIDTHxHEIGHT with each side from 1 to {}, such as 800x600",
+            render::MAX_SIDE
+        )
+    };
+    let (w, h) = text.split_once(['x', 'X']).ok_or_else(bad)?;
+    let side = |s: &str| {
+        s.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (1..=render::MAX_SIDE).contains(&n))
+            .ok_or_else(bad)
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+/// Why a command failed; each maps to an exit code.
+enum Failure {
+    /// Exit 1: the operation could not be done.
+    Failed(String),
+}
+
+impl From<IoError> for Failure {
+    fn from(e: IoError) -> Failure {
+        Failure::Failed(e.to_string())
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match run(&cli) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Failed(message)) => {
+            eprintln!("weft: error: {message}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+fn run(cli: &Cli) -> Result<(), Failure> {
+    match &cli.command {
+        Command::Info { input, json } => {
+            let mesh = read(cli, input)?;
+            let report = with_progress("analysing", || describe(&mesh));
+            if *json {
+                println!("{}", report.json(input));
+            } else {
+                print!("{}", report.text(input));
+            }
+            Ok(())
+        }
+        Command::Render {
+            input,
+            output,
+            size,
+            edges,
+        } => {
+            let mesh = read(cli, input)?;
+            let options = RenderOptions {
+                width: size.0,
+                height: size.1,
+                edges: match edges.as_str() {
+                    "always" => Some(true),
+                    "never" => Some(false),
+                    _ => None,
+                },
+            };
+            let image = with_progress("rendering", || render::render(&mesh, &options))
+                .map_err(|e| Failure::Failed(format!("{}: cannot render: {e}", input.display())))?;
+            image.save_png(output)?;
+            eprintln!(
+                "{}: {} × {} picture of {} faces",
+                output.display(),
+                size.0,
+                size.1,
+                mesh.face_count()
+            );
+            Ok(())
+        }
+        Command::Convert {
+            input,
+            output,
+            ascii,
+            big_endian,
+        } => {
+            let mesh = read(cli, input)?;
+            let options = io::WriteOptions {
+                ply: if *ascii {
+                    io::PlyEncoding::Ascii
+                } else if *big_endian {
+                    io::PlyEncoding::BinaryBigEndian
+                } else {
+                    io::PlyEncoding::BinaryLittleEndian
+                },
+                stl_ascii: *ascii,
+            };
+            write(output, &mesh, &options)
+        }
+    }
+}
+
+/// Reads a mesh, welding STL corners when `--weld` was given.
+fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
+    let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
+    let label = format!("reading {}", path.display());
+    let mesh = with_progress(&label, || io::read_mesh_with(path, &ReadOptions { weld }))?;
+    Ok(mesh)
+}
+
+fn write(path: &Path, mesh: &Mesh, options: &io::WriteOptions) -> Result<(), Failure> {
+    let label = format!("writing {}", path.display());
+    with_progress(&label, || io::write_mesh_with(path, mesh, options))?;
+    let note = if Format::from_path(path).ok() == Some(Format::Stl) && !mesh.is_triangle_mesh() {
+        " (polygons written as triangle fans)"
+    } else {
+        ""
+    };
+    eprintln!(
+        "{}: {} vertices, {} faces{note}",
+        path.display(),
+        mesh.vertex_count(),
+        mesh.face_count()
+    );
+    Ok(())
+}
+
+/// Runs `work`; when it takes longer than half a second and stderr is a
+/// terminal, shows `label` and the time spent until it ends.
+fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {
+    if !std::io::stderr().is_terminal() {
+        return work();
+    }
+    let (done, finished) = mpsc::channel::<()>();
+    std::thread::scope(|scope| {
+        scope.spawn(move || {
+            let start = Instant::now();
+            let frames = ['⠋', '⠙', '⠹', '⠸', '⠼', '⠴', '⠦', '⠧', '⠇', '⠏'];
+            let mut shown = false;
+            let mut frame = 0;
+            loop {
+                match finished.recv_timeout(Duration::from_millis(100)) {
+                    Err(mpsc::RecvTimeoutError::Timeout) => {
+                        let elapsed = start.elapsed();
+                        if elapsed >= Duration::from_millis(500) {
+                            eprint!(
+                                "\r{} {label}… {:.1} s ",
+                                frames[frame % frames.len()],
+                                elapsed.as_secs_f64()
+                            );
+                            frame += 1;
+                            shown = true;
+                        }
+                    }
+                    _ => break,
+                }
+            }
+            if shown {
+                eprint!("\r\x1b[2K");
+            }
+        });
+        let result = work();
+        let _ = done.send(());
+        result
+    })
+}
+
+/// What `weft info` reports.
+struct Report {
+    vertices: usize,
+    faces: usize,
+    triangles: usize,
+    quads: usize,
+    ngons: usize,
+    edges: usize,
+    naked_edges: usize,
+    non_manifold_edges: usize,
+    non_manifold_vertices: usize,
+    components: usize,
+    closed: bool,
+    orientable: bool,
+    oriented: bool,
+    bounding_box: Option<([f64; 3], [f64; 3])>,
+}
+
+fn describe(mesh: &Mesh) -> Report {
+    let info = Topology::new(mesh).info(mesh);
+    let count = |size: u32| mesh.face_sizes().iter().filter(|&&s| s == size).count();
+    let (triangles, quads) = (count(3), count(4));
+    Report {
+        vertices: info.vertex_count,
+        faces: info.face_count,
+        triangles,
+        quads,
+        ngons: info.face_count - triangles - quads,
+        edges: info.edge_count,
+        naked_edges: info.naked_edge_count,
+        non_manifold_edges: info.non_manifold_edge_count,
+        non_manifold_vertices: info.non_manifold_vertex_count,
+        components: info.component_count,
+        closed: info.is_closed,
+        orientable: info.is_orientable,
+        oriented: info.is_oriented,
+        bounding_box: mesh
+            .bounding_box()
+            .map(|(lo, hi)| (lo.to_array(), hi.to_array())),
+    }
+}
+
+fn yes(b: bool) -> &'static str {
+    if b {
+        "yes"
+    } else {
+        "no"
+    }
+}
+
+impl Report {
+    fn text(&self, path: &Path) -> String {
+        let mut s = format!("{}\n", path.display());
+        let mut line = |name: &str, value: String| s.push_str(&format!("  {name:<22}{value}\n"));
+        line("vertices", self.vertices.to_string());
+        line(
+            "faces",
+            format!(
+                "{} ({} triangles, {} quads, {} n-gons)",
+                self.faces, self.triangles, self.quads, self.ngons
+            ),
+        );
+        line("edges", self.edges.to_string());
+        line("naked edges", self.naked_edges.to_string());
+        line("non-manifold edges", self.non_manifold_edges.to_string());
+        line(
+            "non-manifold vertices",
+            self.non_manifold_vertices.to_string(),
+        );
+        line("components", self.components.to_string());
+        line("closed", yes(self.closed).to_string());
+        line("orientable", yes(self.orientable).to_string());
+        line("oriented", yes(self.oriented).to_string());
+        line(
+            "bounding box",
+            match self.bounding_box {
+                Some((lo, hi)) => format!(
+                    "({}, {}, {}) to ({}, {}, {})",
+                    lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]
+                ),
+                None => "none (no vertices)".to_string(),
+            },
+        );
+        s
+    }
+
+    fn json(&self, path: &Path) -> String {
+        let point = |p: [f64; 3]| format!("[{}, {}, {}]", p[0], p[1], p[2]);
+        let bounding_box = match self.bounding_box {
+            Some((lo, hi)) => format!("{{\"min\": {}, \"max\": {}}}", point(lo), point(hi)),
+            None => "null".to_string(),
+        };
+        format!(
+            "{{\"file\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"quads\": {}, \
+             \"ngons\": {}, \"edges\": {}, \"naked_edges\": {}, \"non_manifold_edges\": {}, \
+             \"non_manifold_vertices\": {}, \"components\": {}, \"closed\": {}, \
+             \"orientable\": {}, \"oriented\": {}, \"bounding_box\": {bounding_box}}}",
+            json_string(&path.to_string_lossy()),
+            self.vertices,
+            self.faces,
+            self.triangles,
+            self.quads,
+            self.ngons,
+            self.edges,
+            self.naked_edges,
+            self.non_manifold_edges,
+            self.non_manifold_vertices,
+            self.components,
+            self.closed,
+            self.orientable,
+            self.oriented,
+        )
+    }
+}
+
+fn json_string(s: &str) -> String {
+    let mut out = String::from("\"");
+    for c in s.chars() {
+        match c {
+            '"' => out.push_str("\\\""),
+            '\\' => out.push_str("\\\\"),
+            c if (c as u32) < 0x20 => out.push_str(&format!("\\u{:04x}", c as u32)),
+            c => out.push(c),
+        }
+    }
+    out.push('"');
+    out
+}
