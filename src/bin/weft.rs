@@ -238,21 +238,18 @@ fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {
             let frames = ['⠋', '⠙', '⠹', '⠸', '⠼', '⠴', '⠦', '⠧', '⠇', '⠏'];
             let mut shown = false;
             let mut frame = 0;
-            loop {
-                match finished.recv_timeout(Duration::from_millis(100)) {
-                    Err(mpsc::RecvTimeoutError::Timeout) => {
-                        let elapsed = start.elapsed();
-                        if elapsed >= Duration::from_millis(500) {
-                            eprint!(
-                                "\r{} {label}… {:.1} s ",
-                                frames[frame % frames.len()],
-                                elapsed.as_secs_f64()
-                            );
-                            frame += 1;
-                            shown = true;
-                        }
-                    }
-                    _ => break,
+            while let Err(mpsc::RecvTimeoutError::Timeout) =
+                finished.recv_timeout(Duration::from_millis(100))
+            {
+                let elapsed = start.elapsed();
+                if elapsed >= Duration::from_millis(500) {
+                    eprint!(
+                        "\r{} {label}… {:.1} s ",
+                        frames[frame % frames.len()],
+                        elapsed.as_secs_f64()
+                    );
+                    frame += 1;
+                    shown = true;
                 }
             }
             if shown {
