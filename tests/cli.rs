@@ -1,0 +1,281 @@
+//! The `weft` command, run as a program: each command's success path, and
+//! its failures with their exit codes and messages.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use weft::io;
+use weft::shapes;
+
+/// A fresh folder for one test under the system's temporary folder.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("weft-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn weft(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("the weft binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[track_caller]
+fn assert_exit(o: &Output, code: i32) {
+    assert_eq!(
+        o.status.code(),
+        Some(code),
+        "stdout:\n{}\nstderr:\n{}",
+        stdout(o),
+        stderr(o)
+    );
+}
+
+#[test]
+fn info_reports_counts_and_properties() {
+    let dir = folder("info");
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(8, 6)).unwrap();
+    io::write_mesh(dir.join("hole.ply"), &shapes::quad_grid_with_hole()).unwrap();
+
+    let o = weft(&dir, &["info", "torus.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    for expected in [
+        "vertices              48",
+        "faces                 48 (0 triangles, 48 quads, 0 n-gons)",
+        "edges                 96",
+        "naked edges           0",
+        "closed                yes",
+        "orientable            yes",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+
+    let o = weft(&dir, &["info", "hole.ply", "--json"]);
+    assert_exit(&o, 0);
+    let json = stdout(&o);
+    assert!(
+        json.trim_start().starts_with('{') && json.trim_end().ends_with('}'),
+        "{json}"
+    );
+    assert!(json.contains("\"faces\": 12"), "{json}");
+    assert!(json.contains("\"naked_edges\": 24"), "{json}");
+    assert!(json.contains("\"closed\": false"), "{json}");
+    assert!(
+        json.contains("\"bounding_box\": {\"min\": [0, 0, 0], \"max\": [4, 4, 0]}"),
+        "{json}"
+    );
+}
+
+#[test]
+fn convert_keeps_the_mesh_and_welds_stl_on_request() {
+    let dir = folder("convert");
+    let cube = shapes::cube();
+    io::write_mesh(dir.join("cube.obj"), &cube).unwrap();
+
+    let o = weft(&dir, &["convert", "cube.obj", "cube.off"]);
+    assert_exit(&o, 0);
+    assert_eq!(io::read_mesh(dir.join("cube.off")).unwrap(), cube);
+    let o = weft(&dir, &["convert", "cube.off", "cube.ply", "--ascii"]);
+    assert_exit(&o, 0);
+    assert!(std::fs::read(dir.join("cube.ply"))
+        .unwrap()
+        .starts_with(b"ply\nformat ascii"));
+    assert_eq!(io::read_mesh(dir.join("cube.ply")).unwrap(), cube);
+
+    let o = weft(&dir, &["convert", "cube.obj", "cube.stl"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("triangle fans"), "{}", stderr(&o));
+    let o = weft(&dir, &["convert", "cube.stl", "soup.obj"]);
+    assert_exit(&o, 0);
+    let soup = io::read_mesh(dir.join("soup.obj")).unwrap();
+    assert_eq!((soup.vertex_count(), soup.face_count()), (36, 12));
+    let o = weft(&dir, &["convert", "--weld", "cube.stl", "welded.obj"]);
+    assert_exit(&o, 0);
+    let welded = io::read_mesh(dir.join("welded.obj")).unwrap();
+    assert_eq!((welded.vertex_count(), welded.face_count()), (8, 12));
+}
+
+#[test]
+fn render_writes_a_picture_of_the_requested_size() {
+    let dir = folder("render");
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(16, 8)).unwrap();
+    let o = weft(
+        &dir,
+        &["render", "torus.obj", "torus.png", "--size", "160x120"],
+    );
+    assert_exit(&o, 0);
+
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(dir.join("torus.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let frame = reader.next_frame(&mut pixels).unwrap();
+    assert_eq!((frame.width, frame.height), (160, 120));
+    assert_eq!(frame.color_type, png::ColorType::Rgb);
+    let at = |x: usize, y: usize| {
+        let i = 3 * (y * 160 + x);
+        [pixels[i], pixels[i + 1], pixels[i + 2]]
+    };
+    let background = at(0, 0);
+    let differing = (0..120)
+        .flat_map(|y| (0..160).map(move |x| (x, y)))
+        .filter(|&(x, y)| at(x, y) != background)
+        .count();
+    // The torus covers a good part of the picture, and not all of it.
+    assert!(differing > 160 * 120 / 5, "{differing} pixels differ");
+    assert!(differing < 160 * 120 * 9 / 10, "{differing} pixels differ");
+    // The hole in the middle shows the background; the ring in front does not.
+    assert_eq!(at(80, 58), background);
+    assert_ne!(at(80, 100), background);
+}
+
+#[test]
+fn flipped_faces_show_in_another_tone() {
+    let dir = folder("flipped");
+    let grid = shapes::quad_grid(3, 3);
+    let polygons: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if f == 4 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    let flipped = weft::Mesh::from_polygons(grid.positions().to_vec(), polygons).unwrap();
+    io::write_mesh(dir.join("grid.obj"), &flipped).unwrap();
+    let o = weft(
+        &dir,
+        &[
+            "render", "grid.obj", "grid.png", "--size", "120x90", "--edges", "never",
+        ],
+    );
+    assert_exit(&o, 0);
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(dir.join("grid.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    reader.next_frame(&mut pixels).unwrap();
+    let (mut warm, mut cool) = (0, 0);
+    for c in pixels.chunks(3) {
+        let (r, b) = (c[0] as i32, c[2] as i32);
+        if r > b + 60 {
+            warm += 1;
+        } else if b > r + 30 {
+            cool += 1;
+        }
+    }
+    // One face of nine is seen from the back, in the warm tone; the others
+    // in the cool one. Perspective makes the far faces smaller.
+    let share = warm as f64 / (warm + cool) as f64;
+    assert!(
+        (0.06..0.2).contains(&share),
+        "{warm} warm, {cool} cool pixels"
+    );
+}
+
+#[test]
+fn bad_usage_exits_with_2() {
+    let dir = folder("usage");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    for args in [
+        &["render", "cube.obj", "cube.png", "--size", "0x10"][..],
+        &["render", "cube.obj", "cube.png", "--size", "big"],
+        &["render", "cube.obj", "cube.jpg"],
+        &["info"],
+        &["info", "cube.obj", "--colour"],
+        &["convert", "cube.obj", "cube.dae"],
+        &["frobnicate"],
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 2);
+        assert!(stderr(&o).contains("error"), "{args:?}: {}", stderr(&o));
+    }
+    let o = weft(&dir, &["render", "cube.obj", "cube.png", "--size", "0x10"]);
+    assert!(stderr(&o).contains("WIDTHxHEIGHT"), "{}", stderr(&o));
+}
+
+#[test]
+fn help_on_every_command_has_an_example() {
+    let dir = folder("help");
+    for command in ["info", "render", "convert"] {
+        let o = weft(&dir, &[command, "--help"]);
+        assert_exit(&o, 0);
+        let text = stdout(&o);
+        assert!(
+            text.contains(&format!("weft {command} ")),
+            "{command}: {text}"
+        );
+        assert!(text.contains("Example"), "{command}: {text}");
+    }
+    let o = weft(&dir, &["--help"]);
+    assert_exit(&o, 0);
+    for command in ["info", "render", "convert"] {
+        assert!(stdout(&o).contains(command));
+    }
+}
+
+#[test]
+fn failed_operations_exit_with_1_and_name_the_file() {
+    let dir = folder("failures");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    std::fs::write(
+        dir.join("bad.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("short.stl"), [0u8; 50]).unwrap();
+
+    let o = weft(&dir, &["info", "missing.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("missing.obj"), "{}", stderr(&o));
+
+    let o = weft(&dir, &["info", "bad.obj"]);
+    assert_exit(&o, 1);
+    let message = stderr(&o);
+    assert!(
+        message.contains("bad.obj") && message.contains("line 3"),
+        "{message}"
+    );
+
+    let o = weft(&dir, &["convert", "short.stl", "out.obj"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("short.stl") && stderr(&o).contains("byte"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("out.obj").exists());
+
+    for args in [
+        &["convert", "cube.obj", "nowhere/cube.ply"][..],
+        &["render", "cube.obj", "nowhere/cube.png"],
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 1);
+        assert!(stderr(&o).contains("nowhere"), "{args:?}: {}", stderr(&o));
+    }
+
+    // A folder given as the input is unreadable as a file.
+    std::fs::create_dir_all(dir.join("folder.obj")).unwrap();
+    let o = weft(&dir, &["render", "folder.obj", "x.png"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("folder.obj"), "{}", stderr(&o));
+    assert!(!dir.join("x.png").exists());
+}
