@@ -212,9 +212,9 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
         let lambert = if facing == DVec3::ZERO {
             0.5
         } else {
-            0.78 * facing.dot(light).max(0.0) + 0.18 * facing.dot(fill).max(0.0)
+            0.7 * facing.dot(light).max(0.0) + 0.22 * facing.dot(fill).max(0.0)
         };
-        let shade = (0.28 + lambert) as f32;
+        let shade = (0.34 + lambert) as f32;
         let shaded = base.map(|c| (c * shade).min(1.0));
 
         screen.clear();
