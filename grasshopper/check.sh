@@ -57,6 +57,10 @@ else
   fail "components compile against the RhinoCommon and Grasshopper stubs"
 fi
 
+# Component GUIDs are fixed forever; two components must never share one.
+duplicates=$(grep -rhoE 'new Guid\("[0-9a-f-]+"\)' "$here/Weft.Grasshopper" | sort | uniq -d)
+if [ -z "$duplicates" ]; then pass "component GUIDs are distinct"; else fail "duplicate GUIDs: $duplicates"; fi
+
 # 2. Deliberately wrong code must be refused.
 for case in 1 2 3 4; do
   if mcs "${mcs_flags[@]}" -unsafe -target:library -define:CASE_$case -out:"$build/Wrong$case.dll" \
