@@ -26,9 +26,9 @@ done
 
 mcs_flags=(-sdk:4.8-api -langversion:7.2 -warnaserror -nologo -debug)
 mcs "${mcs_flags[@]}" -target:library -out:"$build/Weft.Interop.dll" -doc:"$build/Weft.Interop.xml" \
-  "$here"/Weft/*.cs || { echo "0 passed, 1 failed"; exit 1; }
+  "$here"/Weft/*.cs 2>&1 || { echo "0 passed, 1 failed"; exit 1; }
 mcs "${mcs_flags[@]}" "${defines[@]}" -target:exe -out:"$build/Weft.Tests.exe" \
-  -r:"$build/Weft.Interop.dll" "$here"/tests/*.cs || { echo "0 passed, 1 failed"; exit 1; }
+  -r:"$build/Weft.Interop.dll" "$here"/tests/*.cs 2>&1 || { echo "0 passed, 1 failed"; exit 1; }
 
 # Beside the assembly, as in the plug-in folder; LD_LIBRARY_PATH as a fallback.
 cp "$native" "$build/"
