@@ -584,7 +584,8 @@ pub struct Limit {
     pub du: Vec<f64>,
     /// Second tangent (`dstTan2`).
     pub dv: Vec<f64>,
-    /// `du × dv`, normalised; zero where it vanishes.
+    /// `du × dv`, normalised; zero where it vanishes. It points outward when
+    /// the cage's faces run counter-clockwise seen from outside.
     pub normals: Vec<f64>,
 }
 
