@@ -54,14 +54,14 @@ pub(crate) mod ffi {
             width: usize,
             varying: bool,
             out: &mut [f64],
-        );
+        ) -> Result<()>;
         fn interpolate_face_varying(
             self: &OsdRefiner,
             cage: &[f64],
             width: usize,
             out_values: &mut [f64],
             out_indices: &mut [u32],
-        );
+        ) -> Result<()>;
         fn limit(
             self: &OsdRefiner,
             cage_positions: &[f64],

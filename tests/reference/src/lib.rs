@@ -325,6 +325,7 @@ pub struct OsdRefiner {
     inner: cxx::UniquePtr<ffi::OsdRefiner>,
     cage_vertex_count: usize,
     cage_corner_count: usize,
+    cage_value_count: usize,
 }
 
 impl OsdRefiner {
@@ -442,6 +443,7 @@ impl OsdRefiner {
             inner,
             cage_vertex_count: vertex_count,
             cage_corner_count: value_indices.len(),
+            cage_value_count: value_count,
         })
     }
 
@@ -485,11 +487,13 @@ impl OsdRefiner {
     ///
     /// # Panics
     /// When `width` is 0 or `data` does not hold `width` numbers per cage
-    /// vertex.
+    /// vertex, or (with the C++ exception's message) when memory runs out.
     pub fn interpolate(&self, data: &[f64], width: usize) -> Vec<f64> {
         self.check_data(data, width);
         let mut out = vec![0.0; self.vertex_count() * width];
-        self.inner.interpolate(data, width, false, &mut out);
+        if let Err(e) = self.inner.interpolate(data, width, false, &mut out) {
+            panic!("OpenSubdiv's interpolation failed: {}", e.what());
+        }
         out
     }
 
@@ -502,7 +506,9 @@ impl OsdRefiner {
     pub fn interpolate_varying(&self, data: &[f64], width: usize) -> Vec<f64> {
         self.check_data(data, width);
         let mut out = vec![0.0; self.vertex_count() * width];
-        self.inner.interpolate(data, width, true, &mut out);
+        if let Err(e) = self.inner.interpolate(data, width, true, &mut out) {
+            panic!("OpenSubdiv's varying interpolation failed: {}", e.what());
+        }
         out
     }
 
@@ -513,8 +519,8 @@ impl OsdRefiner {
     /// [`OsdRefiner::faces`]).
     ///
     /// # Panics
-    /// When the refiner has no face-varying channel or `values` does not hold
-    /// `width` numbers per value.
+    /// When the refiner has no face-varying channel, `values` does not hold
+    /// `width` numbers per value, or memory runs out.
     pub fn interpolate_face_varying(&self, values: &[f64], width: usize) -> (Vec<f64>, Vec<u32>) {
         assert!(
             self.cage_corner_count > 0,
@@ -522,14 +528,23 @@ impl OsdRefiner {
         );
         assert!(width > 0, "the data width must be at least 1");
         assert_eq!(
-            values.len() % width,
-            0,
-            "values are not a multiple of the width"
+            values.len(),
+            self.cage_value_count * width,
+            "{} face-varying values of width {width} need {} numbers",
+            self.cage_value_count,
+            self.cage_value_count * width
         );
         let mut out = vec![0.0; self.inner.fvar_value_count() * width];
         let mut indices = vec![0; self.inner.corner_count()];
-        self.inner
-            .interpolate_face_varying(values, width, &mut out, &mut indices);
+        if let Err(e) = self
+            .inner
+            .interpolate_face_varying(values, width, &mut out, &mut indices)
+        {
+            panic!(
+                "OpenSubdiv's face-varying interpolation failed: {}",
+                e.what()
+            );
+        }
         (out, indices)
     }
 

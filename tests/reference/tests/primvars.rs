@@ -322,3 +322,18 @@ fn face_varying_input_is_checked() {
         opensubdiv_refine_face_varying(&cage, &catmark(), 1, &[0.0; 4], &indices).unwrap_err();
     assert!(err.0.contains("corner 5 has face-varying value 2"), "{err}");
 }
+
+#[test]
+#[should_panic(expected = "8 vertices of width 3 need 24 numbers")]
+fn short_data_panics_before_reaching_cpp() {
+    let refiner = OsdRefiner::new(&cube(), &catmark(), 1).unwrap();
+    refiner.interpolate(&[0.0; 23], 3);
+}
+
+#[test]
+#[should_panic(expected = "out must hold xyz for 26 vertices")]
+fn short_stencil_output_panics_before_reaching_cpp() {
+    let stencils = OsdStencils::new(&cube(), &catmark(), 1).unwrap();
+    let mut out = vec![0.0; 77];
+    stencils.update(&cube().positions, &mut out);
+}
