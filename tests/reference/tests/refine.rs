@@ -231,3 +231,24 @@ fn opensubdiv_reports_its_own_errors() {
     let creased = opensubdiv_refine(&cube(), &options, 1).unwrap();
     assert_eq!(creased, opensubdiv_refine(&cube(), &catmark(), 1).unwrap());
 }
+
+#[test]
+fn openmesh_loop_equals_opensubdiv_edge_only_on_open_triangles() {
+    // OpenMesh's Loop uses the (1,6,1)/8 boundary rule and midpoints on
+    // boundary edges, which is OpenSubdiv's VTX_BOUNDARY_EDGE_ONLY.
+    let quads = bumpy_quad_grid(3, 2);
+    let triangles: Vec<Vec<u32>> = quads
+        .faces()
+        .flat_map(|q| [vec![q[0], q[1], q[2]], vec![q[0], q[2], q[3]]])
+        .collect();
+    let faces: Vec<&[u32]> = triangles.iter().map(|t| t.as_slice()).collect();
+    let points: Vec<[f64; 3]> = (0..quads.vertex_count())
+        .map(|v| quads.position(v))
+        .collect();
+    let mesh = RefMesh::from_polygons(&points, &faces);
+    for level in 1..=2 {
+        let osd = opensubdiv_refine(&mesh, &loop_options(), level).unwrap();
+        let om = openmesh_loop(&mesh, level).unwrap();
+        assert_same_mesh(&osd, &om, 1e-12);
+    }
+}
