@@ -2,7 +2,7 @@
 //! naked-edge modes, equal to OpenSubdiv 3.5's uniform refinement.
 //!
 //! Each level runs in two passes. A topology pass finds the level's edges by
-//! bucketing, tags every edge and vertex with its rule ([`rules`]: boundary,
+//! bucketing, tags every edge and vertex with its rule (`rules.rs`: boundary,
 //! corner, non-manifold), writes the next level's faces arithmetically and
 //! records every new point as a gather of old points (a *plan*). An
 //! arithmetic pass applies the plan to positions in parallel, with no atomics.
