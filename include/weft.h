@@ -24,6 +24,31 @@
 #define WEFT_VERSION_PATCH 0
 
 /**
+ * Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
+ */
+#define WEFT_NAKED_EDGES_FIXED 0
+
+/**
+ * Naked edges tend to a cubic B-spline; every boundary vertex moves (OpenSubdiv VTX_BOUNDARY_EDGE_ONLY).
+ */
+#define WEFT_NAKED_EDGES_SMOOTH 1
+
+/**
+ * As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).
+ */
+#define WEFT_NAKED_EDGES_CORNER_FIXED 2
+
+/**
+ * Catmull-Clark: any polygons in, quads out.
+ */
+#define WEFT_SCHEME_CATMULL_CLARK 0
+
+/**
+ * Loop: triangles in, triangles out.
+ */
+#define WEFT_SCHEME_LOOP 1
+
+/**
  * The outcome of every Weft function. The values are stable: new ones are
  * only ever added at the end.
  */
@@ -109,6 +134,13 @@ typedef uint32_t WeftStatus;
  * or receive it from an operation; free it with `weft_mesh_free`.
  */
 typedef struct WeftMesh WeftMesh;
+
+/**
+ * The subdivision of one cage topology, planned for every level. Create it
+ * with `weft_refiner_new`, free it with `weft_refiner_free`. Evaluating is
+ * thread-safe (calls on one refiner take turns).
+ */
+typedef struct WeftRefiner WeftRefiner;
 
 /**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -304,6 +336,179 @@ WeftStatus weft_mesh_copy_faces(const struct WeftMesh *mesh, uint32_t *out_face_
  * `mesh` is a live handle; `out_info` points to a writable `WeftMeshInfo`.
  */
 WeftStatus weft_mesh_info(const struct WeftMesh *mesh, struct WeftMeshInfo *out_info);
+
+/**
+ * Plans `levels` steps of `scheme` on the faces of `cage`: everything that
+ * depends only on its topology (the faces of each level and what each new
+ * vertex is made of) is computed here, once.
+ *
+ * `cage` must not be NULL; its positions are kept for `weft_refiner_mesh`.
+ * `scheme` is a WEFT_SCHEME_* value, `naked_edges` a WEFT_NAKED_EDGES_* value.
+ * `out_refiner` receives the refiner on success (free it with
+ * `weft_refiner_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop on another polygon),
+ * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `out_refiner` is NULL or writable.
+ */
+WeftStatus weft_refiner_new(const struct WeftMesh *cage, uint32_t scheme, uint32_t levels, uint32_t naked_edges, struct WeftRefiner **out_refiner);
+
+/**
+ * Computes the refined positions for new cage positions, without
+ * allocating: the cage's faces must be those the refiner was built from.
+ *
+ * `refiner` must not be NULL.
+ * `cage_positions` holds `3 * vertex_count` doubles; `vertex_count` must
+ * equal the cage's vertex count.
+ * `out_positions` has room for `out_len` doubles, at least
+ * `3 * weft_refiner_vertex_count(refiner)`; too small a buffer fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
+ * WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE.
+ *
+ * # Safety
+ * `refiner` is NULL or live; the buffers hold the elements stated.
+ */
+WeftStatus weft_refiner_evaluate(const struct WeftRefiner *refiner, const double *cage_positions, size_t vertex_count, double *out_positions, size_t out_len);
+
+/**
+ * Makes the refined mesh at the cage positions the refiner was built from.
+ *
+ * `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
+ * it with `weft_mesh_free`); it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `refiner` is NULL or live; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_refiner_mesh(const struct WeftRefiner *refiner, struct WeftMesh **out_mesh);
+
+/**
+ * Returns the number of refined vertices (the output of
+ * `weft_refiner_evaluate` holds three doubles each), or 0 when `refiner` is NULL.
+ *
+ * # Safety
+ * `refiner` is NULL or live.
+ */
+size_t weft_refiner_vertex_count(const struct WeftRefiner *refiner);
+
+/**
+ * Returns the number of refined faces, or 0 when `refiner` is NULL.
+ *
+ * # Safety
+ * `refiner` is NULL or live.
+ */
+size_t weft_refiner_face_count(const struct WeftRefiner *refiner);
+
+/**
+ * Frees a refiner. NULL is ignored.
+ *
+ * # Safety
+ * `refiner` is NULL or a refiner not yet freed; it is invalid afterwards.
+ */
+void weft_refiner_free(struct WeftRefiner *refiner);
+
+/**
+ * Subdivides a mesh with Catmull-Clark, `levels` times, as OpenSubdiv's
+ * Catmark scheme does; triangles, quads and n-gons may be mixed, and every
+ * face of the result is a quad.
+ *
+ * Output order: the input's vertices keep their indices, then one point per
+ * edge (edges sorted by lower, then higher vertex index), then one per face;
+ * face f of n corners becomes n consecutive quads, the first at f's first
+ * corner. `weft_subdivision_parent_faces` maps the result's faces to the input's.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of subdivision steps; 0 returns a copy.
+ * `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
+ * `out_mesh` receives the new mesh on success (free it with `weft_mesh_free`)
+ * and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
+ * unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
+ * pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
+ * WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_catmull_clark(const struct WeftMesh *mesh, uint32_t levels, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Subdivides a triangle mesh with Loop, `levels` times, as OpenSubdiv's
+ * Loop scheme does; each triangle becomes 4.
+ *
+ * Output order: the input's vertices keep their indices, then one point per
+ * edge (edges sorted by lower, then higher vertex index); triangle f becomes
+ * triangles 4f to 4f + 3, the first at f's first corner.
+ *
+ * Parameters as `weft_catmull_clark`.
+ *
+ * Fails as `weft_catmull_clark`, and with WEFT_STATUS_NOT_TRIANGLES naming
+ * the first face that is not a triangle (`weft_triangulate` first).
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_loop(const struct WeftMesh *mesh, uint32_t levels, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Gives the number of faces `levels` steps of `scheme` make from `cage`,
+ * without subdividing: the length `weft_subdivision_parent_faces` needs.
+ *
+ * `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
+ * `out_face_count` receives the count on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `out_face_count` is NULL or writable.
+ */
+WeftStatus weft_subdivision_face_count(const struct WeftMesh *cage, uint32_t scheme, uint32_t levels, size_t *out_face_count);
+
+/**
+ * Writes, for every face of the mesh that `levels` steps of `scheme` make
+ * from `cage`, the index of the cage face it comes from (the naked-edge
+ * mode does not change it). Only the cage's face sizes are used.
+ *
+ * `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
+ * `out_parents` must have room for `capacity` values; when `capacity` is
+ * below the refined face count (`weft_subdivision_face_count`) the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop), WEFT_STATUS_RESULT_TOO_LARGE or
+ * WEFT_STATUS_BUFFER_TOO_SMALL.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `out_parents` is NULL or holds
+ * `capacity` writable values.
+ */
+WeftStatus weft_subdivision_parent_faces(const struct WeftMesh *cage, uint32_t scheme, uint32_t levels, uint32_t *out_parents, size_t capacity);
+
+/**
+ * Triangulates every face: triangles stay, a quad is split along its
+ * shorter diagonal, an n-gon is ear-clipped in its best-fit plane (concave
+ * n-gons included). Vertices keep their indices and positions; the
+ * triangles of face f are consecutive, in face order (a face of n corners
+ * makes n − 2).
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the triangle mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_triangulate(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -8,6 +8,7 @@ pub mod boundary;
 pub mod make;
 pub mod mend;
 pub mod mesh;
+pub mod refiner;
 pub mod subdivide;
 
 pub use boundary::WeftStatus;

@@ -1,1 +1,219 @@
-//! (filled in by its issue)
+//! Subdivision and triangulation exports: Catmull-Clark, Loop, the parent
+//! face of every refined face, and triangulation for chaining into Loop.
+
+use crate::ffi::boundary::{
+    check_room, enum_arg, guard, out_param, output_slice, Failure, WeftStatus,
+};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::subdivide::{self, NakedEdges, Scheme};
+use crate::triangulate::triangulate;
+
+/// Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
+pub const WEFT_NAKED_EDGES_FIXED: u32 = 0;
+/// Naked edges tend to a cubic B-spline; every boundary vertex moves (OpenSubdiv VTX_BOUNDARY_EDGE_ONLY).
+pub const WEFT_NAKED_EDGES_SMOOTH: u32 = 1;
+/// As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).
+pub const WEFT_NAKED_EDGES_CORNER_FIXED: u32 = 2;
+/// Catmull-Clark: any polygons in, quads out.
+pub const WEFT_SCHEME_CATMULL_CLARK: u32 = 0;
+/// Loop: triangles in, triangles out.
+pub const WEFT_SCHEME_LOOP: u32 = 1;
+
+pub(crate) fn naked_edges_arg(value: u32) -> Result<NakedEdges, Failure> {
+    enum_arg(
+        value,
+        "naked_edges",
+        NakedEdges::from_u32,
+        "WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1) or WEFT_NAKED_EDGES_CORNER_FIXED (2)",
+    )
+}
+
+pub(crate) fn scheme_arg(value: u32) -> Result<Scheme, Failure> {
+    enum_arg(
+        value,
+        "scheme",
+        Scheme::from_u32,
+        "WEFT_SCHEME_CATMULL_CLARK (0) or WEFT_SCHEME_LOOP (1)",
+    )
+}
+
+/// Subdivides a mesh with Catmull-Clark, `levels` times, as OpenSubdiv's
+/// Catmark scheme does; triangles, quads and n-gons may be mixed, and every
+/// face of the result is a quad.
+///
+/// Output order: the input's vertices keep their indices, then one point per
+/// edge (edges sorted by lower, then higher vertex index), then one per face;
+/// face f of n corners becomes n consecutive quads, the first at f's first
+/// corner. `weft_subdivision_parent_faces` maps the result's faces to the input's.
+///
+/// `mesh` is the input; it must not be NULL.
+/// `levels` is the number of subdivision steps; 0 returns a copy.
+/// `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
+/// `out_mesh` receives the new mesh on success (free it with `weft_mesh_free`)
+/// and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
+/// unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
+/// pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
+/// WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_catmull_clark(
+    mesh: *const WeftMesh,
+    levels: u32,
+    naked_edges: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    run_scheme(mesh, Scheme::CatmullClark, levels, naked_edges, out_mesh)
+}
+
+/// Subdivides a triangle mesh with Loop, `levels` times, as OpenSubdiv's
+/// Loop scheme does; each triangle becomes 4.
+///
+/// Output order: the input's vertices keep their indices, then one point per
+/// edge (edges sorted by lower, then higher vertex index); triangle f becomes
+/// triangles 4f to 4f + 3, the first at f's first corner.
+///
+/// Parameters as `weft_catmull_clark`.
+///
+/// Fails as `weft_catmull_clark`, and with WEFT_STATUS_NOT_TRIANGLES naming
+/// the first face that is not a triangle (`weft_triangulate` first).
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_loop(
+    mesh: *const WeftMesh,
+    levels: u32,
+    naked_edges: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    run_scheme(mesh, Scheme::Loop, levels, naked_edges, out_mesh)
+}
+
+unsafe fn run_scheme(
+    mesh: *const WeftMesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let naked_edges = naked_edges_arg(naked_edges)?;
+        let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
+        WeftMesh::write(out, result);
+        Ok(())
+    })
+}
+
+/// Gives the number of faces `levels` steps of `scheme` make from `cage`,
+/// without subdividing: the length `weft_subdivision_parent_faces` needs.
+///
+/// `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
+/// `out_face_count` receives the count on success; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+/// WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `out_face_count` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivision_face_count(
+    cage: *const WeftMesh,
+    scheme: u32,
+    levels: u32,
+    out_face_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_face_count, "out_face_count")?;
+        let cage = mesh_ref(cage, "cage")?;
+        let scheme = scheme_arg(scheme)?;
+        *out = subdivide::refined_face_count(cage, scheme, levels)?;
+        Ok(())
+    })
+}
+
+/// Writes, for every face of the mesh that `levels` steps of `scheme` make
+/// from `cage`, the index of the cage face it comes from (the naked-edge
+/// mode does not change it). Only the cage's face sizes are used.
+///
+/// `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
+/// `out_parents` must have room for `capacity` values; when `capacity` is
+/// below the refined face count (`weft_subdivision_face_count`) the call
+/// fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+/// WEFT_STATUS_NOT_TRIANGLES (Loop), WEFT_STATUS_RESULT_TOO_LARGE or
+/// WEFT_STATUS_BUFFER_TOO_SMALL.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `out_parents` is NULL or holds
+/// `capacity` writable values.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivision_parent_faces(
+    cage: *const WeftMesh,
+    scheme: u32,
+    levels: u32,
+    out_parents: *mut u32,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = output_slice(out_parents, capacity, "out_parents")?;
+        let cage = mesh_ref(cage, "cage")?;
+        let scheme = scheme_arg(scheme)?;
+        let needed = subdivide::refined_face_count(cage, scheme, levels)?;
+        check_room("out_parents", capacity, needed)?;
+        let parents = subdivide::parent_faces(cage, scheme, levels)?;
+        out[..needed].copy_from_slice(&parents);
+        Ok(())
+    })
+}
+
+/// Triangulates every face: triangles stay, a quad is split along its
+/// shorter diagonal, an n-gon is ear-clipped in its best-fit plane (concave
+/// n-gons included). Vertices keep their indices and positions; the
+/// triangles of face f are consecutive, in face order (a face of n corners
+/// makes n − 2).
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the triangle mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_triangulate(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let result = triangulate(mesh)?;
+        WeftMesh::write(out, result.mesh);
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn constants_match_the_enumerations() {
+        assert_eq!(WEFT_NAKED_EDGES_FIXED, NakedEdges::Fixed as u32);
+        assert_eq!(WEFT_NAKED_EDGES_SMOOTH, NakedEdges::Smooth as u32);
+        assert_eq!(
+            WEFT_NAKED_EDGES_CORNER_FIXED,
+            NakedEdges::CornerFixed as u32
+        );
+        assert_eq!(WEFT_SCHEME_CATMULL_CLARK, Scheme::CatmullClark as u32);
+        assert_eq!(WEFT_SCHEME_LOOP, Scheme::Loop as u32);
+    }
+}

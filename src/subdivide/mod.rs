@@ -1,1 +1,295 @@
-//! Subdivision schemes.
+//! Subdivision surfaces: Catmull-Clark and Loop with Weaverbird's three
+//! naked-edge modes, equal to OpenSubdiv 3.5's uniform refinement.
+//!
+//! Each level runs in two passes. A topology pass finds the level's edges by
+//! bucketing, tags every edge and vertex with its rule (`rules.rs`: boundary,
+//! corner, non-manifold), writes the next level's faces arithmetically and
+//! records every new point as a gather of old points (a *plan*). An
+//! arithmetic pass applies the plan to positions in parallel, with no atomics.
+//! [`Refiner`] keeps the plans of all levels for re-evaluation.
+//!
+//! # Output order
+//! One level of V vertices, E edges and F faces makes, in order: the V
+//! vertex points (the input's vertices keep their indices), the E edge points
+//! (edges sorted by lower, then higher vertex index), and for Catmull-Clark
+//! the F face points. The children of face f are contiguous, in the order of
+//! f's corners, the first at f's first corner: Catmull-Clark turns face f of
+//! n corners into n quads starting at child face `Σ_{g<f} size(g)`; Loop turns
+//! triangle f into 4 triangles starting at `4f`. [`parent_faces`] gives the
+//! cage face of every refined face.
+//!
+//! # Non-manifold input
+//! Edges with three or more faces, or whose two faces run them the same way,
+//! are infinitely sharp creases; bow-tie and other non-manifold vertices are
+//! corners — as OpenSubdiv does. No face is ever dropped.
+
+mod catmull_clark;
+mod level;
+mod loop_subdivision;
+mod refiner;
+pub(crate) mod rules;
+
+use glam::DVec3;
+
+pub use refiner::Refiner;
+
+use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::mesh::Mesh;
+
+/// What happens along naked edges (edges with one face), the `S` input of
+/// Weaverbird's components. The values are stable (the C ABI uses them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+#[repr(u32)]
+pub enum NakedEdges {
+    /// The boundary polyline stays: boundary vertices keep their place, new boundary vertices are edge midpoints.
+    #[default]
+    Fixed = 0,
+    /// The boundary tends to a cubic B-spline and every boundary vertex moves (OpenSubdiv `VTX_BOUNDARY_EDGE_ONLY`).
+    Smooth = 1,
+    /// As Smooth, but a boundary vertex with one face stays (OpenSubdiv `VTX_BOUNDARY_EDGE_AND_CORNER`).
+    CornerFixed = 2,
+}
+
+impl NakedEdges {
+    /// The mode of a C enumeration value, or `None` when unknown.
+    pub fn from_u32(value: u32) -> Option<NakedEdges> {
+        match value {
+            0 => Some(NakedEdges::Fixed),
+            1 => Some(NakedEdges::Smooth),
+            2 => Some(NakedEdges::CornerFixed),
+            _ => None,
+        }
+    }
+}
+
+/// A subdivision scheme. The values are stable (the C ABI uses them).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[repr(u32)]
+pub enum Scheme {
+    /// Catmull-Clark: any polygons in, quads out.
+    CatmullClark = 0,
+    /// Loop: triangles in, triangles out.
+    Loop = 1,
+}
+
+impl Scheme {
+    /// The scheme of a C enumeration value, or `None` when unknown.
+    pub fn from_u32(value: u32) -> Option<Scheme> {
+        match value {
+            0 => Some(Scheme::CatmullClark),
+            1 => Some(Scheme::Loop),
+            _ => None,
+        }
+    }
+}
+
+/// Sizes of a refined mesh.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct RefinedCounts {
+    pub vertex_count: usize,
+    pub face_count: usize,
+    /// Sum of the face sizes.
+    pub index_count: usize,
+}
+
+/// Catmull-Clark subdivision, `levels` times (0 returns a copy).
+///
+/// Works on triangles, quads and n-gons mixed; after one level every face is
+/// a quad. Rules as OpenSubdiv's Catmark scheme; order as in the module doc.
+///
+/// # Errors
+/// [`Error::ResultTooLarge`] when a level would make more than
+/// [`MAX_ELEMENTS`] vertices, faces or indices (checked before allocating);
+/// [`Error::OutOfMemory`].
+pub fn catmull_clark(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
+    subdivide(mesh, Scheme::CatmullClark, levels, naked_edges)
+}
+
+/// Loop subdivision, `levels` times (0 returns a copy). Requires a triangle
+/// mesh; each triangle becomes 4. Rules as OpenSubdiv's Loop scheme.
+///
+/// # Errors
+/// [`Error::NotTriangles`] naming the first face that is not a triangle
+/// (triangulate first with [`crate::triangulate::triangulate`]);
+/// [`Error::ResultTooLarge`]; [`Error::OutOfMemory`].
+pub fn loop_subdivision(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
+    subdivide(mesh, Scheme::Loop, levels, naked_edges)
+}
+
+/// Subdivides `mesh` with `scheme`, `levels` times: one topology pass and one
+/// arithmetic pass per level, the intermediate levels freed as soon as used.
+///
+/// # Errors
+/// As [`catmull_clark`] and [`loop_subdivision`].
+pub fn subdivide(
+    mesh: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: NakedEdges,
+) -> Result<Mesh> {
+    let mut positions = mesh.positions().to_vec();
+    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, |plan, _| {
+        let face_points = match scheme {
+            Scheme::CatmullClark => plan.face_count(),
+            Scheme::Loop => 0,
+        };
+        let count = plan.vertex_count + plan.edge_count() + face_points;
+        let mut next = try_vec(count, "refined positions")?;
+        next.resize(count, DVec3::ZERO);
+        refiner::apply(scheme, &plan, &positions, &mut next);
+        positions = next;
+        Ok(())
+    })?;
+    let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+    Ok(Mesh::from_valid_parts(positions, sizes, faces.indices))
+}
+
+/// The cage face each face of the refined mesh comes from, in the refined
+/// mesh's face order. Needs only the cage's face sizes.
+///
+/// # Errors
+/// [`Error::NotTriangles`] for Loop on a non-triangle; [`Error::ResultTooLarge`].
+pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>> {
+    let face_count = refined_face_count(cage, scheme, levels)?;
+    let mut parents = try_vec(face_count, "parent faces")?;
+    if levels == 0 {
+        parents.extend(0..cage.face_count() as u32);
+        return Ok(parents);
+    }
+    // Every level after the first splits each face into exactly 4.
+    let repeat = 1usize << (2 * (levels as usize - 1));
+    for (f, &size) in cage.face_sizes().iter().enumerate() {
+        let children = match scheme {
+            Scheme::CatmullClark => size as usize,
+            Scheme::Loop => 4,
+        };
+        parents.extend(std::iter::repeat_n(f as u32, children * repeat));
+    }
+    Ok(parents)
+}
+
+/// Number of faces after `levels` levels of `scheme`, from the face sizes
+/// alone (`Σ size · 4^(levels-1)` for Catmull-Clark, `4^levels · F` for Loop).
+///
+/// # Errors
+/// [`Error::NotTriangles`] for Loop on a non-triangle; [`Error::ResultTooLarge`]
+/// past [`MAX_ELEMENTS`].
+pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<usize> {
+    if scheme == Scheme::Loop {
+        if let Some((face, size)) = cage.first_non_triangle() {
+            return Err(Error::NotTriangles { face, size });
+        }
+    }
+    let mut faces = cage.face_count() as u64;
+    let mut corners = cage.index_count() as u64;
+    for level in 1..=levels {
+        if faces == 0 {
+            break;
+        }
+        faces = match scheme {
+            Scheme::CatmullClark => corners,
+            Scheme::Loop => 4 * faces,
+        };
+        corners = faces * if scheme == Scheme::Loop { 3 } else { 4 };
+        if faces > MAX_ELEMENTS || corners > MAX_ELEMENTS {
+            return Err(too_large(level, faces, corners));
+        }
+    }
+    Ok(faces as usize)
+}
+
+/// Vertex, face and index counts after `levels` levels, found from the
+/// cage's edges; nothing of the result is allocated.
+///
+/// # Errors
+/// As [`refined_face_count`].
+pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<RefinedCounts> {
+    let face_count = refined_face_count(cage, scheme, levels)?;
+    let edges = crate::topology::Topology::new(cage).edge_count() as u64;
+    let (vertices, faces, indices) = check_counts(
+        scheme,
+        cage.vertex_count() as u64,
+        edges,
+        cage.face_count() as u64,
+        cage.index_count() as u64,
+        if cage.face_count() == 0 { 0 } else { levels },
+    )?;
+    debug_assert_eq!(faces as usize, face_count);
+    Ok(RefinedCounts {
+        vertex_count: vertices as usize,
+        face_count: faces as usize,
+        index_count: indices as usize,
+    })
+}
+
+/// Checks every level's exact size against [`MAX_ELEMENTS`] and returns the
+/// last level's vertex, face and index counts.
+/// Catmull-Clark: V' = V + E + F, F' = Σ sizes, E' = 2E + Σ sizes.
+/// Loop: V' = V + E, F' = 4F, E' = 2E + 3F.
+pub(crate) fn check_counts(
+    scheme: Scheme,
+    vertices: u64,
+    edges: u64,
+    faces: u64,
+    corners: u64,
+    levels: u32,
+) -> Result<(u64, u64, u64)> {
+    let (mut v, mut e, mut f, mut c) = (vertices, edges, faces, corners);
+    for level in 1..=levels {
+        (v, e, f, c) = match scheme {
+            Scheme::CatmullClark => (v + e + f, 2 * e + c, c, 4 * c),
+            Scheme::Loop => (v + e, 2 * e + 3 * f, 4 * f, 12 * f),
+        };
+        if f > MAX_ELEMENTS || c > MAX_ELEMENTS || v > MAX_ELEMENTS || e > MAX_ELEMENTS {
+            return Err(too_large(level, f, c));
+        }
+    }
+    Ok((v, f, c))
+}
+
+fn too_large(level: u32, faces: u64, indices: u64) -> Error {
+    Error::ResultTooLarge(format!(
+        "subdivision level {level} would make {faces} faces ({indices} face indices), \
+         past the limit of {MAX_ELEMENTS} vertices, faces or indices; use fewer levels"
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+
+    #[test]
+    fn level_zero_is_a_copy() {
+        let cube = shapes::cube();
+        assert_eq!(catmull_clark(&cube, 0, NakedEdges::Smooth).unwrap(), cube);
+    }
+
+    #[test]
+    fn cube_level_one_has_known_points() {
+        let cube = shapes::cube();
+        let out = catmull_clark(&cube, 1, NakedEdges::Smooth).unwrap();
+        assert_eq!(out.vertex_count(), 8 + 12 + 6);
+        assert_eq!(out.face_count(), 24);
+        // Corner (0,0,0): n = 3, ((n-2) v + (Σ edge ends + Σ face points)/n)/n.
+        let expected = DVec3::splat(2.0 / 9.0);
+        assert!((out.positions()[0] - expected).length() < 1e-15);
+        // Face points are the last 6, the -z face first.
+        assert_eq!(out.positions()[8 + 12], DVec3::new(0.5, 0.5, 0.0));
+        // The first child of face 0 starts at its first corner.
+        assert_eq!(out.face(0)[0], 0);
+        assert_eq!(out.face(0)[2], 20);
+    }
+
+    #[test]
+    fn level_sixteen_of_a_cube_is_refused() {
+        let cube = shapes::cube();
+        let err = catmull_clark(&cube, 16, NakedEdges::Smooth).unwrap_err();
+        assert!(matches!(err, Error::ResultTooLarge(_)));
+        assert!(
+            err.to_string()
+                .contains("level 14 would make 1610612736 faces"),
+            "{err}"
+        );
+    }
+}

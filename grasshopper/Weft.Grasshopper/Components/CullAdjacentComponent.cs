@@ -1,0 +1,46 @@
+using System;
+using Grasshopper.Kernel;
+
+namespace Weft.Grasshopper
+{
+    /// <summary>Removes faces that have a twin over the same vertices: the inner walls of joined boxes.</summary>
+    public sealed class CullAdjacentComponent : WeftComponent
+    {
+        public CullAdjacentComponent()
+            : base("Cull Adjacent Faces", "CullAdj",
+                   "Removes every face that shares all its vertices with another face (both copies go). Weld first.",
+                   "Mend", "cull")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("04050a87-1f12-4935-9270-6d7fecab09c4"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The welded mesh to clean.");
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddMeshParameter("Mesh", "M", "The mesh without its adjacent face pairs.", GH_ParamAccess.item);
+            pManager.AddIntegerParameter("Removed", "N", "How many faces were removed.", GH_ParamAccess.item);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                long removed;
+                using (WeftMesh culled = Operations.CullAdjacent(mesh, out removed))
+                {
+                    SetMesh(DA, 0, culled);
+                    DA.SetData(1, (int)removed);
+                }
+            }
+        }
+    }
+}

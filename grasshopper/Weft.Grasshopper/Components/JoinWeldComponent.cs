@@ -1,0 +1,56 @@
+using System;
+using System.Collections.Generic;
+using Grasshopper.Kernel;
+
+namespace Weft.Grasshopper
+{
+    /// <summary>Joins meshes and optionally welds them (Weaverbird's wbJoin).</summary>
+    public sealed class JoinWeldComponent : WeftComponent
+    {
+        public JoinWeldComponent()
+            : base("Join Meshes and Weld", "wbJoin",
+                   "Joins meshes into one and merges the vertices closer than the tolerance.",
+                   "Mend", "join")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("925c212d-9b67-4d93-b7dd-e07cda6ad9c5"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M+", "The meshes to join.");
+            pManager.AddBooleanParameter("Weld", "W", "Merge vertices closer than the tolerance.", GH_ParamAccess.item, true);
+            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            pManager[2].Optional = true;
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddMeshParameter("Mesh", "M", "The joined mesh.", GH_ParamAccess.item);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            bool weld = true;
+            double tolerance = DocumentTolerance();
+            DA.GetData(1, ref weld);
+            DA.GetData(2, ref tolerance);
+            using (WeftMesh joined = GetMesh(DA, 0))
+            {
+                if (joined == null) return;
+                if (!weld)
+                {
+                    SetMesh(DA, 0, joined);
+                    return;
+                }
+                using (WeftMesh welded = Operations.Weld(joined, tolerance))
+                {
+                    SetMesh(DA, 0, welded);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,152 @@
+using System;
+using System.Collections.Generic;
+using Rhino.Geometry;
+
+namespace Weft.Grasshopper
+{
+    /// <summary>
+    /// Rhino meshes to and from <see cref="WeftMesh"/>: only the raw arrays
+    /// cross here (through <c>GetUnsafeLock</c>, no per-element native calls);
+    /// the face layout conversion is in <see cref="MeshArrays"/>.
+    /// </summary>
+    public static class RhinoMeshes
+    {
+        /// <summary>
+        /// Copies a Rhino mesh into Weft: double-precision vertices when the
+        /// mesh has them, triangles as 3-vertex faces, n-gons as one polygon.
+        /// </summary>
+        public static unsafe PolygonArrays ToArrays(Mesh mesh)
+        {
+            double[] positions;
+            int[] faces;
+            MeshUnsafeLock data = mesh.GetUnsafeLock(false);
+            try
+            {
+                int vertexCount;
+                if (mesh.Vertices.UseDoublePrecisionVertices)
+                {
+                    Point3d* points = data.VertexPoint3dArray(out vertexCount);
+                    positions = new double[3 * vertexCount];
+                    for (int i = 0; i < vertexCount; i++)
+                    {
+                        positions[3 * i] = points[i].X;
+                        positions[3 * i + 1] = points[i].Y;
+                        positions[3 * i + 2] = points[i].Z;
+                    }
+                }
+                else
+                {
+                    Point3f* points = data.VertexPoint3fArray(out vertexCount);
+                    positions = new double[3 * vertexCount];
+                    for (int i = 0; i < vertexCount; i++)
+                    {
+                        positions[3 * i] = points[i].X;
+                        positions[3 * i + 1] = points[i].Y;
+                        positions[3 * i + 2] = points[i].Z;
+                    }
+                }
+                int faceCount;
+                MeshFace* rhinoFaces = data.FacesArray(out faceCount);
+                faces = new int[4 * faceCount];
+                for (int f = 0; f < faceCount; f++)
+                {
+                    faces[4 * f] = rhinoFaces[f].A;
+                    faces[4 * f + 1] = rhinoFaces[f].B;
+                    faces[4 * f + 2] = rhinoFaces[f].C;
+                    faces[4 * f + 3] = rhinoFaces[f].D;
+                }
+            }
+            finally
+            {
+                mesh.ReleaseUnsafeLock(data);
+            }
+            var boundaries = new List<int[]>();
+            var members = new List<int[]>();
+            for (int n = 0; n < mesh.Ngons.Count; n++)
+            {
+                MeshNgon ngon = mesh.Ngons.GetNgon(n);
+                boundaries.Add(ToInts(ngon.BoundaryVertexIndexList()));
+                members.Add(ToInts(ngon.FaceIndexList()));
+            }
+            return MeshArrays.FromRhino(positions, faces, boundaries, members);
+        }
+
+        /// <summary>Creates the Weft mesh of a Rhino mesh; dispose it after use.</summary>
+        public static WeftMesh ToWeft(Mesh mesh)
+        {
+            PolygonArrays arrays = ToArrays(mesh);
+            return WeftMesh.Create(arrays.Positions, arrays.FaceSizes, arrays.FaceIndices);
+        }
+
+        /// <summary>
+        /// Creates a double-precision Rhino mesh from a Weft mesh, with a
+        /// <see cref="MeshNgon"/> over the triangles of each polygon of more than four corners.
+        /// </summary>
+        public static unsafe Mesh FromWeft(WeftMesh weft)
+        {
+            double[] positions = weft.GetPositions();
+            uint[] sizes;
+            uint[] indices;
+            weft.GetFaces(out sizes, out indices);
+            RhinoArrays rhino = MeshArrays.ToRhino(positions, sizes, indices);
+
+            var mesh = new Mesh();
+            mesh.Vertices.UseDoublePrecisionVertices = true;
+            int vertexCount = positions.Length / 3;
+            int faceCount = rhino.Faces.Length / 4;
+            mesh.Vertices.Count = vertexCount;
+            mesh.Faces.Count = faceCount;
+            MeshUnsafeLock data = mesh.GetUnsafeLock(true);
+            try
+            {
+                int length;
+                Point3d* points = data.VertexPoint3dArray(out length);
+                for (int i = 0; i < vertexCount; i++)
+                {
+                    points[i] = new Point3d(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+                }
+                MeshFace* faces = data.FacesArray(out length);
+                for (int f = 0; f < faceCount; f++)
+                {
+                    faces[f] = new MeshFace(rhino.Faces[4 * f], rhino.Faces[4 * f + 1], rhino.Faces[4 * f + 2], rhino.Faces[4 * f + 3]);
+                }
+            }
+            finally
+            {
+                mesh.ReleaseUnsafeLock(data);
+            }
+            for (int n = 0; n < rhino.NgonBoundaries.Count; n++)
+            {
+                mesh.Ngons.AddNgon(MeshNgon.Create(rhino.NgonBoundaries[n], rhino.NgonFaces[n]));
+            }
+            mesh.Normals.ComputeNormals();
+            return mesh;
+        }
+
+        /// <summary>The corners of a closed polyline as x, y, z triples, or null when the curve is no closed polyline.</summary>
+        public static double[] ClosedPolylineCorners(Curve curve)
+        {
+            Polyline polyline;
+            if (curve == null || !curve.TryGetPolyline(out polyline) || !polyline.IsClosed)
+            {
+                return null;
+            }
+            var corners = new double[3 * polyline.Count];
+            for (int i = 0; i < polyline.Count; i++)
+            {
+                Point3d p = polyline[i];
+                corners[3 * i] = p.X;
+                corners[3 * i + 1] = p.Y;
+                corners[3 * i + 2] = p.Z;
+            }
+            return corners;
+        }
+
+        private static int[] ToInts(uint[] values)
+        {
+            var result = new int[values.Length];
+            for (int i = 0; i < values.Length; i++) result[i] = checked((int)values[i]);
+            return result;
+        }
+    }
+}

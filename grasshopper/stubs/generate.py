@@ -1,0 +1,267 @@
+#!/usr/bin/env python3
+"""Generates C# reference stubs (signatures only, bodies `throw null;`) for the
+RhinoCommon and Grasshopper types the Weft components use, from the typed
+Python stubs `rhino-stubs-typed` and `grasshopper-stubs-typed` (.pyi files).
+
+Those stubs are lossy (Python `float` is both float and double, `uint` is
+`int`, arrays and IEnumerable are `Iterable`, `out`/`ref` become tuple
+returns), so a fix-up table below restores the C# signatures the components
+rely on. Members that mention a type outside WANTED are left out: using one
+fails the compile, which is the point: a misspelled member, a wrong overload
+or a missing `ref`/`out` must not compile against these stubs.
+
+usage: generate.py <folder with Rhino/ and Grasshopper/> <output .cs>
+"""
+import ast
+import re
+import sys
+from pathlib import Path
+
+# Types the components use, by namespace (module path of the .pyi).
+WANTED = {
+    "Rhino.Geometry": ["GeometryBase", "Mesh", "MeshFace", "MeshNgon", "MeshUnsafeLock",
+                       "Point3d", "Point3f", "Vector3d", "Vector3f", "Curve", "PolylineCurve", "Polyline"],
+    "Rhino.Geometry.Collections": ["MeshVertexList", "MeshFaceList", "MeshNgonList", "MeshVertexNormalList"],
+    "Grasshopper.Kernel": ["GH_Component", "IGH_DataAccess", "IGH_Param", "GH_RuntimeMessageLevel",
+                           "GH_ParamAccess", "GH_Exposure", "GH_Convert", "GH_Conversion",
+                           "GH_AssemblyInfo", "GH_AssemblyPriority", "GH_LoadingInstruction"],
+}
+STRUCTS = {"MeshFace", "Point3d", "Point3f", "Vector3d", "Vector3f"}
+INTERFACES = {"IGH_DataAccess", "IGH_Param"}
+FLOAT_TYPES = {"Point3f", "Vector3f"}  # `float` means System.Single in these
+BUILTIN = {"int": "int", "bool": "bool", "str": "string", "object": "object", "Any": "object",
+           "type": "global::System.Type", "Guid": "global::System.Guid", "TimeSpan": "global::System.TimeSpan",
+           "Bitmap": "global::System.Drawing.Bitmap", "Color": "global::System.Drawing.Color",
+           "Int32": "int", "T": "T"}
+SKIP_NAMES = {"Equals", "GetHashCode", "GetType", "ToString", "Item", "MemberwiseClone", "Finalize"}
+# Members the overlay declares (protected, virtual or abstract in the real API).
+OVERLAY_MEMBERS = {
+    "GH_Component": {"__init__", "ComponentGuid", "Exposure", "Icon"},
+    "GH_AssemblyInfo": {"__init__", "Name", "Icon", "Description", "Id", "AuthorName", "AuthorContact", "Version"},
+    "GH_AssemblyPriority": {"__init__", "PriorityLoad"},
+}
+# Exact C# declarations where the .pyi loses the truth (checked against the
+# RhinoCommon and Grasshopper SDK documentation). They replace every overload.
+FIXUPS = {
+    "MeshUnsafeLock.VertexPoint3fArray": ["public unsafe global::Rhino.Geometry.Point3f* VertexPoint3fArray(out int length)"],
+    "MeshUnsafeLock.VertexPoint3dArray": ["public unsafe global::Rhino.Geometry.Point3d* VertexPoint3dArray(out int length)"],
+    "MeshUnsafeLock.FacesArray": ["public unsafe global::Rhino.Geometry.MeshFace* FacesArray(out int length)"],
+    "MeshUnsafeLock.NormalVector3fArray": ["public unsafe global::Rhino.Geometry.Vector3f* NormalVector3fArray(out int length)"],
+    "MeshUnsafeLock.FaceNormalsArray": ["public unsafe global::Rhino.Geometry.Vector3f* FaceNormalsArray(out int length)"],
+    "MeshUnsafeLock.VertexColorsArray": ["public unsafe int* VertexColorsArray(out int length)"],
+    "MeshNgon.Create": ["public static global::Rhino.Geometry.MeshNgon Create(global::System.Collections.Generic.IList<int> meshVertexIndexList, global::System.Collections.Generic.IList<int> meshFaceIndexList)"],
+    "MeshNgon.Set": ["public void Set(global::System.Collections.Generic.IList<int> meshVertexIndexList, global::System.Collections.Generic.IList<int> meshFaceIndexList)"],
+    "MeshNgon.BoundaryVertexIndexList": ["public uint[] BoundaryVertexIndexList()"],
+    "MeshNgon.FaceIndexList": ["public uint[] FaceIndexList()"],
+    "MeshNgonList.GetNgonBoundary": ["public int[] GetNgonBoundary(global::System.Collections.Generic.IEnumerable<int> ngonFaceIndexList)"],
+    "MeshVertexList.ToFloatArray": ["public float[] ToFloatArray()"],
+    "IGH_DataAccess.GetData": ["bool GetData<T>(int index, ref T destination)", "bool GetData<T>(string name, ref T destination)"],
+    "IGH_DataAccess.GetDataList": ["bool GetDataList<T>(int index, global::System.Collections.Generic.List<T> list)",
+                                   "bool GetDataList<T>(string name, global::System.Collections.Generic.List<T> list)"],
+    "IGH_DataAccess.SetDataList": ["bool SetDataList(int paramIndex, global::System.Collections.IEnumerable data)",
+                                   "bool SetDataList(string paramName, global::System.Collections.IEnumerable data)"],
+}
+KEYWORDS = {"object", "string", "params", "base", "checked", "event", "ref", "out", "in", "fixed", "default",
+            "operator", "lock", "namespace", "class", "struct", "delegate", "this", "new", "internal"}
+
+
+def qualified():
+    return {name: f"global::{ns}.{name}" for ns, names in WANTED.items() for name in names}
+
+
+QUALIFIED = qualified()
+
+
+def cs_type(node, single, position):
+    """The C# type of an annotation, or None when it names a type not stubbed.
+    single: Python's float means System.Single here. position: 'param',
+    'return' or 'out' (collections differ between them)."""
+    if node is None:
+        return "void"
+    if isinstance(node, ast.Constant) and node.value is None:
+        return "void"
+    if isinstance(node, ast.Name):
+        if node.id == "float":
+            return "float" if single else "double"
+        if node.id == "None":
+            return "void"
+        return BUILTIN.get(node.id) or QUALIFIED.get(node.id)
+    if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Name):
+        container = node.value.id
+        if container in ("Iterable", "Sequence", "MutableSequence", "Iterator"):
+            if isinstance(node.slice, ast.Name) and node.slice.id == "Any":
+                return "global::System.Collections.IEnumerable"
+            item = cs_type(node.slice, single, "param")
+            if item is None or item == "void":
+                return None
+            if position == "out":
+                return item + "[]"
+            if container == "MutableSequence":
+                return f"global::System.Collections.Generic.IList<{item}>"
+            return f"global::System.Collections.Generic.IEnumerable<{item}>"
+    return None
+
+
+def param_name(name):
+    return "@" + name if name in KEYWORDS else name
+
+
+class Member:
+    def __init__(self, name, decl, key):
+        self.name, self.decl, self.key = name, decl, key
+
+
+def method(owner, fn, is_static, interface, single=False):
+    """Declarations for one overload: ref for parameters the tuple hands back,
+    out parameters appended for tuple elements no parameter accounts for."""
+    args = [a for a in fn.args.args if a.arg not in ("self", "cls")]
+    params, types = [], []
+    for a in args:
+        t = cs_type(a.annotation, single, "param")
+        if t is None:
+            return None
+        params.append([t, param_name(a.arg)])
+        types.append(ast.dump(a.annotation))
+    ret = fn.returns
+    if isinstance(ret, ast.Subscript) and isinstance(ret.value, ast.Name) and ret.value.id == "tuple":
+        elements = list(ret.slice.elts)
+        ret_type = cs_type(elements[0], single, "return")
+        for n, extra in enumerate(elements[1:]):
+            dumped = ast.dump(extra)
+            if dumped in types:  # handed back: a ref parameter
+                i = types.index(dumped)
+                params[i][0] = "ref " + params[i][0]
+                types[i] = None
+            else:
+                t = cs_type(extra, single, "out")
+                if t is None:
+                    return None
+                params.append(["out " + t, f"out{n}" if n else "result"])
+    else:
+        ret_type = cs_type(ret, single, "return")
+    if ret_type is None:
+        return None
+    generic = "<T>" if re.search(r"\bT\b", " ".join(t for t, _ in params) + " " + ret_type) else ""
+    plist = ", ".join(f"{t} {n}" for t, n in params)
+    # C# cannot overload on ref/out alone; the first overload wins.
+    key = fn.name + "(" + ",".join(re.sub(r"^(ref|out) ", "", t) for t, _ in params) + ")"
+    if fn.name == "__init__":
+        return Member(fn.name, f"public {owner}({plist}) {{ throw null; }}", key)
+    if interface:
+        return Member(fn.name, f"{ret_type} {fn.name}{generic}({plist});", key)
+    static = "static " if is_static else ""
+    return Member(fn.name, f"public {static}{ret_type} {fn.name}{generic}({plist}) {{ throw null; }}", key)
+
+
+def decorators(fn):
+    names = set()
+    for d in fn.decorator_list:
+        if isinstance(d, ast.Name):
+            names.add(d.id)
+        elif isinstance(d, ast.Attribute):
+            names.add(d.attr)  # X.setter
+    return names
+
+
+def class_body(cls, owner, interface, is_struct):
+    members, props, seen = [], {}, set()
+    single = owner in FLOAT_TYPES
+    for fn in cls.body:
+        if not isinstance(fn, ast.FunctionDef):
+            continue
+        deco = decorators(fn)
+        name = fn.name
+        if name in SKIP_NAMES or name in OVERLAY_MEMBERS.get(owner, ()) or name.startswith(("add_", "remove_", "op_")):
+            continue
+        if f"{owner}.{name}" in FIXUPS:
+            if name not in seen:
+                seen.add(name)
+                for decl in FIXUPS[f"{owner}.{name}"]:
+                    members.append(Member(name, decl + ";" if interface else decl + " { throw null; }", name))
+            continue
+        if name in ("__getitem__", "__setitem__"):
+            t = cs_type(fn.returns if name == "__getitem__" else fn.args.args[2].annotation, single, "return")
+            if t is not None:
+                props.setdefault("this[int index]", [t, False, False])[2 if name == "__setitem__" else 1] = True
+            continue
+        if name.startswith("__") and name != "__init__":
+            continue
+        if "property" in deco or "setter" in deco:
+            t = cs_type(fn.returns if "property" in deco else fn.args.args[1].annotation, single, "return")
+            if t is None:
+                continue
+            entry = props.setdefault(name, [t, "classmethod" in deco or "staticmethod" in deco, False])
+            if "setter" in deco:
+                entry[2] = True
+            continue
+        if name == "__init__" and (interface or (is_struct and not fn.args.args[1:])):
+            continue
+        m = method(owner, fn, "staticmethod" in deco, interface, single)
+        if m is not None and m.key not in seen:
+            seen.add(m.key)
+            members.append(m)
+        elif m is not None and "double" in m.key:
+            # Python's float hid a float/double overload pair: emit the float one too.
+            m2 = method(owner, fn, "staticmethod" in deco, interface, single=True)
+            if m2 is not None and m2.key not in seen:
+                seen.add(m2.key)
+                members.append(m2)
+    for name, (t, static, settable) in props.items():
+        if name == "this[int index]":
+            get, sett = static, settable  # reused slots: has getter, has setter
+            acc = ("get; " if get else "") + ("set; " if sett else "") if interface else \
+                ("get { throw null; } " if get else "") + ("set { throw null; } " if sett else "")
+            decl = f"{t} this[int index] {{ {acc}}}" if interface else f"public {t} this[int index] {{ {acc}}}"
+        elif interface:
+            decl = f"{t} {name} {{ get; {'set; ' if settable else ''}}}"
+        else:
+            decl = (f"public {'static ' if static else ''}{t} {name} "
+                    f"{{ get {{ throw null; }} {'set { throw null; } ' if settable else ''}}}")
+        members.append(Member(name, decl, name))
+    return members
+
+
+def emit_class(ns, cls, out):
+    name = cls.name
+    bases = [b.id for b in cls.bases if isinstance(b, ast.Name)]
+    if "Enum" in bases:
+        values = [(s.targets[0].id, s.value.value) for s in cls.body
+                  if isinstance(s, ast.Assign) and isinstance(s.value, ast.Constant)]
+        wide = any(not -2**31 <= v < 2**31 for _, v in values)
+        out.append(f"    public enum {name}{' : long' if wide else ''}\n    {{")
+        out.extend(f"        {n} = {v}," for n, v in values)
+        out.append("    }")
+        return
+    interface, is_struct = name in INTERFACES, name in STRUCTS
+    base = next((QUALIFIED[b] for b in bases if b in QUALIFIED), None)
+    members = class_body(cls, name, interface, is_struct)
+    kind = "interface" if interface else "struct" if is_struct else "class"
+    out.append(f"    public partial {kind} {name}" + (f" : {base}" if base else "") + "\n    {")
+    has_ctor = any(m.name == "__init__" for m in members)
+    if not interface and not is_struct and not has_ctor and name not in OVERLAY_MEMBERS:
+        out.append(f"        internal {name}() {{ }}")  # not constructible from outside, as in the real API
+    for m in members:
+        out.append("        " + m.decl)
+    out.append("    }")
+
+
+def main():
+    root, target = Path(sys.argv[1]), Path(sys.argv[2])
+    out = ["// Generated by grasshopper/stubs/generate.py from rhino-stubs-typed and",
+           "// grasshopper-stubs-typed 8.20.25157. Signatures only; do not edit.",
+           "#pragma warning disable 108, 109, 114, 660, 661, 3021"]
+    for ns, names in WANTED.items():
+        path = root.joinpath(*ns.split("."), "__init__.pyi")
+        tree = ast.parse(path.read_text(encoding="utf-8"))
+        classes = {c.name: c for c in tree.body if isinstance(c, ast.ClassDef)}
+        out.append(f"namespace {ns}\n{{")
+        for name in names:
+            if name not in classes:
+                sys.exit(f"generate.py: {name} not found in {path}")
+            emit_class(ns, classes[name], out)
+        out.append("}")
+    target.write_text("\n".join(out) + "\n", encoding="utf-8")
+
+
+if __name__ == "__main__":
+    main()

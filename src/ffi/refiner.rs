@@ -1,0 +1,159 @@
+//! The refiner handle: plan a cage's subdivision once, re-evaluate it for
+//! new cage positions (a slider dragged on the canvas) without allocating.
+
+use glam::DVec3;
+
+use crate::ffi::boundary::{
+    check_room, guard, input_slice, out_param, output_slice, required, Failure, WeftStatus,
+};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
+use crate::subdivide::Refiner;
+
+/// The subdivision of one cage topology, planned for every level. Create it
+/// with `weft_refiner_new`, free it with `weft_refiner_free`. Evaluating is
+/// thread-safe (calls on one refiner take turns).
+pub struct WeftRefiner {
+    refiner: Refiner,
+}
+
+/// Plans `levels` steps of `scheme` on the faces of `cage`: everything that
+/// depends only on its topology (the faces of each level and what each new
+/// vertex is made of) is computed here, once.
+///
+/// `cage` must not be NULL; its positions are kept for `weft_refiner_mesh`.
+/// `scheme` is a WEFT_SCHEME_* value, `naked_edges` a WEFT_NAKED_EDGES_* value.
+/// `out_refiner` receives the refiner on success (free it with
+/// `weft_refiner_free`) and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+/// WEFT_STATUS_NOT_TRIANGLES (Loop on another polygon),
+/// WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `out_refiner` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_new(
+    cage: *const WeftMesh,
+    scheme: u32,
+    levels: u32,
+    naked_edges: u32,
+    out_refiner: *mut *mut WeftRefiner,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_refiner, "out_refiner")?;
+        let cage = mesh_ref(cage, "cage")?;
+        let scheme = scheme_arg(scheme)?;
+        let naked_edges = naked_edges_arg(naked_edges)?;
+        let refiner = Refiner::new(cage, scheme, levels, naked_edges)?;
+        *out = Box::into_raw(Box::new(WeftRefiner { refiner }));
+        Ok(())
+    })
+}
+
+/// Computes the refined positions for new cage positions, without
+/// allocating: the cage's faces must be those the refiner was built from.
+///
+/// `refiner` must not be NULL.
+/// `cage_positions` holds `3 * vertex_count` doubles; `vertex_count` must
+/// equal the cage's vertex count.
+/// `out_positions` has room for `out_len` doubles, at least
+/// `3 * weft_refiner_vertex_count(refiner)`; too small a buffer fails with
+/// WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
+/// WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE.
+///
+/// # Safety
+/// `refiner` is NULL or live; the buffers hold the elements stated.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_evaluate(
+    refiner: *const WeftRefiner,
+    cage_positions: *const f64,
+    vertex_count: usize,
+    out_positions: *mut f64,
+    out_len: usize,
+) -> WeftStatus {
+    guard(|| {
+        let refiner = &required(refiner, "refiner")?.refiner;
+        if vertex_count != refiner.cage_vertex_count() {
+            return Err(Failure::new(
+                WeftStatus::CountMismatch,
+                format!(
+                    "vertex_count is {vertex_count} but the refiner's cage has {} vertices",
+                    refiner.cage_vertex_count()
+                ),
+            ));
+        }
+        let cage = input_slice(cage_positions, 3 * vertex_count, "cage_positions")?;
+        let out = output_slice(out_positions, out_len, "out_positions")?;
+        let needed = 3 * refiner.vertex_count();
+        check_room("out_positions", out_len, needed)?;
+        if let Some(i) = cage.iter().position(|c| !c.is_finite()) {
+            return Err(Failure::new(
+                WeftStatus::NonFiniteCoordinate,
+                format!("cage vertex {} has a non-finite coordinate", i / 3),
+            ));
+        }
+        // DVec3 is three f64 in a row (`#[repr(C)]`, alignment of f64).
+        let cage = std::slice::from_raw_parts(cage.as_ptr().cast::<DVec3>(), vertex_count);
+        let out = std::slice::from_raw_parts_mut(
+            out.as_mut_ptr().cast::<DVec3>(),
+            refiner.vertex_count(),
+        );
+        refiner.evaluate(cage, out)?;
+        Ok(())
+    })
+}
+
+/// Makes the refined mesh at the cage positions the refiner was built from.
+///
+/// `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
+/// it with `weft_mesh_free`); it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `refiner` is NULL or live; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_mesh(
+    refiner: *const WeftRefiner,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let refiner = &required(refiner, "refiner")?.refiner;
+        WeftMesh::write(out, refiner.mesh()?);
+        Ok(())
+    })
+}
+
+/// Returns the number of refined vertices (the output of
+/// `weft_refiner_evaluate` holds three doubles each), or 0 when `refiner` is NULL.
+///
+/// # Safety
+/// `refiner` is NULL or live.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_vertex_count(refiner: *const WeftRefiner) -> usize {
+    refiner.as_ref().map_or(0, |r| r.refiner.vertex_count())
+}
+
+/// Returns the number of refined faces, or 0 when `refiner` is NULL.
+///
+/// # Safety
+/// `refiner` is NULL or live.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_face_count(refiner: *const WeftRefiner) -> usize {
+    refiner.as_ref().map_or(0, |r| r.refiner.face_count())
+}
+
+/// Frees a refiner. NULL is ignored.
+///
+/// # Safety
+/// `refiner` is NULL or a refiner not yet freed; it is invalid afterwards.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_free(refiner: *mut WeftRefiner) {
+    if !refiner.is_null() {
+        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(refiner)));
+    }
+}

@@ -1,0 +1,92 @@
+//! Loop (1987) on triangle meshes, with the masks of OpenSubdiv's
+//! `Sdc::Scheme<SCHEME_LOOP>`:
+//! - edge point: smooth `3/8 (a + b) + 1/8 (c + d)` with the two opposite
+//!   vertices, sharp the midpoint;
+//! - vertex point: smooth `(1 - nβ) v + β Σ neighbours` with
+//!   `β = (5/8 - (3/8 + 1/4 cos(2π/n))²) / n` (1/16 at valence 6), crease
+//!   `3/4 v + 1/8 (a + b)` along its two sharp edges, corner `v`.
+//!
+//! Output order of one level of V vertices and E edges: the V vertex points,
+//! then the E edge points (edges sorted by their lower, then higher vertex).
+//! Triangle f = `[v0, v1, v2]` with edge points `e_i` on `v_i v_(i+1)` becomes
+//! the four triangles `[v0, e0, e2]`, `[v1, e1, e0]`, `[v2, e2, e1]`,
+//! `[e0, e1, e2]` at positions `4f..4f + 4`.
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use super::level::{Connectivity, Faces, Plan, VertexRule, NONE};
+use super::rules::loop_smooth_weights;
+use crate::error::{try_vec, Result};
+
+const CHUNK: usize = 2048;
+
+/// The triangles of the next level (see the module doc for their order).
+/// Every face of `faces` is a triangle.
+pub(crate) fn child_faces(faces: &Faces, connectivity: &Connectivity) -> Result<Faces> {
+    let vertex_count = faces.vertex_count;
+    let face_count = faces.face_count();
+    let mut offsets = try_vec(4 * face_count + 1, "child faces")?;
+    offsets.extend((0..=4 * face_count as u32).map(|t| 3 * t));
+    let mut indices = try_vec(12 * face_count, "child faces")?;
+    let base = vertex_count as u32;
+    for (v, e) in faces
+        .indices
+        .chunks_exact(3)
+        .zip(connectivity.corner_edges.chunks_exact(3))
+    {
+        let e = [base + e[0], base + e[1], base + e[2]];
+        indices.extend_from_slice(&[
+            v[0], e[0], e[2], //
+            v[1], e[1], e[0], //
+            v[2], e[2], e[1], //
+            e[0], e[1], e[2],
+        ]);
+    }
+    Ok(Faces {
+        vertex_count: vertex_count + connectivity.edge_count(),
+        offsets,
+        indices,
+    })
+}
+
+/// Applies one level's plan: reads `points` (the level's V positions) and
+/// fills `out` with the V + E positions of the next level.
+pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
+
+    edge_points
+        .par_iter_mut()
+        .with_min_len(CHUNK)
+        .zip(plan.edges.par_iter())
+        .for_each(|(out, &[a, b, c, d])| {
+            let ends = points[a as usize] + points[b as usize];
+            *out = if c == NONE {
+                ends * 0.5
+            } else {
+                ends * 0.375 + (points[c as usize] + points[d as usize]) * 0.125
+            };
+        });
+
+    vertex_points
+        .par_iter_mut()
+        .with_min_len(CHUNK)
+        .enumerate()
+        .for_each(|(v, out)| {
+            let p = points[v];
+            let ring = plan.ring(v);
+            *out = match plan.vertex_rules[v] {
+                VertexRule::Corner => p,
+                VertexRule::Crease => {
+                    p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
+                }
+                VertexRule::Smooth => {
+                    let (own, each) = loop_smooth_weights(ring.len());
+                    let sum = ring
+                        .iter()
+                        .fold(DVec3::ZERO, |s, &u| s + points[u as usize]);
+                    p * own + sum * each
+                }
+            };
+        });
+}

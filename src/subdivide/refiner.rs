@@ -1,0 +1,244 @@
+//! The refiner: the plans of every level of one cage's topology, computed
+//! once, re-applied to new cage positions without allocating (OpenSubdiv's
+//! `Far::TopologyRefiner` + `PrimvarRefiner`, or its stencil tables, in spirit).
+//! One-shot subdivision uses the same two passes, level by level.
+
+use std::sync::Mutex;
+
+use glam::DVec3;
+
+use super::level::{Connectivity, Faces, Plan};
+use super::rules::{cage_tags, child_tags, plan, Tags};
+use super::{catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme};
+use crate::error::{try_vec, Error, Result};
+use crate::mesh::Mesh;
+
+/// What depends only on a cage's faces: the plans of every level and the
+/// refined faces. Build with [`Refiner::new`], evaluate with
+/// [`Refiner::evaluate`] as often as the positions change.
+#[derive(Debug)]
+pub struct Refiner {
+    scheme: Scheme,
+    naked_edges: NakedEdges,
+    cage_vertex_count: usize,
+    plans: Vec<Plan>,
+    faces: Faces,
+    /// The cage's positions, for [`Refiner::mesh`].
+    cage_positions: Vec<DVec3>,
+    /// Two buffers for the intermediate levels, reserved once.
+    scratch: Mutex<[Vec<DVec3>; 2]>,
+}
+
+impl Refiner {
+    /// Plans `levels` levels of `scheme` on `cage`'s faces with the given
+    /// naked-edge mode.
+    ///
+    /// # Errors
+    /// [`Error::NotTriangles`] for Loop on a face that is not a triangle;
+    /// [`Error::ResultTooLarge`] when a level would pass
+    /// [`crate::error::MAX_ELEMENTS`]; [`Error::OutOfMemory`].
+    pub fn new(
+        cage: &Mesh,
+        scheme: Scheme,
+        levels: u32,
+        naked_edges: NakedEdges,
+    ) -> Result<Refiner> {
+        let mut plans = Vec::new();
+        let faces = plan_levels(cage, scheme, levels, naked_edges, |p, _| {
+            plans.push(p);
+            Ok(())
+        })?;
+        let largest_intermediate = plans
+            .iter()
+            .skip(1)
+            .map(|p| p.vertex_count)
+            .max()
+            .unwrap_or(0);
+        let mut a = try_vec(largest_intermediate, "refiner scratch")?;
+        a.resize(largest_intermediate, DVec3::ZERO);
+        let mut b = try_vec(largest_intermediate, "refiner scratch")?;
+        b.resize(largest_intermediate, DVec3::ZERO);
+        Ok(Refiner {
+            scheme,
+            naked_edges,
+            cage_vertex_count: cage.vertex_count(),
+            plans,
+            faces,
+            cage_positions: cage.positions().to_vec(),
+            scratch: Mutex::new([a, b]),
+        })
+    }
+
+    /// The scheme it refines with.
+    pub fn scheme(&self) -> Scheme {
+        self.scheme
+    }
+
+    /// The naked-edge mode it refines with.
+    pub fn naked_edges(&self) -> NakedEdges {
+        self.naked_edges
+    }
+
+    /// Number of levels.
+    pub fn levels(&self) -> usize {
+        self.plans.len()
+    }
+
+    /// Number of cage vertices [`Refiner::evaluate`] expects.
+    pub fn cage_vertex_count(&self) -> usize {
+        self.cage_vertex_count
+    }
+
+    /// Number of refined vertices [`Refiner::evaluate`] writes.
+    pub fn vertex_count(&self) -> usize {
+        self.faces.vertex_count
+    }
+
+    /// Number of refined faces.
+    pub fn face_count(&self) -> usize {
+        self.faces.face_count()
+    }
+
+    /// The refined faces' vertex indices, one face after another.
+    pub fn face_indices(&self) -> &[u32] {
+        &self.faces.indices
+    }
+
+    /// Where each refined face starts in [`Refiner::face_indices`], plus the total.
+    pub fn face_offsets(&self) -> &[u32] {
+        &self.faces.offsets
+    }
+
+    /// Computes the refined positions of new cage positions into `out`,
+    /// without allocating.
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] when `cage` does not have
+    /// [`Refiner::cage_vertex_count`] positions, `out` not
+    /// [`Refiner::vertex_count`], or a cage coordinate is not finite.
+    pub fn evaluate(&self, cage: &[DVec3], out: &mut [DVec3]) -> Result<()> {
+        if cage.len() != self.cage_vertex_count {
+            return Err(Error::InvalidArgument(format!(
+                "the refiner was built for {} cage vertices but {} positions were given",
+                self.cage_vertex_count,
+                cage.len()
+            )));
+        }
+        if out.len() != self.vertex_count() {
+            return Err(Error::InvalidArgument(format!(
+                "the refined mesh has {} vertices but the output has room for {}",
+                self.vertex_count(),
+                out.len()
+            )));
+        }
+        if let Some(v) = cage.iter().position(|p| !p.is_finite()) {
+            return Err(Error::InvalidArgument(format!(
+                "cage vertex {v} has a non-finite coordinate"
+            )));
+        }
+        let Some((last, intermediate)) = self.plans.split_last() else {
+            out.copy_from_slice(cage);
+            return Ok(());
+        };
+        let mut scratch = self
+            .scratch
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        let [a, b] = &mut *scratch;
+        // Level 1 goes to `a`, level 2 to `b`, level 3 to `a`, ...; the last to `out`.
+        let mut source_len = 0;
+        for (i, plan) in intermediate.iter().enumerate() {
+            let target_len = self.plans[i + 1].vertex_count;
+            match i {
+                0 => apply(self.scheme, plan, cage, &mut a[..target_len]),
+                _ if i % 2 == 1 => apply(self.scheme, plan, &a[..source_len], &mut b[..target_len]),
+                _ => apply(self.scheme, plan, &b[..source_len], &mut a[..target_len]),
+            }
+            source_len = target_len;
+        }
+        let source: &[DVec3] = match intermediate.len() {
+            0 => cage,
+            n if n % 2 == 1 => &a[..source_len],
+            _ => &b[..source_len],
+        };
+        apply(self.scheme, last, source, out);
+        Ok(())
+    }
+
+    /// The refined mesh at the cage positions the refiner was built from.
+    ///
+    /// # Errors
+    /// [`Error::OutOfMemory`].
+    pub fn mesh(&self) -> Result<Mesh> {
+        let mut positions = try_vec(self.vertex_count(), "refined positions")?;
+        positions.resize(self.vertex_count(), DVec3::ZERO);
+        self.evaluate(&self.cage_positions, &mut positions)?;
+        Ok(self.mesh_with(positions))
+    }
+
+    fn mesh_with(&self, positions: Vec<DVec3>) -> Mesh {
+        let sizes = face_sizes(&self.faces);
+        Mesh::from_valid_parts(positions, sizes, self.faces.indices.clone())
+    }
+}
+
+fn face_sizes(faces: &Faces) -> Vec<u32> {
+    faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
+}
+
+/// Applies one plan of `scheme`.
+pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
+    match scheme {
+        Scheme::CatmullClark => catmull_clark::apply(plan, points, out),
+        Scheme::Loop => loop_subdivision::apply(plan, points, out),
+    }
+}
+
+/// Plans every level in turn, handing each plan with its level index to
+/// `each`, and returns the faces of the last level. Checks the scheme's
+/// preconditions and every level's size before allocating.
+pub(crate) fn plan_levels(
+    cage: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: NakedEdges,
+    mut each: impl FnMut(Plan, usize) -> Result<()>,
+) -> Result<Faces> {
+    if scheme == Scheme::Loop {
+        if let Some((face, size)) = cage.first_non_triangle() {
+            return Err(Error::NotTriangles { face, size });
+        }
+    }
+    let mut faces = Faces {
+        vertex_count: cage.vertex_count(),
+        offsets: cage.face_offsets().to_vec(),
+        indices: cage.face_indices().to_vec(),
+    };
+    if levels == 0 || cage.face_count() == 0 {
+        return Ok(faces);
+    }
+    let mut connectivity = Connectivity::new(&faces)?;
+    check_counts(
+        scheme,
+        cage.vertex_count() as u64,
+        connectivity.edge_count() as u64,
+        cage.face_count() as u64,
+        cage.index_count() as u64,
+        levels,
+    )?;
+    let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
+    for level in 0..levels as usize {
+        let next_faces = match scheme {
+            Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity)?,
+            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity)?,
+        };
+        each(plan(scheme, &faces, &connectivity, &tags)?, level)?;
+        if level + 1 < levels as usize {
+            let next_connectivity = Connectivity::new(&next_faces)?;
+            tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
+            connectivity = next_connectivity;
+        }
+        faces = next_faces;
+    }
+    Ok(faces)
+}
