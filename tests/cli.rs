@@ -214,7 +214,7 @@ fn bad_usage_exits_with_2() {
 #[test]
 fn help_on_every_command_has_an_example() {
     let dir = folder("help");
-    for command in ["info", "render", "convert"] {
+    for command in ["info", "render", "convert", "subdivide", "triangulate"] {
         let o = weft(&dir, &[command, "--help"]);
         assert_exit(&o, 0);
         let text = stdout(&o);
@@ -226,7 +226,7 @@ fn help_on_every_command_has_an_example() {
     }
     let o = weft(&dir, &["--help"]);
     assert_exit(&o, 0);
-    for command in ["info", "render", "convert"] {
+    for command in ["info", "render", "convert", "subdivide", "triangulate"] {
         assert!(stdout(&o).contains(command));
     }
 }
@@ -278,4 +278,118 @@ fn failed_operations_exit_with_1_and_name_the_file() {
     assert_exit(&o, 1);
     assert!(stderr(&o).contains("folder.obj"), "{}", stderr(&o));
     assert!(!dir.join("x.png").exists());
+}
+
+#[test]
+fn subdivide_runs_each_scheme_and_mode() {
+    let dir = folder("subdivide");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    io::write_mesh(dir.join("grid.off"), &shapes::triangle_grid(2, 2)).unwrap();
+
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "cc.ply",
+            "--scheme",
+            "catmull-clark",
+            "--levels",
+            "2",
+            "--naked-edges",
+            "fixed",
+        ],
+    );
+    assert_exit(&o, 0);
+    let cc = io::read_mesh(dir.join("cc.ply")).unwrap();
+    // Level 1: 8 + 12 + 6 vertices, 24 quads; level 2: 26 + 48 + 24, 96 quads.
+    assert_eq!((cc.vertex_count(), cc.face_count()), (98, 96));
+    assert!(cc.is_quad_mesh());
+
+    // A corner of the grid with one face: corner-fixed keeps it, smooth moves it.
+    let grid = shapes::triangle_grid(2, 2);
+    let lone = (0..grid.vertex_count() as u32)
+        .find(|v| grid.faces().filter(|f| f.contains(v)).count() == 1)
+        .unwrap() as usize;
+    for mode in ["fixed", "smooth", "corner-fixed"] {
+        let out = format!("loop-{mode}.obj");
+        let o = weft(
+            &dir,
+            &[
+                "subdivide",
+                "grid.off",
+                &out,
+                "--scheme",
+                "loop",
+                "--levels",
+                "1",
+                "--naked-edges",
+                mode,
+            ],
+        );
+        assert_exit(&o, 0);
+        let refined = io::read_mesh(dir.join(&out)).unwrap();
+        assert_eq!(refined.face_count(), 32, "{mode}");
+        let corner = refined.positions()[lone];
+        assert_eq!(
+            corner == grid.positions()[lone],
+            mode != "smooth",
+            "{mode}: {corner}"
+        );
+    }
+
+    // Loop on quads triangulates first and says so.
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "cube-loop.obj",
+            "--scheme",
+            "loop",
+            "--levels",
+            "1",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("triangulated"), "{}", stderr(&o));
+    assert_eq!(
+        io::read_mesh(dir.join("cube-loop.obj"))
+            .unwrap()
+            .face_count(),
+        48
+    );
+
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.obj", "x.obj", "--scheme", "butterfly"],
+    );
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["subdivide", "cube.obj", "x.obj", "--levels", "-1"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["subdivide", "cube.obj", "x.obj", "--levels", "40"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("cube.obj") && stderr(&o).contains("too large"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn triangulate_splits_polygons() {
+    let dir = folder("triangulate");
+    io::write_mesh(dir.join("mixed.obj"), &shapes::mixed_polygons()).unwrap();
+    let o = weft(&dir, &["triangulate", "mixed.obj", "tri.obj"]);
+    assert_exit(&o, 0);
+    let mixed = shapes::mixed_polygons();
+    let tri = io::read_mesh(dir.join("tri.obj")).unwrap();
+    let expected: u32 = mixed.face_sizes().iter().map(|s| s - 2).sum();
+    assert_eq!(tri.face_count(), expected as usize);
+    assert!(tri.is_triangle_mesh());
+    assert_eq!(tri.positions(), mixed.positions());
+    let o = weft(&dir, &["triangulate", "mixed.obj", "missing/tri.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("missing"), "{}", stderr(&o));
 }

@@ -9,10 +9,11 @@ use std::process::ExitCode;
 use std::sync::mpsc;
 use std::time::{Duration, Instant};
 
-use clap::{Parser, Subcommand};
+use clap::{Parser, Subcommand, ValueEnum};
 
 use weft::io::render::{self, RenderOptions};
 use weft::io::{self, Format, IoError, ReadOptions};
+use weft::subdivide::{self, NakedEdges, Scheme};
 use weft::{Mesh, Topology};
 
 #[derive(Parser)]
@@ -61,6 +62,40 @@ enum Command {
         #[arg(long, value_parser = ["always", "never", "auto"], default_value = "auto")]
         edges: String,
     },
+    /// Subdivides a mesh: Catmull-Clark (any polygons, quads out) or Loop
+    /// (triangles; other polygons are triangulated first).
+    #[command(
+        after_help = "Examples:\n  weft subdivide cage.obj smooth.obj --scheme catmull-clark --levels 2 --naked-edges fixed\n  weft subdivide tri.ply tri3.ply --scheme loop --levels 3 --naked-edges corner-fixed"
+    )]
+    Subdivide {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+        /// The subdivision scheme.
+        #[arg(long, value_enum, default_value = "catmull-clark")]
+        scheme: SchemeArg,
+        /// How many times to subdivide (0 copies the mesh).
+        #[arg(long, default_value_t = 1)]
+        levels: u32,
+        /// What happens along naked edges: fixed keeps the boundary polyline,
+        /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners.
+        #[arg(long, value_enum, default_value = "fixed")]
+        naked_edges: NakedEdgesArg,
+    },
+    /// Splits every face into triangles (quads along the shorter diagonal,
+    /// n-gons by ear clipping); vertices stay as they are.
+    #[command(after_help = "Example:\n  weft triangulate panels.obj panels-triangles.obj")]
+    Triangulate {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+    },
     /// Converts a mesh file; formats follow the extensions.
     #[command(
         after_help = "Example:\n  weft convert part.obj part.ply\n  weft convert scan.stl scan.obj --weld"
@@ -79,6 +114,19 @@ enum Command {
         #[arg(long, conflicts_with = "ascii")]
         big_endian: bool,
     },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum SchemeArg {
+    CatmullClark,
+    Loop,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum NakedEdgesArg {
+    Fixed,
+    Smooth,
+    CornerFixed,
 }
 
 /// A mesh file argument: its extension must name a format.
@@ -178,6 +226,49 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             );
             Ok(())
         }
+        Command::Subdivide {
+            input,
+            output,
+            scheme,
+            levels,
+            naked_edges,
+        } => {
+            let mut mesh = read(cli, input)?;
+            let scheme = match scheme {
+                SchemeArg::CatmullClark => Scheme::CatmullClark,
+                SchemeArg::Loop => Scheme::Loop,
+            };
+            let naked_edges = match naked_edges {
+                NakedEdgesArg::Fixed => NakedEdges::Fixed,
+                NakedEdgesArg::Smooth => NakedEdges::Smooth,
+                NakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
+            };
+            if scheme == Scheme::Loop {
+                if let Some((face, size)) = mesh.first_non_triangle() {
+                    let before = mesh.face_count();
+                    mesh = weft::triangulate::triangulate(&mesh)
+                        .map_err(|e| operation_failed(input, "triangulate", e))?
+                        .mesh;
+                    eprintln!(
+                        "{}: Loop needs triangles (face {face} has {size} corners): triangulated {before} faces into {}",
+                        input.display(),
+                        mesh.face_count()
+                    );
+                }
+            }
+            let refined = with_progress("subdividing", || {
+                subdivide::subdivide(&mesh, scheme, *levels, naked_edges)
+            })
+            .map_err(|e| operation_failed(input, "subdivide", e))?;
+            write(output, &refined, &io::WriteOptions::default())
+        }
+        Command::Triangulate { input, output } => {
+            let mesh = read(cli, input)?;
+            let triangles =
+                with_progress("triangulating", || weft::triangulate::triangulate(&mesh))
+                    .map_err(|e| operation_failed(input, "triangulate", e))?;
+            write(output, &triangles.mesh, &io::WriteOptions::default())
+        }
         Command::Convert {
             input,
             output,
@@ -198,6 +289,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             write(output, &mesh, &options)
         }
     }
+}
+
+fn operation_failed(input: &Path, what: &str, error: weft::Error) -> Failure {
+    Failure::Failed(format!("{}: cannot {what}: {error}", input.display()))
 }
 
 /// Reads a mesh, welding STL corners when `--weld` was given.
