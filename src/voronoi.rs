@@ -128,9 +128,8 @@ pub fn voronoi(
 /// follow the cells' order; empty cells are skipped.
 ///
 /// # Errors
-/// [`Error::InvalidMesh`] when a cell has fewer than 3 corners, a repeated
-/// corner index cannot occur; a cell with a non-finite corner is named as
-/// the vertex it became.
+/// [`Error::InvalidMesh`] when a non-empty cell has fewer than 3 corners
+/// (naming its face) or a non-finite corner (naming its vertex).
 pub fn cells_to_mesh(cells: &[Vec<DVec3>]) -> Result<Mesh> {
     let total: usize = cells.iter().map(Vec::len).sum();
     let mut positions = try_vec(total, "the cells' corners")?;
