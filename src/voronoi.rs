@@ -75,6 +75,15 @@ pub fn voronoi(
         }
     }
     let sites: Vec<DVec2> = points.iter().map(|&p| plane.to_plane(p)).collect();
+    // Name a point out of the triangulation's range by its index among all points.
+    for (i, uv) in sites.iter().enumerate() {
+        if !uv.is_finite() || uv.abs().max_element() > spade::MAX_ALLOWED_VALUE {
+            return Err(Error::InvalidArgument(format!(
+                "point {i} projects to ({}, {}), too far from the plane's origin for the triangulation",
+                uv.x, uv.y
+            )));
+        }
+    }
     let boundary = match boundary {
         Some(corners) => Boundary::from_corners(corners, plane)?,
         None => Boundary::around(&sites),

@@ -267,6 +267,16 @@ fn bad_input_is_named() {
         matches!(&e, Error::InvalidArgument(m) if m.contains("point 1")),
         "{e}"
     );
+    let far = [
+        DVec3::new(5.0, 0.0, 0.0),
+        DVec3::ZERO,
+        DVec3::new(1e100, 0.0, 0.0),
+    ];
+    let e = voronoi(&far, &Plane::xy(), None, None).unwrap_err();
+    assert!(
+        matches!(&e, Error::InvalidArgument(m) if m.contains("point 2")),
+        "{e}"
+    );
     let e = voronoi(&[DVec3::ZERO], &Plane::xy(), None, Some(-1.0)).unwrap_err();
     assert!(
         matches!(&e, Error::InvalidArgument(m) if m.contains("radius")),
