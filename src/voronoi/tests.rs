@@ -229,6 +229,24 @@ fn one_and_two_points() {
     assert!(cells[3].is_empty());
     assert_eq!(area_of(&cells), 16.0);
     assert!((signed_area(&flat(&cells[1])) - 4.0).abs() < 1e-12);
+    // Alone in a concave boundary, a point's cell is the whole boundary.
+    let l_shape = lift(&[
+        DVec2::ZERO,
+        DVec2::new(4.0, 0.0),
+        DVec2::new(4.0, 1.0),
+        DVec2::new(1.0, 1.0),
+        DVec2::new(1.0, 4.0),
+        DVec2::new(0.0, 4.0),
+    ]);
+    let alone = voronoi(
+        &[DVec3::new(0.5, 0.5, 0.0)],
+        &Plane::xy(),
+        Some(&l_shape),
+        None,
+    )
+    .unwrap();
+    assert_eq!(alone[0].len(), 6);
+    assert!((signed_area(&flat(&alone[0])) - 7.0).abs() < 1e-12);
     // No points at all.
     assert!(voronoi(&[], &Plane::xy(), None, None).unwrap().is_empty());
 }
