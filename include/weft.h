@@ -9,6 +9,52 @@
 
 
 /**
+ * Platonic solid for `weft_platonic`: the tetrahedron (4 triangles).
+ */
+#define WEFT_PLATONIC_TETRAHEDRON 0
+
+/**
+ * Platonic solid for `weft_platonic`: the cube (6 quads).
+ */
+#define WEFT_PLATONIC_HEXAHEDRON 1
+
+/**
+ * Platonic solid for `weft_platonic`: the octahedron (8 triangles).
+ */
+#define WEFT_PLATONIC_OCTAHEDRON 2
+
+/**
+ * Platonic solid for `weft_platonic`: the dodecahedron (12 pentagons).
+ */
+#define WEFT_PLATONIC_DODECAHEDRON 3
+
+/**
+ * Platonic solid for `weft_platonic`: the icosahedron (20 triangles).
+ */
+#define WEFT_PLATONIC_ICOSAHEDRON 4
+
+/**
+ * Solid for `weft_sided_solid`: two n-gons joined by n quads.
+ */
+#define WEFT_SIDED_PRISM 0
+
+/**
+ * Solid for `weft_sided_solid`: two n-gons, one turned by half a side,
+ * joined by 2n triangles.
+ */
+#define WEFT_SIDED_ANTIPRISM 1
+
+/**
+ * Solid for `weft_sided_solid`: an n-gon base and n triangles to the apex.
+ */
+#define WEFT_SIDED_PYRAMID 2
+
+/**
+ * Solid for `weft_sided_solid`: two pyramids base to base (2n triangles).
+ */
+#define WEFT_SIDED_DIPYRAMID 3
+
+/**
  * Major version of the library this header belongs to.
  */
 #define WEFT_VERSION_MAJOR 0
@@ -130,6 +176,13 @@ typedef uint32_t WeftStatus;
 #endif // __cplusplus
 
 /**
+ * Voronoi cells made by `weft_voronoi`: one polygon per input point, an
+ * empty one for a point outside the boundary or repeating an earlier point.
+ * Free it with `weft_cells_free`.
+ */
+typedef struct WeftCells WeftCells;
+
+/**
  * An immutable polygon mesh owned by Weft. Create it with `weft_mesh_new`
  * or receive it from an operation; free it with `weft_mesh_free`.
  */
@@ -141,6 +194,27 @@ typedef struct WeftMesh WeftMesh;
  * thread-safe (calls on one refiner take turns).
  */
 typedef struct WeftRefiner WeftRefiner;
+
+/**
+ * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
+ * The axes need not be unit length or orthogonal (they are
+ * orthonormalised, keeping the x axis's direction); the normal, the front
+ * side, is `x_axis × y_axis`.
+ */
+typedef struct WeftPlane {
+  /**
+   * A point of the plane.
+   */
+  double origin[3];
+  /**
+   * The plane's x direction; must not be zero.
+   */
+  double x_axis[3];
+  /**
+   * The plane's y direction; must not be zero or parallel to `x_axis`.
+   */
+  double y_axis[3];
+} WeftPlane;
 
 /**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -191,6 +265,257 @@ typedef struct WeftMeshInfo {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Triangulates points by the Delaunay criterion of their projections onto
+ * a plane; the mesh's vertices are the original 3-D points, its triangles
+ * front-facing along the plane's normal.
+ *
+ * Points whose projections coincide are merged: the first is kept, so the
+ * mesh's vertices are the distinct points in input order.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0 (which then fails as too few points).
+ * `plane` may be NULL for the world XY plane.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`); it must not be NULL.
+ * `out_merged` receives the number of points merged into an earlier one;
+ * it may be NULL.
+ *
+ * Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
+ * all collinear points or a degenerate plane, and with
+ * WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
+ * coordinate.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `plane` is NULL or readable;
+ * `out_mesh` and a non-NULL `out_merged` are writable.
+ */
+WeftStatus weft_delaunay(const double *points, size_t point_count, const struct WeftPlane *plane, struct WeftMesh **out_mesh, size_t *out_merged);
+
+/**
+ * Computes the Voronoi cell of each point on a plane, clipped to a boundary
+ * polygon and, when `radius` is positive, to the 64-gon inscribed in the
+ * circle of that radius around the point.
+ *
+ * Cells lie in the plane, counter-clockwise seen from its normal, without
+ * a repeated closing corner. A point outside the boundary, or repeating an
+ * earlier point's projection, gets an empty cell (size 0). With a concave
+ * boundary, a cell that meets it in several pieces keeps the piece holding
+ * its point.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0.
+ * `plane` may be NULL for the world XY plane.
+ * `boundary` holds `3 * boundary_count` doubles, the corners of a simple
+ * polygon (convex or not, either winding), projected onto the plane; with
+ * `boundary_count` 0 (and `boundary` NULL or not) the boundary is the
+ * points' bounding rectangle on the plane grown by 10 % of its larger side
+ * on every side.
+ * `radius` 0 means no circle; otherwise it must be positive and finite.
+ * `out_cells` receives the cells on success (free them with
+ * `weft_cells_free`); it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
+ * corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
+ * crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
+ * for a degenerate plane or a boundary without area.
+ *
+ * # Safety
+ * Each non-NULL buffer holds the doubles stated; `plane` is NULL or
+ * readable; `out_cells` is writable.
+ */
+WeftStatus weft_voronoi(const double *points, size_t point_count, const struct WeftPlane *plane, const double *boundary, size_t boundary_count, double radius, struct WeftCells **out_cells);
+
+/**
+ * Returns the number of cells (the number of input points), or 0 when
+ * `cells` is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of all cells together, or 0 when `cells`
+ * is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_corner_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of each cell (`weft_cells_count` values,
+ * 0 for an empty cell), or NULL when `cells` is NULL or holds no cells.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const uint32_t *weft_cells_sizes(const struct WeftCells *cells);
+
+/**
+ * Returns the corners of all cells, one cell after another,
+ * `3 * weft_cells_corner_count` doubles, or NULL when `cells` is NULL or
+ * every cell is empty.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const double *weft_cells_corners(const struct WeftCells *cells);
+
+/**
+ * Copies the cells into caller buffers.
+ *
+ * `cells` must not be NULL.
+ * `out_sizes` must have room for `weft_cells_count` values
+ * (`sizes_capacity`).
+ * `out_corners` must have room for `3 * weft_cells_corner_count` doubles
+ * (`corners_capacity`). When either is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * Each buffer points to as many writable values as its capacity says (or
+ * is NULL with 0).
+ */
+WeftStatus weft_cells_copy(const struct WeftCells *cells, uint32_t *out_sizes, size_t sizes_capacity, double *out_corners, size_t corners_capacity);
+
+/**
+ * Makes a mesh with one n-gon face per non-empty cell, in cell order; the
+ * cells share no vertices (weld the mesh to join them).
+ *
+ * `cells` and `out_mesh` must not be NULL; the new mesh is written on
+ * success only (free it with `weft_mesh_free`).
+ *
+ * # Safety
+ * `cells` is a live handle; `out_mesh` is writable.
+ */
+WeftStatus weft_cells_to_mesh(const struct WeftCells *cells, struct WeftMesh **out_mesh);
+
+/**
+ * Frees cells made by `weft_voronoi`. NULL is ignored.
+ *
+ * # Safety
+ * `cells` is NULL or a handle from this library not yet freed; after the
+ * call it and every pointer obtained from it are invalid.
+ */
+void weft_cells_free(struct WeftCells *cells);
+
+/**
+ * Connects a `u_count × v_count` grid of points (a sampled surface) into a
+ * quad mesh, or triangles.
+ *
+ * Point `(u, v)` is at `points[3 * (v * u_count + u)]`: u runs fastest.
+ * The quad at `(u, v)` runs `(u, v), (u+1, v), (u+1, v+1), (u, v+1)`, so
+ * faces front the side `∂/∂u × ∂/∂v` points to; faces come row by row.
+ *
+ * `points` holds `3 * point_count` doubles and `point_count` must equal
+ * `u_count * v_count`, each count at least 2.
+ * `closed_u` / `closed_v` wrap that direction around: the last point of a
+ * row connects to the first, which is not repeated (at least 3 points
+ * needed in a closed direction).
+ * `triangulate` splits each quad along its shorter diagonal.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
+ * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `out_mesh` is writable.
+ */
+WeftStatus weft_mesh_from_grid(const double *points, size_t point_count, size_t u_count, size_t v_count, bool closed_u, bool closed_v, bool triangulate, struct WeftMesh **out_mesh);
+
+/**
+ * Raises a pyramid on every face: a new vertex at the face's centroid moved
+ * along its normal by the face's height, and a fan of triangles.
+ *
+ * Output order: the input's vertices, then one apex per face (face f's is
+ * vertex `vertex_count + f`); face f's fan of triangles is contiguous.
+ *
+ * `mesh` must not be NULL.
+ * `heights` holds `height_count` doubles: 1 for one height for every face,
+ * or one per face; negative heights point into the face's back side.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `height_count` is neither 1
+ * nor the face count (naming both), or naming the face whose height is not
+ * finite.
+ *
+ * # Safety
+ * `mesh` is a live handle; `heights` holds `height_count` doubles;
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_stellate(const struct WeftMesh *mesh, const double *heights, size_t height_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
+ * the origin and facing +z, of `u_count × v_count` quads.
+ *
+ * Sizes must be positive and finite, counts at least 1.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_plane_grid(double size_x, double size_y, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a closed, welded box centred on the origin whose sides are divided
+ * into quads: `u_count` along x, `v_count` along y, `w_count` along z.
+ *
+ * Sizes must be positive and finite, counts at least 1.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_box(double size_x, double size_y, double size_z, size_t u_count, size_t v_count, size_t w_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a sphere of `radius` centred on the origin with `u_count` segments
+ * around the z axis (at least 3) and `v_count` from pole to pole (at least
+ * 2); each pole is one vertex with a fan of triangles, the rest are quads.
+ *
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_uv_sphere(double radius, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a platonic solid centred on the origin with its vertices on the
+ * sphere of `radius`.
+ *
+ * `kind` is one of the WEFT_PLATONIC_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `radius` must be positive and finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
+ * circumradius `radius` about the z axis, `height` tall and centred on the
+ * origin.
+ *
+ * `kind` is one of the WEFT_SIDED_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `sides` is n, at least 3; `radius` and `height` must be positive and
+ * finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
 
 /**
  * Returns the library's version as a string such as "0.1.0".

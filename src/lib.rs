@@ -9,7 +9,7 @@
 //!   refiner that re-evaluates new positions on a fixed topology.
 //! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
 //!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
-//! - Making: [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
+//! - Making: [`plane`], [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
 //! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
 //!   checks; the geometry knows nothing of it.
@@ -33,6 +33,8 @@ pub mod io;
 pub mod mesh;
 /// cbindgen:ignore
 pub mod orient;
+/// cbindgen:ignore
+pub mod plane;
 /// cbindgen:ignore
 pub mod primitives;
 /// cbindgen:ignore
