@@ -9,6 +9,7 @@ pub mod make;
 pub mod mend;
 pub mod mesh;
 pub mod subdivide;
+pub mod toolbar;
 
 pub use boundary::WeftStatus;
 pub use mesh::{WeftMesh, WeftMeshInfo};
