@@ -413,3 +413,70 @@ fn mesh_from_lines_of_a_grid() {
     let err = mesh_from_lines(&bad, 0.0, 4).unwrap_err();
     assert!(err.to_string().contains("segment 0"));
 }
+
+/// Every operation on every named shape, non-manifold and non-orientable
+/// ones included: a valid mesh or a named error, never a panic.
+#[test]
+fn every_operation_survives_every_named_shape() {
+    let named = [
+        shapes::cube(),
+        shapes::tetrahedron(),
+        shapes::icosahedron(),
+        shapes::torus(6, 4),
+        shapes::triangle_torus(5, 4),
+        shapes::quad_grid(3, 2),
+        shapes::triangle_grid(2, 2),
+        shapes::quad_grid_with_hole(),
+        shapes::triangle_grid_with_hole(),
+        shapes::mixed_polygons(),
+        shapes::fin(),
+        shapes::bow_tie(),
+        shapes::mobius_strip(8),
+        Mesh::empty(),
+    ];
+    let valid = |m: Mesh| {
+        let (p, s, i) = m.into_parts();
+        Mesh::new(p, s, i).expect("a valid result");
+    };
+    for mesh in &named {
+        for level in 0..3 {
+            valid(split_polygons(mesh, level).unwrap());
+            valid(constant_quads_split(mesh, level).unwrap());
+            valid(midedge(mesh, level).unwrap());
+            valid(inner_polygons(mesh, level, 0.3).unwrap());
+            valid(sierpinski_triangles(mesh, level).unwrap());
+            if mesh.is_triangle_mesh() {
+                valid(split_triangles(mesh, level).unwrap());
+            }
+            if mesh.is_quad_mesh() {
+                valid(sierpinski_carpet(mesh, level).unwrap());
+            }
+        }
+        for naked in [
+            NakedEdges::Fixed,
+            NakedEdges::Smooth,
+            NakedEdges::CornerFixed,
+        ] {
+            valid(laplacian(mesh, 3, 0.5, naked).unwrap());
+            valid(laplacian_hc(mesh, 3, 0.1, 0.6, naked).unwrap());
+        }
+        for kind in [
+            OffsetType::Diagonal,
+            OffsetType::HypotenuseAverage,
+            OffsetType::PlanesIntersection,
+        ] {
+            valid(offset(mesh, 0.1, kind).unwrap());
+            valid(thicken(mesh, -0.1, kind).unwrap());
+        }
+        for mode in [InsetMode::EdgeFraction, InsetMode::Parallelogram] {
+            valid(window(mesh, &[0.1], mode).unwrap());
+            valid(picture_frame(mesh, &[0.1], mode).unwrap());
+        }
+        valid(bevel_edges(mesh, 0.2).unwrap());
+        valid(bevel_vertices(mesh, 0.2).unwrap());
+        valid(dual(mesh, DualMode::KeepSize).unwrap());
+        valid(reroute_faces(mesh, 2));
+        let lines = edge_segments(mesh);
+        valid(mesh_from_lines(&lines, 1e-9, 8).unwrap());
+    }
+}

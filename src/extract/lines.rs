@@ -254,3 +254,45 @@ fn best_fit_normal(points: &[DVec3], around: &[Vec<u32>]) -> DVec3 {
         n
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn weld_joins_close_ends_and_drops_collapsed_segments() {
+        let segments = [
+            [DVec3::ZERO, DVec3::X],
+            [DVec3::X + DVec3::splat(1e-4), DVec3::Y],
+            [DVec3::Y, DVec3::Y * (1.0 + 1e-4)],
+        ];
+        let (points, edges) = weld(&segments, 1e-3);
+        assert_eq!(points.len(), 3);
+        assert_eq!(edges, [[0, 1], [1, 2]]);
+        let (points, _) = weld(&segments, 0.0);
+        assert_eq!(points.len(), 5); // only the two identical ends of Y weld
+    }
+
+    #[test]
+    fn prune_removes_dangling_chains() {
+        // A triangle 0-1-2 with a tail 2-3-4.
+        let around = prune(5, &[[0, 1], [1, 2], [0, 2], [2, 3], [3, 4]]);
+        assert!(around[3].is_empty() && around[4].is_empty());
+        assert_eq!(around[2].len(), 2);
+    }
+
+    #[test]
+    fn a_square_with_a_diagonal_gives_two_triangles() {
+        let p = [DVec3::ZERO, DVec3::X, DVec3::new(1.0, 1.0, 0.0), DVec3::Y];
+        let segments = [
+            [p[0], p[1]],
+            [p[1], p[2]],
+            [p[2], p[3]],
+            [p[3], p[0]],
+            [p[0], p[2]],
+        ];
+        let mesh = mesh_from_lines(&segments, 0.0, 4).unwrap();
+        assert_eq!((mesh.vertex_count(), mesh.face_count()), (4, 2));
+        assert!(mesh.is_triangle_mesh());
+    }
+}

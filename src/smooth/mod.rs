@@ -120,3 +120,38 @@ pub(crate) fn check_unit(name: &str, value: f64) -> Result<()> {
     }
     Ok(())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+
+    #[test]
+    fn neighbours_follow_the_naked_edge_mode() {
+        // 2 × 2 grid: vertex 4 is inside, 1 on a side, 0 a corner.
+        let grid = shapes::quad_grid(2, 2);
+        let sorted = |n: &Neighbours, v: usize| {
+            let mut list = n.of(v).to_vec();
+            list.sort_unstable();
+            list
+        };
+        let fixed = Neighbours::new(&grid, NakedEdges::Fixed);
+        assert_eq!(sorted(&fixed, 4), [1, 3, 5, 7]);
+        assert!(fixed.of(1).is_empty() && fixed.of(0).is_empty());
+        let smooth = Neighbours::new(&grid, NakedEdges::Smooth);
+        assert_eq!(sorted(&smooth, 1), [0, 2]);
+        assert_eq!(sorted(&smooth, 0), [1, 3]);
+        let corner = Neighbours::new(&grid, NakedEdges::CornerFixed);
+        assert_eq!(sorted(&corner, 1), [0, 2]);
+        assert!(corner.of(0).is_empty());
+        // A fin's shared edge pins its two vertices.
+        let fin = shapes::fin();
+        let n = Neighbours::new(&fin, NakedEdges::Smooth);
+        let topology = Topology::new(&fin);
+        for e in topology.non_manifold_edges() {
+            for v in topology.edges()[e as usize] {
+                assert!(n.of(v as usize).is_empty());
+            }
+        }
+    }
+}

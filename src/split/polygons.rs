@@ -56,3 +56,21 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
     }
     Ok(out.finish())
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+
+    #[test]
+    fn children_start_at_their_corner() {
+        let square = shapes::quad_grid(1, 1);
+        let split = split_polygons(&square, 1).unwrap();
+        // Vertices 0..4, midpoints 4..8 (edges sorted), centroid 8.
+        assert_eq!(split.positions()[8], glam::DVec3::new(0.5, 0.5, 0.0));
+        for (k, face) in split.faces().enumerate() {
+            assert_eq!(face[0], square.face(0)[k]);
+            assert_eq!(face[2], 8);
+        }
+    }
+}
