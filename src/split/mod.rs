@@ -33,6 +33,8 @@ pub use polygons::split_polygons;
 pub use sierpinski::sierpinski_triangles;
 pub use triangles::split_triangles;
 
+use glam::DVec3;
+
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 
@@ -71,5 +73,3 @@ pub(crate) fn edge_midpoint(mesh: &Mesh, edge: [u32; 2]) -> DVec3 {
     let p = mesh.positions();
     (p[edge[0] as usize] + p[edge[1] as usize]) * 0.5
 }
-
-use glam::DVec3;
