@@ -95,6 +95,60 @@
 #define WEFT_SCHEME_LOOP 1
 
 /**
+ * Naked-edge mode of the smoothing exports: boundary vertices stay.
+ */
+#define WEFT_SMOOTH_NAKED_FIXED 0
+
+/**
+ * Naked-edge mode of the smoothing exports: boundary vertices move along
+ * the boundary, averaged with their boundary neighbours only.
+ */
+#define WEFT_SMOOTH_NAKED_SMOOTH 1
+
+/**
+ * Naked-edge mode of the smoothing exports: as SMOOTH, but a boundary
+ * vertex with a single face (a corner) stays.
+ */
+#define WEFT_SMOOTH_NAKED_CORNER_FIXED 2
+
+/**
+ * Offset type: each vertex moves by the distance along its vertex normal.
+ */
+#define WEFT_OFFSET_DIAGONAL 0
+
+/**
+ * Offset type: along the vertex normal by the average of distance / cos of
+ * the angle to each face normal.
+ */
+#define WEFT_OFFSET_HYPOTENUSE_AVERAGE 1
+
+/**
+ * Offset type: to where the moved face planes meet (least squares for more
+ * than three faces).
+ */
+#define WEFT_OFFSET_PLANES_INTERSECTION 2
+
+/**
+ * Inset mode: the distance is a share of the edges, in [0, 0.5).
+ */
+#define WEFT_INSET_EDGE_FRACTION 0
+
+/**
+ * Inset mode: the distance is a width in model units (parallelogram rule).
+ */
+#define WEFT_INSET_PARALLELOGRAM 1
+
+/**
+ * Dual mode: a vertex at each face's centroid.
+ */
+#define WEFT_DUAL_VERTEX_AVERAGE 0
+
+/**
+ * Dual mode: as VERTEX_AVERAGE, scaled to the input's bounding box size.
+ */
+#define WEFT_DUAL_KEEP_SIZE 1
+
+/**
  * The outcome of every Weft function. The values are stable: new ones are
  * only ever added at the end.
  */
@@ -834,6 +888,419 @@ WeftStatus weft_subdivision_parent_faces(const struct WeftMesh *cage, uint32_t s
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
  */
 WeftStatus weft_triangulate(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each n-gon into n quads through its edge midpoints and centroid,
+ * `levels` times, without smoothing (Weaverbird's Split Polygons: the
+ * topology of Catmull-Clark, the surface unchanged, the result welded).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20; 0 returns a copy.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE when the result would pass the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_split_polygons(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each triangle into four through its edge midpoints, `levels`
+ * times, without smoothing (Weaverbird's Split Triangles).
+ *
+ * `mesh` is the input, a triangle mesh; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NOT_TRIANGLES naming the first other face,
+ * WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_split_triangles(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each quad into four quads, each triangle into four triangles and
+ * each larger polygon into quads around its centroid, `levels` times,
+ * without smoothing (Weaverbird's Constant Quads Split).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_constant_quads_split(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * The mid-edge subdivision (Peters and Reif), `levels` times: a face of
+ * edge midpoints per face and per vertex; boundary vertices are kept so an
+ * open mesh keeps its outline.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_midedge(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Gives each face an inner face, its corners pulled towards its centroid,
+ * joined to it by one quad per edge, `levels` times (Weaverbird's Inner
+ * Polygons).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `pull` is how far the inner corners move towards the centroid, strictly
+ * between 0 and 1 (0.5 is halfway).
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a `pull` out of range or
+ * more than 20 levels, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_inner_polygons(const struct WeftMesh *mesh, uint32_t levels, double pull, struct WeftMesh **out_mesh);
+
+/**
+ * Places a triangle in each corner of each face and leaves the middle
+ * open, `levels` times (Weaverbird's Sierpinski Triangles): one new hole
+ * per face and level.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_sierpinski_triangles(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Laplacian smoothing: each iteration moves every vertex `blend` of the
+ * way towards the average of its neighbours (Weaverbird's Laplacian
+ * Smoothing). The faces do not change.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `blend` is in [0, 1]: 1 jumps to the average, 0 does nothing.
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_laplacian_smooth(const struct WeftMesh *mesh, uint32_t iterations, double blend, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Volume-preserving Laplacian smoothing, the HC algorithm of Vollmer,
+ * Mann and Müller (1999): each iteration averages, then pushes every
+ * vertex back by `beta` of its own displacement and `1 - beta` of its
+ * neighbours' (Weaverbird's LaplacianHC).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `alpha` is in [0, 1]: how much the push-back aims at the original
+ * positions rather than the previous iteration's (0 is usual).
+ * `beta` is in [0, 1]: the share of a vertex's own displacement undone
+ * (above 0.5 is recommended; 0.6 is a good start).
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_laplacian_hc_smooth(const struct WeftMesh *mesh, uint32_t iterations, double alpha, double beta, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Blurs a per-vertex value (a colour, a weight) over the mesh: each
+ * iteration moves every vertex's value `blend` of the way towards the
+ * average of its neighbours' (Weaverbird's Blur). The mesh is unchanged.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `values` holds `value_count` doubles, `components` per vertex, vertex
+ * after vertex; `value_count` must be `components * vertex_count`. It may
+ * be NULL only when `value_count` is 0.
+ * `components` is the number of values per vertex (3 or 4 for a colour),
+ * at least 1.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `blend` is in [0, 1].
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_values` receives the blurred values in the same layout; it must
+ * have room for `value_count` doubles (`out_len`), may be the same buffer
+ * as `values`, and is written only on success.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a wrong value count (naming
+ * both numbers) or an argument out of range, WEFT_STATUS_BUFFER_TOO_SMALL
+ * when `out_len` is below `value_count`.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; each non-NULL buffer holds the number
+ * of elements stated.
+ */
+WeftStatus weft_blur_values(const struct WeftMesh *mesh, const double *values, size_t value_count, size_t components, uint32_t iterations, double blend, uint32_t naked_edges, double *out_values, size_t out_len);
+
+/**
+ * Moves every vertex by `distance` along the surface normal (positive:
+ * towards the front); the faces are kept (Weaverbird's Offset Mesh).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distance` is the offset, finite, in model units.
+ * `offset_type` is one of the WEFT_OFFSET_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite distance or an
+ * unknown offset type.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_offset_mesh(const struct WeftMesh *mesh, double distance, uint32_t offset_type, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a solid of a surface: the input, its offset by `distance`, and a
+ * quad along every naked edge joining them, wound to face outwards
+ * (Weaverbird's Mesh Thicken). Vertex `v`'s offset is vertex
+ * `vertex_count + v`.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distance` is the thickness, finite, in model units (its sign says on
+ * which side the offset lies).
+ * `offset_type` is one of the WEFT_OFFSET_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite distance or an
+ * unknown offset type, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_thicken_mesh(const struct WeftMesh *mesh, double distance, uint32_t offset_type, struct WeftMesh **out_mesh);
+
+/**
+ * Insets each face and keeps both the frame of quads and the inner face
+ * (Weaverbird's Mesh Window).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distances` holds `distance_count` values: 1 for every face, or one per
+ * face; it must not be NULL.
+ * `inset_mode` is one of the WEFT_INSET_* values: with EDGE_FRACTION the
+ * distances are shares of the edges in [0, 0.5), with PARALLELOGRAM
+ * widths in model units, at least 0.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `distance_count` is neither
+ * 1 nor the face count (naming both), or a distance is out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `distances` holds `distance_count`
+ * doubles; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_mesh_window(const struct WeftMesh *mesh, const double *distances, size_t distance_count, uint32_t inset_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Insets each face and keeps only the frame of quads: each face becomes a
+ * ring around a new hole (Weaverbird's Picture Frame).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distances` holds `distance_count` values: 1 for every face, or one per
+ * face; it must not be NULL.
+ * `inset_mode` is one of the WEFT_INSET_* values, as for
+ * `weft_mesh_window`.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `distance_count` is neither
+ * 1 nor the face count (naming both), or a distance is out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `distances` holds `distance_count`
+ * doubles; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_picture_frame(const struct WeftMesh *mesh, const double *distances, size_t distance_count, uint32_t inset_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Cuts each quad into 3 × 3 quads and removes the middle one, `levels`
+ * times (Weaverbird's Sierpinski Carpet).
+ *
+ * `mesh` is the input, a quad mesh; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the first face that is
+ * not a quad or for more than 20 levels, WEFT_STATUS_RESULT_TOO_LARGE past
+ * the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_sierpinski_carpet(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Bevels every edge: faces shrink towards their centroids by `fraction`,
+ * each edge between two faces becomes a quad and each interior vertex a
+ * face (Conway's expansion: a cube gives a rhombicuboctahedron).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fraction` is strictly between 0 and 1.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a fraction out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_bevel_edges(const struct WeftMesh *mesh, double fraction, struct WeftMesh **out_mesh);
+
+/**
+ * Cuts every vertex off at `fraction` of each edge's length, adding a face
+ * per vertex (Conway's truncation: a cube gives 6 octagons and 8
+ * triangles); boundary vertices are kept so the outline stays.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fraction` is strictly between 0 and 0.5.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a fraction out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_bevel_vertices(const struct WeftMesh *mesh, double fraction, struct WeftMesh **out_mesh);
+
+/**
+ * The dual mesh: a vertex per face, a face per interior vertex joining
+ * the faces around it (Weaverbird's Dual). Vertices on naked or
+ * non-manifold edges get no face.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `dual_mode` is one of the WEFT_DUAL_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown mode.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_dual(const struct WeftMesh *mesh, uint32_t dual_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Counts the unique edges of a mesh, to size the buffers of
+ * `weft_mesh_copy_edges` and `weft_mesh_copy_edge_segments`.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_count` receives the number of edges on success; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_count` is NULL or writable.
+ */
+WeftStatus weft_mesh_edge_count(const struct WeftMesh *mesh, size_t *out_count);
+
+/**
+ * Copies the unique edges as vertex index pairs `(low, high)`, sorted
+ * (Weaverbird's Mesh Edges, as indices).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_pairs` receives `2 * edge_count` indices; `out_len` is its room.
+ * A buffer that is too small is an error and is not written.
+ *
+ * Fails with WEFT_STATUS_BUFFER_TOO_SMALL naming the room needed.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_pairs` is NULL or has room for
+ * `out_len` values.
+ */
+WeftStatus weft_mesh_copy_edges(const struct WeftMesh *mesh, uint32_t *out_pairs, size_t out_len);
+
+/**
+ * Copies the unique edges as line segments, six doubles each (start x, y,
+ * z, end x, y, z), in the order of `weft_mesh_copy_edges` (Weaverbird's
+ * Mesh Edges).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_segments` receives `6 * edge_count` doubles; `out_len` is its room.
+ * A buffer that is too small is an error and is not written.
+ *
+ * Fails with WEFT_STATUS_BUFFER_TOO_SMALL naming the room needed.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_segments` is NULL or has room for
+ * `out_len` values.
+ */
+WeftStatus weft_mesh_copy_edge_segments(const struct WeftMesh *mesh, double *out_segments, size_t out_len);
+
+/**
+ * Rotates every face's corner list so it starts `shift` corners later
+ * (`[a, b, c, d]` by 1 is `[b, c, d, a]`; negative goes back); the
+ * winding and vertices are unchanged (Weaverbird's Reroute Faces).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `shift` is any number of corners; it wraps around each face.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_reroute_faces(const struct WeftMesh *mesh, int64_t shift, struct WeftMesh **out_mesh);
+
+/**
+ * Builds the faces a set of line segments encloses (Weaverbird's Mesh From
+ * Lines): endpoints within `tolerance` are welded, dangling segments
+ * ignored, and the smallest cycles of the segments, seen in their
+ * best-fit plane, become faces wound about its normal.
+ *
+ * `segments` holds `segment_count` segments of six doubles each (start x,
+ * y, z, end x, y, z); it may be NULL only when `segment_count` is 0.
+ * `tolerance` is the welding distance, finite and at least 0.
+ * `max_valence` is the largest face size kept, at least 3.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite coordinate
+ * (naming the segment), a bad tolerance or a `max_valence` below 3.
+ *
+ * # Safety
+ * `segments` is NULL or holds `6 * segment_count` doubles; `out_mesh` is
+ * NULL or writable.
+ */
+WeftStatus weft_mesh_from_lines(const double *segments, size_t segment_count, double tolerance, uint32_t max_valence, struct WeftMesh **out_mesh);
 
 #ifdef __cplusplus
 }  // extern "C"

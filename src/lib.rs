@@ -10,6 +10,9 @@
 //! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
 //!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
 //! - Making: [`plane`], [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
+//! - The rest of Weaverbird's toolbar: [`split`] (linear subdivisions),
+//!   [`smooth`], [`transform`] (offset, thicken, window, bevel) and
+//!   [`extract`] (dual, edges, reroute, mesh from lines).
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
 //! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
 //!   checks; the geometry knows nothing of it.
@@ -26,6 +29,8 @@ pub mod delaunay;
 /// cbindgen:ignore
 pub mod error;
 /// cbindgen:ignore
+pub mod extract;
+/// cbindgen:ignore
 pub mod grid;
 /// cbindgen:ignore
 pub mod io;
@@ -40,11 +45,17 @@ pub mod primitives;
 /// cbindgen:ignore
 pub mod shapes;
 /// cbindgen:ignore
+pub mod smooth;
+/// cbindgen:ignore
+pub mod split;
+/// cbindgen:ignore
 pub mod stellate;
 /// cbindgen:ignore
 pub mod subdivide;
 /// cbindgen:ignore
 pub mod topology;
+/// cbindgen:ignore
+pub mod transform;
 /// cbindgen:ignore
 pub mod triangulate;
 /// cbindgen:ignore
