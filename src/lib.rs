@@ -7,7 +7,7 @@
 //!   orientability. [`shapes`]: named shapes built in code.
 //! - [`subdivide`]: Catmull-Clark and Loop with the naked-edge modes, and the
 //!   refiner that re-evaluates new positions on a fixed topology.
-//! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
+//! - Mending: [`weld`] (join, weld), [`t_nodes`], [`cull`], [`orient`],
 //!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
 //! - Making: [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
@@ -41,6 +41,8 @@ pub mod shapes;
 pub mod stellate;
 /// cbindgen:ignore
 pub mod subdivide;
+/// cbindgen:ignore
+pub mod t_nodes;
 /// cbindgen:ignore
 pub mod topology;
 /// cbindgen:ignore
