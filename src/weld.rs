@@ -13,6 +13,7 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use glam::DVec3;
+use rayon::slice::ParallelSliceMut;
 
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
@@ -210,20 +211,16 @@ pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
+    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
+    entries.extend(
+        positions
+            .iter()
+            .enumerate()
+            .map(|(v, &p)| (grid.cell(p), v as u32)),
+    );
+    entries.par_sort_unstable();
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
-    order.extend(0..positions.len() as u32);
-    let keys: Vec<Cell> = positions.iter().map(|&p| grid.cell(p)).collect();
-    // By cell, then by exact position, then by index: exact duplicates become
-    // neighbours in the order, with their lowest index first.
-    order.sort_unstable_by(|&a, &b| {
-        let (pa, pb) = (positions[a as usize], positions[b as usize]);
-        keys[a as usize]
-            .cmp(&keys[b as usize])
-            .then(pa.x.total_cmp(&pb.x))
-            .then(pa.y.total_cmp(&pb.y))
-            .then(pa.z.total_cmp(&pb.z))
-            .then(a.cmp(&b))
-    });
+    order.extend(entries.iter().map(|&(_, v)| v));
 
     let mut clusters = UnionFind::new(positions.len());
     // Distinct positions ("sites"), each standing for its exact duplicates.
@@ -231,21 +228,34 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     // Sites of each occupied cell: cell_sites[cell_starts[k]..cell_starts[k + 1]].
     let mut cell_keys: Vec<Cell> = Vec::new();
     let mut cell_starts: Vec<u32> = Vec::new();
-    for &v in &order {
-        let p = positions[v as usize];
-        match sites.last() {
-            Some(&site) if positions[site as usize] == p => {
-                clusters.union(site, v);
-                continue;
+    let mut start = 0;
+    while start < entries.len() {
+        let key = entries[start].0;
+        let end = start + entries[start..].partition_point(|e| e.0 == key);
+        // Within the cell by exact position, then index: duplicates become
+        // neighbours with their lowest index first.
+        let group = &mut order[start..end];
+        if group.len() > 1 {
+            group.sort_unstable_by(|&a, &b| {
+                let (pa, pb) = (positions[a as usize], positions[b as usize]);
+                pa.x.total_cmp(&pb.x)
+                    .then(pa.y.total_cmp(&pb.y))
+                    .then(pa.z.total_cmp(&pb.z))
+                    .then(a.cmp(&b))
+            });
+        }
+        cell_keys.push(key);
+        cell_starts.push(sites.len() as u32);
+        let first_site = sites.len();
+        for &v in group.iter() {
+            match sites[first_site..].last() {
+                Some(&site) if positions[site as usize] == positions[v as usize] => {
+                    clusters.union(site, v);
+                }
+                _ => sites.push(v),
             }
-            _ => {}
         }
-        let key = keys[v as usize];
-        if cell_keys.last() != Some(&key) {
-            cell_keys.push(key);
-            cell_starts.push(sites.len() as u32);
-        }
-        sites.push(v);
+        start = end;
     }
     cell_starts.push(sites.len() as u32);
     if tolerance == 0.0 {

@@ -302,3 +302,23 @@ fn t_nodes_between_grids_of_4x4_and_4x7_quads_are_found_and_repaired() {
         .unwrap()
         .is_empty());
 }
+
+#[test]
+fn empty_and_faceless_meshes_pass_through_every_operation() {
+    let lone_points = Mesh::new(vec![DVec3::ZERO, DVec3::ZERO], vec![], vec![]).unwrap();
+    for mesh in [Mesh::empty(), lone_points] {
+        let (welded, report) = weld(&mesh, DEFAULT_WELD_TOLERANCE).unwrap();
+        assert_eq!(welded, Mesh::empty());
+        assert_eq!(
+            report.merged_vertex_count + report.unused_vertex_count,
+            mesh.vertex_count()
+        );
+        assert_eq!(cull_adjacent(&mesh), (mesh.clone(), 0));
+        assert_eq!(unify_orientation(&mesh), (mesh.clone(), 0));
+        assert!(find_t_nodes(&mesh, 0.0).unwrap().is_empty());
+        assert!(naked_boundaries(&mesh).is_empty());
+        assert!(planarity_deviations(&mesh).is_empty());
+        assert!(is_planar(&mesh, 0.0).unwrap());
+        assert!(is_orientable(&mesh));
+    }
+}
