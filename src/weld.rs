@@ -1,6 +1,6 @@
 //! Join meshes and weld their vertices.
 //!
-//! [`join`] concatenates meshes; [`weld`] merges vertices that lie within a
+//! [`join`](crate::weld::join) concatenates meshes; [`weld`](crate::weld::weld) merges vertices that lie within a
 //! tolerance of each other, in transitive clusters found through a spatial
 //! hash (cells as wide as the tolerance, each vertex compared only with the
 //! 27 cells around its own), so a million vertices weld in a fraction of a
