@@ -3,9 +3,11 @@
 //! Two surface meshes with different U/V counts meet along a seam where the
 //! vertices of one fall between the vertices of the other. Welding cannot
 //! join them (no two vertices coincide); the seam stays open and subdivision
-//! pulls it apart. [`find_t_nodes`](crate::t_nodes::find_t_nodes) reports each such vertex with the edge
-//! and the parameter along it; [`repair_t_nodes`](crate::t_nodes::repair_t_nodes) inserts the vertex into
-//! that edge, so the face becomes an n-gon and both sides share every seam edge.
+//! pulls it apart. [`find_t_nodes`](crate::t_nodes::find_t_nodes) reports
+//! each such vertex with the edge and the parameter along it;
+//! [`repair_t_nodes`](crate::t_nodes::repair_t_nodes) inserts the vertex
+//! into that edge, so the face becomes an n-gon and both sides share every
+//! seam edge.
 //!
 //! The naked edges are registered in the cells of a uniform grid that they
 //! pass through (a 3-D digital differential analyser, Amanatides & Woo 1987),

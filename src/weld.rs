@@ -1,7 +1,8 @@
 //! Join meshes and weld their vertices.
 //!
-//! [`join`](crate::weld::join) concatenates meshes; [`weld`](crate::weld::weld) merges vertices that lie within a
-//! tolerance of each other, in transitive clusters found through a spatial
+//! [`join`](crate::weld::join) concatenates meshes;
+//! [`weld`](crate::weld::weld) merges vertices that lie within a tolerance
+//! of each other, in transitive clusters found through a spatial
 //! hash (cells as wide as the tolerance, each vertex compared only with the
 //! 27 cells around its own), so a million vertices weld in a fraction of a
 //! second and no pair of distant vertices is ever compared.
