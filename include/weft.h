@@ -55,6 +55,12 @@
 #define WEFT_SIDED_DIPYRAMID 3
 
 /**
+ * The weld tolerance to use when the host has none: 0.001 model units,
+ * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ */
+#define WEFT_DEFAULT_WELD_TOLERANCE 0.001
+
+/**
  * Major version of the library this header belongs to.
  */
 #define WEFT_VERSION_MAJOR 0
@@ -269,6 +275,52 @@ typedef struct WeftPlane {
    */
   double y_axis[3];
 } WeftPlane;
+
+/**
+ * What `weft_weld` changed.
+ */
+typedef struct WeftWeldReport {
+  /**
+   * Vertices that merged into another: the input's vertex count minus the
+   * number of clusters.
+   */
+  size_t merged_vertex_count;
+  /**
+   * Faces left with fewer than 3 distinct vertices, and so removed.
+   */
+  size_t removed_face_count;
+  /**
+   * Merged vertices that no remaining face uses, and so were left out.
+   */
+  size_t unused_vertex_count;
+} WeftWeldReport;
+
+/**
+ * A vertex lying inside a naked edge of a face it does not belong to.
+ */
+typedef struct WeftTNode {
+  /**
+   * The vertex that lies on the edge.
+   */
+  uint32_t vertex;
+  /**
+   * The edge's first vertex, in the direction the face runs it.
+   */
+  uint32_t edge_start;
+  /**
+   * The edge's second vertex.
+   */
+  uint32_t edge_end;
+  /**
+   * The face whose edge it is.
+   */
+  uint32_t face;
+  /**
+   * Where the vertex lies along the edge: 0 at `edge_start`, 1 at
+   * `edge_end`, always strictly between.
+   */
+  double parameter;
+} WeftTNode;
 
 /**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -570,6 +622,214 @@ WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mes
  * `out_mesh` is writable.
  */
 WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
+
+/**
+ * Joins meshes into one: the vertices of each follow those of the meshes
+ * before it and its face indices are offset to match; faces keep their order.
+ *
+ * `meshes` holds `count` mesh handles, none of them NULL; it may be NULL
+ * only when `count` is 0 (the result is then the empty mesh).
+ * `out_mesh` receives the joined mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * Fails with WEFT_STATUS_RESULT_TOO_LARGE when the joined vertex or index
+ * count passes 2^31 - 1, or WEFT_STATUS_NULL_POINTER naming a NULL element.
+ *
+ * # Safety
+ * `meshes` points to `count` readable handle pointers (or is NULL with 0),
+ * each a live handle or NULL.
+ */
+WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
+
+/**
+ * Welds vertices: every two vertices at most `tolerance` apart become one,
+ * transitively. The merged vertex keeps the position of its cluster's
+ * lowest-index vertex (seams stay where the surface put them, and welding
+ * twice changes nothing). Faces drop repeated corners (a quad with two
+ * merged corners becomes a triangle); faces left with fewer than 3 vertices
+ * are removed; vertices no face uses are left out.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is a distance in model units, finite and not negative; 0
+ * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
+ * most models.
+ * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_report` receives what changed; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_weld(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, struct WeftWeldReport *out_report);
+
+/**
+ * Finds the T-nodes: vertices on the naked boundary that lie within
+ * `tolerance` of the inside of another face's naked edge (and further than
+ * `tolerance` from its ends). They are sorted by face, then by the edge's
+ * place in the face, then by parameter.
+ *
+ * Call it first with `out_nodes` NULL to learn the count, then with a
+ * buffer of that many elements.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative (WEFT_DEFAULT_WELD_TOLERANCE suits
+ * most models).
+ * `out_nodes` receives the T-nodes; NULL asks for the count only. When it
+ * is not NULL and `capacity` is below the count the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `capacity` is the number of elements `out_nodes` has room for.
+ * `out_count` receives the number of T-nodes; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_nodes` is NULL or has room for `capacity`
+ * elements; `out_count` is writable.
+ */
+WeftStatus weft_find_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftTNode *out_nodes, size_t capacity, size_t *out_count);
+
+/**
+ * Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
+ * inserted into the edge it lies on (several on one edge in order), so
+ * the face becomes an n-gon and both sides share the seam. Positions do
+ * not change.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative.
+ * `out_mesh` receives the repaired mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_inserted` receives the number of vertices inserted; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_inserted` is NULL or writable.
+ */
+WeftStatus weft_repair_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, size_t *out_inserted);
+
+/**
+ * Removes every face that has a twin with the same vertices (in either
+ * orientation, from any corner): all copies go. These are the walls inside
+ * an aggregation of joined and welded boxes. Vertices are kept as they are.
+ *
+ * `mesh` must not be NULL; weld it first, as faces are compared by index.
+ * `out_mesh` receives the culled mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_removed` receives the number of faces removed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
+ * Gives every connected piece one consistent winding, flipping the fewest
+ * of its faces, then turns each closed orientable piece to face outward.
+ * A piece that cannot be oriented (a Möbius strip) is wound as consistently
+ * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_flipped` receives the number of faces reversed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
+ */
+WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * Reverses every face, keeping its first corner first ({a, b, c, d}
+ * becomes {a, d, c, b}), so that flipping twice gives the input back.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable.
+ */
+WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Computes the unit normal of each face by Newell's method (robust on
+ * non-planar polygons); a face of zero area gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per face and must have room for
+ * `3 * face_count` doubles; `capacity` is its length in doubles. When it is
+ * too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_face_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes the unit normal of each vertex: the face normals weighted by the
+ * face's angle at the vertex (unchanged when faces are split into
+ * triangles). A vertex no face uses gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per vertex and must have room for
+ * `3 * vertex_count` doubles; `capacity` is its length in doubles. When it
+ * is too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes
+ * nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_vertex_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes, per face, the largest distance of its corners from its
+ * best-fit (least-squares) plane; 0 for triangles. A face is planar within
+ * a tolerance when its value is at most the tolerance (the planar-quad
+ * mesh check).
+ *
+ * `mesh` must not be NULL.
+ * `out_deviations` receives one double per face and must have room for
+ * `face_count`; `capacity` is its length. When it is too small the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_deviations` has room for `capacity`
+ * doubles (or is NULL with 0).
+ */
+WeftStatus weft_planarity(const struct WeftMesh *mesh, double *out_deviations, size_t capacity);
+
+/**
+ * Chains the naked edges (edges with one face) into polylines. On a
+ * manifold mesh each border is one closed polyline running the way its
+ * faces run their edges; at a vertex with one or three or more naked edges
+ * polylines stop, and one that returns to its start is closed. A closed
+ * polyline does not repeat its first point at the end.
+ *
+ * Call it first with `out_points` NULL to learn the totals, then with
+ * buffers of those sizes. The polylines' points follow one another in
+ * `out_points`; polyline i has `out_point_counts[i]` of them.
+ *
+ * `mesh` must not be NULL.
+ * `out_points` receives x, y, z per point; NULL asks for the totals only.
+ * `points_capacity` is its length in doubles (3 per point).
+ * `out_point_counts` receives the number of points of each polyline; it
+ * must not be NULL when `out_points` is not.
+ * `out_closed` receives whether each polyline is closed; it may be NULL.
+ * `polylines_capacity` is the number of elements `out_point_counts` (and
+ * `out_closed`, when given) have room for.
+ * When a buffer is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `out_point_total` receives the number of points in all; must not be NULL.
+ * `out_polyline_count` receives the number of polylines; must not be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; each buffer is NULL or has room for its capacity.
+ */
+WeftStatus weft_naked_boundaries(const struct WeftMesh *mesh, double *out_points, size_t points_capacity, size_t *out_point_counts, bool *out_closed, size_t polylines_capacity, size_t *out_point_total, size_t *out_polyline_count);
 
 /**
  * Returns the library's version as a string such as "0.1.0".

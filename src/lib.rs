@@ -7,7 +7,7 @@
 //!   orientability. [`shapes`]: named shapes built in code.
 //! - [`subdivide`]: Catmull-Clark and Loop with the naked-edge modes, and the
 //!   refiner that re-evaluates new positions on a fixed topology.
-//! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
+//! - Mending: [`weld`] (join, weld), [`t_nodes`], [`cull`], [`orient`],
 //!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
 //! - Making: [`plane`], [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
 //! - The rest of Weaverbird's toolbar: [`split`] (linear subdivisions),
@@ -52,6 +52,8 @@ pub mod split;
 pub mod stellate;
 /// cbindgen:ignore
 pub mod subdivide;
+/// cbindgen:ignore
+pub mod t_nodes;
 /// cbindgen:ignore
 pub mod topology;
 /// cbindgen:ignore
