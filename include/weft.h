@@ -9,6 +9,58 @@
 
 
 /**
+ * Platonic solid for `weft_platonic`: the tetrahedron (4 triangles).
+ */
+#define WEFT_PLATONIC_TETRAHEDRON 0
+
+/**
+ * Platonic solid for `weft_platonic`: the cube (6 quads).
+ */
+#define WEFT_PLATONIC_HEXAHEDRON 1
+
+/**
+ * Platonic solid for `weft_platonic`: the octahedron (8 triangles).
+ */
+#define WEFT_PLATONIC_OCTAHEDRON 2
+
+/**
+ * Platonic solid for `weft_platonic`: the dodecahedron (12 pentagons).
+ */
+#define WEFT_PLATONIC_DODECAHEDRON 3
+
+/**
+ * Platonic solid for `weft_platonic`: the icosahedron (20 triangles).
+ */
+#define WEFT_PLATONIC_ICOSAHEDRON 4
+
+/**
+ * Solid for `weft_sided_solid`: two n-gons joined by n quads.
+ */
+#define WEFT_SIDED_PRISM 0
+
+/**
+ * Solid for `weft_sided_solid`: two n-gons, one turned by half a side,
+ * joined by 2n triangles.
+ */
+#define WEFT_SIDED_ANTIPRISM 1
+
+/**
+ * Solid for `weft_sided_solid`: an n-gon base and n triangles to the apex.
+ */
+#define WEFT_SIDED_PYRAMID 2
+
+/**
+ * Solid for `weft_sided_solid`: two pyramids base to base (2n triangles).
+ */
+#define WEFT_SIDED_DIPYRAMID 3
+
+/**
+ * The weld tolerance to use when the host has none: 0.001 model units,
+ * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ */
+#define WEFT_DEFAULT_WELD_TOLERANCE 0.001
+
+/**
  * Major version of the library this header belongs to.
  */
 #define WEFT_VERSION_MAJOR 0
@@ -47,6 +99,60 @@
  * Loop: triangles in, triangles out.
  */
 #define WEFT_SCHEME_LOOP 1
+
+/**
+ * Naked-edge mode of the smoothing exports: boundary vertices stay.
+ */
+#define WEFT_SMOOTH_NAKED_FIXED 0
+
+/**
+ * Naked-edge mode of the smoothing exports: boundary vertices move along
+ * the boundary, averaged with their boundary neighbours only.
+ */
+#define WEFT_SMOOTH_NAKED_SMOOTH 1
+
+/**
+ * Naked-edge mode of the smoothing exports: as SMOOTH, but a boundary
+ * vertex with a single face (a corner) stays.
+ */
+#define WEFT_SMOOTH_NAKED_CORNER_FIXED 2
+
+/**
+ * Offset type: each vertex moves by the distance along its vertex normal.
+ */
+#define WEFT_OFFSET_DIAGONAL 0
+
+/**
+ * Offset type: along the vertex normal by the average of distance / cos of
+ * the angle to each face normal.
+ */
+#define WEFT_OFFSET_HYPOTENUSE_AVERAGE 1
+
+/**
+ * Offset type: to where the moved face planes meet (least squares for more
+ * than three faces).
+ */
+#define WEFT_OFFSET_PLANES_INTERSECTION 2
+
+/**
+ * Inset mode: the distance is a share of the edges, in [0, 0.5).
+ */
+#define WEFT_INSET_EDGE_FRACTION 0
+
+/**
+ * Inset mode: the distance is a width in model units (parallelogram rule).
+ */
+#define WEFT_INSET_PARALLELOGRAM 1
+
+/**
+ * Dual mode: a vertex at each face's centroid.
+ */
+#define WEFT_DUAL_VERTEX_AVERAGE 0
+
+/**
+ * Dual mode: as VERTEX_AVERAGE, scaled to the input's bounding box size.
+ */
+#define WEFT_DUAL_KEEP_SIZE 1
 
 /**
  * The outcome of every Weft function. The values are stable: new ones are
@@ -130,6 +236,13 @@ typedef uint32_t WeftStatus;
 #endif // __cplusplus
 
 /**
+ * Voronoi cells made by `weft_voronoi`: one polygon per input point, an
+ * empty one for a point outside the boundary or repeating an earlier point.
+ * Free it with `weft_cells_free`.
+ */
+typedef struct WeftCells WeftCells;
+
+/**
  * An immutable polygon mesh owned by Weft. Create it with `weft_mesh_new`
  * or receive it from an operation; free it with `weft_mesh_free`.
  */
@@ -141,6 +254,73 @@ typedef struct WeftMesh WeftMesh;
  * thread-safe (calls on one refiner take turns).
  */
 typedef struct WeftRefiner WeftRefiner;
+
+/**
+ * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
+ * The axes need not be unit length or orthogonal (they are
+ * orthonormalised, keeping the x axis's direction); the normal, the front
+ * side, is `x_axis × y_axis`.
+ */
+typedef struct WeftPlane {
+  /**
+   * A point of the plane.
+   */
+  double origin[3];
+  /**
+   * The plane's x direction; must not be zero.
+   */
+  double x_axis[3];
+  /**
+   * The plane's y direction; must not be zero or parallel to `x_axis`.
+   */
+  double y_axis[3];
+} WeftPlane;
+
+/**
+ * What `weft_weld` changed.
+ */
+typedef struct WeftWeldReport {
+  /**
+   * Vertices that merged into another: the input's vertex count minus the
+   * number of clusters.
+   */
+  size_t merged_vertex_count;
+  /**
+   * Faces left with fewer than 3 distinct vertices, and so removed.
+   */
+  size_t removed_face_count;
+  /**
+   * Merged vertices that no remaining face uses, and so were left out.
+   */
+  size_t unused_vertex_count;
+} WeftWeldReport;
+
+/**
+ * A vertex lying inside a naked edge of a face it does not belong to.
+ */
+typedef struct WeftTNode {
+  /**
+   * The vertex that lies on the edge.
+   */
+  uint32_t vertex;
+  /**
+   * The edge's first vertex, in the direction the face runs it.
+   */
+  uint32_t edge_start;
+  /**
+   * The edge's second vertex.
+   */
+  uint32_t edge_end;
+  /**
+   * The face whose edge it is.
+   */
+  uint32_t face;
+  /**
+   * Where the vertex lies along the edge: 0 at `edge_start`, 1 at
+   * `edge_end`, always strictly between.
+   */
+  double parameter;
+} WeftTNode;
 
 /**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -191,6 +371,465 @@ typedef struct WeftMeshInfo {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Triangulates points by the Delaunay criterion of their projections onto
+ * a plane; the mesh's vertices are the original 3-D points, its triangles
+ * front-facing along the plane's normal.
+ *
+ * Points whose projections coincide are merged: the first is kept, so the
+ * mesh's vertices are the distinct points in input order.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0 (which then fails as too few points).
+ * `plane` may be NULL for the world XY plane.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`); it must not be NULL.
+ * `out_merged` receives the number of points merged into an earlier one;
+ * it may be NULL.
+ *
+ * Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
+ * all collinear points or a degenerate plane, and with
+ * WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
+ * coordinate.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `plane` is NULL or readable;
+ * `out_mesh` and a non-NULL `out_merged` are writable.
+ */
+WeftStatus weft_delaunay(const double *points, size_t point_count, const struct WeftPlane *plane, struct WeftMesh **out_mesh, size_t *out_merged);
+
+/**
+ * Computes the Voronoi cell of each point on a plane, clipped to a boundary
+ * polygon and, when `radius` is positive, to the 64-gon inscribed in the
+ * circle of that radius around the point.
+ *
+ * Cells lie in the plane, counter-clockwise seen from its normal, without
+ * a repeated closing corner. A point outside the boundary, or repeating an
+ * earlier point's projection, gets an empty cell (size 0). With a concave
+ * boundary, a cell that meets it in several pieces keeps the piece holding
+ * its point.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0.
+ * `plane` may be NULL for the world XY plane.
+ * `boundary` holds `3 * boundary_count` doubles, the corners of a simple
+ * polygon (convex or not, either winding), projected onto the plane; with
+ * `boundary_count` 0 (and `boundary` NULL or not) the boundary is the
+ * points' bounding rectangle on the plane grown by 10 % of its larger side
+ * on every side.
+ * `radius` 0 means no circle; otherwise it must be positive and finite.
+ * `out_cells` receives the cells on success (free them with
+ * `weft_cells_free`); it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
+ * corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
+ * crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
+ * for a degenerate plane or a boundary without area.
+ *
+ * # Safety
+ * Each non-NULL buffer holds the doubles stated; `plane` is NULL or
+ * readable; `out_cells` is writable.
+ */
+WeftStatus weft_voronoi(const double *points, size_t point_count, const struct WeftPlane *plane, const double *boundary, size_t boundary_count, double radius, struct WeftCells **out_cells);
+
+/**
+ * Returns the number of cells (the number of input points), or 0 when
+ * `cells` is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of all cells together, or 0 when `cells`
+ * is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_corner_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of each cell (`weft_cells_count` values,
+ * 0 for an empty cell), or NULL when `cells` is NULL or holds no cells.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const uint32_t *weft_cells_sizes(const struct WeftCells *cells);
+
+/**
+ * Returns the corners of all cells, one cell after another,
+ * `3 * weft_cells_corner_count` doubles, or NULL when `cells` is NULL or
+ * every cell is empty.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const double *weft_cells_corners(const struct WeftCells *cells);
+
+/**
+ * Copies the cells into caller buffers.
+ *
+ * `cells` must not be NULL.
+ * `out_sizes` must have room for `weft_cells_count` values
+ * (`sizes_capacity`).
+ * `out_corners` must have room for `3 * weft_cells_corner_count` doubles
+ * (`corners_capacity`). When either is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * Each buffer points to as many writable values as its capacity says (or
+ * is NULL with 0).
+ */
+WeftStatus weft_cells_copy(const struct WeftCells *cells, uint32_t *out_sizes, size_t sizes_capacity, double *out_corners, size_t corners_capacity);
+
+/**
+ * Makes a mesh with one n-gon face per non-empty cell, in cell order; the
+ * cells share no vertices (weld the mesh to join them).
+ *
+ * `cells` and `out_mesh` must not be NULL; the new mesh is written on
+ * success only (free it with `weft_mesh_free`).
+ *
+ * # Safety
+ * `cells` is a live handle; `out_mesh` is writable.
+ */
+WeftStatus weft_cells_to_mesh(const struct WeftCells *cells, struct WeftMesh **out_mesh);
+
+/**
+ * Frees cells made by `weft_voronoi`. NULL is ignored.
+ *
+ * # Safety
+ * `cells` is NULL or a handle from this library not yet freed; after the
+ * call it and every pointer obtained from it are invalid.
+ */
+void weft_cells_free(struct WeftCells *cells);
+
+/**
+ * Connects a `u_count × v_count` grid of points (a sampled surface) into a
+ * quad mesh, or triangles.
+ *
+ * Point `(u, v)` is at `points[3 * (v * u_count + u)]`: u runs fastest.
+ * The quad at `(u, v)` runs `(u, v), (u+1, v), (u+1, v+1), (u, v+1)`, so
+ * faces front the side `∂/∂u × ∂/∂v` points to; faces come row by row.
+ *
+ * `points` holds `3 * point_count` doubles and `point_count` must equal
+ * `u_count * v_count`, each count at least 2.
+ * `closed_u` / `closed_v` wrap that direction around: the last point of a
+ * row connects to the first, which is not repeated (at least 3 points
+ * needed in a closed direction).
+ * `triangulate` splits each quad along its shorter diagonal.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
+ * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `out_mesh` is writable.
+ */
+WeftStatus weft_mesh_from_grid(const double *points, size_t point_count, size_t u_count, size_t v_count, bool closed_u, bool closed_v, bool triangulate, struct WeftMesh **out_mesh);
+
+/**
+ * Raises a pyramid on every face: a new vertex at the face's centroid moved
+ * along its normal by the face's height, and a fan of triangles.
+ *
+ * Output order: the input's vertices, then one apex per face (face f's is
+ * vertex `vertex_count + f`); face f's fan of triangles is contiguous.
+ *
+ * `mesh` must not be NULL.
+ * `heights` holds `height_count` doubles: 1 for one height for every face,
+ * or one per face; negative heights point into the face's back side.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `height_count` is neither 1
+ * nor the face count (naming both), or naming the face whose height is not
+ * finite.
+ *
+ * # Safety
+ * `mesh` is a live handle; `heights` holds `height_count` doubles;
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_stellate(const struct WeftMesh *mesh, const double *heights, size_t height_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
+ * the origin and facing +z, of `u_count × v_count` quads.
+ *
+ * Sizes must be positive and finite, counts at least 1.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_plane_grid(double size_x, double size_y, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a closed, welded box centred on the origin whose sides are divided
+ * into quads: `u_count` along x, `v_count` along y, `w_count` along z.
+ *
+ * Sizes must be positive and finite, counts at least 1.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_box(double size_x, double size_y, double size_z, size_t u_count, size_t v_count, size_t w_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a sphere of `radius` centred on the origin with `u_count` segments
+ * around the z axis (at least 3) and `v_count` from pole to pole (at least
+ * 2); each pole is one vertex with a fan of triangles, the rest are quads.
+ *
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_uv_sphere(double radius, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a platonic solid centred on the origin with its vertices on the
+ * sphere of `radius`.
+ *
+ * `kind` is one of the WEFT_PLATONIC_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `radius` must be positive and finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
+ * circumradius `radius` about the z axis, `height` tall and centred on the
+ * origin.
+ *
+ * `kind` is one of the WEFT_SIDED_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `sides` is n, at least 3; `radius` and `height` must be positive and
+ * finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is writable.
+ */
+WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
+
+/**
+ * Joins meshes into one: the vertices of each follow those of the meshes
+ * before it and its face indices are offset to match; faces keep their order.
+ *
+ * `meshes` holds `count` mesh handles, none of them NULL; it may be NULL
+ * only when `count` is 0 (the result is then the empty mesh).
+ * `out_mesh` receives the joined mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * Fails with WEFT_STATUS_RESULT_TOO_LARGE when the joined vertex or index
+ * count passes 2^31 - 1, or WEFT_STATUS_NULL_POINTER naming a NULL element.
+ *
+ * # Safety
+ * `meshes` points to `count` readable handle pointers (or is NULL with 0),
+ * each a live handle or NULL.
+ */
+WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
+
+/**
+ * Welds vertices: every two vertices at most `tolerance` apart become one,
+ * transitively. The merged vertex keeps the position of its cluster's
+ * lowest-index vertex (seams stay where the surface put them, and welding
+ * twice changes nothing). Faces drop repeated corners (a quad with two
+ * merged corners becomes a triangle); faces left with fewer than 3 vertices
+ * are removed; vertices no face uses are left out.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is a distance in model units, finite and not negative; 0
+ * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
+ * most models.
+ * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_report` receives what changed; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_weld(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, struct WeftWeldReport *out_report);
+
+/**
+ * Finds the T-nodes: vertices on the naked boundary that lie within
+ * `tolerance` of the inside of another face's naked edge (and further than
+ * `tolerance` from its ends). They are sorted by face, then by the edge's
+ * place in the face, then by parameter.
+ *
+ * Call it first with `out_nodes` NULL to learn the count, then with a
+ * buffer of that many elements.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative (WEFT_DEFAULT_WELD_TOLERANCE suits
+ * most models).
+ * `out_nodes` receives the T-nodes; NULL asks for the count only. When it
+ * is not NULL and `capacity` is below the count the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `capacity` is the number of elements `out_nodes` has room for.
+ * `out_count` receives the number of T-nodes; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_nodes` is NULL or has room for `capacity`
+ * elements; `out_count` is writable.
+ */
+WeftStatus weft_find_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftTNode *out_nodes, size_t capacity, size_t *out_count);
+
+/**
+ * Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
+ * inserted into the edge it lies on (several on one edge in order), so
+ * the face becomes an n-gon and both sides share the seam. Positions do
+ * not change.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative.
+ * `out_mesh` receives the repaired mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_inserted` receives the number of vertices inserted; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_inserted` is NULL or writable.
+ */
+WeftStatus weft_repair_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, size_t *out_inserted);
+
+/**
+ * Removes every face that has a twin with the same vertices (in either
+ * orientation, from any corner): all copies go. These are the walls inside
+ * an aggregation of joined and welded boxes. Vertices are kept as they are.
+ *
+ * `mesh` must not be NULL; weld it first, as faces are compared by index.
+ * `out_mesh` receives the culled mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_removed` receives the number of faces removed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
+ * Gives every connected piece one consistent winding, flipping the fewest
+ * of its faces, then turns each closed orientable piece to face outward.
+ * A piece that cannot be oriented (a Möbius strip) is wound as consistently
+ * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_flipped` receives the number of faces reversed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
+ */
+WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * Reverses every face, keeping its first corner first ({a, b, c, d}
+ * becomes {a, d, c, b}), so that flipping twice gives the input back.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable.
+ */
+WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Computes the unit normal of each face by Newell's method (robust on
+ * non-planar polygons); a face of zero area gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per face and must have room for
+ * `3 * face_count` doubles; `capacity` is its length in doubles. When it is
+ * too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_face_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes the unit normal of each vertex: the face normals weighted by the
+ * face's angle at the vertex (unchanged when faces are split into
+ * triangles). A vertex no face uses gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per vertex and must have room for
+ * `3 * vertex_count` doubles; `capacity` is its length in doubles. When it
+ * is too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes
+ * nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_vertex_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes, per face, the largest distance of its corners from its
+ * best-fit (least-squares) plane; 0 for triangles. A face is planar within
+ * a tolerance when its value is at most the tolerance (the planar-quad
+ * mesh check).
+ *
+ * `mesh` must not be NULL.
+ * `out_deviations` receives one double per face and must have room for
+ * `face_count`; `capacity` is its length. When it is too small the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_deviations` has room for `capacity`
+ * doubles (or is NULL with 0).
+ */
+WeftStatus weft_planarity(const struct WeftMesh *mesh, double *out_deviations, size_t capacity);
+
+/**
+ * Chains the naked edges (edges with one face) into polylines. On a
+ * manifold mesh each border is one closed polyline running the way its
+ * faces run their edges; at a vertex with one or three or more naked edges
+ * polylines stop, and one that returns to its start is closed. A closed
+ * polyline does not repeat its first point at the end.
+ *
+ * Call it first with `out_points` NULL to learn the totals, then with
+ * buffers of those sizes. The polylines' points follow one another in
+ * `out_points`; polyline i has `out_point_counts[i]` of them.
+ *
+ * `mesh` must not be NULL.
+ * `out_points` receives x, y, z per point; NULL asks for the totals only.
+ * `points_capacity` is its length in doubles (3 per point).
+ * `out_point_counts` receives the number of points of each polyline; it
+ * must not be NULL when `out_points` is not.
+ * `out_closed` receives whether each polyline is closed; it may be NULL.
+ * `polylines_capacity` is the number of elements `out_point_counts` (and
+ * `out_closed`, when given) have room for.
+ * When a buffer is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `out_point_total` receives the number of points in all; must not be NULL.
+ * `out_polyline_count` receives the number of polylines; must not be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; each buffer is NULL or has room for its capacity.
+ */
+WeftStatus weft_naked_boundaries(const struct WeftMesh *mesh, double *out_points, size_t points_capacity, size_t *out_point_counts, bool *out_closed, size_t polylines_capacity, size_t *out_point_total, size_t *out_polyline_count);
 
 /**
  * Returns the library's version as a string such as "0.1.0".
@@ -509,6 +1148,419 @@ WeftStatus weft_subdivision_parent_faces(const struct WeftMesh *cage, uint32_t s
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
  */
 WeftStatus weft_triangulate(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each n-gon into n quads through its edge midpoints and centroid,
+ * `levels` times, without smoothing (Weaverbird's Split Polygons: the
+ * topology of Catmull-Clark, the surface unchanged, the result welded).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20; 0 returns a copy.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE when the result would pass the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_split_polygons(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each triangle into four through its edge midpoints, `levels`
+ * times, without smoothing (Weaverbird's Split Triangles).
+ *
+ * `mesh` is the input, a triangle mesh; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NOT_TRIANGLES naming the first other face,
+ * WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_split_triangles(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Splits each quad into four quads, each triangle into four triangles and
+ * each larger polygon into quads around its centroid, `levels` times,
+ * without smoothing (Weaverbird's Constant Quads Split).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of splits, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_constant_quads_split(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * The mid-edge subdivision (Peters and Reif), `levels` times: a face of
+ * edge midpoints per face and per vertex; boundary vertices are kept so an
+ * open mesh keeps its outline.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_midedge(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Gives each face an inner face, its corners pulled towards its centroid,
+ * joined to it by one quad per edge, `levels` times (Weaverbird's Inner
+ * Polygons).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `pull` is how far the inner corners move towards the centroid, strictly
+ * between 0 and 1 (0.5 is halfway).
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a `pull` out of range or
+ * more than 20 levels, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_inner_polygons(const struct WeftMesh *mesh, uint32_t levels, double pull, struct WeftMesh **out_mesh);
+
+/**
+ * Places a triangle in each corner of each face and leaves the middle
+ * open, `levels` times (Weaverbird's Sierpinski Triangles): one new hole
+ * per face and level.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for more than 20 levels and
+ * WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_sierpinski_triangles(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Laplacian smoothing: each iteration moves every vertex `blend` of the
+ * way towards the average of its neighbours (Weaverbird's Laplacian
+ * Smoothing). The faces do not change.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `blend` is in [0, 1]: 1 jumps to the average, 0 does nothing.
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_laplacian_smooth(const struct WeftMesh *mesh, uint32_t iterations, double blend, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Volume-preserving Laplacian smoothing, the HC algorithm of Vollmer,
+ * Mann and Müller (1999): each iteration averages, then pushes every
+ * vertex back by `beta` of its own displacement and `1 - beta` of its
+ * neighbours' (Weaverbird's LaplacianHC).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `alpha` is in [0, 1]: how much the push-back aims at the original
+ * positions rather than the previous iteration's (0 is usual).
+ * `beta` is in [0, 1]: the share of a vertex's own displacement undone
+ * (above 0.5 is recommended; 0.6 is a good start).
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_laplacian_hc_smooth(const struct WeftMesh *mesh, uint32_t iterations, double alpha, double beta, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * Blurs a per-vertex value (a colour, a weight) over the mesh: each
+ * iteration moves every vertex's value `blend` of the way towards the
+ * average of its neighbours' (Weaverbird's Blur). The mesh is unchanged.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `values` holds `value_count` doubles, `components` per vertex, vertex
+ * after vertex; `value_count` must be `components * vertex_count`. It may
+ * be NULL only when `value_count` is 0.
+ * `components` is the number of values per vertex (3 or 4 for a colour),
+ * at least 1.
+ * `iterations` is the number of steps, 0 to 10000.
+ * `blend` is in [0, 1].
+ * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `out_values` receives the blurred values in the same layout; it must
+ * have room for `value_count` doubles (`out_len`), may be the same buffer
+ * as `values`, and is written only on success.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a wrong value count (naming
+ * both numbers) or an argument out of range, WEFT_STATUS_BUFFER_TOO_SMALL
+ * when `out_len` is below `value_count`.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; each non-NULL buffer holds the number
+ * of elements stated.
+ */
+WeftStatus weft_blur_values(const struct WeftMesh *mesh, const double *values, size_t value_count, size_t components, uint32_t iterations, double blend, uint32_t naked_edges, double *out_values, size_t out_len);
+
+/**
+ * Moves every vertex by `distance` along the surface normal (positive:
+ * towards the front); the faces are kept (Weaverbird's Offset Mesh).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distance` is the offset, finite, in model units.
+ * `offset_type` is one of the WEFT_OFFSET_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite distance or an
+ * unknown offset type.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_offset_mesh(const struct WeftMesh *mesh, double distance, uint32_t offset_type, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a solid of a surface: the input, its offset by `distance`, and a
+ * quad along every naked edge joining them, wound to face outwards
+ * (Weaverbird's Mesh Thicken). Vertex `v`'s offset is vertex
+ * `vertex_count + v`.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distance` is the thickness, finite, in model units (its sign says on
+ * which side the offset lies).
+ * `offset_type` is one of the WEFT_OFFSET_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite distance or an
+ * unknown offset type, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_thicken_mesh(const struct WeftMesh *mesh, double distance, uint32_t offset_type, struct WeftMesh **out_mesh);
+
+/**
+ * Insets each face and keeps both the frame of quads and the inner face
+ * (Weaverbird's Mesh Window).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distances` holds `distance_count` values: 1 for every face, or one per
+ * face; it must not be NULL.
+ * `inset_mode` is one of the WEFT_INSET_* values: with EDGE_FRACTION the
+ * distances are shares of the edges in [0, 0.5), with PARALLELOGRAM
+ * widths in model units, at least 0.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `distance_count` is neither
+ * 1 nor the face count (naming both), or a distance is out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `distances` holds `distance_count`
+ * doubles; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_mesh_window(const struct WeftMesh *mesh, const double *distances, size_t distance_count, uint32_t inset_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Insets each face and keeps only the frame of quads: each face becomes a
+ * ring around a new hole (Weaverbird's Picture Frame).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `distances` holds `distance_count` values: 1 for every face, or one per
+ * face; it must not be NULL.
+ * `inset_mode` is one of the WEFT_INSET_* values, as for
+ * `weft_mesh_window`.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `distance_count` is neither
+ * 1 nor the face count (naming both), or a distance is out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `distances` holds `distance_count`
+ * doubles; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_picture_frame(const struct WeftMesh *mesh, const double *distances, size_t distance_count, uint32_t inset_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Cuts each quad into 3 × 3 quads and removes the middle one, `levels`
+ * times (Weaverbird's Sierpinski Carpet).
+ *
+ * `mesh` is the input, a quad mesh; it must not be NULL.
+ * `levels` is the number of steps, 0 to 20.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the first face that is
+ * not a quad or for more than 20 levels, WEFT_STATUS_RESULT_TOO_LARGE past
+ * the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_sierpinski_carpet(const struct WeftMesh *mesh, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Bevels every edge: faces shrink towards their centroids by `fraction`,
+ * each edge between two faces becomes a quad and each interior vertex a
+ * face (Conway's expansion: a cube gives a rhombicuboctahedron).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fraction` is strictly between 0 and 1.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a fraction out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_bevel_edges(const struct WeftMesh *mesh, double fraction, struct WeftMesh **out_mesh);
+
+/**
+ * Cuts every vertex off at `fraction` of each edge's length, adding a face
+ * per vertex (Conway's truncation: a cube gives 6 octagons and 8
+ * triangles); boundary vertices are kept so the outline stays.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fraction` is strictly between 0 and 0.5.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a fraction out of range.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_bevel_vertices(const struct WeftMesh *mesh, double fraction, struct WeftMesh **out_mesh);
+
+/**
+ * The dual mesh: a vertex per face, a face per interior vertex joining
+ * the faces around it (Weaverbird's Dual). Vertices on naked or
+ * non-manifold edges get no face.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `dual_mode` is one of the WEFT_DUAL_* values.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown mode.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_dual(const struct WeftMesh *mesh, uint32_t dual_mode, struct WeftMesh **out_mesh);
+
+/**
+ * Counts the unique edges of a mesh, to size the buffers of
+ * `weft_mesh_copy_edges` and `weft_mesh_copy_edge_segments`.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_count` receives the number of edges on success; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_count` is NULL or writable.
+ */
+WeftStatus weft_mesh_edge_count(const struct WeftMesh *mesh, size_t *out_count);
+
+/**
+ * Copies the unique edges as vertex index pairs `(low, high)`, sorted
+ * (Weaverbird's Mesh Edges, as indices).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_pairs` receives `2 * edge_count` indices; `out_len` is its room.
+ * A buffer that is too small is an error and is not written.
+ *
+ * Fails with WEFT_STATUS_BUFFER_TOO_SMALL naming the room needed.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_pairs` is NULL or has room for
+ * `out_len` values.
+ */
+WeftStatus weft_mesh_copy_edges(const struct WeftMesh *mesh, uint32_t *out_pairs, size_t out_len);
+
+/**
+ * Copies the unique edges as line segments, six doubles each (start x, y,
+ * z, end x, y, z), in the order of `weft_mesh_copy_edges` (Weaverbird's
+ * Mesh Edges).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `out_segments` receives `6 * edge_count` doubles; `out_len` is its room.
+ * A buffer that is too small is an error and is not written.
+ *
+ * Fails with WEFT_STATUS_BUFFER_TOO_SMALL naming the room needed.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_segments` is NULL or has room for
+ * `out_len` values.
+ */
+WeftStatus weft_mesh_copy_edge_segments(const struct WeftMesh *mesh, double *out_segments, size_t out_len);
+
+/**
+ * Rotates every face's corner list so it starts `shift` corners later
+ * (`[a, b, c, d]` by 1 is `[b, c, d, a]`; negative goes back); the
+ * winding and vertices are unchanged (Weaverbird's Reroute Faces).
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `shift` is any number of corners; it wraps around each face.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_reroute_faces(const struct WeftMesh *mesh, int64_t shift, struct WeftMesh **out_mesh);
+
+/**
+ * Builds the faces a set of line segments encloses (Weaverbird's Mesh From
+ * Lines): endpoints within `tolerance` are welded, dangling segments
+ * ignored, and the smallest cycles of the segments, seen in their
+ * best-fit plane, become faces wound about its normal.
+ *
+ * `segments` holds `segment_count` segments of six doubles each (start x,
+ * y, z, end x, y, z); it may be NULL only when `segment_count` is 0.
+ * `tolerance` is the welding distance, finite and at least 0.
+ * `max_valence` is the largest face size kept, at least 3.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a non-finite coordinate
+ * (naming the segment), a bad tolerance or a `max_valence` below 3.
+ *
+ * # Safety
+ * `segments` is NULL or holds `6 * segment_count` doubles; `out_mesh` is
+ * NULL or writable.
+ */
+WeftStatus weft_mesh_from_lines(const double *segments, size_t segment_count, double tolerance, uint32_t max_valence, struct WeftMesh **out_mesh);
 
 #ifdef __cplusplus
 }  // extern "C"

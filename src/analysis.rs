@@ -1,1 +1,359 @@
-//! (filled in by its issue)
+//! Measuring a mesh: face and vertex normals, planarity, face boundaries and
+//! the naked boundary as polylines.
+
+use glam::{DMat3, DVec3};
+
+use crate::error::Result;
+use crate::mesh::Mesh;
+use crate::topology::Topology;
+use crate::weld::check_tolerance;
+
+/// The unit normal of each face by Newell's method: the sum over its edges
+/// of the cross products of consecutive corners, which is twice the area
+/// vector of the polygon. It needs no choice of corners, so it stays robust
+/// on non-planar and non-convex polygons (Sutherland, Sproull & Schumacker
+/// 1974). A face of zero area gets the zero vector.
+pub fn face_normals(mesh: &Mesh) -> Vec<DVec3> {
+    (0..mesh.face_count())
+        .map(|f| area_vector(mesh, f).normalize_or_zero())
+        .collect()
+}
+
+/// The area vector of face `f` (its normal times its area), by Newell's
+/// method about the face's first corner (which keeps far-away faces exact).
+pub fn area_vector(mesh: &Mesh, f: usize) -> DVec3 {
+    let p = mesh.positions();
+    let face = mesh.face(f);
+    let origin = p[face[0] as usize];
+    let mut sum = DVec3::ZERO;
+    for i in 0..face.len() {
+        let a = p[face[i] as usize] - origin;
+        let b = p[face[(i + 1) % face.len()] as usize] - origin;
+        sum += a.cross(b);
+    }
+    sum / 2.0
+}
+
+/// The unit normal at each vertex: the faces' Newell normals weighted by
+/// the angle of each face at the vertex (Thürmer & Wüthrich 1998).
+///
+/// Angle weighting is chosen over area weighting because it depends only
+/// on the shape around the vertex, not on how the faces were cut: a quad
+/// split into two triangles, or a large face beside small ones, leaves the
+/// normal where it was. A vertex used by no face, or whose faces cancel,
+/// gets the zero vector.
+pub fn vertex_normals(mesh: &Mesh) -> Vec<DVec3> {
+    let p = mesh.positions();
+    let mut sums = vec![DVec3::ZERO; mesh.vertex_count()];
+    for (f, normal) in face_normals(mesh).into_iter().enumerate() {
+        let face = mesh.face(f);
+        let n = face.len();
+        for i in 0..n {
+            let here = p[face[i] as usize];
+            let to_next = p[face[(i + 1) % n] as usize] - here;
+            let to_previous = p[face[(i + n - 1) % n] as usize] - here;
+            // atan2 keeps small and near-straight angles accurate where acos does not.
+            let angle = to_next
+                .cross(to_previous)
+                .length()
+                .atan2(to_next.dot(to_previous));
+            sums[face[i] as usize] += normal * angle;
+        }
+    }
+    sums.into_iter().map(DVec3::normalize_or_zero).collect()
+}
+
+/// Per face, the largest distance of its corners from its best-fit plane:
+/// the plane through the corners' centroid that minimises the sum of the
+/// squared (perpendicular) distances, whose normal is the eigenvector of
+/// the corners' covariance with the smallest eigenvalue. Triangles give 0.
+///
+/// This is the planarity check of a planar-quad (PQ) mesh: a face whose
+/// deviation is under the fabrication tolerance can be cut from a flat sheet.
+pub fn planarity_deviations(mesh: &Mesh) -> Vec<f64> {
+    let mut corners = Vec::new();
+    (0..mesh.face_count())
+        .map(|f| {
+            if mesh.face_sizes()[f] == 3 {
+                0.0
+            } else {
+                corners.clear();
+                corners.extend(mesh.face_positions(f));
+                plane_deviation(&corners)
+            }
+        })
+        .collect()
+}
+
+/// Whether every face lies within `tolerance` of its best-fit plane (see
+/// [`planarity_deviations`]).
+///
+/// # Errors
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when
+/// `tolerance` is negative, NaN or infinite.
+pub fn is_planar(mesh: &Mesh, tolerance: f64) -> Result<bool> {
+    check_tolerance(tolerance)?;
+    Ok(planarity_deviations(mesh)
+        .into_iter()
+        .all(|d| d <= tolerance))
+}
+
+/// The largest distance of `points` from their least-squares plane.
+pub fn plane_deviation(points: &[DVec3]) -> f64 {
+    let count = points.len();
+    if count < 4 {
+        return 0.0;
+    }
+    let centroid = points.iter().sum::<DVec3>() / count as f64;
+    let mut covariance = DMat3::ZERO;
+    for &p in points {
+        let d = p - centroid;
+        covariance += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
+    }
+    let normal = smallest_eigenvector(covariance);
+    points
+        .iter()
+        .map(|&p| (p - centroid).dot(normal).abs())
+        .fold(0.0, f64::max)
+}
+
+/// The unit eigenvector of a symmetric 3 × 3 matrix with the smallest
+/// eigenvalue, by cyclic Jacobi rotations (converges in a few sweeps).
+fn smallest_eigenvector(matrix: DMat3) -> DVec3 {
+    let mut a = matrix.to_cols_array_2d();
+    let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    for _ in 0..32 {
+        let off = a[0][1].abs() + a[0][2].abs() + a[1][2].abs();
+        let scale = a[0][0].abs() + a[1][1].abs() + a[2][2].abs();
+        if off <= f64::EPSILON * scale * 1e-3 || off == 0.0 {
+            break;
+        }
+        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
+            if a[p][q] == 0.0 {
+                continue;
+            }
+            let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
+            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
+            let t = if theta == 0.0 { 1.0 } else { t };
+            let c = 1.0 / (t * t + 1.0).sqrt();
+            let s = t * c;
+            // a <- J^T a J, with J the rotation in the (p, q) plane.
+            for row in &mut a {
+                let (akp, akq) = (row[p], row[q]);
+                row[p] = c * akp - s * akq;
+                row[q] = s * akp + c * akq;
+            }
+            let (row_p, row_q) = (a[p], a[q]);
+            a[p] = std::array::from_fn(|k| c * row_p[k] - s * row_q[k]);
+            a[q] = std::array::from_fn(|k| s * row_p[k] + c * row_q[k]);
+            for row in &mut v {
+                let (vkp, vkq) = (row[p], row[q]);
+                row[p] = c * vkp - s * vkq;
+                row[q] = s * vkp + c * vkq;
+            }
+        }
+    }
+    let smallest = (0..3)
+        .min_by(|&i, &j| a[i][i].total_cmp(&a[j][j]))
+        .unwrap_or(0);
+    DVec3::new(v[0][smallest], v[1][smallest], v[2][smallest]).normalize_or_zero()
+}
+
+/// A polyline through mesh vertices. A closed one returns from its last
+/// vertex to its first; the first vertex is not repeated at the end.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Polyline {
+    /// The vertex indices in order.
+    pub vertices: Vec<u32>,
+    /// Whether the last vertex joins back to the first.
+    pub closed: bool,
+}
+
+impl Polyline {
+    /// The positions of the polyline's vertices in `mesh`.
+    pub fn points(&self, mesh: &Mesh) -> Vec<DVec3> {
+        self.vertices
+            .iter()
+            .map(|&v| mesh.positions()[v as usize])
+            .collect()
+    }
+}
+
+/// Each face's boundary as a closed polyline, in the face's winding.
+pub fn face_boundaries(mesh: &Mesh) -> Vec<Polyline> {
+    mesh.faces()
+        .map(|face| Polyline {
+            vertices: face.to_vec(),
+            closed: true,
+        })
+        .collect()
+}
+
+/// The naked edges (those with one face) chained into polylines.
+///
+/// Where every boundary vertex has two naked edges, as on a manifold mesh,
+/// each hole and each outer border is one closed polyline that runs the way
+/// its faces run their edges (counter-clockwise round the outside of a grid
+/// seen from the front). At a vertex with one naked edge or with three or
+/// more (a bow-tie, a fin), polylines stop: each chain from such a vertex
+/// ends at the next one, and one that comes back to where it started is
+/// closed. Every naked edge is in exactly one polyline.
+pub fn naked_boundaries(mesh: &Mesh) -> Vec<Polyline> {
+    let topology = Topology::new(mesh);
+    let corner_vertices = topology.corner_vertices();
+    let corner_next = topology.corner_next();
+    // Each naked edge in its face's direction.
+    let edges: Vec<[u32; 2]> = topology
+        .naked_edges()
+        .into_iter()
+        .map(|e| {
+            let c = topology.edge_corners(e as usize)[0] as usize;
+            [corner_vertices[c], corner_vertices[corner_next[c] as usize]]
+        })
+        .collect();
+
+    // The naked edges at each vertex.
+    let mut offsets = vec![0u32; mesh.vertex_count() + 1];
+    for &[a, b] in &edges {
+        offsets[a as usize + 1] += 1;
+        offsets[b as usize + 1] += 1;
+    }
+    for i in 1..offsets.len() {
+        offsets[i] += offsets[i - 1];
+    }
+    let mut fill = offsets.clone();
+    let mut incident = vec![0u32; 2 * edges.len()];
+    for (k, &[a, b]) in edges.iter().enumerate() {
+        for v in [a, b] {
+            incident[fill[v as usize] as usize] = k as u32;
+            fill[v as usize] += 1;
+        }
+    }
+    let at = |v: u32| &incident[offsets[v as usize] as usize..offsets[v as usize + 1] as usize];
+    let degree = |v: u32| at(v).len();
+
+    let mut used = vec![false; edges.len()];
+    let mut polylines = Vec::new();
+    let walk = |start: u32, first: u32, used: &mut Vec<bool>| {
+        let mut vertices = vec![start];
+        let (mut here, mut edge) = (start, first);
+        let mut closed = false;
+        loop {
+            used[edge as usize] = true;
+            let [a, b] = edges[edge as usize];
+            let next = if a == here { b } else { a };
+            if next == start {
+                closed = true;
+                break;
+            }
+            vertices.push(next);
+            if degree(next) != 2 {
+                break;
+            }
+            match at(next).iter().find(|&&k| !used[k as usize]) {
+                Some(&k) => (here, edge) = (next, k),
+                None => break,
+            }
+        }
+        // Run the way the first edge's face runs it.
+        if edges[first as usize][0] != start {
+            vertices[usize::from(closed)..].reverse();
+        }
+        Polyline { vertices, closed }
+    };
+    // Chains between junctions and ends first, then the loops that remain.
+    for v in 0..mesh.vertex_count() as u32 {
+        if degree(v) != 2 {
+            for &k in at(v) {
+                if !used[k as usize] {
+                    polylines.push(walk(v, k, &mut used));
+                }
+            }
+        }
+    }
+    for k in 0..edges.len() {
+        if !used[k] {
+            polylines.push(walk(edges[k][0], k as u32, &mut used));
+        }
+    }
+    polylines
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+
+    #[test]
+    fn newell_normal_of_a_cube_face_points_out() {
+        let normals = face_normals(&shapes::cube());
+        assert_eq!(normals[0], -DVec3::Z);
+        assert_eq!(normals[5], DVec3::X);
+    }
+
+    #[test]
+    fn vertex_normal_of_a_cube_corner_is_the_diagonal() {
+        let normals = vertex_normals(&shapes::cube());
+        let expected = DVec3::splat(-1.0).normalize();
+        assert!(normals[0].distance(expected) < 1e-12);
+    }
+
+    #[test]
+    fn vertex_normals_do_not_change_when_quads_are_split() {
+        let quads = shapes::torus(8, 6);
+        let triangles = shapes::triangle_torus(8, 6);
+        for (a, b) in vertex_normals(&quads)
+            .iter()
+            .zip(vertex_normals(&triangles))
+        {
+            assert!(a.distance(b) < 1e-12, "{a} {b}");
+        }
+    }
+
+    #[test]
+    fn eigenvector_of_a_diagonal_matrix() {
+        let m = DMat3::from_diagonal(DVec3::new(3.0, 0.5, 2.0));
+        assert_eq!(smallest_eigenvector(m).abs(), DVec3::Y);
+    }
+
+    #[test]
+    fn grid_boundary_is_one_counter_clockwise_loop() {
+        let grid = shapes::quad_grid(3, 2);
+        let loops = naked_boundaries(&grid);
+        assert_eq!(loops.len(), 1);
+        assert!(loops[0].closed);
+        assert_eq!(loops[0].vertices, vec![0, 1, 2, 3, 7, 11, 10, 9, 8, 4]);
+    }
+
+    #[test]
+    fn bow_tie_boundary_is_two_loops_through_the_junction() {
+        let loops = naked_boundaries(&shapes::bow_tie());
+        assert_eq!(loops.len(), 2);
+        for l in &loops {
+            assert!(l.closed);
+            assert_eq!(l.vertices.len(), 4);
+            assert_eq!(l.vertices[0], 0);
+        }
+        assert_eq!(loops[0].vertices, vec![0, 1, 2, 3]);
+    }
+
+    #[test]
+    fn fin_boundary_stops_at_the_non_manifold_edge_ends() {
+        // Edge 0-1 has three faces, so its ends have three naked edges each:
+        // each triangle's two naked edges make one open chain from 0 to 1.
+        let loops = naked_boundaries(&shapes::fin());
+        assert_eq!(loops.len(), 3);
+        assert!(loops.iter().all(|l| !l.closed && l.vertices.len() == 3));
+        let edges: usize = loops.iter().map(|l| l.vertices.len() - 1).sum();
+        assert_eq!(edges, 6);
+    }
+
+    #[test]
+    fn closed_mesh_has_no_naked_boundary() {
+        assert!(naked_boundaries(&shapes::cube()).is_empty());
+        assert_eq!(
+            face_boundaries(&shapes::cube())[1].vertices,
+            vec![4, 5, 7, 6]
+        );
+    }
+}

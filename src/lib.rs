@@ -7,9 +7,12 @@
 //!   orientability. [`shapes`]: named shapes built in code.
 //! - [`subdivide`]: Catmull-Clark and Loop with the naked-edge modes, and the
 //!   refiner that re-evaluates new positions on a fixed topology.
-//! - Mending: [`weld`] (join, weld, T-nodes), [`cull`], [`orient`],
+//! - Mending: [`weld`] (join, weld), [`t_nodes`], [`cull`], [`orient`],
 //!   [`analysis`] (normals, planarity, boundaries), [`triangulate`].
-//! - Making: [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
+//! - Making: [`plane`], [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
+//! - The rest of Weaverbird's toolbar: [`split`] (linear subdivisions),
+//!   [`smooth`], [`transform`] (offset, thicken, window, bevel) and
+//!   [`extract`] (dual, edges, reroute, mesh from lines).
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
 //! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
 //!   checks; the geometry knows nothing of it.
@@ -26,6 +29,8 @@ pub mod delaunay;
 /// cbindgen:ignore
 pub mod error;
 /// cbindgen:ignore
+pub mod extract;
+/// cbindgen:ignore
 pub mod grid;
 /// cbindgen:ignore
 pub mod io;
@@ -34,15 +39,25 @@ pub mod mesh;
 /// cbindgen:ignore
 pub mod orient;
 /// cbindgen:ignore
+pub mod plane;
+/// cbindgen:ignore
 pub mod primitives;
 /// cbindgen:ignore
 pub mod shapes;
+/// cbindgen:ignore
+pub mod smooth;
+/// cbindgen:ignore
+pub mod split;
 /// cbindgen:ignore
 pub mod stellate;
 /// cbindgen:ignore
 pub mod subdivide;
 /// cbindgen:ignore
+pub mod t_nodes;
+/// cbindgen:ignore
 pub mod topology;
+/// cbindgen:ignore
+pub mod transform;
 /// cbindgen:ignore
 pub mod triangulate;
 /// cbindgen:ignore

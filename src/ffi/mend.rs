@@ -1,1 +1,483 @@
-//! (filled in by its issue)
+//! Mending exports: join and weld, T-nodes, cull adjacent faces,
+//! orientation, normals, planarity and the naked boundary.
+
+use crate::analysis;
+use crate::cull;
+use crate::ffi::boundary::{
+    check_room, guard, input_slice, out_param, output_slice, Failure, WeftStatus,
+};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::mesh::Mesh;
+use crate::orient;
+use crate::t_nodes;
+use crate::weld;
+
+/// The weld tolerance to use when the host has none: 0.001 model units,
+/// Rhino's default absolute tolerance (a millimetre in a model in metres).
+pub const WEFT_DEFAULT_WELD_TOLERANCE: f64 = 0.001;
+
+/// What `weft_weld` changed.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WeftWeldReport {
+    /// Vertices that merged into another: the input's vertex count minus the
+    /// number of clusters.
+    pub merged_vertex_count: usize,
+    /// Faces left with fewer than 3 distinct vertices, and so removed.
+    pub removed_face_count: usize,
+    /// Merged vertices that no remaining face uses, and so were left out.
+    pub unused_vertex_count: usize,
+}
+
+/// A vertex lying inside a naked edge of a face it does not belong to.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WeftTNode {
+    /// The vertex that lies on the edge.
+    pub vertex: u32,
+    /// The edge's first vertex, in the direction the face runs it.
+    pub edge_start: u32,
+    /// The edge's second vertex.
+    pub edge_end: u32,
+    /// The face whose edge it is.
+    pub face: u32,
+    /// Where the vertex lies along the edge: 0 at `edge_start`, 1 at
+    /// `edge_end`, always strictly between.
+    pub parameter: f64,
+}
+
+/// Writes an optional count out-parameter.
+///
+/// # Safety
+/// `pointer` is NULL or writable.
+unsafe fn write_optional<T>(pointer: *mut T, value: T) {
+    if let Some(slot) = pointer.as_mut() {
+        *slot = value;
+    }
+}
+
+/// Joins meshes into one: the vertices of each follow those of the meshes
+/// before it and its face indices are offset to match; faces keep their order.
+///
+/// `meshes` holds `count` mesh handles, none of them NULL; it may be NULL
+/// only when `count` is 0 (the result is then the empty mesh).
+/// `out_mesh` receives the joined mesh (free it with `weft_mesh_free`); it
+/// must not be NULL and is written on success only.
+///
+/// Fails with WEFT_STATUS_RESULT_TOO_LARGE when the joined vertex or index
+/// count passes 2^31 - 1, or WEFT_STATUS_NULL_POINTER naming a NULL element.
+///
+/// # Safety
+/// `meshes` points to `count` readable handle pointers (or is NULL with 0),
+/// each a live handle or NULL.
+#[no_mangle]
+pub unsafe extern "C" fn weft_join(
+    meshes: *const *const WeftMesh,
+    count: usize,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let handles = input_slice(meshes, count, "meshes")?;
+        let mut parts: Vec<&Mesh> = Vec::with_capacity(handles.len());
+        for (i, &handle) in handles.iter().enumerate() {
+            parts.push(mesh_ref(handle, &format!("meshes[{i}]"))?);
+        }
+        WeftMesh::write(out, weld::join(&parts)?);
+        Ok(())
+    })
+}
+
+/// Welds vertices: every two vertices at most `tolerance` apart become one,
+/// transitively. The merged vertex keeps the position of its cluster's
+/// lowest-index vertex (seams stay where the surface put them, and welding
+/// twice changes nothing). Faces drop repeated corners (a quad with two
+/// merged corners becomes a triangle); faces left with fewer than 3 vertices
+/// are removed; vertices no face uses are left out.
+///
+/// `mesh` must not be NULL.
+/// `tolerance` is a distance in model units, finite and not negative; 0
+/// merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
+/// most models.
+/// `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
+/// must not be NULL and is written on success only.
+/// `out_report` receives what changed; it may be NULL.
+///
+/// Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+/// tolerance.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_weld(
+    mesh: *const WeftMesh,
+    tolerance: f64,
+    out_mesh: *mut *mut WeftMesh,
+    out_report: *mut WeftWeldReport,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (welded, report) = weld::weld(mesh, tolerance)?;
+        WeftMesh::write(out, welded);
+        write_optional(
+            out_report,
+            WeftWeldReport {
+                merged_vertex_count: report.merged_vertex_count,
+                removed_face_count: report.removed_face_count,
+                unused_vertex_count: report.unused_vertex_count,
+            },
+        );
+        Ok(())
+    })
+}
+
+/// Finds the T-nodes: vertices on the naked boundary that lie within
+/// `tolerance` of the inside of another face's naked edge (and further than
+/// `tolerance` from its ends). They are sorted by face, then by the edge's
+/// place in the face, then by parameter.
+///
+/// Call it first with `out_nodes` NULL to learn the count, then with a
+/// buffer of that many elements.
+///
+/// `mesh` must not be NULL.
+/// `tolerance` is finite and not negative (WEFT_DEFAULT_WELD_TOLERANCE suits
+/// most models).
+/// `out_nodes` receives the T-nodes; NULL asks for the count only. When it
+/// is not NULL and `capacity` is below the count the call fails with
+/// WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+/// `capacity` is the number of elements `out_nodes` has room for.
+/// `out_count` receives the number of T-nodes; it must not be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_nodes` is NULL or has room for `capacity`
+/// elements; `out_count` is writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_find_t_nodes(
+    mesh: *const WeftMesh,
+    tolerance: f64,
+    out_nodes: *mut WeftTNode,
+    capacity: usize,
+    out_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let count_out = out_param(out_count, "out_count")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let nodes = t_nodes::find_t_nodes(mesh, tolerance)?;
+        if !out_nodes.is_null() {
+            check_room("out_nodes", capacity, nodes.len())?;
+            let out = output_slice(out_nodes, capacity, "out_nodes")?;
+            for (slot, node) in out.iter_mut().zip(&nodes) {
+                *slot = WeftTNode {
+                    vertex: node.vertex,
+                    edge_start: node.edge[0],
+                    edge_end: node.edge[1],
+                    face: node.face,
+                    parameter: node.parameter,
+                };
+            }
+        }
+        *count_out = nodes.len();
+        Ok(())
+    })
+}
+
+/// Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
+/// inserted into the edge it lies on (several on one edge in order), so
+/// the face becomes an n-gon and both sides share the seam. Positions do
+/// not change.
+///
+/// `mesh` must not be NULL.
+/// `tolerance` is finite and not negative.
+/// `out_mesh` receives the repaired mesh (free it with `weft_mesh_free`); it
+/// must not be NULL and is written on success only.
+/// `out_inserted` receives the number of vertices inserted; it may be NULL.
+///
+/// Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+/// tolerance.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_inserted` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_repair_t_nodes(
+    mesh: *const WeftMesh,
+    tolerance: f64,
+    out_mesh: *mut *mut WeftMesh,
+    out_inserted: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (repaired, inserted) = t_nodes::repair_t_nodes(mesh, tolerance)?;
+        WeftMesh::write(out, repaired);
+        write_optional(out_inserted, inserted);
+        Ok(())
+    })
+}
+
+/// Removes every face that has a twin with the same vertices (in either
+/// orientation, from any corner): all copies go. These are the walls inside
+/// an aggregation of joined and welded boxes. Vertices are kept as they are.
+///
+/// `mesh` must not be NULL; weld it first, as faces are compared by index.
+/// `out_mesh` receives the culled mesh (free it with `weft_mesh_free`); it
+/// must not be NULL and is written on success only.
+/// `out_removed` receives the number of faces removed; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_cull_adjacent(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_removed: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (culled, removed) = cull::cull_adjacent(mesh);
+        WeftMesh::write(out, culled);
+        write_optional(out_removed, removed);
+        Ok(())
+    })
+}
+
+/// Gives every connected piece one consistent winding, flipping the fewest
+/// of its faces, then turns each closed orientable piece to face outward.
+/// A piece that cannot be oriented (a Möbius strip) is wound as consistently
+/// as it can be; `weft_mesh_info` tells whether the mesh is orientable.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+/// not be NULL and is written on success only.
+/// `out_flipped` receives the number of faces reversed; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_unify_orientation(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_flipped: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (unified, flipped) = orient::unify_orientation(mesh);
+        WeftMesh::write(out, unified);
+        write_optional(out_flipped, flipped);
+        Ok(())
+    })
+}
+
+/// Reverses every face, keeping its first corner first ({a, b, c, d}
+/// becomes {a, d, c, b}), so that flipping twice gives the input back.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
+/// must not be NULL and is written on success only.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_flip(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        WeftMesh::write(out, orient::flip(mesh));
+        Ok(())
+    })
+}
+
+/// Copies `vectors`, three doubles each into a caller buffer.
+///
+/// # Safety
+/// As `output_slice`.
+unsafe fn write_vectors(
+    vectors: &[glam::DVec3],
+    out: *mut f64,
+    capacity: usize,
+    name: &str,
+) -> Result<(), Failure> {
+    check_room(name, capacity, vectors.len() * 3)?;
+    let out = output_slice(out, capacity, name)?;
+    for (chunk, v) in out.chunks_exact_mut(3).zip(vectors) {
+        chunk.copy_from_slice(&v.to_array());
+    }
+    Ok(())
+}
+
+/// Computes the unit normal of each face by Newell's method (robust on
+/// non-planar polygons); a face of zero area gets (0, 0, 0).
+///
+/// `mesh` must not be NULL.
+/// `out_normals` receives x, y, z per face and must have room for
+/// `3 * face_count` doubles; `capacity` is its length in doubles. When it is
+/// too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+/// (or is NULL with 0).
+#[no_mangle]
+pub unsafe extern "C" fn weft_face_normals(
+    mesh: *const WeftMesh,
+    out_normals: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let mesh = mesh_ref(mesh, "mesh")?;
+        check_room("out_normals", capacity, mesh.face_count() * 3)?;
+        write_vectors(
+            &analysis::face_normals(mesh),
+            out_normals,
+            capacity,
+            "out_normals",
+        )
+    })
+}
+
+/// Computes the unit normal of each vertex: the face normals weighted by the
+/// face's angle at the vertex (unchanged when faces are split into
+/// triangles). A vertex no face uses gets (0, 0, 0).
+///
+/// `mesh` must not be NULL.
+/// `out_normals` receives x, y, z per vertex and must have room for
+/// `3 * vertex_count` doubles; `capacity` is its length in doubles. When it
+/// is too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes
+/// nothing.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+/// (or is NULL with 0).
+#[no_mangle]
+pub unsafe extern "C" fn weft_vertex_normals(
+    mesh: *const WeftMesh,
+    out_normals: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let mesh = mesh_ref(mesh, "mesh")?;
+        check_room("out_normals", capacity, mesh.vertex_count() * 3)?;
+        write_vectors(
+            &analysis::vertex_normals(mesh),
+            out_normals,
+            capacity,
+            "out_normals",
+        )
+    })
+}
+
+/// Computes, per face, the largest distance of its corners from its
+/// best-fit (least-squares) plane; 0 for triangles. A face is planar within
+/// a tolerance when its value is at most the tolerance (the planar-quad
+/// mesh check).
+///
+/// `mesh` must not be NULL.
+/// `out_deviations` receives one double per face and must have room for
+/// `face_count`; `capacity` is its length. When it is too small the call
+/// fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_deviations` has room for `capacity`
+/// doubles (or is NULL with 0).
+#[no_mangle]
+pub unsafe extern "C" fn weft_planarity(
+    mesh: *const WeftMesh,
+    out_deviations: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let mesh = mesh_ref(mesh, "mesh")?;
+        check_room("out_deviations", capacity, mesh.face_count())?;
+        let out = output_slice(out_deviations, capacity, "out_deviations")?;
+        for (slot, d) in out.iter_mut().zip(analysis::planarity_deviations(mesh)) {
+            *slot = d;
+        }
+        Ok(())
+    })
+}
+
+/// Chains the naked edges (edges with one face) into polylines. On a
+/// manifold mesh each border is one closed polyline running the way its
+/// faces run their edges; at a vertex with one or three or more naked edges
+/// polylines stop, and one that returns to its start is closed. A closed
+/// polyline does not repeat its first point at the end.
+///
+/// Call it first with `out_points` NULL to learn the totals, then with
+/// buffers of those sizes. The polylines' points follow one another in
+/// `out_points`; polyline i has `out_point_counts[i]` of them.
+///
+/// `mesh` must not be NULL.
+/// `out_points` receives x, y, z per point; NULL asks for the totals only.
+/// `points_capacity` is its length in doubles (3 per point).
+/// `out_point_counts` receives the number of points of each polyline; it
+/// must not be NULL when `out_points` is not.
+/// `out_closed` receives whether each polyline is closed; it may be NULL.
+/// `polylines_capacity` is the number of elements `out_point_counts` (and
+/// `out_closed`, when given) have room for.
+/// When a buffer is too small the call fails with
+/// WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+/// `out_point_total` receives the number of points in all; must not be NULL.
+/// `out_polyline_count` receives the number of polylines; must not be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; each buffer is NULL or has room for its capacity.
+#[no_mangle]
+pub unsafe extern "C" fn weft_naked_boundaries(
+    mesh: *const WeftMesh,
+    out_points: *mut f64,
+    points_capacity: usize,
+    out_point_counts: *mut usize,
+    out_closed: *mut bool,
+    polylines_capacity: usize,
+    out_point_total: *mut usize,
+    out_polyline_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let total_out = out_param(out_point_total, "out_point_total")?;
+        let count_out = out_param(out_polyline_count, "out_polyline_count")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let polylines = analysis::naked_boundaries(mesh);
+        let total: usize = polylines.iter().map(|p| p.vertices.len()).sum();
+        if !out_points.is_null() {
+            out_param(out_point_counts, "out_point_counts")?;
+            check_room("out_points", points_capacity, total * 3)?;
+            check_room("out_point_counts", polylines_capacity, polylines.len())?;
+            let points = output_slice(out_points, points_capacity, "out_points")?;
+            let counts = output_slice(out_point_counts, polylines_capacity, "out_point_counts")?;
+            let closed = if out_closed.is_null() {
+                None
+            } else {
+                Some(output_slice(out_closed, polylines_capacity, "out_closed")?)
+            };
+            let mut chunks = points.chunks_exact_mut(3);
+            for (i, polyline) in polylines.iter().enumerate() {
+                counts[i] = polyline.vertices.len();
+                for (chunk, &v) in chunks.by_ref().zip(&polyline.vertices) {
+                    chunk.copy_from_slice(&mesh.positions()[v as usize].to_array());
+                }
+            }
+            if let Some(closed) = closed {
+                for (slot, polyline) in closed.iter_mut().zip(&polylines) {
+                    *slot = polyline.closed;
+                }
+            }
+        }
+        *total_out = total;
+        *count_out = polylines.len();
+        Ok(())
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_tolerance_matches_the_library() {
+        assert_eq!(WEFT_DEFAULT_WELD_TOLERANCE, weld::DEFAULT_WELD_TOLERANCE);
+    }
+}

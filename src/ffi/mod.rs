@@ -10,6 +10,7 @@ pub mod mend;
 pub mod mesh;
 pub mod refiner;
 pub mod subdivide;
+pub mod toolbar;
 
 pub use boundary::WeftStatus;
 pub use mesh::{WeftMesh, WeftMeshInfo};

@@ -1,0 +1,45 @@
+//! Mending on meshes of a million elements: weld and the topology it feeds.
+//!
+//! Run with `cargo bench --bench mending`.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use weft::weld::{weld, DEFAULT_WELD_TOLERANCE};
+use weft::{shapes, DVec3, Mesh, Topology};
+
+/// A 500 × 500 quad grid whose every face has its own four vertices, each
+/// moved by up to 0.0004 on every axis: 1,000,000 vertices that weld back to
+/// 251,001, the way separately meshed panels arrive from the host.
+fn loose_grid() -> Mesh {
+    let grid = shapes::quad_grid(500, 500);
+    let mut positions = Vec::with_capacity(grid.index_count());
+    for (k, &v) in grid.face_indices().iter().enumerate() {
+        let jitter = ((k * 7919) % 9) as f64 * 0.5e-4;
+        positions.push(grid.positions()[v as usize] + DVec3::new(jitter, -jitter, jitter));
+    }
+    let indices: Vec<u32> = (0..grid.index_count() as u32).collect();
+    Mesh::new(positions, grid.face_sizes().to_vec(), indices).unwrap()
+}
+
+fn mending(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mending");
+    group.sample_size(10);
+
+    let loose = loose_grid();
+    assert_eq!(loose.vertex_count(), 1_000_000);
+    let (welded, _) = weld(&loose, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(welded.vertex_count(), 501 * 501);
+    group.bench_function("weld 1M vertices", |b| {
+        b.iter(|| weld(black_box(&loose), DEFAULT_WELD_TOLERANCE).unwrap())
+    });
+
+    let grid = shapes::quad_grid(1000, 1000);
+    group.bench_function("topology of 1M quads", |b| {
+        b.iter(|| Topology::new(black_box(&grid)))
+    });
+    group.finish();
+}
+
+criterion_group!(benches, mending);
+criterion_main!(benches);

@@ -1,0 +1,15 @@
+//! Transforms of Weaverbird's toolbar: [`offset`] and [`thicken`] (three
+//! offset types), [`window`] and [`picture_frame`] (face insets),
+//! [`sierpinski_carpet`], [`bevel_edges`] and [`bevel_vertices`].
+
+mod bevel;
+mod carpet;
+mod inset;
+mod linalg;
+mod offset;
+
+pub use bevel::{bevel_edges, bevel_vertices};
+pub use carpet::sierpinski_carpet;
+pub use inset::{picture_frame, window, InsetMode};
+pub(crate) use linalg::symmetric_eigen;
+pub use offset::{offset, thicken, OffsetType};

@@ -1,0 +1,266 @@
+/* The mending exports through the C ABI: join, weld, T-nodes, cull,
+ * orientation, normals, planarity and naked boundaries, each with its
+ * success and its error paths (NULL, bad tolerance, buffer too small). */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+
+static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
+static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+
+/* The unit cube moved by `dx` along x. */
+static WeftMesh *make_cube(double dx) {
+  double positions[24];
+  WeftMesh *mesh = NULL;
+  int i;
+  for (i = 0; i < 8; ++i) {
+    positions[3 * i] = (i & 1) + dx;
+    positions[3 * i + 1] = (i >> 1) & 1;
+    positions[3 * i + 2] = (i >> 2) & 1;
+  }
+  CHECK_STATUS(weft_mesh_new(positions, 8, cube_sizes, 6, cube_indices, 24, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static int near(double a, double b) { return fabs(a - b) < 1e-9; }
+
+static void test_join_weld_cull(void) {
+  WeftMesh *a = make_cube(0.0), *b = make_cube(1.0), *joined = NULL, *welded = NULL, *culled = NULL;
+  const WeftMesh *pair[2];
+  const WeftMesh *with_null[2];
+  WeftWeldReport report = {99, 99, 99};
+  WeftMeshInfo info;
+  size_t removed = 0;
+  pair[0] = a;
+  pair[1] = b;
+  with_null[0] = a;
+  with_null[1] = NULL;
+
+  CHECK_STATUS(weft_join(pair, 2, &joined), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(joined) == 16 && weft_mesh_face_count(joined) == 12);
+  CHECK(weft_mesh_face_indices(joined)[24] == 8);
+
+  CHECK_STATUS(weft_weld(joined, WEFT_DEFAULT_WELD_TOLERANCE, &welded, &report), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(welded) == 12);
+  CHECK(report.merged_vertex_count == 4 && report.removed_face_count == 0 && report.unused_vertex_count == 0);
+
+  CHECK_STATUS(weft_cull_adjacent(welded, &culled, &removed), WEFT_STATUS_OK);
+  CHECK(removed == 2 && weft_mesh_face_count(culled) == 10);
+  CHECK_STATUS(weft_mesh_info(culled, &info), WEFT_STATUS_OK);
+  CHECK(info.is_closed && info.component_count == 1 && info.is_oriented);
+  weft_mesh_free(culled);
+  culled = NULL;
+  /* The counts are optional. */
+  CHECK_STATUS(weft_cull_adjacent(welded, &culled, NULL), WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(culled) == 10);
+  weft_mesh_free(culled);
+  weft_mesh_free(welded);
+  welded = NULL;
+  CHECK_STATUS(weft_weld(joined, 0.0, &welded, NULL), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(welded) == 12);
+  weft_mesh_free(welded);
+  welded = NULL;
+
+  /* Errors: nothing written. */
+  CHECK_STATUS(weft_join(with_null, 2, &welded), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("meshes[1]");
+  CHECK(welded == NULL);
+  CHECK_STATUS(weft_join(NULL, 2, &welded), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_join(pair, 2, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_join(NULL, 0, &welded), WEFT_STATUS_OK);
+  CHECK(welded != NULL && weft_mesh_vertex_count(welded) == 0);
+  weft_mesh_free(welded);
+  welded = NULL;
+
+  report.merged_vertex_count = 99;
+  CHECK_STATUS(weft_weld(joined, -1.0, &welded, &report), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("tolerance is -1");
+  CHECK(welded == NULL && report.merged_vertex_count == 99);
+  CHECK_STATUS(weft_weld(joined, NAN, &welded, &report), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("tolerance");
+  CHECK_STATUS(weft_weld(joined, INFINITY, &welded, NULL), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_weld(NULL, 0.001, &welded, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("mesh is NULL");
+  CHECK_STATUS(weft_weld(joined, 0.001, NULL, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK(welded == NULL);
+  CHECK_STATUS(weft_cull_adjacent(NULL, &culled, &removed), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_cull_adjacent(joined, NULL, &removed), WEFT_STATUS_NULL_POINTER);
+  weft_mesh_free(joined);
+  weft_mesh_free(a);
+  weft_mesh_free(b);
+}
+
+/* Two triangles; vertex 4 lies a quarter of the way along edge 1-2 of the first. */
+static WeftMesh *make_t_node_pair(void) {
+  static const double positions[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 4, 0, 0, 2, 0.5, 0};
+  static const uint32_t sizes[] = {3, 3};
+  static const uint32_t indices[] = {0, 1, 2, 4, 3, 2};
+  WeftMesh *mesh = NULL;
+  CHECK_STATUS(weft_mesh_new(positions, 5, sizes, 2, indices, 6, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static void test_t_nodes(void) {
+  WeftMesh *mesh = make_t_node_pair(), *repaired = NULL;
+  WeftTNode nodes[2];
+  size_t count = 99, inserted = 0;
+  uint32_t face[4];
+
+  CHECK_STATUS(weft_find_t_nodes(mesh, 1e-6, NULL, 0, &count), WEFT_STATUS_OK);
+  CHECK(count == 1);
+  nodes[0].vertex = 77;
+  count = 99;
+  CHECK_STATUS(weft_find_t_nodes(mesh, 1e-6, nodes, 0, &count), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_nodes has room for 0 elements but 1 are needed");
+  CHECK(nodes[0].vertex == 77 && count == 99);
+  CHECK_STATUS(weft_find_t_nodes(mesh, 1e-6, nodes, 2, &count), WEFT_STATUS_OK);
+  CHECK(count == 1);
+  CHECK(nodes[0].vertex == 4 && nodes[0].edge_start == 1 && nodes[0].edge_end == 2 && nodes[0].face == 0);
+  CHECK(near(nodes[0].parameter, 0.25));
+  CHECK_STATUS(weft_find_t_nodes(mesh, NAN, NULL, 0, &count), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_find_t_nodes(mesh, -0.5, NULL, 0, &count), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("tolerance is -0.5");
+  CHECK_STATUS(weft_find_t_nodes(mesh, 1e-6, nodes, 2, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_count is NULL");
+  CHECK_STATUS(weft_find_t_nodes(NULL, 1e-6, nodes, 2, &count), WEFT_STATUS_NULL_POINTER);
+
+  CHECK_STATUS(weft_repair_t_nodes(mesh, 1e-6, &repaired, &inserted), WEFT_STATUS_OK);
+  CHECK(inserted == 1 && weft_mesh_face_count(repaired) == 2 && weft_mesh_index_count(repaired) == 7);
+  memcpy(face, weft_mesh_face_indices(repaired), sizeof face);
+  CHECK(face[0] == 0 && face[1] == 1 && face[2] == 4 && face[3] == 2);
+  weft_mesh_free(repaired);
+  repaired = NULL;
+  CHECK_STATUS(weft_repair_t_nodes(mesh, 1e-6, &repaired, NULL), WEFT_STATUS_OK);
+  weft_mesh_free(repaired);
+  repaired = NULL;
+  CHECK_STATUS(weft_repair_t_nodes(mesh, NAN, &repaired, &inserted), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_repair_t_nodes(mesh, -1.0, &repaired, &inserted), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_repair_t_nodes(NULL, 1e-6, &repaired, &inserted), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_repair_t_nodes(mesh, 1e-6, NULL, &inserted), WEFT_STATUS_NULL_POINTER);
+  CHECK(repaired == NULL);
+  weft_mesh_free(mesh);
+}
+
+static void test_orientation(void) {
+  static const uint32_t one_flipped[] = {0, 1, 3, 2, 4, 5, 7, 6, 0, 1, 5, 4,
+                                         2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+  WeftMesh *cube = make_cube(0.0), *scrambled = NULL, *fixed = NULL, *flipped = NULL;
+  WeftMeshInfo info;
+  size_t count = 0;
+  const uint32_t *indices;
+  CHECK_STATUS(weft_mesh_new(weft_mesh_positions(cube), 8, cube_sizes, 6, one_flipped, 24, &scrambled),
+               WEFT_STATUS_OK);
+  CHECK_STATUS(weft_unify_orientation(scrambled, &fixed, &count), WEFT_STATUS_OK);
+  CHECK(count == 1);
+  CHECK(memcmp(weft_mesh_face_indices(fixed), cube_indices, sizeof cube_indices) == 0);
+  CHECK_STATUS(weft_mesh_info(fixed, &info), WEFT_STATUS_OK);
+  CHECK(info.is_oriented && info.is_orientable);
+  weft_mesh_free(fixed);
+  fixed = NULL;
+  CHECK_STATUS(weft_unify_orientation(scrambled, &fixed, NULL), WEFT_STATUS_OK);
+  weft_mesh_free(fixed);
+  fixed = NULL;
+
+  CHECK_STATUS(weft_flip(cube, &flipped), WEFT_STATUS_OK);
+  indices = weft_mesh_face_indices(flipped);
+  CHECK(indices[0] == 0 && indices[1] == 1 && indices[2] == 3 && indices[3] == 2);
+  weft_mesh_free(flipped);
+  flipped = NULL;
+
+  CHECK_STATUS(weft_unify_orientation(NULL, &fixed, &count), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_unify_orientation(cube, NULL, &count), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_flip(NULL, &flipped), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_flip(cube, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK(fixed == NULL && flipped == NULL);
+  weft_mesh_free(scrambled);
+  weft_mesh_free(cube);
+}
+
+static void test_normals_and_planarity(void) {
+  /* z = xy on the unit square: (15 - sqrt 33) / (4 sqrt(66 + 2 sqrt 33)) from its plane. */
+  static const double hypar_positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0};
+  static const uint32_t quad_size[] = {4};
+  static const uint32_t quad_indices[] = {0, 1, 2, 3};
+  WeftMesh *cube = make_cube(0.0), *hypar = NULL;
+  double normals[24], deviations[6];
+  double s = sqrt(33.0);
+  int i;
+  CHECK_STATUS(weft_face_normals(cube, normals, 18), WEFT_STATUS_OK);
+  CHECK(normals[0] == 0.0 && normals[1] == 0.0 && normals[2] == -1.0);
+  CHECK(normals[15] == 1.0 && normals[16] == 0.0 && normals[17] == 0.0);
+  normals[0] = 5.0;
+  CHECK_STATUS(weft_face_normals(cube, normals, 17), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK(normals[0] == 5.0);
+  CHECK_STATUS(weft_face_normals(cube, NULL, 0), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_STATUS(weft_face_normals(NULL, normals, 18), WEFT_STATUS_NULL_POINTER);
+
+  CHECK_STATUS(weft_vertex_normals(cube, normals, 24), WEFT_STATUS_OK);
+  for (i = 0; i < 3; ++i) {
+    CHECK(near(normals[i], -1.0 / sqrt(3.0)));
+    CHECK(near(normals[21 + i], 1.0 / sqrt(3.0)));
+  }
+  CHECK_STATUS(weft_vertex_normals(cube, normals, 23), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_normals has room for 23 elements but 24 are needed");
+  CHECK_STATUS(weft_vertex_normals(NULL, normals, 24), WEFT_STATUS_NULL_POINTER);
+
+  CHECK_STATUS(weft_planarity(cube, deviations, 6), WEFT_STATUS_OK);
+  for (i = 0; i < 6; ++i) CHECK(deviations[i] < 1e-12);
+  CHECK_STATUS(weft_mesh_new(hypar_positions, 4, quad_size, 1, quad_indices, 4, &hypar), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_planarity(hypar, deviations, 1), WEFT_STATUS_OK);
+  CHECK(near(deviations[0], (15.0 - s) / (4.0 * sqrt(66.0 + 2.0 * s))));
+  CHECK_STATUS(weft_planarity(cube, deviations, 5), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_STATUS(weft_planarity(NULL, deviations, 6), WEFT_STATUS_NULL_POINTER);
+  weft_mesh_free(hypar);
+  weft_mesh_free(cube);
+}
+
+static void test_naked_boundaries(void) {
+  /* A 2 x 1 quad grid: one closed border of 6 points, counter-clockwise. */
+  static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  static const uint32_t grid_sizes[] = {4, 4};
+  static const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4};
+  static const double expected[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 0, 1, 0};
+  WeftMesh *grid = NULL, *cube = make_cube(0.0);
+  double points[18];
+  size_t counts[1] = {0}, total = 0, polylines = 0;
+  bool closed[1] = {false};
+  CHECK_STATUS(weft_mesh_new(grid_positions, 6, grid_sizes, 2, grid_indices, 8, &grid), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_naked_boundaries(grid, NULL, 0, NULL, NULL, 0, &total, &polylines), WEFT_STATUS_OK);
+  CHECK(total == 6 && polylines == 1);
+  CHECK_STATUS(weft_naked_boundaries(grid, points, 18, counts, closed, 1, &total, &polylines), WEFT_STATUS_OK);
+  CHECK(counts[0] == 6 && closed[0]);
+  CHECK(memcmp(points, expected, sizeof expected) == 0);
+  /* out_closed is optional. */
+  CHECK_STATUS(weft_naked_boundaries(grid, points, 18, counts, NULL, 1, &total, &polylines), WEFT_STATUS_OK);
+
+  counts[0] = 42;
+  CHECK_STATUS(weft_naked_boundaries(grid, points, 17, counts, closed, 1, &total, &polylines),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_points");
+  CHECK(counts[0] == 42);
+  CHECK_STATUS(weft_naked_boundaries(grid, points, 18, counts, closed, 0, &total, &polylines),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_point_counts");
+  CHECK_STATUS(weft_naked_boundaries(grid, points, 18, NULL, closed, 1, &total, &polylines),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_naked_boundaries(grid, NULL, 0, NULL, NULL, 0, NULL, &polylines), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_naked_boundaries(grid, NULL, 0, NULL, NULL, 0, &total, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_naked_boundaries(NULL, NULL, 0, NULL, NULL, 0, &total, &polylines), WEFT_STATUS_NULL_POINTER);
+
+  /* A closed mesh has no naked boundary: empty buffers suffice. */
+  CHECK_STATUS(weft_naked_boundaries(cube, NULL, 0, NULL, NULL, 0, &total, &polylines), WEFT_STATUS_OK);
+  CHECK(total == 0 && polylines == 0);
+  weft_mesh_free(cube);
+  weft_mesh_free(grid);
+}
+
+int main(void) {
+  test_join_weld_cull();
+  test_t_nodes();
+  test_orientation();
+  test_normals_and_planarity();
+  test_naked_boundaries();
+  return check_summary("test_mend");
+}
