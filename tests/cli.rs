@@ -214,7 +214,17 @@ fn bad_usage_exits_with_2() {
 #[test]
 fn help_on_every_command_has_an_example() {
     let dir = folder("help");
-    for command in ["info", "render", "convert", "subdivide", "triangulate"] {
+    for command in [
+        "info",
+        "render",
+        "convert",
+        "subdivide",
+        "triangulate",
+        "weld",
+        "cull-adjacent",
+        "flip",
+        "t-nodes",
+    ] {
         let o = weft(&dir, &[command, "--help"]);
         assert_exit(&o, 0);
         let text = stdout(&o);
@@ -226,7 +236,17 @@ fn help_on_every_command_has_an_example() {
     }
     let o = weft(&dir, &["--help"]);
     assert_exit(&o, 0);
-    for command in ["info", "render", "convert", "subdivide", "triangulate"] {
+    for command in [
+        "info",
+        "render",
+        "convert",
+        "subdivide",
+        "triangulate",
+        "weld",
+        "cull-adjacent",
+        "flip",
+        "t-nodes",
+    ] {
         assert!(stdout(&o).contains(command));
     }
 }
@@ -392,4 +412,147 @@ fn triangulate_splits_polygons() {
     let o = weft(&dir, &["triangulate", "mixed.obj", "missing/tri.obj"]);
     assert_exit(&o, 1);
     assert!(stderr(&o).contains("missing"), "{}", stderr(&o));
+}
+
+#[test]
+fn weld_joins_inputs_and_cull_removes_twins() {
+    let dir = folder("weld");
+    let cube = shapes::cube();
+    let mut shifted = cube.clone();
+    for p in shifted.positions_mut() {
+        p.x += 1.0 + 1e-4; // a seam within the default tolerance
+    }
+    io::write_mesh(dir.join("a.obj"), &cube).unwrap();
+    io::write_mesh(dir.join("b.stl"), &shifted).unwrap();
+
+    let o = weft(&dir, &["weld", "a.obj", "b.stl", "-o", "boxes.ply"]);
+    assert_exit(&o, 0);
+    let boxes = io::read_mesh(dir.join("boxes.ply")).unwrap();
+    // Two cubes sharing a face: 12 vertices; the STL cube came as 12 triangles.
+    assert_eq!((boxes.vertex_count(), boxes.face_count()), (12, 6 + 12));
+
+    let o = weft(
+        &dir,
+        &[
+            "weld",
+            "a.obj",
+            "b.stl",
+            "-o",
+            "apart.obj",
+            "--tolerance",
+            "0",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(
+        io::read_mesh(dir.join("apart.obj")).unwrap().vertex_count(),
+        16
+    );
+
+    // Two cubes with quads on the shared wall: culling removes both walls.
+    let mut quads = shapes::cube();
+    for p in quads.positions_mut() {
+        p.x += 1.0;
+    }
+    io::write_mesh(dir.join("c.obj"), &quads).unwrap();
+    let o = weft(&dir, &["weld", "a.obj", "c.obj", "-o", "pair.obj"]);
+    assert_exit(&o, 0);
+    let o = weft(&dir, &["cull-adjacent", "pair.obj", "hull.obj"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("removed 2 of 12"), "{}", stderr(&o));
+    let hull = io::read_mesh(dir.join("hull.obj")).unwrap();
+    assert_eq!(hull.face_count(), 10);
+    let o = weft(&dir, &["info", "hull.obj"]);
+    assert!(
+        stdout(&o).contains("closed                yes"),
+        "{}",
+        stdout(&o)
+    );
+
+    let o = weft(&dir, &["weld", "-o", "x.obj"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["weld", "a.obj", "-o", "x.obj", "--tolerance", "-1"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["weld", "a.obj", "gone.obj", "-o", "x.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("gone.obj"), "{}", stderr(&o));
+    assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn flip_reverses_or_unifies() {
+    let dir = folder("flip");
+    let grid = shapes::quad_grid(3, 3);
+    let polygons: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if f == 4 || f == 7 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    let mixed = weft::Mesh::from_polygons(grid.positions().to_vec(), polygons).unwrap();
+    io::write_mesh(dir.join("mixed.obj"), &mixed).unwrap();
+
+    let o = weft(&dir, &["flip", "mixed.obj", "unified.obj", "--unify"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("flipped 2 of 9"), "{}", stderr(&o));
+    let unified = io::read_mesh(dir.join("unified.obj")).unwrap();
+    assert_eq!(unified.positions(), grid.positions());
+    for (f, face) in unified.faces().enumerate() {
+        assert_same_cycle(face, grid.face(f).to_vec(), f);
+    }
+
+    let o = weft(&dir, &["flip", "unified.obj", "down.obj"]);
+    assert_exit(&o, 0);
+    let down = io::read_mesh(dir.join("down.obj")).unwrap();
+    for (f, face) in down.faces().enumerate() {
+        let mut expected = grid.face(f).to_vec();
+        expected.reverse();
+        assert_same_cycle(face, expected, f);
+    }
+}
+
+/// The same cycle of vertices, whatever corner it starts at.
+#[track_caller]
+fn assert_same_cycle(face: &[u32], mut expected: Vec<u32>, f: usize) {
+    let start = expected.iter().position(|v| *v == face[0]);
+    assert!(start.is_some(), "face {f}: {face:?} vs {expected:?}");
+    expected.rotate_left(start.unwrap());
+    assert_eq!(face, expected.as_slice(), "face {f}");
+}
+
+#[test]
+fn t_nodes_are_listed_and_repaired() {
+    let dir = folder("t-nodes");
+    // A tall quad beside two short ones: vertex 5 at (1, 1) lies on the
+    // tall quad's edge from (1, 0) to (1, 2).
+    std::fs::write(
+        dir.join("t.obj"),
+        "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 2 0 0\nv 1 1 0\nv 2 1 0\nv 2 2 0\n\
+         f 1 2 3 4\nf 2 5 7 6\nf 6 7 8 3\n",
+    )
+    .unwrap();
+    let o = weft(&dir, &["t-nodes", "t.obj", "--repair", "fixed.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    assert!(text.contains("1 T-nodes"), "{text}");
+    assert!(
+        text.contains("vertex 5 lies on edge 1-2 of face 0"),
+        "{text}"
+    );
+    let fixed = io::read_mesh(dir.join("fixed.obj")).unwrap();
+    assert_eq!(fixed.face(0), &[0, 1, 5, 2, 3]);
+    let o = weft(&dir, &["info", "fixed.obj", "--json"]);
+    // The outline of the 2 × 2 square, and the seam is gone.
+    assert!(stdout(&o).contains("\"naked_edges\": 7"), "{}", stdout(&o));
+
+    let o = weft(&dir, &["t-nodes", "fixed.obj"]);
+    assert_exit(&o, 0);
+    assert!(stdout(&o).contains("0 T-nodes"), "{}", stdout(&o));
+    let o = weft(&dir, &["t-nodes", "t.obj", "--tolerance", "nan"]);
+    assert_exit(&o, 2);
 }

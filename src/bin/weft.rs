@@ -44,6 +44,9 @@ enum Command {
         /// Print one JSON object instead of text.
         #[arg(long)]
         json: bool,
+        /// Distance from its best-fit plane under which a face counts as planar.
+        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        planarity_tolerance: f64,
     },
     /// A shaded picture: front faces blue-grey, back faces orange, edges
     /// drawn on coarse meshes, camera fitted in a three-quarter view.
@@ -84,6 +87,69 @@ enum Command {
         /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners.
         #[arg(long, value_enum, default_value = "fixed")]
         naked_edges: NakedEdgesArg,
+    },
+    /// Joins meshes into one and merges vertices closer than the tolerance;
+    /// faces that collapse are removed and counted.
+    #[command(
+        after_help = "Example:\n  weft weld panel-a.obj panel-b.obj panel-c.obj -o joined.obj --tolerance 0.01"
+    )]
+    Weld {
+        /// The mesh files to join (.obj, .ply, .stl, .off).
+        #[arg(required = true, value_parser = mesh_path)]
+        inputs: Vec<PathBuf>,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(short, long, value_parser = mesh_path)]
+        output: PathBuf,
+        /// Vertices at most this far apart become one.
+        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        tolerance: f64,
+    },
+    /// Removes every face that has a twin with the same vertices (either
+    /// orientation), all copies: the walls inside joined boxes.
+    #[command(
+        name = "cull-adjacent",
+        after_help = "Example:\n  weft weld boxes.obj -o welded.obj\n  weft cull-adjacent welded.obj hull.obj"
+    )]
+    CullAdjacent {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+    },
+    /// Reverses every face, or with --unify only the fewest faces that give
+    /// each connected piece one consistent orientation.
+    #[command(
+        after_help = "Examples:\n  weft flip shell.obj shell-flipped.obj\n  weft flip joined.obj unified.obj --unify"
+    )]
+    Flip {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+        /// Make the orientation consistent instead of flipping everything.
+        #[arg(long)]
+        unify: bool,
+    },
+    /// Lists the T-nodes (vertices lying inside another face's naked edge),
+    /// and with --repair inserts each into its edge.
+    #[command(
+        name = "t-nodes",
+        after_help = "Example:\n  weft t-nodes joined.obj --repair repaired.obj --tolerance 0.001"
+    )]
+    TNodes {
+        /// The mesh file to read (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        input: PathBuf,
+        /// Write the mesh with every T-node inserted into its edge here.
+        #[arg(long, value_parser = mesh_path)]
+        repair: Option<PathBuf>,
+        /// How close to an edge a vertex must be.
+        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        tolerance: f64,
     },
     /// Splits every face into triangles (quads along the shorter diagonal,
     /// n-gons by ear clipping); vertices stay as they are.
@@ -137,6 +203,13 @@ fn mesh_path(text: &str) -> Result<PathBuf, String> {
         .map_err(|_| "expected a mesh file ending in .obj, .ply, .stl or .off".to_string())
 }
 
+fn tolerance(text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|t| t.is_finite() && *t >= 0.0)
+        .ok_or_else(|| "expected a distance of 0 or more, such as 0.001".to_string())
+}
+
 fn png_path(text: &str) -> Result<PathBuf, String> {
     let path = PathBuf::from(text);
     match path.extension().and_then(|e| e.to_str()) {
@@ -188,9 +261,13 @@ fn main() -> ExitCode {
 
 fn run(cli: &Cli) -> Result<(), Failure> {
     match &cli.command {
-        Command::Info { input, json } => {
+        Command::Info {
+            input,
+            json,
+            planarity_tolerance,
+        } => {
             let mesh = read(cli, input)?;
-            let report = with_progress("analysing", || describe(&mesh));
+            let report = with_progress("analysing", || describe(&mesh, *planarity_tolerance));
             if *json {
                 println!("{}", report.json(input));
             } else {
@@ -261,6 +338,96 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             })
             .map_err(|e| operation_failed(input, "subdivide", e))?;
             write(output, &refined, &io::WriteOptions::default())
+        }
+        Command::Weld {
+            inputs,
+            output,
+            tolerance,
+        } => {
+            let meshes = inputs
+                .iter()
+                .map(|path| read(cli, path))
+                .collect::<Result<Vec<_>, _>>()?;
+            let parts: Vec<&Mesh> = meshes.iter().collect();
+            let joined = weft::weld::join(&parts)
+                .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?;
+            let (welded, report) =
+                with_progress("welding", || weft::weld::weld(&joined, *tolerance))
+                    .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
+            eprintln!(
+                "joined {} meshes ({} vertices, {} faces); merged {} vertices, removed {} collapsed faces and {} unused vertices",
+                meshes.len(),
+                joined.vertex_count(),
+                joined.face_count(),
+                report.merged_vertex_count,
+                report.removed_face_count,
+                report.unused_vertex_count
+            );
+            write(output, &welded, &io::WriteOptions::default())
+        }
+        Command::CullAdjacent { input, output } => {
+            let mesh = read(cli, input)?;
+            let (culled, removed) = with_progress("culling", || weft::cull::cull_adjacent(&mesh));
+            eprintln!(
+                "{}: removed {removed} of {} faces that had a twin",
+                input.display(),
+                mesh.face_count()
+            );
+            write(output, &culled, &io::WriteOptions::default())
+        }
+        Command::Flip {
+            input,
+            output,
+            unify,
+        } => {
+            let mesh = read(cli, input)?;
+            let flipped = if *unify {
+                let (unified, count) =
+                    with_progress("unifying", || weft::orient::unify_orientation(&mesh));
+                eprintln!(
+                    "{}: flipped {count} of {} faces to unify the orientation{}",
+                    input.display(),
+                    mesh.face_count(),
+                    if weft::orient::is_orientable(&mesh) {
+                        ""
+                    } else {
+                        " (the mesh is not orientable: some edges still disagree)"
+                    }
+                );
+                unified
+            } else {
+                weft::orient::flip(&mesh)
+            };
+            write(output, &flipped, &io::WriteOptions::default())
+        }
+        Command::TNodes {
+            input,
+            repair,
+            tolerance,
+        } => {
+            let mesh = read(cli, input)?;
+            let found = with_progress("searching", || {
+                weft::t_nodes::find_t_nodes(&mesh, *tolerance)
+            })
+            .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
+            println!(
+                "{}: {} T-nodes within {tolerance}",
+                input.display(),
+                found.len()
+            );
+            for t in &found {
+                println!(
+                    "  vertex {} lies on edge {}-{} of face {} at {:.4} of its length",
+                    t.vertex, t.edge[0], t.edge[1], t.face, t.parameter
+                );
+            }
+            if let Some(output) = repair {
+                let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, *tolerance)
+                    .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
+                eprintln!("inserted {inserted} vertices into edges");
+                write(output, &repaired, &io::WriteOptions::default())?;
+            }
+            Ok(())
         }
         Command::Triangulate { input, output } => {
             let mesh = read(cli, input)?;
@@ -373,9 +540,15 @@ struct Report {
     orientable: bool,
     oriented: bool,
     bounding_box: Option<([f64; 3], [f64; 3])>,
+    /// The largest distance of a face's corners from its best-fit plane.
+    max_planarity_deviation: f64,
+    /// Faces further from planar than the tolerance.
+    non_planar_faces: usize,
+    planarity_tolerance: f64,
 }
 
-fn describe(mesh: &Mesh) -> Report {
+fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
+    let deviations = weft::analysis::planarity_deviations(mesh);
     let info = Topology::new(mesh).info(mesh);
     let count = |size: u32| mesh.face_sizes().iter().filter(|&&s| s == size).count();
     let (triangles, quads) = (count(3), count(4));
@@ -396,6 +569,12 @@ fn describe(mesh: &Mesh) -> Report {
         bounding_box: mesh
             .bounding_box()
             .map(|(lo, hi)| (lo.to_array(), hi.to_array())),
+        max_planarity_deviation: deviations.iter().copied().fold(0.0, f64::max),
+        non_planar_faces: deviations
+            .iter()
+            .filter(|&&d| d > planarity_tolerance)
+            .count(),
+        planarity_tolerance,
     }
 }
 
@@ -431,6 +610,16 @@ impl Report {
         line("orientable", yes(self.orientable).to_string());
         line("oriented", yes(self.oriented).to_string());
         line(
+            "planarity",
+            format!(
+                "{} of {} faces beyond {} of their best-fit plane (largest deviation {:.3e})",
+                self.non_planar_faces,
+                self.faces,
+                self.planarity_tolerance,
+                self.max_planarity_deviation
+            ),
+        );
+        line(
             "bounding box",
             match self.bounding_box {
                 Some((lo, hi)) => format!(
@@ -453,7 +642,8 @@ impl Report {
             "{{\"file\": {}, \"vertices\": {}, \"faces\": {}, \"triangles\": {}, \"quads\": {}, \
              \"ngons\": {}, \"edges\": {}, \"naked_edges\": {}, \"non_manifold_edges\": {}, \
              \"non_manifold_vertices\": {}, \"components\": {}, \"closed\": {}, \
-             \"orientable\": {}, \"oriented\": {}, \"bounding_box\": {bounding_box}}}",
+             \"orientable\": {}, \"oriented\": {}, \"planarity\": {{\"tolerance\": {}, \
+             \"non_planar_faces\": {}, \"max_deviation\": {}}}, \"bounding_box\": {bounding_box}}}",
             json_string(&path.to_string_lossy()),
             self.vertices,
             self.faces,
@@ -468,6 +658,9 @@ impl Report {
             self.closed,
             self.orientable,
             self.oriented,
+            self.planarity_tolerance,
+            self.non_planar_faces,
+            self.max_planarity_deviation,
         )
     }
 }
