@@ -556,3 +556,67 @@ fn t_nodes_are_listed_and_repaired() {
     let o = weft(&dir, &["t-nodes", "t.obj", "--tolerance", "nan"]);
     assert_exit(&o, 2);
 }
+
+#[test]
+fn demo_writes_every_workflow_with_an_index() {
+    let dir = folder("demo");
+    let o = weft(&dir, &["demo", "--out", "pictures"]);
+    assert_exit(&o, 0);
+    let out = dir.join("pictures");
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let lines: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
+    let mut pictures = 0;
+    for name in [
+        "loop-1",
+        "loop-2",
+        "loop-3",
+        "loop-3-smooth",
+        "loop-3-corner-fixed",
+        "hole-3-smooth",
+        "surfaces-joined",
+        "surfaces-smooth",
+        "t-nodes-welded",
+        "t-nodes-repaired-smooth",
+        "voronoi-skin",
+        "fading-smooth",
+        "boxes-culled",
+        "boxes-smooth",
+    ] {
+        assert!(
+            index.contains(&format!("src=\"{name}.png\"")),
+            "{name} missing from the index"
+        );
+        assert!(
+            lines.iter().any(|l| l.starts_with(&format!("{name}: "))),
+            "no summary line for {name}"
+        );
+        let mesh = io::read_mesh(out.join(format!("{name}.obj"))).unwrap();
+        assert!(mesh.face_count() > 0, "{name}");
+        let decoder = png::Decoder::new(std::io::BufReader::new(
+            std::fs::File::open(out.join(format!("{name}.png"))).unwrap(),
+        ));
+        let info = decoder.read_info().unwrap();
+        assert_eq!((info.info().width, info.info().height), (800, 600));
+        pictures += 1;
+    }
+    assert_eq!(pictures, 14);
+    // The culled boxes are one closed shell; the repaired surfaces one piece.
+    let o = weft(&out, &["info", "boxes-culled.obj", "--json"]);
+    assert!(stdout(&o).contains("\"closed\": true"), "{}", stdout(&o));
+    let o = weft(&out, &["info", "t-nodes-repaired-smooth.obj", "--json"]);
+    assert!(stdout(&o).contains("\"components\": 1"), "{}", stdout(&o));
+}
+
+#[test]
+fn demo_failures_name_the_folder_or_picture() {
+    let dir = folder("demo-failures");
+    let o = weft(&dir, &["demo", "--out", "no/such/folder"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("no/such/folder"), "{}", stderr(&o));
+    std::fs::write(dir.join("fake.png"), b"not a picture").unwrap();
+    let o = weft(&dir, &["demo", "--image", "fake.png"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("fake.png"), "{}", stderr(&o));
+    let o = weft(&dir, &["demo", "--image", "heights.jpg"]);
+    assert_exit(&o, 2);
+}

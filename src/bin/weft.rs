@@ -11,6 +11,9 @@ use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+#[path = "weft/demo.rs"]
+mod demo;
+
 use weft::io::render::{self, RenderOptions};
 use weft::io::{self, Format, IoError, ReadOptions};
 use weft::subdivide::{self, NakedEdges, Scheme};
@@ -150,6 +153,19 @@ enum Command {
         /// How close to an edge a vertex must be.
         #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         tolerance: f64,
+    },
+    /// Runs the design workflows on built-in inputs: each stage as a mesh
+    /// file and a picture, a summary line each, and an index.html.
+    #[command(
+        after_help = "Example:\n  weft demo --out weft-demo\n  weft demo --image heights.png"
+    )]
+    Demo {
+        /// The folder to write into (created when missing).
+        #[arg(long, default_value = "weft-demo")]
+        out: PathBuf,
+        /// A grayscale picture for the fading pattern's heights (default: a built-in gradient).
+        #[arg(long, value_parser = png_path)]
+        image: Option<PathBuf>,
     },
     /// Splits every face into triangles (quads along the shorter diagonal,
     /// n-gons by ear clipping); vertices stay as they are.
@@ -428,6 +444,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 write(output, &repaired, &io::WriteOptions::default())?;
             }
             Ok(())
+        }
+        Command::Demo { out, image } => {
+            with_progress("running the demo", || demo::run(out, image.as_deref()))
+                .map_err(Failure::Failed)
         }
         Command::Triangulate { input, output } => {
             let mesh = read(cli, input)?;

@@ -5,7 +5,9 @@
 //! beside the camera (Lambert shading plus ambient); front faces are blue-grey
 //! and back faces orange, so a flipped face stands out. Coarse meshes get
 //! their face edges drawn as thin dark lines (polygon edges only, not the
-//! fan diagonals used to fill n-gons). Each pixel averages 2 × 2 samples.
+//! fan diagonals used to fill n-gons). Naked edges (edges of one face) are
+//! always drawn, in red and a little wider, so open seams show even on dense
+//! meshes. Each pixel averages 2 × 2 samples.
 
 use std::io::Write;
 use std::path::Path;
@@ -15,6 +17,7 @@ use glam::DVec3;
 use super::{write_atomically, IoError};
 use crate::error::{try_vec, Error};
 use crate::mesh::Mesh;
+use crate::topology::Topology;
 
 /// Largest picture side, in pixels.
 pub const MAX_SIDE: u32 = 4096;
@@ -89,8 +92,22 @@ pub const BACKGROUND: [f32; 3] = [0.96, 0.96, 0.95];
 const FRONT: [f32; 3] = [0.60, 0.70, 0.84];
 const BACK: [f32; 3] = [0.93, 0.50, 0.28];
 const EDGE: [f32; 3] = [0.13, 0.14, 0.17];
+const NAKED_EDGE: [f32; 3] = [0.85, 0.08, 0.10];
 /// Half the width of an edge line, in supersampled pixels.
 const EDGE_HALF_WIDTH: f64 = 0.85;
+/// Half the width of a naked edge line, in supersampled pixels.
+const NAKED_HALF_WIDTH: f64 = 1.7;
+
+/// How a side of a fan triangle is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Side {
+    /// Inside the polygon (a fan diagonal), or edges are off.
+    Hidden,
+    /// A polygon edge.
+    Edge,
+    /// A polygon edge that only this face has.
+    Naked,
+}
 const SAMPLES: usize = 2;
 
 /// The camera: an eye, its axes, and the map from view directions to pixels.
@@ -196,9 +213,21 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
     let fill = (camera.right * 0.6 - camera.forward * 0.4).normalize();
     let edges = options.edges.unwrap_or(mesh.face_count() < EDGE_FACE_LIMIT);
 
+    let topology = Topology::new(mesh);
+    let side = |corner: usize| {
+        if topology.is_naked_edge(topology.corner_edges()[corner] as usize) {
+            Side::Naked
+        } else if edges {
+            Side::Edge
+        } else {
+            Side::Hidden
+        }
+    };
+
     let mut corners = Vec::new();
     let mut screen = Vec::new();
     for f in 0..mesh.face_count() {
+        let first = mesh.face_offsets()[f] as usize;
         corners.clear();
         corners.extend(mesh.face_positions(f));
         let normal = newell_normal(&corners).normalize_or_zero();
@@ -221,18 +250,20 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
         screen.extend(corners.iter().map(|&p| camera.project(p)));
         let n = screen.len();
         for i in 1..n - 1 {
-            // Which sides of this fan triangle are sides of the polygon:
-            // side k is opposite corner k.
-            let real = [true, i + 1 == n - 1, i == 1];
+            // Side k of the fan triangle (0, i, i + 1) is opposite its corner k:
+            // the polygon's edges from corner i, from corner n − 1 (when
+            // i + 1 is the last corner) and from corner 0 (when i is 1).
+            let sides = [
+                side(first + i),
+                if i + 1 == n - 1 {
+                    side(first + n - 1)
+                } else {
+                    Side::Hidden
+                },
+                if i == 1 { side(first) } else { Side::Hidden },
+            ];
             let triangle = [screen[0], screen[i], screen[i + 1]];
-            fill_triangle(
-                &mut color,
-                &mut depth,
-                (w, h),
-                triangle,
-                shaded,
-                if edges { real } else { [false; 3] },
-            );
+            fill_triangle(&mut color, &mut depth, (w, h), triangle, shaded, sides);
         }
     }
 
@@ -263,14 +294,14 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
     })
 }
 
-/// Fills one triangle, z-buffered, darkening samples near the sides marked in `edges`.
+/// Fills one triangle, z-buffered, drawing the sides marked in `sides` as lines.
 fn fill_triangle(
     color: &mut [[f32; 3]],
     depth: &mut [f32],
     (w, h): (usize, usize),
     [a, b, c]: [(f64, f64, f64); 3],
     shaded: [f32; 3],
-    edges: [bool; 3],
+    sides: [Side; 3],
 ) {
     let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
     if !area.is_finite() || area.abs() < 1e-12 {
@@ -304,13 +335,19 @@ fn fill_triangle(
                 continue;
             }
             depth[i] = z as f32;
-            let near_edge = (0..3).any(|k| {
-                edges[k] && weights[k] * area.abs() / lengths[k].max(1e-12) < EDGE_HALF_WIDTH
-            });
-            color[i] = if near_edge {
-                [0, 1, 2].map(|k| shaded[k] * 0.2 + EDGE[k] * 0.8)
+            // Distance to side k: twice the area of (pixel, side) over its length.
+            let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
+            let line = if (0..3).any(|k| sides[k] == Side::Naked && distance(k) < NAKED_HALF_WIDTH)
+            {
+                Some(NAKED_EDGE)
+            } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
+                Some(EDGE)
             } else {
-                shaded
+                None
+            };
+            color[i] = match line {
+                Some(ink) => [0, 1, 2].map(|k| shaded[k] * 0.15 + ink[k] * 0.85),
+                None => shaded,
             };
         }
     }
