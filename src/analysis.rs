@@ -15,23 +15,31 @@ use crate::weld::check_tolerance;
 /// 1974). A face of zero area gets the zero vector.
 pub fn face_normals(mesh: &Mesh) -> Vec<DVec3> {
     (0..mesh.face_count())
-        .map(|f| area_vector(mesh, f).normalize_or_zero())
+        .map(|f| face_normal(mesh, f))
         .collect()
 }
 
-/// The area vector of face `f` (its normal times its area), by Newell's
-/// method about the face's first corner (which keeps far-away faces exact).
+/// The area vector of face `f` (its normal times its area), by Newell's method.
 pub fn area_vector(mesh: &Mesh, f: usize) -> DVec3 {
-    let p = mesh.positions();
-    let face = mesh.face(f);
-    let origin = p[face[0] as usize];
-    let mut sum = DVec3::ZERO;
-    for i in 0..face.len() {
-        let a = p[face[i] as usize] - origin;
-        let b = p[face[(i + 1) % face.len()] as usize] - origin;
-        sum += a.cross(b);
-    }
-    sum / 2.0
+    let corners: Vec<DVec3> = mesh.face_positions(f).collect();
+    newell_vector(&corners) / 2.0
+}
+
+/// The unit Newell normal of face `f`; zero for a face of no area.
+pub fn face_normal(mesh: &Mesh, f: usize) -> DVec3 {
+    area_vector(mesh, f).normalize_or_zero()
+}
+
+/// Newell's sum over a polygon's edges: a vector along the polygon's normal
+/// whose length is twice its area. Taken about the first corner, which keeps
+/// polygons far from the origin exact. Zero for fewer than 3 corners.
+pub fn newell_vector(corners: &[DVec3]) -> DVec3 {
+    let Some(&origin) = corners.first() else {
+        return DVec3::ZERO;
+    };
+    (0..corners.len())
+        .map(|i| (corners[i] - origin).cross(corners[(i + 1) % corners.len()] - origin))
+        .sum()
 }
 
 /// The unit normal at each vertex: the faces' Newell normals weighted by

@@ -7,7 +7,6 @@ mod carpet;
 mod inset;
 mod offset;
 
-pub(crate) use crate::linalg::symmetric_eigen;
 pub use bevel::{bevel_edges, bevel_vertices};
 pub use carpet::sierpinski_carpet;
 pub use inset::{picture_frame, window, InsetMode};
