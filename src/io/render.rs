@@ -172,20 +172,6 @@ impl Camera {
     }
 }
 
-/// Newell's normal of a polygon (not normalized).
-fn newell_normal(points: &[DVec3]) -> DVec3 {
-    let mut n = DVec3::ZERO;
-    for (i, a) in points.iter().enumerate() {
-        let b = points[(i + 1) % points.len()];
-        n += DVec3::new(
-            (a.y - b.y) * (a.z + b.z),
-            (a.z - b.z) * (a.x + b.x),
-            (a.x - b.x) * (a.y + b.y),
-        );
-    }
-    n
-}
-
 /// Draws a mesh.
 ///
 /// # Errors
@@ -230,7 +216,7 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
         let first = mesh.face_offsets()[f] as usize;
         corners.clear();
         corners.extend(mesh.face_positions(f));
-        let normal = newell_normal(&corners).normalize_or_zero();
+        let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
         let front = normal.dot(camera.eye - centroid) >= 0.0;
         let (base, facing) = if front {
