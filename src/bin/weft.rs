@@ -445,10 +445,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             }
             Ok(())
         }
-        Command::Demo { out, image } => {
-            with_progress("running the demo", || demo::run(out, image.as_deref()))
-                .map_err(Failure::Failed)
-        }
+        // Each stage prints its own line as it finishes: that is the progress.
+        Command::Demo { out, image } => demo::run(out, image.as_deref()).map_err(Failure::Failed),
         Command::Triangulate { input, output } => {
             let mesh = read(cli, input)?;
             let triangles =
