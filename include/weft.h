@@ -101,23 +101,6 @@
 #define WEFT_SCHEME_LOOP 1
 
 /**
- * Naked-edge mode of the smoothing exports: boundary vertices stay.
- */
-#define WEFT_SMOOTH_NAKED_FIXED 0
-
-/**
- * Naked-edge mode of the smoothing exports: boundary vertices move along
- * the boundary, averaged with their boundary neighbours only.
- */
-#define WEFT_SMOOTH_NAKED_SMOOTH 1
-
-/**
- * Naked-edge mode of the smoothing exports: as SMOOTH, but a boundary
- * vertex with a single face (a corner) stays.
- */
-#define WEFT_SMOOTH_NAKED_CORNER_FIXED 2
-
-/**
  * Offset type: each vertex moves by the distance along its vertex normal.
  */
 #define WEFT_OFFSET_DIAGONAL 0
@@ -1267,7 +1250,7 @@ WeftStatus weft_sierpinski_triangles(const struct WeftMesh *mesh, uint32_t level
  * `mesh` is the input; it must not be NULL.
  * `iterations` is the number of steps, 0 to 10000.
  * `blend` is in [0, 1]: 1 jumps to the average, 0 does nothing.
- * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
  * `out_mesh` receives the new mesh on success (free it with
  * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
  *
@@ -1290,7 +1273,7 @@ WeftStatus weft_laplacian_smooth(const struct WeftMesh *mesh, uint32_t iteration
  * positions rather than the previous iteration's (0 is usual).
  * `beta` is in [0, 1]: the share of a vertex's own displacement undone
  * (above 0.5 is recommended; 0.6 is a good start).
- * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
  * `out_mesh` receives the new mesh on success (free it with
  * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
  *
@@ -1314,7 +1297,7 @@ WeftStatus weft_laplacian_hc_smooth(const struct WeftMesh *mesh, uint32_t iterat
  * at least 1.
  * `iterations` is the number of steps, 0 to 10000.
  * `blend` is in [0, 1].
- * `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+ * `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
  * `out_values` receives the blurred values in the same layout; it must
  * have room for `value_count` doubles (`out_len`), may be the same buffer
  * as `values`, and is written only on success.

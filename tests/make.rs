@@ -3,8 +3,10 @@
 
 use weft::plane::Plane;
 use weft::stellate::{stellate, Heights};
+use weft::subdivide::{catmull_clark, NakedEdges};
 use weft::voronoi::{cells_to_mesh, voronoi};
-use weft::{DVec3, Mesh, Topology};
+use weft::weld::{join, weld};
+use weft::{DVec3, Topology};
 
 fn random_points(seed: u64, n: usize, accept: impl Fn(DVec3) -> bool) -> Vec<DVec3> {
     let mut state = seed;
@@ -22,30 +24,6 @@ fn random_points(seed: u64, n: usize, accept: impl Fn(DVec3) -> bool) -> Vec<DVe
         }
     }
     points
-}
-
-/// Merges vertices closer than `tolerance` (a quadratic stand-in for the
-/// library's weld, enough for a few hundred vertices).
-fn weld_for_test(mesh: &Mesh, tolerance: f64) -> Mesh {
-    let mut representative: Vec<u32> = Vec::new();
-    let mut positions: Vec<DVec3> = Vec::new();
-    for &p in mesh.positions() {
-        match positions
-            .iter()
-            .position(|q| (*q - p).length() <= tolerance)
-        {
-            Some(k) => representative.push(k as u32),
-            None => {
-                representative.push(positions.len() as u32);
-                positions.push(p);
-            }
-        }
-    }
-    let faces: Vec<Vec<u32>> = mesh
-        .faces()
-        .map(|f| f.iter().map(|&v| representative[v as usize]).collect())
-        .collect();
-    Mesh::from_polygons(positions, faces).expect("welded skin is valid")
 }
 
 fn on_boundary(p: DVec3, boundary: &[DVec3]) -> bool {
@@ -74,20 +52,34 @@ fn check_skin(points: &[DVec3], boundary: &[DVec3]) {
         .iter()
         .all(|p| (p.z + 0.3).abs() < 1e-12));
 
-    let welded = weld_for_test(&skin, 1e-9);
-    let topology = Topology::new(&welded);
-    let info = topology.info(&welded);
-    assert_eq!(info.component_count, 1);
-    assert_eq!(info.non_manifold_edge_count, 0);
-    assert_eq!(info.non_manifold_vertex_count, 0);
-    assert!(info.is_oriented && info.is_orientable);
-    for e in topology.naked_edges() {
-        let [a, b] = topology.edges()[e as usize];
-        for v in [a, b] {
-            assert!(on_boundary(welded.positions()[v as usize], boundary));
+    // The chain of the workflow, only Weft calls: the pyramids joined (here
+    // already one mesh, so joining it with an empty mesh must change nothing),
+    // welded, then Catmull-Clark with the outline fixed.
+    let joined = join(&[&skin, &weft::Mesh::empty()]).unwrap();
+    assert_eq!(joined, skin);
+    let (welded, report) = weld(&joined, 1e-9).unwrap();
+    assert_eq!(report.removed_face_count, 0);
+    let smooth = catmull_clark(&welded, 2, NakedEdges::Fixed).unwrap();
+    for mesh in [&welded, &smooth] {
+        let topology = Topology::new(mesh);
+        let info = topology.info(mesh);
+        assert_eq!(info.component_count, 1);
+        assert_eq!(info.non_manifold_edge_count, 0);
+        assert_eq!(info.non_manifold_vertex_count, 0);
+        assert!(info.is_oriented && info.is_orientable);
+        for e in topology.naked_edges() {
+            let [a, b] = topology.edges()[e as usize];
+            for v in [a, b] {
+                assert!(on_boundary(mesh.positions()[v as usize], boundary));
+            }
         }
+        assert!(info.naked_edge_count >= boundary.len());
     }
-    assert!(info.naked_edge_count >= boundary.len());
+    // Fixed keeps the outline: the subdivided naked edges are the welded ones split in four.
+    assert_eq!(
+        Topology::new(&smooth).info(&smooth).naked_edge_count,
+        4 * Topology::new(&welded).info(&welded).naked_edge_count
+    );
 }
 
 #[test]

@@ -4,6 +4,7 @@
 use weft::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
 use weft::cull::cull_adjacent;
 use weft::orient::{is_orientable, signed_volume, unify_orientation};
+use weft::subdivide::{catmull_clark, NakedEdges};
 use weft::t_nodes::{find_t_nodes, repair_t_nodes};
 use weft::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
 use weft::{shapes, DVec3, Mesh, MeshInfo, Topology};
@@ -283,12 +284,12 @@ fn t_nodes_between_grids_of_4x4_and_4x7_quads_are_found_and_repaired() {
     let (repaired, inserted) = repair_t_nodes(&mesh, DEFAULT_WELD_TOLERANCE).unwrap();
     assert_eq!(inserted, 9);
     assert_eq!(repaired.face_count(), 16 + 28);
-    let info = info(&repaired);
-    assert_eq!(info.component_count, 1);
-    assert!(info.is_oriented);
+    let repaired_info = info(&repaired);
+    assert_eq!(repaired_info.component_count, 1);
+    assert!(repaired_info.is_oriented);
     // Only the outer border is naked: 4 + 4 along the bottom and the top,
     // 4 on the left, 7 on the right. Nothing along the seam x = 4.
-    assert_eq!(info.naked_edge_count, 27);
+    assert_eq!(repaired_info.naked_edge_count, 27);
     let loops = naked_boundaries(&repaired);
     assert_eq!(loops.len(), 1);
     let points = loops[0].points(&repaired);
@@ -301,6 +302,30 @@ fn t_nodes_between_grids_of_4x4_and_4x7_quads_are_found_and_repaired() {
     assert!(find_t_nodes(&repaired, DEFAULT_WELD_TOLERANCE)
         .unwrap()
         .is_empty());
+    // Catmull-Clark now sees one surface: one piece, and no naked edge along the seam.
+    let smooth = catmull_clark(&repaired, 2, NakedEdges::Fixed).unwrap();
+    let smooth_info = info(&smooth);
+    assert_eq!(smooth_info.component_count, 1);
+    assert!(smooth_info.is_oriented);
+    assert_eq!(smooth_info.naked_edge_count, 27 * 4);
+    let seam_naked = naked_boundaries(&smooth)
+        .iter()
+        .flat_map(|l| {
+            let p = l.points(&smooth);
+            (0..p.len())
+                .filter(|&i| {
+                    (p[i].x - 4.0).abs() < 1e-12 && (p[(i + 1) % p.len()].x - 4.0).abs() < 1e-12
+                })
+                .map(|i| (p[i].y, p[(i + 1) % p.len()].y))
+                .collect::<Vec<_>>()
+        })
+        // The seam runs from y = 0 to 4 inside; only the border's own ends may touch x = 4.
+        .filter(|&(a, b)| a.min(b) > 1e-12 && a.max(b) < 4.0 - 1e-12)
+        .count();
+    assert_eq!(seam_naked, 0);
+    // Without the repair the same grids subdivide as two pieces split along the seam.
+    let unrepaired = catmull_clark(&mesh, 1, NakedEdges::Fixed).unwrap();
+    assert_eq!(info(&unrepaired).component_count, 2);
 }
 
 #[test]

@@ -15,15 +15,6 @@ use crate::split;
 use crate::topology::Topology;
 use crate::transform::{self, InsetMode, OffsetType};
 
-/// Naked-edge mode of the smoothing exports: boundary vertices stay.
-pub const WEFT_SMOOTH_NAKED_FIXED: u32 = 0;
-/// Naked-edge mode of the smoothing exports: boundary vertices move along
-/// the boundary, averaged with their boundary neighbours only.
-pub const WEFT_SMOOTH_NAKED_SMOOTH: u32 = 1;
-/// Naked-edge mode of the smoothing exports: as SMOOTH, but a boundary
-/// vertex with a single face (a corner) stays.
-pub const WEFT_SMOOTH_NAKED_CORNER_FIXED: u32 = 2;
-
 /// Offset type: each vertex moves by the distance along its vertex normal.
 pub const WEFT_OFFSET_DIAGONAL: u32 = 0;
 /// Offset type: along the vertex normal by the average of distance / cos of
@@ -44,17 +35,7 @@ pub const WEFT_DUAL_VERTEX_AVERAGE: u32 = 0;
 pub const WEFT_DUAL_KEEP_SIZE: u32 = 1;
 
 fn naked_edges(value: u32) -> Result<NakedEdges, Failure> {
-    enum_arg(
-        value,
-        "naked_edges",
-        |v| match v {
-            WEFT_SMOOTH_NAKED_FIXED => Some(NakedEdges::Fixed),
-            WEFT_SMOOTH_NAKED_SMOOTH => Some(NakedEdges::Smooth),
-            WEFT_SMOOTH_NAKED_CORNER_FIXED => Some(NakedEdges::CornerFixed),
-            _ => None,
-        },
-        "WEFT_SMOOTH_NAKED_FIXED (0), WEFT_SMOOTH_NAKED_SMOOTH (1) or WEFT_SMOOTH_NAKED_CORNER_FIXED (2)",
-    )
+    crate::ffi::subdivide::naked_edges_arg(value)
 }
 
 fn offset_type(value: u32) -> Result<OffsetType, Failure> {
@@ -254,7 +235,7 @@ pub unsafe extern "C" fn weft_sierpinski_triangles(
 /// `mesh` is the input; it must not be NULL.
 /// `iterations` is the number of steps, 0 to 10000.
 /// `blend` is in [0, 1]: 1 jumps to the average, 0 does nothing.
-/// `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+/// `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
 /// `out_mesh` receives the new mesh on success (free it with
 /// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
 ///
@@ -287,7 +268,7 @@ pub unsafe extern "C" fn weft_laplacian_smooth(
 /// positions rather than the previous iteration's (0 is usual).
 /// `beta` is in [0, 1]: the share of a vertex's own displacement undone
 /// (above 0.5 is recommended; 0.6 is a good start).
-/// `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+/// `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
 /// `out_mesh` receives the new mesh on success (free it with
 /// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
 ///
@@ -322,7 +303,7 @@ pub unsafe extern "C" fn weft_laplacian_hc_smooth(
 /// at least 1.
 /// `iterations` is the number of steps, 0 to 10000.
 /// `blend` is in [0, 1].
-/// `naked_edges` is one of the WEFT_SMOOTH_NAKED_* values.
+/// `naked_edges` is one of the WEFT_NAKED_EDGES_* values.
 /// `out_values` receives the blurred values in the same layout; it must
 /// have room for `value_count` doubles (`out_len`), may be the same buffer
 /// as `values`, and is written only on success.

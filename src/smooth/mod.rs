@@ -19,20 +19,12 @@ use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 use crate::topology::Topology;
 
-/// How vertices on naked edges behave (Weaverbird's `S` input). The same
-/// three values as the subdivision modes; to be merged with them.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
-pub enum NakedEdges {
-    /// Boundary vertices stay where they are.
-    #[default]
-    Fixed,
-    /// Boundary vertices move along the boundary: they are averaged with
-    /// their neighbours across naked edges only.
-    Smooth,
-    /// As `Smooth`, but a boundary vertex with a single face (a corner of
-    /// the outline) stays.
-    CornerFixed,
-}
+/// How vertices on naked edges behave while smoothing — the same three modes
+/// as subdivision: `Fixed` keeps boundary vertices where they are; `Smooth`
+/// moves them along the boundary, averaged with their neighbours across naked
+/// edges only; `CornerFixed` does the same but keeps a boundary vertex with a
+/// single face (a corner of the outline).
+pub use crate::subdivide::NakedEdges;
 
 /// Most iterations a smoothing call accepts, so a slip of the slider cannot
 /// hang the host.

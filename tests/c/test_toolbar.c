@@ -71,21 +71,21 @@ static void test_subdivisions(void) {
 static void test_smoothing(void) {
   WeftMesh *g = grid(), *out = NULL;
   double values[9] = {0, 0, 0, 0, 1, 0, 0, 0, 0}, blurred[9];
-  CHECK_STATUS(weft_laplacian_smooth(g, 3, 0.5, WEFT_SMOOTH_NAKED_FIXED, &out), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_laplacian_smooth(g, 3, 0.5, WEFT_NAKED_EDGES_FIXED, &out), WEFT_STATUS_OK);
   CHECK(memcmp(weft_mesh_positions(out), grid_positions, sizeof grid_positions) == 0);
   weft_mesh_free(out);
   CHECK_STATUS(weft_laplacian_smooth(g, 3, 0.5, 7, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("naked_edges is 7");
-  CHECK_STATUS(weft_laplacian_hc_smooth(g, 3, 0.0, 0.6, WEFT_SMOOTH_NAKED_SMOOTH, &out), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_laplacian_hc_smooth(g, 3, 0.0, 0.6, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_OK);
   expect(out, 9, 4);
-  CHECK_STATUS(weft_laplacian_hc_smooth(g, 3, 0.0, 2.0, WEFT_SMOOTH_NAKED_SMOOTH, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_laplacian_hc_smooth(g, 3, 0.0, 2.0, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("beta is 2");
-  CHECK_STATUS(weft_blur_values(g, values, 9, 1, 1, 0.5, WEFT_SMOOTH_NAKED_CORNER_FIXED, blurred, 9), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_blur_values(g, values, 9, 1, 1, 0.5, WEFT_NAKED_EDGES_CORNER_FIXED, blurred, 9), WEFT_STATUS_OK);
   CHECK(blurred[4] == 0.5 && blurred[0] == 0.0);
   blurred[0] = -1.0;
-  CHECK_STATUS(weft_blur_values(g, values, 8, 1, 1, 0.5, WEFT_SMOOTH_NAKED_FIXED, blurred, 9), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_blur_values(g, values, 8, 1, 1, 0.5, WEFT_NAKED_EDGES_FIXED, blurred, 9), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("8 values");
-  CHECK_STATUS(weft_blur_values(g, values, 9, 1, 1, 0.5, WEFT_SMOOTH_NAKED_FIXED, blurred, 4), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_STATUS(weft_blur_values(g, values, 9, 1, 1, 0.5, WEFT_NAKED_EDGES_FIXED, blurred, 4), WEFT_STATUS_BUFFER_TOO_SMALL);
   CHECK(blurred[0] == -1.0);
   weft_mesh_free(g);
 }
