@@ -18,7 +18,10 @@ use super::{corner_prev, edge_midpoint, repeat, vertex_fans, Builder};
 /// it closed through the vertex itself (a corner with one face gives a
 /// triangle). The same holds wherever a vertex's fan of faces breaks: at a
 /// non-manifold edge, or between two faces with opposite windings (unify
-/// the windings first for a clean result).
+/// the windings first for a clean result). When such a broken fan wraps all
+/// the way around its vertex and ends at the non-manifold edge it started
+/// from, that edge's midpoint is used once, so every polygon keeps distinct
+/// corners.
 ///
 /// Output order per level: one midpoint per edge in [`Topology::edges`]
 /// order, then the kept boundary vertices; the face polygons in face
@@ -62,8 +65,13 @@ fn midedge_once(mesh: &Mesh) -> Result<Mesh> {
                 continue;
             }
         } else {
-            polygon.push(edges[fan.corners[0] as usize]);
+            let first = edges[fan.corners[0] as usize];
+            polygon.push(first);
             polygon.extend(fan.corners.iter().map(|&c| incoming(c)));
+            // Only a non-manifold edge can both start and end an open fan.
+            if polygon.len() > 2 && polygon.last() == Some(&first) {
+                polygon.pop();
+            }
             let v = fan.vertex as usize;
             if kept[v] == u32::MAX {
                 kept[v] = out.vertex(mesh.positions()[v]);

@@ -1,0 +1,48 @@
+//! One test per input that fuzzing found to break an operation, on the small
+//! mesh that triggered it, asserting the behaviour now defined for it. The
+//! inputs themselves stay in `fuzz/corpus/operations/`.
+
+use weft::{DVec3, Mesh};
+
+fn mesh(positions: &[[f64; 3]], faces: &[&[u32]]) -> Mesh {
+    let positions = positions.iter().map(|&p| DVec3::from_array(p)).collect();
+    Mesh::from_polygons(positions, faces).unwrap()
+}
+
+/// Rebuilds the mesh through the checking constructor: every face has
+/// distinct in-range corners and every coordinate is finite.
+fn assert_valid(m: &Mesh) {
+    let rebuilt = Mesh::new(
+        m.positions().to_vec(),
+        m.face_sizes().to_vec(),
+        m.face_indices().to_vec(),
+    );
+    assert_eq!(rebuilt.as_ref().err(), None);
+}
+
+/// Three faces on four points: edge 0-1 has three faces, edge 3-0 two faces
+/// running it the same way. Vertex 1's fan of faces 2 and 1 starts and ends
+/// at the non-manifold edge 0-1, whose midpoint its polygon used twice.
+#[test]
+fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
+    let m = mesh(
+        &[
+            [-15.5, -15.873046875, -15.6201171875],
+            [-15.494140625, -15.1171875, -14.861328125],
+            [-14.109375, -16.0, -16.0],
+            [-13.857421875, -13.60546875, -15.875],
+        ],
+        &[&[3, 0, 1], &[3, 0, 1, 2], &[1, 0, 2]],
+    );
+    let once = weft::split::midedge(&m, 1).unwrap();
+    assert_valid(&once);
+    // 6 edge midpoints and the 4 vertices kept at broken fans; 3 face
+    // polygons and 8 vertex polygons.
+    assert_eq!(once.vertex_count(), 10);
+    assert_eq!(once.face_count(), 11);
+    // Midpoint 0 is edge 0-1, 3 is edge 1-2, 7 is vertex 1 kept.
+    assert!(once.faces().any(|f| f == [0, 3, 7]));
+    let twice = weft::split::midedge(&m, 2).unwrap();
+    assert_valid(&twice);
+    assert_eq!(twice.face_count(), 32);
+}
