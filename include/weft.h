@@ -128,6 +128,23 @@
 #define WEFT_INSET_PARALLELOGRAM 1
 
 /**
+ * Smoothing direction: vertices move freely (the published HC algorithm).
+ */
+#define WEFT_SMOOTH_DIRECTION_FREE 0
+
+/**
+ * Smoothing direction: each vertex moves only along the line of its
+ * original vertex normal, so nothing slides across the surface.
+ */
+#define WEFT_SMOOTH_DIRECTION_ALONG_NORMAL 1
+
+/**
+ * Smoothing direction: each vertex moves only within the plane through its
+ * original position across its original normal (relaxation).
+ */
+#define WEFT_SMOOTH_DIRECTION_TANGENTIAL 2
+
+/**
  * Dual mode: a vertex at each face's centroid.
  */
 #define WEFT_DUAL_VERTEX_AVERAGE 0
@@ -1283,6 +1300,32 @@ WeftStatus weft_laplacian_smooth(const struct WeftMesh *mesh, uint32_t iteration
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
  */
 WeftStatus weft_laplacian_hc_smooth(const struct WeftMesh *mesh, uint32_t iterations, double alpha, double beta, uint32_t naked_edges, struct WeftMesh **out_mesh);
+
+/**
+ * `weft_laplacian_hc_smooth` with Weaverbird's remaining LaplacianHC
+ * inputs: a direction (its orientation input) and per-vertex activation
+ * weights. Each weight scales the steps its vertex takes (0 keeps it where
+ * it is and it anchors its neighbours, 1 is the full step); the direction
+ * then restricts each vertex to its original normal line or tangent plane.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `iterations`, `alpha`, `beta` and `naked_edges` are as for
+ * `weft_laplacian_hc_smooth`.
+ * `direction` is one of the WEFT_SMOOTH_DIRECTION_* values.
+ * `activation` holds `activation_count` weights in [0, 1], one per vertex;
+ * it may be NULL (with `activation_count` 0) to move every vertex fully.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of
+ * range, an activation count other than the vertex count (naming both) or
+ * a weight outside [0, 1] (naming the vertex).
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `activation` is NULL or holds
+ * `activation_count` doubles; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_laplacian_hc_smooth_ex(const struct WeftMesh *mesh, uint32_t iterations, double alpha, double beta, uint32_t naked_edges, uint32_t direction, const double *activation, size_t activation_count, struct WeftMesh **out_mesh);
 
 /**
  * Blurs a per-vertex value (a colour, a weight) over the mesh: each

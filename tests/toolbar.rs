@@ -3,7 +3,9 @@
 
 use weft::extract::{dual, edge_segments, mesh_edges, mesh_from_lines, reroute_faces, DualMode};
 use weft::shapes;
-use weft::smooth::{blur, laplacian, laplacian_hc, NakedEdges};
+use weft::smooth::{
+    blur, laplacian, laplacian_hc, laplacian_hc_with, HcOptions, NakedEdges, SmoothDirection,
+};
 use weft::split::{
     constant_quads_split, inner_polygons, midedge, sierpinski_triangles, split_polygons,
     split_triangles,
@@ -479,4 +481,106 @@ fn every_operation_survives_every_named_shape() {
         let lines = edge_segments(mesh);
         valid(mesh_from_lines(&lines, 1e-9, 8).unwrap());
     }
+}
+
+#[test]
+fn hc_activation_keeps_inactive_vertices_and_checks_its_length() {
+    let sphere = jittered_sphere();
+    let n = sphere.vertex_count();
+    let mut weights = vec![1.0; n];
+    for w in weights.iter_mut().step_by(3) {
+        *w = 0.0;
+    }
+    let options = HcOptions {
+        alpha: 0.0,
+        beta: 0.6,
+        naked: NakedEdges::Fixed,
+        direction: SmoothDirection::Free,
+        activation: Some(&weights),
+    };
+    let out = laplacian_hc_with(&sphere, 5, &options).unwrap();
+    for v in 0..n {
+        let moved = out.positions()[v] != sphere.positions()[v];
+        assert_eq!(moved, v % 3 != 0, "vertex {v}");
+    }
+    // All ones is the plain algorithm, bit for bit.
+    let ones = vec![1.0; n];
+    let all = laplacian_hc_with(
+        &sphere,
+        5,
+        &HcOptions {
+            activation: Some(&ones),
+            ..options
+        },
+    )
+    .unwrap();
+    let plain = laplacian_hc(&sphere, 5, 0.0, 0.6, NakedEdges::Fixed).unwrap();
+    assert_eq!(all.positions(), plain.positions());
+    let short = vec![1.0; n - 1];
+    let message = laplacian_hc_with(
+        &sphere,
+        1,
+        &HcOptions {
+            activation: Some(&short),
+            ..options
+        },
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(
+        message.contains(&format!("{} values", n - 1))
+            && message.contains(&format!("{n} vertices")),
+        "{message}"
+    );
+    let mut bad = ones.clone();
+    bad[7] = 1.5;
+    let message = laplacian_hc_with(
+        &sphere,
+        1,
+        &HcOptions {
+            activation: Some(&bad),
+            ..options
+        },
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(message.contains("vertex 7 is 1.5"), "{message}");
+}
+
+#[test]
+fn hc_direction_keeps_vertices_on_their_normal_line_or_tangent_plane() {
+    let sphere = jittered_sphere();
+    let normals = weft::analysis::vertex_normals(&sphere);
+    let run = |direction| {
+        let options = HcOptions {
+            alpha: 0.0,
+            beta: 0.6,
+            naked: NakedEdges::Fixed,
+            direction,
+            activation: None,
+        };
+        laplacian_hc_with(&sphere, 5, &options).unwrap()
+    };
+    let along = run(SmoothDirection::AlongNormal);
+    let tangential = run(SmoothDirection::Tangential);
+    let (mut moved_along, mut moved_tangent) = (0.0f64, 0.0f64);
+    for (v, &n) in normals.iter().enumerate() {
+        let o = sphere.positions()[v];
+        let a = along.positions()[v] - o;
+        assert!(
+            a.cross(n).length() < 1e-12,
+            "vertex {v} left its normal line"
+        );
+        let t = tangential.positions()[v] - o;
+        assert!(t.dot(n).abs() < 1e-12, "vertex {v} left its tangent plane");
+        moved_along = moved_along.max(a.length());
+        moved_tangent = moved_tangent.max(t.length());
+    }
+    assert!(moved_along > 1e-3 && moved_tangent > 1e-3);
+    // Along the normals the bumps flatten: the spread of the radii shrinks.
+    let spread = |m: &Mesh| {
+        let r: Vec<f64> = m.positions().iter().map(|p| p.length()).collect();
+        r.iter().cloned().fold(f64::MIN, f64::max) - r.iter().cloned().fold(f64::MAX, f64::min)
+    };
+    assert!(spread(&along) < spread(&sphere) / 2.0);
 }

@@ -31,6 +31,17 @@ namespace Weft
         CornerFixed = 2,
     }
 
+    /// <summary>Which way LaplacianHC lets a vertex move (WEFT_SMOOTH_DIRECTION_*; Weaverbird's orientation input).</summary>
+    public enum SmoothDirection : uint
+    {
+        /// <summary>Anywhere: the published algorithm.</summary>
+        Free = 0,
+        /// <summary>Only along the line of its original vertex normal: bumps flatten, nothing slides across the surface.</summary>
+        AlongNormal = 1,
+        /// <summary>Only within its original tangent plane: the vertices even out while the shape barely changes.</summary>
+        Tangential = 2,
+    }
+
     /// <summary>How Offset Mesh and Mesh Thicken move a vertex (WEFT_OFFSET_*).</summary>
     public enum OffsetType : uint
     {

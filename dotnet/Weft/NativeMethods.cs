@@ -274,6 +274,11 @@ namespace Weft
             WeftMeshHandle mesh, uint iterations, double alpha, double beta, uint nakedEdges, out WeftMeshHandle outMesh);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_laplacian_hc_smooth_ex(
+            WeftMeshHandle mesh, uint iterations, double alpha, double beta, uint nakedEdges, uint direction,
+            double[] activation, UIntPtr activationCount, out WeftMeshHandle outMesh);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern uint weft_blur_values(
             WeftMeshHandle mesh, double[] values, UIntPtr valueCount, UIntPtr components,
             uint iterations, double blend, uint nakedEdges, [Out] double[] outValues, UIntPtr outLen);

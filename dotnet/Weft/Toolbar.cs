@@ -94,6 +94,23 @@ namespace Weft
         }
 
         /// <summary>
+        /// HC smoothing with Weaverbird's orientation and activation inputs:
+        /// <paramref name="direction"/> restricts each vertex to its normal line or
+        /// tangent plane; <paramref name="activation"/> holds one weight in [0, 1]
+        /// per vertex (0 stays, 1 takes the full step), or is null to move every vertex.
+        /// </summary>
+        public static WeftMesh LaplacianHcSmooth(WeftMesh mesh, int iterations, double alpha, double beta, SmoothNakedEdges nakedEdges,
+                                                 SmoothDirection direction, double[] activation)
+        {
+            WeftMeshHandle h = Arguments.Mesh(mesh, "mesh");
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_laplacian_hc_smooth_ex(
+                h, Arguments.Unsigned(iterations, "iterations"), alpha, beta, (uint)nakedEdges, (uint)direction,
+                activation, (UIntPtr)(activation == null ? 0 : activation.Length), out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>
         /// Blurs per-vertex values (<paramref name="components"/> per vertex,
         /// vertex after vertex) over the mesh; returns the blurred values in
         /// the same layout.

@@ -19,6 +19,7 @@ namespace Weft.Tests
             t.Run("linear subdivisions refuse more than 20 levels and non-triangles", LinearErrors);
             t.Run("Laplacian smoothing flattens a raised centre", Laplacian);
             t.Run("LaplacianHC keeps more of the bump than Laplacian", LaplacianHc);
+            t.Run("LaplacianHC activation and direction", LaplacianHcInputs);
             t.Run("blur moves a peak to its neighbours", Blur);
             t.Run("smoothing refuses bad modes, betas and value counts", SmoothingErrors);
             t.Run("offset a grid along +z", Offset);
@@ -150,6 +151,32 @@ namespace Weft.Tests
                 double z = Shapes.Vertex(hc, 4)[2];
                 t.True(z > 0 && z < 1, "the centre keeps part of its height, got " + z);
                 t.Equal(9, hc.VertexCount, "vertices");
+            }
+        }
+
+        private static void LaplacianHcInputs()
+        {
+            using (var grid = Shapes.Grid(1))
+            {
+                var activation = new double[9];
+                using (var still = Toolbar.LaplacianHcSmooth(grid, 3, 0, 0.6, SmoothNakedEdges.Smooth, SmoothDirection.Free, activation))
+                {
+                    t.Sequence(grid.GetPositions(), still.GetPositions(), "no active vertex, no change");
+                }
+                activation[4] = 1;
+                using (var centre = Toolbar.LaplacianHcSmooth(grid, 1, 0, 0.6, SmoothNakedEdges.Smooth, SmoothDirection.Free, activation))
+                {
+                    t.True(Shapes.Vertex(centre, 4)[2] < 1, "the active centre moves down");
+                    t.Equal(Shapes.Vertex(grid, 1)[0], Shapes.Vertex(centre, 1)[0], "an inactive side vertex stays");
+                }
+                using (var flat = Toolbar.LaplacianHcSmooth(grid, 2, 0, 0.6, SmoothNakedEdges.Fixed, SmoothDirection.Tangential, null))
+                {
+                    t.True(Math.Abs(Shapes.Vertex(flat, 4)[2] - 1) < 1e-12, "tangentially the centre keeps its height");
+                }
+                Shapes.Fails(() => Toolbar.LaplacianHcSmooth(grid, 1, 0, 0.6, SmoothNakedEdges.Fixed, SmoothDirection.Free, new double[8]),
+                             WeftStatus.InvalidArgument, "activation has 8 values but the mesh has 9 vertices");
+                Shapes.Fails(() => Toolbar.LaplacianHcSmooth(grid, 1, 0, 0.6, SmoothNakedEdges.Fixed, (SmoothDirection)3, null),
+                             WeftStatus.InvalidArgument, "direction is 3");
             }
         }
 

@@ -10,7 +10,7 @@ use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, out_param, output_slice, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::smooth::{self, NakedEdges};
+use crate::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
 use crate::split;
 use crate::topology::Topology;
 use crate::transform::{self, InsetMode, OffsetType};
@@ -28,6 +28,15 @@ pub const WEFT_OFFSET_PLANES_INTERSECTION: u32 = 2;
 pub const WEFT_INSET_EDGE_FRACTION: u32 = 0;
 /// Inset mode: the distance is a width in model units (parallelogram rule).
 pub const WEFT_INSET_PARALLELOGRAM: u32 = 1;
+
+/// Smoothing direction: vertices move freely (the published HC algorithm).
+pub const WEFT_SMOOTH_DIRECTION_FREE: u32 = 0;
+/// Smoothing direction: each vertex moves only along the line of its
+/// original vertex normal, so nothing slides across the surface.
+pub const WEFT_SMOOTH_DIRECTION_ALONG_NORMAL: u32 = 1;
+/// Smoothing direction: each vertex moves only within the plane through its
+/// original position across its original normal (relaxation).
+pub const WEFT_SMOOTH_DIRECTION_TANGENTIAL: u32 = 2;
 
 /// Dual mode: a vertex at each face's centroid.
 pub const WEFT_DUAL_VERTEX_AVERAGE: u32 = 0;
@@ -288,6 +297,69 @@ pub unsafe extern "C" fn weft_laplacian_hc_smooth(
     mesh_op(mesh, out_mesh, |m| {
         let naked = self::naked_edges(naked_edges)?;
         Ok(smooth::laplacian_hc(m, iterations, alpha, beta, naked)?)
+    })
+}
+
+/// `weft_laplacian_hc_smooth` with Weaverbird's remaining LaplacianHC
+/// inputs: a direction (its orientation input) and per-vertex activation
+/// weights. Each weight scales the steps its vertex takes (0 keeps it where
+/// it is and it anchors its neighbours, 1 is the full step); the direction
+/// then restricts each vertex to its original normal line or tangent plane.
+///
+/// `mesh` is the input; it must not be NULL.
+/// `iterations`, `alpha`, `beta` and `naked_edges` are as for
+/// `weft_laplacian_hc_smooth`.
+/// `direction` is one of the WEFT_SMOOTH_DIRECTION_* values.
+/// `activation` holds `activation_count` weights in [0, 1], one per vertex;
+/// it may be NULL (with `activation_count` 0) to move every vertex fully.
+/// `out_mesh` receives the new mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_INVALID_ARGUMENT naming the argument out of
+/// range, an activation count other than the vertex count (naming both) or
+/// a weight outside [0, 1] (naming the vertex).
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `activation` is NULL or holds
+/// `activation_count` doubles; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_laplacian_hc_smooth_ex(
+    mesh: *const WeftMesh,
+    iterations: u32,
+    alpha: f64,
+    beta: f64,
+    naked_edges: u32,
+    direction: u32,
+    activation: *const f64,
+    activation_count: usize,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    mesh_op(mesh, out_mesh, |m| {
+        let naked = self::naked_edges(naked_edges)?;
+        let direction = enum_arg(
+            direction,
+            "direction",
+            |v| match v {
+                WEFT_SMOOTH_DIRECTION_FREE => Some(SmoothDirection::Free),
+                WEFT_SMOOTH_DIRECTION_ALONG_NORMAL => Some(SmoothDirection::AlongNormal),
+                WEFT_SMOOTH_DIRECTION_TANGENTIAL => Some(SmoothDirection::Tangential),
+                _ => None,
+            },
+            "WEFT_SMOOTH_DIRECTION_FREE (0), WEFT_SMOOTH_DIRECTION_ALONG_NORMAL (1) or WEFT_SMOOTH_DIRECTION_TANGENTIAL (2)",
+        )?;
+        let activation = if activation.is_null() && activation_count == 0 {
+            None
+        } else {
+            Some(input_slice(activation, activation_count, "activation")?)
+        };
+        let options = HcOptions {
+            alpha,
+            beta,
+            naked,
+            direction,
+            activation,
+        };
+        Ok(smooth::laplacian_hc_with(m, iterations, &options)?)
     })
 }
 

@@ -12,7 +12,7 @@ mod hc;
 mod laplacian;
 
 pub use blur::blur;
-pub use hc::laplacian_hc;
+pub use hc::{laplacian_hc, laplacian_hc_with, HcOptions, SmoothDirection};
 pub use laplacian::laplacian;
 
 use crate::error::{Error, Result};

@@ -80,6 +80,40 @@ static void test_smoothing(void) {
   expect(out, 9, 4);
   CHECK_STATUS(weft_laplacian_hc_smooth(g, 3, 0.0, 2.0, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("beta is 2");
+  {
+    /* Only the middle vertex is active; the side vertex 1 may slide but is inactive. */
+    double activation[9] = {0, 0, 0, 0, 1, 0, 0, 0, 0};
+    WeftMesh *bumped = NULL;
+    double p[27];
+    memcpy(p, grid_positions, sizeof p);
+    p[4 * 3 + 2] = 1.0; /* lift the middle vertex: its normal is +z */
+    bumped = make(p, 9, grid_sizes, 4, grid_indices, 16);
+    CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 1, 0.0, 0.6, WEFT_NAKED_EDGES_SMOOTH, WEFT_SMOOTH_DIRECTION_FREE,
+                                             activation, 9, &out),
+                 WEFT_STATUS_OK);
+    CHECK(memcmp(weft_mesh_positions(out), p, 4 * 3 * sizeof(double)) == 0);
+    CHECK(weft_mesh_positions(out)[4 * 3 + 2] < 1.0);
+    weft_mesh_free(out);
+    /* Tangentially the middle vertex stays in its plane z = 1. */
+    CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 2, 0.0, 0.6, WEFT_NAKED_EDGES_FIXED,
+                                             WEFT_SMOOTH_DIRECTION_TANGENTIAL, NULL, 0, &out),
+                 WEFT_STATUS_OK);
+    CHECK(fabs(weft_mesh_positions(out)[4 * 3 + 2] - 1.0) < 1e-12);
+    weft_mesh_free(out);
+    out = NULL;
+    CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 1, 0.0, 0.6, WEFT_NAKED_EDGES_FIXED, WEFT_SMOOTH_DIRECTION_FREE,
+                                             activation, 8, &out),
+                 WEFT_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("activation has 8 values but the mesh has 9 vertices");
+    CHECK(out == NULL);
+    CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 1, 0.0, 0.6, WEFT_NAKED_EDGES_FIXED, 3, NULL, 0, &out),
+                 WEFT_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("direction is 3");
+    CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 1, 0.0, 0.6, WEFT_NAKED_EDGES_FIXED, WEFT_SMOOTH_DIRECTION_FREE,
+                                             NULL, 9, &out),
+                 WEFT_STATUS_NULL_POINTER);
+    weft_mesh_free(bumped);
+  }
   CHECK_STATUS(weft_blur_values(g, values, 9, 1, 1, 0.5, WEFT_NAKED_EDGES_CORNER_FIXED, blurred, 9), WEFT_STATUS_OK);
   CHECK(blurred[4] == 0.5 && blurred[0] == 0.0);
   blurred[0] = -1.0;
