@@ -66,7 +66,7 @@ pub fn dual(mesh: &Mesh, mode: DualMode) -> Result<Mesh> {
         );
         out.face(&polygon);
     }
-    let mut result = out.finish();
+    let mut result = out.finish()?;
     if mode == DualMode::KeepSize {
         if let (Some((lo, hi)), Some((dlo, dhi))) = (mesh.bounding_box(), result.bounding_box()) {
             let (size, dual_size) = ((hi - lo).length(), (dhi - dlo).length());

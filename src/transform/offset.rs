@@ -160,5 +160,5 @@ pub fn thicken(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Mesh> {
             out.face(&[b, a, a2, b2]);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }
