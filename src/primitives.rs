@@ -237,6 +237,9 @@ pub fn uv_sphere(radius: f64, u_count: usize, v_count: usize) -> Result<Mesh> {
 /// A platonic solid whose vertices lie on the sphere of `radius` about the
 /// origin (the circumradius).
 ///
+/// Any positive finite radius works, `f64::MAX` included: the faces are
+/// found on the solid of radius 1, then scaled.
+///
 /// # Errors
 /// [`Error::InvalidArgument`] for a radius that is not positive and finite.
 pub fn platonic(kind: Platonic, radius: f64) -> Result<Mesh> {
@@ -283,9 +286,13 @@ pub fn platonic(kind: Platonic, radius: f64) -> Result<Mesh> {
         Platonic::Icosahedron => cyclic(1.0, phi, &mut points),
     }
     for p in &mut points {
-        *p = *p / p.length() * radius;
+        *p /= p.length();
     }
-    convex_hull_of_few(points)
+    // The faces are found on the unit solid: at the given radius the hull's
+    // cross products overflow (radius near f64::MAX) or underflow (near 0).
+    let unit = convex_hull_of_few(points)?;
+    let scaled = unit.positions().iter().map(|&p| p * radius).collect();
+    Ok(unit.with_positions(scaled)?)
 }
 
 /// The faces of the convex hull of a few points in convex position (all
@@ -323,7 +330,7 @@ fn convex_hull_of_few(points: Vec<DVec3>) -> Result<Mesh> {
                 let mut on: Vec<u32> = (0..n as u32)
                     .filter(|&m| side(points[m as usize]).abs() <= tolerance)
                     .collect();
-                if seen.contains(&on) {
+                if on.len() < 3 || seen.contains(&on) {
                     continue;
                 }
                 seen.push(on.clone());

@@ -46,3 +46,35 @@ fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
     assert_valid(&twice);
     assert_eq!(twice.face_count(), 32);
 }
+
+/// `weft_platonic` with a radius of 1e300: the hull was searched at that
+/// scale, where the cross products overflow to infinity, no plane had the
+/// points on one side, and an empty corner list was indexed (a panic). The
+/// faces are now found on the unit solid and scaled afterwards.
+#[test]
+fn platonic_solids_at_extreme_radii() {
+    use weft::primitives::{platonic, Platonic};
+    let expected = [
+        (Platonic::Tetrahedron, 4, 4),
+        (Platonic::Hexahedron, 8, 6),
+        (Platonic::Octahedron, 6, 8),
+        (Platonic::Dodecahedron, 20, 12),
+        (Platonic::Icosahedron, 12, 20),
+    ];
+    for radius in [1e300, f64::MAX, 1e-300] {
+        for (kind, vertices, faces) in expected {
+            let solid = platonic(kind, radius).unwrap();
+            assert_valid(&solid);
+            assert_eq!(solid.vertex_count(), vertices, "{kind:?} at {radius}");
+            assert_eq!(solid.face_count(), faces, "{kind:?} at {radius}");
+            assert_eq!(
+                solid.face_indices(),
+                platonic(kind, 1.0).unwrap().face_indices()
+            );
+            for p in solid.positions() {
+                let relative = (p / radius).length();
+                assert!((relative - 1.0).abs() < 1e-12, "{kind:?} at {radius}");
+            }
+        }
+    }
+}
