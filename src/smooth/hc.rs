@@ -5,6 +5,8 @@ use glam::DVec3;
 use crate::error::Result;
 use crate::mesh::Mesh;
 
+use crate::split::moved;
+
 use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 
 /// Smooths with the HC ("Humphrey's Classes") algorithm of J. Vollmer,
@@ -29,7 +31,9 @@ use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 ///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] when `alpha` or `beta` is outside
-/// [0, 1] or `iterations` passes [`super::MAX_ITERATIONS`].
+/// [0, 1] or `iterations` passes [`super::MAX_ITERATIONS`];
+/// [`crate::Error::DegenerateInput`] naming a vertex whose update overflows
+/// `f64` (coordinates near `f64::MAX`).
 pub fn laplacian_hc(
     mesh: &Mesh,
     iterations: u32,
@@ -63,7 +67,5 @@ pub fn laplacian_hc(
             p[v] -= b[v] * beta + mean * (1.0 - beta);
         }
     }
-    let mut out = mesh.clone();
-    out.positions_mut().copy_from_slice(&p);
-    Ok(out)
+    moved(mesh, p, "HC smoothing")
 }

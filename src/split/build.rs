@@ -82,6 +82,24 @@ impl Builder {
     }
 }
 
+/// The mesh with its vertices moved by an operation that keeps the faces
+/// (smoothing, offset, scaling).
+///
+/// # Errors
+/// [`Error::DegenerateInput`] naming the first vertex moved to a non-finite
+/// position: coordinates or arguments so large that the arithmetic
+/// overflowed `f64`.
+pub(crate) fn moved(mesh: &Mesh, positions: Vec<DVec3>, what: &str) -> Result<Mesh> {
+    if let Some(v) = positions.iter().position(|p| !p.is_finite()) {
+        let p = positions[v];
+        return Err(Error::DegenerateInput(format!(
+            "{what} moves vertex {v} to ({}, {}, {}); the coordinates or arguments are too large for f64 arithmetic",
+            p.x, p.y, p.z
+        )));
+    }
+    mesh.with_positions(positions).map_err(Error::from)
+}
+
 /// The average of a face's corners.
 pub(crate) fn face_centroid(mesh: &Mesh, f: usize) -> DVec3 {
     let n = mesh.face(f).len() as f64;
