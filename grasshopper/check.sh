@@ -61,6 +61,16 @@ fi
 duplicates=$(grep -rhoE 'new Guid\("[0-9a-f-]+"\)' "$here/Weft.Grasshopper" | sort | uniq -d)
 if [ -z "$duplicates" ]; then pass "component GUIDs are distinct"; else fail "duplicate GUIDs: $duplicates"; fi
 
+# Every icon a component names is embedded, 24 x 24.
+missing=""
+for name in $(grep -rhoE '"[a-z_]+"(, "[^"]*", "[^"]*")?\)$' "$here/Weft.Grasshopper/Components" | grep -oE '^"[a-z_]+"' | tr -d '"' | sort -u); do
+  png="$here/Weft.Grasshopper/Icons/$name.png"
+  if [ ! -f "$png" ] || [ "$(python3 -c 'import struct,sys; d=open(sys.argv[1],"rb").read(24); print(struct.unpack(">II", d[16:24]))' "$png")" != "(24, 24)" ]; then
+    missing="$missing $name"
+  fi
+done
+if [ -z "$missing" ]; then pass "every component icon is a 24 x 24 PNG"; else fail "icons missing or not 24 x 24:$missing"; fi
+
 # 2. Deliberately wrong code must be refused.
 for case in 1 2 3 4; do
   if mcs "${mcs_flags[@]}" -unsafe -target:library -define:CASE_$case -out:"$build/Wrong$case.dll" \
@@ -83,6 +93,7 @@ fi
 cp "$root/target/debug/libweft.so" "$build/"
 if mcs "${mcs_flags[@]}" -target:exe -out:"$build/Conversion.Tests.exe" -r:"$build/Weft.Interop.dll" \
     "$here/tests/ConversionTests.cs" "$root/dotnet/tests/Runner.cs" "$here/Weft.Grasshopper/MeshArrays.cs" \
+    "$here/Weft.Grasshopper/FlatGeometry.cs" "$here/Weft.Grasshopper/RefinerCache.cs" \
   && LD_LIBRARY_PATH="$root/target/debug${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" mono --debug "$build/Conversion.Tests.exe"; then
   pass "mesh conversion tests"
 else

@@ -15,23 +15,31 @@ use crate::weld::check_tolerance;
 /// 1974). A face of zero area gets the zero vector.
 pub fn face_normals(mesh: &Mesh) -> Vec<DVec3> {
     (0..mesh.face_count())
-        .map(|f| area_vector(mesh, f).normalize_or_zero())
+        .map(|f| face_normal(mesh, f))
         .collect()
 }
 
-/// The area vector of face `f` (its normal times its area), by Newell's
-/// method about the face's first corner (which keeps far-away faces exact).
+/// The area vector of face `f` (its normal times its area), by Newell's method.
 pub fn area_vector(mesh: &Mesh, f: usize) -> DVec3 {
-    let p = mesh.positions();
-    let face = mesh.face(f);
-    let origin = p[face[0] as usize];
-    let mut sum = DVec3::ZERO;
-    for i in 0..face.len() {
-        let a = p[face[i] as usize] - origin;
-        let b = p[face[(i + 1) % face.len()] as usize] - origin;
-        sum += a.cross(b);
-    }
-    sum / 2.0
+    let corners: Vec<DVec3> = mesh.face_positions(f).collect();
+    newell_vector(&corners) / 2.0
+}
+
+/// The unit Newell normal of face `f`; zero for a face of no area.
+pub fn face_normal(mesh: &Mesh, f: usize) -> DVec3 {
+    area_vector(mesh, f).normalize_or_zero()
+}
+
+/// Newell's sum over a polygon's edges: a vector along the polygon's normal
+/// whose length is twice its area. Taken about the first corner, which keeps
+/// polygons far from the origin exact. Zero for fewer than 3 corners.
+pub fn newell_vector(corners: &[DVec3]) -> DVec3 {
+    let Some(&origin) = corners.first() else {
+        return DVec3::ZERO;
+    };
+    (0..corners.len())
+        .map(|i| (corners[i] - origin).cross(corners[(i + 1) % corners.len()] - origin))
+        .sum()
 }
 
 /// The unit normal at each vertex: the faces' Newell normals weighted by
@@ -110,53 +118,12 @@ pub fn plane_deviation(points: &[DVec3]) -> f64 {
         let d = p - centroid;
         covariance += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
     }
-    let normal = smallest_eigenvector(covariance);
+    // The best-fit plane's normal: the direction of least spread.
+    let normal = crate::linalg::symmetric_eigen(covariance).1[0];
     points
         .iter()
         .map(|&p| (p - centroid).dot(normal).abs())
         .fold(0.0, f64::max)
-}
-
-/// The unit eigenvector of a symmetric 3 × 3 matrix with the smallest
-/// eigenvalue, by cyclic Jacobi rotations (converges in a few sweeps).
-fn smallest_eigenvector(matrix: DMat3) -> DVec3 {
-    let mut a = matrix.to_cols_array_2d();
-    let mut v = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
-    for _ in 0..32 {
-        let off = a[0][1].abs() + a[0][2].abs() + a[1][2].abs();
-        let scale = a[0][0].abs() + a[1][1].abs() + a[2][2].abs();
-        if off <= f64::EPSILON * scale * 1e-3 || off == 0.0 {
-            break;
-        }
-        for (p, q) in [(0, 1), (0, 2), (1, 2)] {
-            if a[p][q] == 0.0 {
-                continue;
-            }
-            let theta = (a[q][q] - a[p][p]) / (2.0 * a[p][q]);
-            let t = theta.signum() / (theta.abs() + (theta * theta + 1.0).sqrt());
-            let t = if theta == 0.0 { 1.0 } else { t };
-            let c = 1.0 / (t * t + 1.0).sqrt();
-            let s = t * c;
-            // a <- J^T a J, with J the rotation in the (p, q) plane.
-            for row in &mut a {
-                let (akp, akq) = (row[p], row[q]);
-                row[p] = c * akp - s * akq;
-                row[q] = s * akp + c * akq;
-            }
-            let (row_p, row_q) = (a[p], a[q]);
-            a[p] = std::array::from_fn(|k| c * row_p[k] - s * row_q[k]);
-            a[q] = std::array::from_fn(|k| s * row_p[k] + c * row_q[k]);
-            for row in &mut v {
-                let (vkp, vkq) = (row[p], row[q]);
-                row[p] = c * vkp - s * vkq;
-                row[q] = s * vkp + c * vkq;
-            }
-        }
-    }
-    let smallest = (0..3)
-        .min_by(|&i, &j| a[i][i].total_cmp(&a[j][j]))
-        .unwrap_or(0);
-    DVec3::new(v[0][smallest], v[1][smallest], v[2][smallest]).normalize_or_zero()
 }
 
 /// A polyline through mesh vertices. A closed one returns from its last
@@ -308,12 +275,6 @@ mod tests {
         {
             assert!(a.distance(b) < 1e-12, "{a} {b}");
         }
-    }
-
-    #[test]
-    fn eigenvector_of_a_diagonal_matrix() {
-        let m = DMat3::from_diagonal(DVec3::new(3.0, 0.5, 2.0));
-        assert_eq!(smallest_eigenvector(m).abs(), DVec3::Y);
     }
 
     #[test]

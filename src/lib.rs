@@ -34,6 +34,7 @@ pub mod extract;
 pub mod grid;
 /// cbindgen:ignore
 pub mod io;
+mod linalg;
 /// cbindgen:ignore
 pub mod mesh;
 /// cbindgen:ignore

@@ -96,7 +96,6 @@ impl Mesh {
 
     /// Builds a mesh from parts an operation has produced itself and knows to
     /// be valid. Checked in debug builds only.
-    #[allow(dead_code)] // used by the operation exports
     pub(crate) fn from_valid_parts(
         positions: Vec<DVec3>,
         face_sizes: Vec<u32>,

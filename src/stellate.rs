@@ -2,6 +2,8 @@
 
 use glam::DVec3;
 
+use crate::analysis::newell_vector;
+
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 
@@ -18,11 +20,7 @@ pub enum Heights<'a> {
 /// vertex average.
 pub(crate) fn newell_normal_and_centroid(corners: &[DVec3]) -> (DVec3, DVec3) {
     let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
-    // Relative to the centroid, so that coordinates far from the origin keep their precision.
-    let normal: DVec3 = (0..corners.len())
-        .map(|k| (corners[k] - centroid).cross(corners[(k + 1) % corners.len()] - centroid))
-        .sum();
-    (normal.normalize_or_zero(), centroid)
+    (newell_vector(corners).normalize_or_zero(), centroid)
 }
 
 /// Raises a pyramid on every face: a new vertex at the face's centroid (the

@@ -5,6 +5,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::analysis::newell_vector;
 use crate::error::{try_vec, Result};
 use crate::mesh::Mesh;
 
@@ -64,7 +65,7 @@ impl EarClipper {
     /// Appends the n − 2 triangles of polygon `face`.
     fn clip(&mut self, face: &[u32], positions: &[DVec3], out: &mut Vec<u32>) {
         let corners: Vec<DVec3> = face.iter().map(|&v| positions[v as usize]).collect();
-        let normal = newell_normal(&corners);
+        let normal = newell_vector(&corners);
         // A basis of the best-fit plane oriented so the polygon winds counter-clockwise.
         let axis_u = normal.any_orthonormal_vector();
         let axis_v = normal.normalize_or_zero().cross(axis_u);
@@ -138,20 +139,6 @@ fn inside_triangle(p: DVec2, a: DVec2, b: DVec2, c: DVec2) -> bool {
         && (a - c).perp_dot(p - c) >= 0.0
 }
 
-/// Newell's normal of a polygon: its length is twice the polygon's area.
-pub(crate) fn newell_normal(corners: &[DVec3]) -> DVec3 {
-    let origin = corners[0];
-    let mut normal = DVec3::ZERO;
-    for i in 0..corners.len() {
-        let (p, q) = (
-            corners[i] - origin,
-            corners[(i + 1) % corners.len()] - origin,
-        );
-        normal += p.cross(q);
-    }
-    normal
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -160,7 +147,7 @@ mod tests {
         mesh.faces()
             .map(|f| {
                 let p: Vec<DVec3> = f.iter().map(|&v| mesh.positions()[v as usize]).collect();
-                newell_normal(&p).length() / 2.0
+                newell_vector(&p).length() / 2.0
             })
             .sum()
     }
@@ -199,7 +186,7 @@ mod tests {
         // Every triangle keeps the polygon's winding (+z).
         for f in t.mesh.faces() {
             let q: Vec<DVec3> = f.iter().map(|&v| t.mesh.positions()[v as usize]).collect();
-            assert!(newell_normal(&q).z > 0.0);
+            assert!(newell_vector(&q).z > 0.0);
         }
     }
 }

@@ -201,9 +201,9 @@ namespace Weft
                 NonManifoldEdgeCount = (long)raw.NonManifoldEdgeCount.ToUInt64(),
                 NonManifoldVertexCount = (long)raw.NonManifoldVertexCount.ToUInt64(),
                 ComponentCount = (long)raw.ComponentCount.ToUInt64(),
-                IsClosed = raw.IsClosed != 0,
-                IsOrientable = raw.IsOrientable != 0,
-                IsOriented = raw.IsOriented != 0,
+                IsClosed = raw.IsClosed,
+                IsOrientable = raw.IsOrientable,
+                IsOriented = raw.IsOriented,
             };
         }
 

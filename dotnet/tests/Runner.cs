@@ -55,6 +55,12 @@ namespace Weft.Tests
             if (!condition) Fail("expected " + what);
         }
 
+        /// <summary>Checks a condition is false.</summary>
+        public void False(bool condition, string what)
+        {
+            if (condition) Fail("expected not " + what);
+        }
+
         /// <summary>Checks two values are equal.</summary>
         public void Equal<T>(T expected, T actual, string what)
         {

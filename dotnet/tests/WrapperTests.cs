@@ -52,7 +52,12 @@ namespace Weft.Tests
             t.Run("use after dispose refused", UseAfterDispose);
             t.Run("finalizer frees undisposed meshes", FinalizerFrees);
             t.Run("library located", LibraryLocated);
-            OperationTests.Register(t);
+            Shapes.T = t;
+            HeaderTests.Register(t);
+            SubdivisionTests.Register(t);
+            MakingTests.Register(t);
+            MendingTests.Register(t);
+            ToolbarTests.Register(t);
             return t.Finish();
         }
 

@@ -275,5 +275,17 @@ namespace Weft.Grasshopper
             }
             return new PolygonArrays { Positions = positions.ToArray(), FaceSizes = sizes.ToArray(), FaceIndices = indices.ToArray() };
         }
+
+        /// <summary>The arrays of the triangulated mesh (quads split along the shorter diagonal, n-gons ear-clipped in Weft); positions are shared.</summary>
+        public static PolygonArrays Triangulate(PolygonArrays polygons)
+        {
+            using (WeftMesh mesh = WeftMesh.Create(polygons.Positions, polygons.FaceSizes, polygons.FaceIndices))
+            using (WeftMesh triangles = Subdivision.Triangulate(mesh))
+            {
+                var result = new PolygonArrays { Positions = polygons.Positions };
+                triangles.GetFaces(out result.FaceSizes, out result.FaceIndices);
+                return result;
+            }
+        }
     }
 }

@@ -88,8 +88,15 @@ namespace Weft.Grasshopper
             uint[] sizes;
             uint[] indices;
             weft.GetFaces(out sizes, out indices);
-            RhinoArrays rhino = MeshArrays.ToRhino(positions, sizes, indices);
+            return FromArrays(positions, MeshArrays.ToRhino(positions, sizes, indices));
+        }
 
+        /// <summary>
+        /// Creates a double-precision Rhino mesh from positions and faces
+        /// already in Rhino's layout (a refined topology converted once).
+        /// </summary>
+        public static unsafe Mesh FromArrays(double[] positions, RhinoArrays rhino)
+        {
             var mesh = new Mesh();
             mesh.Vertices.UseDoublePrecisionVertices = true;
             int vertexCount = positions.Length / 3;
@@ -140,6 +147,72 @@ namespace Weft.Grasshopper
                 corners[3 * i + 2] = p.Z;
             }
             return corners;
+        }
+
+        /// <summary>Points from x, y, z triples.</summary>
+        public static List<Point3d> ToPoints(double[] xyz)
+        {
+            var points = new List<Point3d>(xyz.Length / 3);
+            for (int i = 0; i + 2 < xyz.Length; i += 3) points.Add(new Point3d(xyz[i], xyz[i + 1], xyz[i + 2]));
+            return points;
+        }
+
+        /// <summary>x, y, z triples of points.</summary>
+        public static double[] FromPoints(IList<Point3d> points)
+        {
+            var xyz = new double[3 * points.Count];
+            for (int i = 0; i < points.Count; i++)
+            {
+                xyz[3 * i] = points[i].X;
+                xyz[3 * i + 1] = points[i].Y;
+                xyz[3 * i + 2] = points[i].Z;
+            }
+            return xyz;
+        }
+
+        /// <summary>Lines from segments of six doubles.</summary>
+        public static List<Line> ToLines(double[] segments)
+        {
+            var lines = new List<Line>(segments.Length / 6);
+            for (int i = 0; i + 5 < segments.Length; i += 6)
+            {
+                lines.Add(new Line(segments[i], segments[i + 1], segments[i + 2], segments[i + 3], segments[i + 4], segments[i + 5]));
+            }
+            return lines;
+        }
+
+        /// <summary>Segments of six doubles from lines.</summary>
+        public static double[] FromLines(IList<Line> lines)
+        {
+            var segments = new double[6 * lines.Count];
+            for (int i = 0; i < lines.Count; i++)
+            {
+                Line l = lines[i];
+                segments[6 * i] = l.FromX;
+                segments[6 * i + 1] = l.FromY;
+                segments[6 * i + 2] = l.FromZ;
+                segments[6 * i + 3] = l.ToX;
+                segments[6 * i + 4] = l.ToY;
+                segments[6 * i + 5] = l.ToZ;
+            }
+            return segments;
+        }
+
+        /// <summary>Polyline curves from x, y, z arrays (a closed one repeats its first point).</summary>
+        public static List<PolylineCurve> ToPolylineCurves(IList<double[]> polylines)
+        {
+            var curves = new List<PolylineCurve>(polylines.Count);
+            foreach (double[] p in polylines) curves.Add(new PolylineCurve(ToPoints(p)));
+            return curves;
+        }
+
+        /// <summary>A Weft plane from a Rhino plane.</summary>
+        public static WeftPlane ToWeftPlane(Plane plane)
+        {
+            return new WeftPlane(
+                new[] { plane.OriginX, plane.OriginY, plane.OriginZ },
+                new[] { plane.XAxis.X, plane.XAxis.Y, plane.XAxis.Z },
+                new[] { plane.YAxis.X, plane.YAxis.Y, plane.YAxis.Z });
         }
 
         private static int[] ToInts(uint[] values)

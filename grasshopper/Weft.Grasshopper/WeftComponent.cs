@@ -71,6 +71,13 @@ namespace Weft.Grasshopper
         /// </summary>
         protected WeftMesh GetMesh(IGH_DataAccess DA, int index)
         {
+            PolygonArrays all = GetPolygons(DA, index);
+            return all == null ? null : WeftMesh.Create(all.Positions, all.FaceSizes, all.FaceIndices);
+        }
+
+        /// <summary>Reads the items of a mesh input as one polygon mesh's arrays (see <see cref="GetMesh"/>), or null.</summary>
+        protected PolygonArrays GetPolygons(IGH_DataAccess DA, int index)
+        {
             var items = new List<object>();
             if (!DA.GetDataList(index, items) || items.Count == 0)
             {
@@ -111,8 +118,57 @@ namespace Weft.Grasshopper
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "No mesh or closed polyline to work on.");
                 return null;
             }
-            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
-            return WeftMesh.Create(all.Positions, all.FaceSizes, all.FaceIndices);
+            return parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
+        }
+
+        /// <summary>The value of an item input, or <paramref name="fallback"/> when it is empty.</summary>
+        protected static T Get<T>(IGH_DataAccess DA, int index, T fallback)
+        {
+            T value = fallback;
+            DA.GetData(index, ref value);
+            return value;
+        }
+
+        /// <summary>The values of a list input as an array (empty when nothing is connected).</summary>
+        protected static T[] GetList<T>(IGH_DataAccess DA, int index)
+        {
+            var values = new List<T>();
+            DA.GetDataList(index, values);
+            return values.ToArray();
+        }
+
+        /// <summary>Reads a mode input of <paramref name="count"/> values (0 to count - 1), naming them in the error.</summary>
+        protected static uint ToMode(int mode, int count, string nickname, string meanings)
+        {
+            if (mode < 0 || mode >= count)
+            {
+                throw new WeftException(WeftStatus.InvalidArgument, nickname + " is " + mode + "; use " + meanings);
+            }
+            return (uint)mode;
+        }
+
+        /// <summary>Registers the usual levels input L (default 1).</summary>
+        protected static void AddLevelsInput(GH_InputParamManager pManager)
+        {
+            pManager.AddIntegerParameter("Level", "L", "Number of steps (0 returns the input).", GH_ParamAccess.item, 1);
+        }
+
+        /// <summary>Registers the smoothing naked-edge input S (0 fixed, 1 smooth, 2 corner fixed; default 0).</summary>
+        protected static void AddSmoothNakedInput(GH_InputParamManager pManager)
+        {
+            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: naked vertices stay, 1: they slide along the boundary, 2: as 1 but corners stay.", GH_ParamAccess.item, 0);
+        }
+
+        /// <summary>Reads a smoothing naked-edge input.</summary>
+        protected static SmoothNakedEdges ToSmoothNaked(int mode)
+        {
+            return (SmoothNakedEdges)ToMode(mode, 3, "S", "0 (fixed), 1 (smooth) or 2 (corner fixed)");
+        }
+
+        /// <summary>Reads an offset type input (0 diagonal, 1 hypotenuse average, 2 planes intersection).</summary>
+        protected static OffsetType ToOffsetType(int type)
+        {
+            return (OffsetType)ToMode(type, 3, "T", "0 (distance on diagonals), 1 (hypotenuse average) or 2 (planes intersection)");
         }
 
         /// <summary>Reads a naked-edge mode input (0 Fixed, 1 Smooth, 2 Corner Fixed).</summary>
@@ -125,10 +181,76 @@ namespace Weft.Grasshopper
             return (NakedEdges)mode;
         }
 
+        /// <summary>Shows a warning balloon.</summary>
+        protected void Warn(string text)
+        {
+            AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, text);
+        }
+
+        /// <summary>Shows a remark balloon.</summary>
+        protected void Remark(string text)
+        {
+            AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, text);
+        }
+
+        /// <summary>Registers the mesh output M.</summary>
+        protected static void AddMeshOutput(GH_OutputParamManager pManager, string description)
+        {
+            pManager.AddMeshParameter("Mesh", "M", description, GH_ParamAccess.item);
+        }
+
         /// <summary>Sets a Weft mesh as a Rhino mesh on an output.</summary>
         protected static void SetMesh(IGH_DataAccess DA, int index, WeftMesh mesh)
         {
             DA.SetData(index, RhinoMeshes.FromWeft(mesh));
         }
+    }
+
+    /// <summary>
+    /// A component that reads one mesh (input 0, M), applies one operation and
+    /// outputs one mesh (output 0, M): subclasses only register their options
+    /// and call the wrapper.
+    /// </summary>
+    public abstract class MeshOperationComponent : WeftComponent
+    {
+        private readonly string inputDescription;
+        private readonly string outputDescription;
+
+        protected MeshOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                         string inputDescription, string outputDescription)
+            : base(name, nickname, description, subcategory, iconName)
+        {
+            this.inputDescription = inputDescription;
+            this.outputDescription = outputDescription;
+        }
+
+        protected sealed override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", inputDescription);
+            RegisterOptions(pManager);
+        }
+
+        /// <summary>Registers the inputs after M (index 1 on).</summary>
+        protected abstract void RegisterOptions(GH_InputParamManager pManager);
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            AddMeshOutput(pManager, outputDescription);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                using (WeftMesh result = Apply(mesh, DA))
+                {
+                    SetMesh(DA, 0, result);
+                }
+            }
+        }
+
+        /// <summary>The operation: reads its options from DA and returns the new mesh.</summary>
+        protected abstract WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA);
     }
 }

@@ -20,13 +20,14 @@ from pathlib import Path
 # Types the components use, by namespace (module path of the .pyi).
 WANTED = {
     "Rhino.Geometry": ["GeometryBase", "Mesh", "MeshFace", "MeshNgon", "MeshUnsafeLock",
-                       "Point3d", "Point3f", "Vector3d", "Vector3f", "Curve", "PolylineCurve", "Polyline"],
+                       "Point3d", "Point3f", "Vector3d", "Vector3f", "Curve", "PolylineCurve", "Polyline",
+                       "Line", "Plane"],
     "Rhino.Geometry.Collections": ["MeshVertexList", "MeshFaceList", "MeshNgonList", "MeshVertexNormalList"],
     "Grasshopper.Kernel": ["GH_Component", "IGH_DataAccess", "IGH_Param", "GH_RuntimeMessageLevel",
                            "GH_ParamAccess", "GH_Exposure", "GH_Convert", "GH_Conversion",
                            "GH_AssemblyInfo", "GH_AssemblyPriority", "GH_LoadingInstruction"],
 }
-STRUCTS = {"MeshFace", "Point3d", "Point3f", "Vector3d", "Vector3f"}
+STRUCTS = {"MeshFace", "Point3d", "Point3f", "Vector3d", "Vector3f", "Line", "Plane"}
 INTERFACES = {"IGH_DataAccess", "IGH_Param"}
 FLOAT_TYPES = {"Point3f", "Vector3f"}  # `float` means System.Single in these
 BUILTIN = {"int": "int", "bool": "bool", "str": "string", "object": "object", "Any": "object",

@@ -37,6 +37,7 @@ namespace Grasshopper.Kernel
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access, Rhino.Geometry.Point3d @default) { throw null; }
             public int AddPlaneParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
+            public int AddLineParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access, int @default) { throw null; }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access, IEnumerable<int> @default) { throw null; }
@@ -61,6 +62,7 @@ namespace Grasshopper.Kernel
             public int AddMeshParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
+            public int AddLineParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddBooleanParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }

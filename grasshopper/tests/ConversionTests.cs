@@ -19,6 +19,11 @@ namespace Weft.Tests
             t.Run("closed polylines share welded corners", Polylines);
             t.Run("concatenation offsets indices", Concatenate);
             t.Run("converted arrays make a valid Weft mesh", IntoWeft);
+            t.Run("refiner cache: a moved cage re-evaluates, new faces re-plan", RefinerCacheReuse);
+            t.Run("refiner cache: a failed plan leaves no refiner and raises the library's error", RefinerCacheError);
+            t.Run("face polylines are closed rings of the face corners", FacePolylines);
+            t.Run("split polylines: closed ones repeat their first point, empty ones skipped", SplitPolylines);
+            t.Run("planarity flags and open rings", PlanarityAndRings);
             return t.Finish();
         }
 
@@ -129,6 +134,104 @@ namespace Weft.Tests
             var r = new int[Math.Min(count, Math.Max(0, a.Length - start))];
             Array.Copy(a, start, r, 0, r.Length);
             return r;
+        }
+
+        private static readonly double[] CubePositions =
+        {
+            0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
+            0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
+        };
+        private static readonly uint[] CubeSizes = { 4, 4, 4, 4, 4, 4 };
+        private static readonly uint[] CubeIndices =
+        {
+            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+            2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
+        };
+
+        private static void RefinerCacheReuse()
+        {
+            using (var cache = new RefinerCache())
+            {
+                RefinedArrays first = cache.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
+                t.False(cache.LastReused, "the first call plans");
+                t.Equal(96, first.FaceSizes.Length, "faces");
+                t.Equal(96, first.Rhino.Faces.Length / 4, "Rhino faces converted");
+
+                // A slider moves the cage: same faces, new positions.
+                var moved = (double[])CubePositions.Clone();
+                for (int i = 0; i < moved.Length; i++) moved[i] = 3 * moved[i] + 1;
+                RefinedArrays second = cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
+                t.True(cache.LastReused, "the refiner is reused");
+                t.Equal(1, cache.PlanCount, "planned once");
+                using (var cage = WeftMesh.Create(moved, CubeSizes, CubeIndices))
+                using (var fresh = Subdivision.CatmullClark(cage, 2, NakedEdges.Smooth))
+                {
+                    double[] expected = fresh.GetPositions();
+                    double worst = 0;
+                    for (int i = 0; i < expected.Length; i++) worst = Math.Max(worst, Math.Abs(expected[i] - second.Positions[i]));
+                    t.True(worst < 1e-12, "re-evaluated positions equal a fresh subdivision, off by " + worst);
+                }
+
+                // A new level count, then new faces: both plan again.
+                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                t.False(cache.LastReused, "new levels re-plan");
+                var flipped = (uint[])CubeIndices.Clone();
+                Array.Reverse(flipped, 0, 4);
+                RefinedArrays third = cache.Subdivide(moved, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                t.False(cache.LastReused, "new faces re-plan");
+                t.Equal(3, cache.PlanCount, "planned three times");
+                t.Equal(24, third.FaceSizes.Length, "one level");
+            }
+        }
+
+        private static void RefinerCacheError()
+        {
+            using (var cache = new RefinerCache())
+            {
+                try
+                {
+                    cache.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.Loop, 1, NakedEdges.Smooth);
+                    t.Fail("Loop on quads should fail");
+                }
+                catch (WeftException e)
+                {
+                    t.Equal(WeftStatus.NotTriangles, e.Status, "status");
+                    t.True(e.Message.Contains("face 0 has 4 vertices"), "message names the face: " + e.Message);
+                }
+                t.Equal(0, cache.PlanCount, "nothing planned");
+                PolygonArrays triangles = MeshArrays.Triangulate(new PolygonArrays { Positions = CubePositions, FaceSizes = CubeSizes, FaceIndices = CubeIndices });
+                RefinedArrays loop = cache.Subdivide(triangles.Positions, triangles.FaceSizes, triangles.FaceIndices, Scheme.Loop, 1, NakedEdges.Smooth);
+                t.Equal(48, loop.FaceSizes.Length, "Loop after triangulation: 12 × 4 triangles");
+            }
+        }
+
+        private static void FacePolylines()
+        {
+            List<double[]> rings = FlatGeometry.FacePolylines(CubePositions, CubeSizes, CubeIndices);
+            t.Equal(6, rings.Count, "one per face");
+            // Face 0 is 0, 2, 3, 1 and back to 0.
+            t.Sequence(new double[] { 0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 0, 0 }, rings[0], "face 0's ring");
+        }
+
+        private static void SplitPolylines()
+        {
+            double[] points = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 5, 5, 5, 6, 6, 6 };
+            List<double[]> parts = FlatGeometry.SplitPolylines(points, new[] { 3, 0, 2 }, new[] { true, true, false }, true);
+            t.Equal(2, parts.Count, "the empty one skipped");
+            t.Equal(12, parts[0].Length, "closed: 3 points and the first again");
+            t.Equal(0.0, parts[0][9], "the first point repeated");
+            t.Sequence(new double[] { 5, 5, 5, 6, 6, 6 }, parts[1], "the open one as it is");
+            t.Equal(3, FlatGeometry.SplitPolylines(points, new[] { 3, 0, 2 }, null, false).Count, "kept when not skipping");
+        }
+
+        private static void PlanarityAndRings()
+        {
+            bool[] flags = FlatGeometry.WithinTolerance(new[] { 0.0, 0.01, 0.2 }, 0.01);
+            t.Sequence(new[] { true, true, false }, flags, "within the tolerance");
+            double[] ring = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0 };
+            t.Equal(9, FlatGeometry.OpenRing(ring).Length, "the repeated corner dropped");
+            t.Equal(9, FlatGeometry.OpenRing(new double[] { 0, 0, 0, 1, 0, 0, 1, 1, 0 }).Length, "an open ring unchanged");
+            t.Sequence(new[] { 3, 0 }, FlatGeometry.ToInts(new uint[] { 3, 0 }), "ints");
         }
     }
 }

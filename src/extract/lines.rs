@@ -4,11 +4,12 @@ use std::collections::HashMap;
 
 use glam::{DMat3, DVec3};
 
+use crate::analysis::newell_vector;
 use crate::error::{Error, Result};
+use crate::linalg::symmetric_eigen;
 use crate::mesh::Mesh;
-use crate::split::{newell, Builder};
+use crate::split::Builder;
 use crate::topology::UnionFind;
-use crate::transform::symmetric_eigen;
 
 /// Builds the faces that a set of line segments encloses (Weaverbird's Mesh
 /// From Lines), each at most `max_valence` corners.
@@ -100,7 +101,8 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
                 s.sort_unstable();
                 s.windows(2).any(|w| w[0] == w[1])
             };
-            let area = newell(cycle.iter().map(|&i| points[i as usize])).dot(normal);
+            let corners: Vec<DVec3> = cycle.iter().map(|&i| points[i as usize]).collect();
+            let area = newell_vector(&corners).dot(normal);
             if cycle.len() >= 3 && cycle.len() <= max_valence as usize && !repeated && area > 0.0 {
                 faces.push(cycle);
             }

@@ -63,7 +63,6 @@ impl Failure {
         }
     }
 
-    #[allow(dead_code)] // used by the operation exports
     pub(crate) fn invalid_argument(message: impl Into<String>) -> Failure {
         Failure::new(WeftStatus::InvalidArgument, message)
     }
@@ -159,19 +158,9 @@ pub(crate) fn out_param<T>(pointer: *mut T, name: &str) -> Result<*mut T, Failur
     }
 }
 
-/// A borrowed input buffer of `len` elements; `(NULL, 0)` is the empty buffer.
-///
-/// # Safety
-/// When not NULL, `pointer` points to `len` readable elements for `'a`.
-pub(crate) unsafe fn input_slice<'a, T>(
-    pointer: *const T,
-    len: usize,
-    name: &str,
-) -> Result<&'a [T], Failure> {
-    if len == 0 {
-        return Ok(&[]);
-    }
-    if pointer.is_null() {
+/// Checks a caller buffer's pointer and length before it is viewed as a slice.
+fn check_buffer<T>(is_null: bool, len: usize, name: &str) -> Result<(), Failure> {
+    if is_null {
         return Err(Failure::new(
             WeftStatus::NullPointer,
             format!("{name} is NULL but its length is {len}"),
@@ -186,6 +175,22 @@ pub(crate) unsafe fn input_slice<'a, T>(
             format!("{name} has a length of {len}, larger than memory can hold"),
         ));
     }
+    Ok(())
+}
+
+/// A borrowed input buffer of `len` elements; `(NULL, 0)` is the empty buffer.
+///
+/// # Safety
+/// When not NULL, `pointer` points to `len` readable elements for `'a`.
+pub(crate) unsafe fn input_slice<'a, T>(
+    pointer: *const T,
+    len: usize,
+    name: &str,
+) -> Result<&'a [T], Failure> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    check_buffer::<T>(pointer.is_null(), len, name)?;
     Ok(std::slice::from_raw_parts(pointer, len))
 }
 
@@ -201,21 +206,7 @@ pub(crate) unsafe fn output_slice<'a, T>(
     if len == 0 {
         return Ok(&mut []);
     }
-    if pointer.is_null() {
-        return Err(Failure::new(
-            WeftStatus::NullPointer,
-            format!("{name} is NULL but its length is {len}"),
-        ));
-    }
-    if len
-        .checked_mul(std::mem::size_of::<T>())
-        .is_none_or(|bytes| bytes > isize::MAX as usize)
-    {
-        return Err(Failure::new(
-            WeftStatus::InputTooLarge,
-            format!("{name} has a length of {len}, larger than memory can hold"),
-        ));
-    }
+    check_buffer::<T>(pointer.is_null(), len, name)?;
     Ok(std::slice::from_raw_parts_mut(pointer, len))
 }
 
@@ -233,7 +224,6 @@ pub(crate) fn check_room(name: &str, len: usize, needed: usize) -> Result<(), Fa
 
 /// Reads a C enumeration value, which arrives as a plain integer: an unknown
 /// value is an error, never a Rust enum with an invalid discriminant.
-#[allow(dead_code)] // used by the operation exports
 pub(crate) fn enum_arg<T>(
     value: u32,
     name: &str,

@@ -1,1 +1,387 @@
-//! Mesh files and pictures.
+//! Mesh files and pictures, for the `weft` command and for tests.
+//!
+//! One file per format: [`obj`] (Wavefront OBJ, polygons kept), [`ply`]
+//! (Stanford PLY, ASCII and binary either endian), [`stl`] (ASCII and binary,
+//! triangles unwelded), [`off`] (Object File Format). Each has a `parse` on
+//! bytes and a `write` to any [`std::io::Write`]; [`read_mesh`] and
+//! [`write_mesh`] choose the format by the file's extension.
+//!
+//! Readers never panic, whatever the bytes: a malformed file is an
+//! [`IoError::Parse`] naming the line (text) or byte offset (binary) and what
+//! was expected, and every count read from a file is checked against the
+//! input that remains before anything is allocated for it. Writers write to a
+//! temporary file in the output's folder and rename it into place, so a
+//! failure never leaves a half-written file behind.
+//!
+//! [`render`] draws a mesh into a PNG picture.
+
+use std::fmt;
+use std::fs;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+use glam::DVec3;
+use thiserror::Error;
+
+use crate::error::MeshError;
+use crate::mesh::Mesh;
+
+pub mod obj;
+pub mod off;
+pub mod ply;
+pub mod render;
+pub mod stl;
+mod text;
+
+/// Where in a file a problem is: a line of a text file or a byte offset of a binary one.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Location {
+    /// A 1-based line number.
+    Line(usize),
+    /// A 0-based byte offset.
+    Byte(usize),
+}
+
+impl fmt::Display for Location {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Location::Line(n) => write!(f, "line {n}"),
+            Location::Byte(n) => write!(f, "byte {n}"),
+        }
+    }
+}
+
+/// Why a mesh file could not be read or written.
+#[derive(Debug, Error)]
+pub enum IoError {
+    /// The operating system refused: the file is missing, unreadable, or the disk is full.
+    #[error("{}: cannot {action}: {source}", .path.display())]
+    File {
+        path: PathBuf,
+        action: &'static str,
+        source: std::io::Error,
+    },
+    /// The folder an output should go to does not exist.
+    #[error("{}: the folder {} does not exist", .path.display(), .folder.display())]
+    MissingFolder { path: PathBuf, folder: PathBuf },
+    /// The extension names no format Weft knows.
+    #[error("{}: unknown mesh format (use .obj, .ply, .stl or .off)", .path.display())]
+    UnknownFormat { path: PathBuf },
+    /// The file's content does not follow its format.
+    #[error("{}{location}: {message}", file_prefix(.file))]
+    Parse {
+        file: Option<PathBuf>,
+        location: Location,
+        message: String,
+    },
+    /// The file is well formed but its faces do not make a valid mesh.
+    #[error("{}{location}: {source}", file_prefix(.file))]
+    InvalidMesh {
+        file: Option<PathBuf>,
+        location: Location,
+        source: MeshError,
+    },
+}
+
+fn file_prefix(file: &Option<PathBuf>) -> String {
+    match file {
+        Some(path) => format!("{}: ", path.display()),
+        None => String::new(),
+    }
+}
+
+impl IoError {
+    /// A parse error at `location`; the message says what was expected.
+    pub(crate) fn parse(location: Location, message: impl Into<String>) -> IoError {
+        IoError::Parse {
+            file: None,
+            location,
+            message: message.into(),
+        }
+    }
+
+    /// Names the file a parse error came from.
+    pub fn in_file(self, path: &Path) -> IoError {
+        match self {
+            IoError::Parse {
+                location, message, ..
+            } => IoError::Parse {
+                file: Some(path.to_path_buf()),
+                location,
+                message,
+            },
+            IoError::InvalidMesh {
+                location, source, ..
+            } => IoError::InvalidMesh {
+                file: Some(path.to_path_buf()),
+                location,
+                source,
+            },
+            other => other,
+        }
+    }
+
+    /// The line or byte offset of a content error.
+    pub fn location(&self) -> Option<Location> {
+        match self {
+            IoError::Parse { location, .. } | IoError::InvalidMesh { location, .. } => {
+                Some(*location)
+            }
+            _ => None,
+        }
+    }
+}
+
+/// The mesh file formats.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Format {
+    Obj,
+    Ply,
+    Stl,
+    Off,
+}
+
+impl Format {
+    /// The format named by a path's extension, case-insensitive.
+    ///
+    /// # Errors
+    /// [`IoError::UnknownFormat`] for any other extension or none.
+    pub fn from_path(path: &Path) -> Result<Format, IoError> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match ext.as_deref() {
+            Some("obj") => Ok(Format::Obj),
+            Some("ply") => Ok(Format::Ply),
+            Some("stl") => Ok(Format::Stl),
+            Some("off") => Ok(Format::Off),
+            _ => Err(IoError::UnknownFormat {
+                path: path.to_path_buf(),
+            }),
+        }
+    }
+}
+
+/// How PLY data is stored.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum PlyEncoding {
+    Ascii,
+    #[default]
+    BinaryLittleEndian,
+    BinaryBigEndian,
+}
+
+/// Options for reading.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct ReadOptions {
+    /// Merge vertices at identical positions (STL stores every triangle's
+    /// corners separately). Faces that collapse are dropped.
+    pub weld: bool,
+}
+
+/// Options for writing.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WriteOptions {
+    /// PLY encoding; binary little endian by default.
+    pub ply: PlyEncoding,
+    /// Write STL as text instead of binary.
+    pub stl_ascii: bool,
+}
+
+/// Reads a mesh file, choosing the format by its extension.
+///
+/// # Errors
+/// [`IoError`] naming the file and, for bad content, the line or byte offset.
+pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
+    read_mesh_with(path, &ReadOptions::default())
+}
+
+/// Reads a mesh file with options (see [`ReadOptions`]).
+///
+/// # Errors
+/// As [`read_mesh`].
+pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    let bytes = fs::read(path).map_err(|source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    })?;
+    let mesh = parse_mesh(format, &bytes).map_err(|e| e.in_file(path))?;
+    Ok(if options.weld {
+        weld_identical(&mesh).0
+    } else {
+        mesh
+    })
+}
+
+/// Parses the bytes of a mesh file of the given format.
+///
+/// # Errors
+/// [`IoError::Parse`] or [`IoError::InvalidMesh`] with the line or byte offset.
+pub fn parse_mesh(format: Format, bytes: &[u8]) -> Result<Mesh, IoError> {
+    match format {
+        Format::Obj => obj::parse(bytes),
+        Format::Ply => ply::parse(bytes),
+        Format::Stl => stl::parse(bytes),
+        Format::Off => off::parse(bytes),
+    }
+}
+
+/// Writes a mesh file in the format its extension names, with default options.
+///
+/// # Errors
+/// As [`write_mesh_with`].
+pub fn write_mesh(path: impl AsRef<Path>, mesh: &Mesh) -> Result<(), IoError> {
+    write_mesh_with(path, mesh, &WriteOptions::default())
+}
+
+/// Writes a mesh file in the format its extension names. STL holds only
+/// triangles: polygons are written as fans.
+///
+/// # Errors
+/// [`IoError::UnknownFormat`], [`IoError::MissingFolder`], or
+/// [`IoError::File`] when the file cannot be written; the output is then left
+/// as it was.
+pub fn write_mesh_with(
+    path: impl AsRef<Path>,
+    mesh: &Mesh,
+    options: &WriteOptions,
+) -> Result<(), IoError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    write_atomically(path, |w| write_to(format, w, mesh, options))
+}
+
+/// Writes a mesh in `format` to any writer.
+///
+/// # Errors
+/// Whatever the writer returns.
+pub fn write_to(
+    format: Format,
+    w: &mut dyn Write,
+    mesh: &Mesh,
+    options: &WriteOptions,
+) -> std::io::Result<()> {
+    match format {
+        Format::Obj => obj::write(w, mesh),
+        Format::Ply => ply::write(w, mesh, options.ply),
+        Format::Stl => stl::write(w, mesh, options.stl_ascii),
+        Format::Off => off::write(w, mesh),
+    }
+}
+
+/// Writes through `fill` into a temporary file beside `path`, then renames it
+/// into place: readers of `path` never see a partial file.
+///
+/// # Errors
+/// [`IoError::MissingFolder`] when the folder does not exist; [`IoError::File`]
+/// for anything the operating system refuses.
+pub fn write_atomically(
+    path: &Path,
+    fill: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), IoError> {
+    let folder = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    if !folder.is_dir() {
+        return Err(IoError::MissingFolder {
+            path: path.to_path_buf(),
+            folder,
+        });
+    }
+    let name = path
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_default();
+    let temporary = folder.join(format!(".{name}.{}.partial", std::process::id()));
+    let file_error = |action, source| IoError::File {
+        path: path.to_path_buf(),
+        action,
+        source,
+    };
+    let result = (|| {
+        let file = fs::File::create(&temporary).map_err(|e| file_error("create", e))?;
+        let mut writer = BufWriter::new(file);
+        fill(&mut writer).map_err(|e| file_error("write", e))?;
+        let file = writer
+            .into_inner()
+            .map_err(|e| file_error("write", e.into_error()))?;
+        file.sync_all().map_err(|e| file_error("write", e))?;
+        drop(file);
+        fs::rename(&temporary, path).map_err(|e| file_error("replace", e))
+    })();
+    if result.is_err() {
+        let _ = fs::remove_file(&temporary);
+    }
+    result
+}
+
+/// Merges vertices at bit-identical positions and drops faces that collapse
+/// to fewer than three distinct corners. Returns the mesh and how many faces
+/// were dropped. Unused vertices are removed.
+pub fn weld_identical(mesh: &Mesh) -> (Mesh, usize) {
+    use std::collections::HashMap;
+    let key = |p: DVec3| {
+        // +0.0 and -0.0 are one position.
+        let c = |x: f64| if x == 0.0 { 0u64 } else { x.to_bits() };
+        (c(p.x), c(p.y), c(p.z))
+    };
+    let mut slot = HashMap::with_capacity(mesh.vertex_count());
+    let mut positions = Vec::new();
+    let mut sizes = Vec::with_capacity(mesh.face_count());
+    let mut indices = Vec::with_capacity(mesh.index_count());
+    let mut dropped = 0;
+    let mut face = Vec::new();
+    for corners in mesh.faces() {
+        face.clear();
+        for &v in corners {
+            let p = mesh.positions()[v as usize];
+            let next = positions.len() as u32;
+            let id = *slot.entry(key(p)).or_insert_with(|| {
+                positions.push(p);
+                next
+            });
+            // Drop repeats, keeping the first occurrence's place.
+            if !face.contains(&id) {
+                face.push(id);
+            }
+        }
+        if face.len() < 3 {
+            dropped += 1;
+            continue;
+        }
+        sizes.push(face.len() as u32);
+        indices.extend_from_slice(&face);
+    }
+    let welded = Mesh::new(positions, sizes, indices).expect("welding keeps a mesh valid");
+    (welded, dropped)
+}
+
+/// Builds the mesh a reader collected, turning a validation error into one at
+/// the line or byte offset where the offending face or vertex was read.
+pub(crate) fn build_mesh(
+    positions: Vec<DVec3>,
+    face_sizes: Vec<u32>,
+    face_indices: Vec<u32>,
+    vertex_location: impl Fn(usize) -> Location,
+    face_location: impl Fn(usize) -> Location,
+) -> Result<Mesh, IoError> {
+    Mesh::new(positions, face_sizes, face_indices).map_err(|source| {
+        let location = match &source {
+            MeshError::IndexOutOfRange { face, .. }
+            | MeshError::FaceTooSmall { face, .. }
+            | MeshError::RepeatedIndex { face, .. } => face_location(*face),
+            MeshError::NonFiniteCoordinate { vertex, .. } => vertex_location(*vertex),
+            _ => Location::Byte(0),
+        };
+        IoError::InvalidMesh {
+            file: None,
+            location,
+            source,
+        }
+    })
+}

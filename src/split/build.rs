@@ -106,25 +106,7 @@ pub(crate) fn face_centroid(mesh: &Mesh, f: usize) -> DVec3 {
     mesh.face_positions(f).sum::<DVec3>() / n
 }
 
-/// A face's unit normal by Newell's method (robust for non-planar
-/// polygons); zero for a degenerate face.
-pub(crate) fn face_normal(mesh: &Mesh, f: usize) -> DVec3 {
-    newell(mesh.face_positions(f)).normalize_or_zero()
-}
-
-/// Twice the vector area of a polygon (Newell's sum, not normalised).
-pub(crate) fn newell(points: impl Iterator<Item = DVec3>) -> DVec3 {
-    let mut points = points;
-    let Some(first) = points.next() else {
-        return DVec3::ZERO;
-    };
-    let (mut sum, mut last) = (DVec3::ZERO, first);
-    for p in points {
-        sum += last.cross(p);
-        last = p;
-    }
-    sum + last.cross(first)
-}
+pub(crate) use crate::analysis::face_normal;
 
 /// For each corner, the previous corner of its face.
 pub(crate) fn corner_prev(mesh: &Mesh) -> Vec<u32> {

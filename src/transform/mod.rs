@@ -5,11 +5,9 @@
 mod bevel;
 mod carpet;
 mod inset;
-mod linalg;
 mod offset;
 
 pub use bevel::{bevel_edges, bevel_vertices};
 pub use carpet::sierpinski_carpet;
 pub use inset::{picture_frame, window, InsetMode};
-pub(crate) use linalg::symmetric_eigen;
 pub use offset::{offset, thicken, OffsetType};

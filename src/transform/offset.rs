@@ -7,7 +7,7 @@ use crate::mesh::Mesh;
 use crate::split::{face_normal, moved, Builder};
 use crate::topology::Topology;
 
-use super::symmetric_eigen;
+use crate::linalg::symmetric_eigen;
 
 /// Where an offset vertex goes (Weaverbird's offset types). `n_v` is the
 /// vertex normal, the normalised sum of the unit normals of its faces.

@@ -8,7 +8,7 @@ namespace Weft.Grasshopper
     {
         public CatmullClarkComponent()
             : base("Catmull-Clark Subdivision", "wbCatmullClark",
-                   "Subdivides a mesh with the Catmull-Clark scheme; after one level every face is a quad.",
+                   "Subdivides a mesh with the Catmull-Clark scheme; after one level every face is a quad. While the faces stay the same, moving the vertices only re-evaluates the planned subdivision.",
                    "Subdivide", "catmull_clark")
         {
         }
@@ -30,20 +30,17 @@ namespace Weft.Grasshopper
             pManager.AddMeshParameter("Mesh", "M", "The subdivided mesh.", GH_ParamAccess.item);
         }
 
+        // One plan per cage topology: moving the cage only re-evaluates positions.
+        private readonly RefinerCache cache = new RefinerCache();
+
         protected override void Solve(IGH_DataAccess DA)
         {
-            int levels = 1, mode = 1;
-            DA.GetData(1, ref levels);
-            DA.GetData(2, ref mode);
-            NakedEdges nakedEdges = ToNakedEdges(mode);
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                using (WeftMesh result = Operations.CatmullClark(mesh, levels, nakedEdges))
-                {
-                    SetMesh(DA, 0, result);
-                }
-            }
+            int levels = Get(DA, 1, 1);
+            NakedEdges nakedEdges = ToNakedEdges(Get(DA, 2, 1));
+            PolygonArrays cage = GetPolygons(DA, 0);
+            if (cage == null) return;
+            RefinedArrays refined = cache.Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, Scheme.CatmullClark, levels, nakedEdges);
+            DA.SetData(0, RhinoMeshes.FromArrays(refined.Positions, refined.Rhino));
         }
     }
 }

@@ -34,8 +34,8 @@ namespace Weft.Grasshopper
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
-                long removed;
-                using (WeftMesh culled = Operations.CullAdjacent(mesh, out removed))
+                int removed;
+                using (WeftMesh culled = Mending.CullAdjacent(mesh, out removed))
                 {
                     SetMesh(DA, 0, culled);
                     DA.SetData(1, (int)removed);

@@ -46,7 +46,7 @@ namespace Weft.Grasshopper
                     SetMesh(DA, 0, joined);
                     return;
                 }
-                using (WeftMesh welded = Operations.Weld(joined, tolerance))
+                using (WeftMesh welded = Mending.Weld(joined, tolerance))
                 {
                     SetMesh(DA, 0, welded);
                 }

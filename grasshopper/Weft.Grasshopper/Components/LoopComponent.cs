@@ -30,32 +30,23 @@ namespace Weft.Grasshopper
             pManager.AddMeshParameter("Mesh", "M", "The subdivided mesh.", GH_ParamAccess.item);
         }
 
+        // One plan per (triangulated) cage topology: moving the cage only re-evaluates positions.
+        private readonly RefinerCache cache = new RefinerCache();
+
         protected override void Solve(IGH_DataAccess DA)
         {
-            int levels = 1, mode = 1;
-            DA.GetData(1, ref levels);
-            DA.GetData(2, ref mode);
-            NakedEdges nakedEdges = ToNakedEdges(mode);
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            int levels = Get(DA, 1, 1);
+            NakedEdges nakedEdges = ToNakedEdges(Get(DA, 2, 1));
+            PolygonArrays cage = GetPolygons(DA, 0);
+            if (cage == null) return;
+            int others = CountNonTriangles(cage.FaceSizes);
+            if (others > 0)
             {
-                if (mesh == null) return;
-                int others = CountNonTriangles(mesh.GetFaceSizes());
-                if (others == 0)
-                {
-                    using (WeftMesh result = Operations.Loop(mesh, levels, nakedEdges))
-                    {
-                        SetMesh(DA, 0, result);
-                    }
-                    return;
-                }
-                AddRuntimeMessage(GH_RuntimeMessageLevel.Remark,
-                    others + " quad or n-gon face(s) were triangulated before subdividing.");
-                using (WeftMesh triangles = Operations.Triangulate(mesh))
-                using (WeftMesh result = Operations.Loop(triangles, levels, nakedEdges))
-                {
-                    SetMesh(DA, 0, result);
-                }
+                Remark(others + " quad or n-gon face(s) were triangulated before subdividing.");
+                cage = MeshArrays.Triangulate(cage);
             }
+            RefinedArrays refined = cache.Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, Scheme.Loop, levels, nakedEdges);
+            DA.SetData(0, RhinoMeshes.FromArrays(refined.Positions, refined.Rhino));
         }
 
         /// <summary>Faces that are not triangles.</summary>

@@ -39,15 +39,15 @@ namespace Weft.Grasshopper
                 if (mesh == null) return;
                 if (flipAll)
                 {
-                    using (WeftMesh result = Operations.Flip(mesh))
+                    using (WeftMesh result = Mending.Flip(mesh))
                     {
                         SetMesh(DA, 0, result);
                         DA.SetData(1, result.FaceCount);
                     }
                     return;
                 }
-                long flipped;
-                using (WeftMesh result = Operations.UnifyOrientation(mesh, out flipped))
+                int flipped;
+                using (WeftMesh result = Mending.UnifyOrientation(mesh, out flipped))
                 {
                     SetMesh(DA, 0, result);
                     DA.SetData(1, (int)flipped);

@@ -33,7 +33,7 @@ namespace Weft.Grasshopper
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
-                using (WeftMesh result = Operations.Triangulate(mesh))
+                using (WeftMesh result = Subdivision.Triangulate(mesh))
                 {
                     SetMesh(DA, 0, result);
                 }

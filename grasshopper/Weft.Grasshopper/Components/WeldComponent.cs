@@ -37,7 +37,7 @@ namespace Weft.Grasshopper
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
-                using (WeftMesh result = Operations.Weld(mesh, tolerance))
+                using (WeftMesh result = Mending.Weld(mesh, tolerance))
                 {
                     SetMesh(DA, 0, result);
                 }

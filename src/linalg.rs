@@ -1,4 +1,5 @@
-//! The little linear algebra the transforms need.
+//! The little linear algebra the geometry needs: best-fit planes and
+//! planes-intersection offsets both come down to a symmetric 3×3 eigenproblem.
 
 use glam::{DMat3, DVec3};
 
@@ -61,5 +62,13 @@ mod tests {
         for (value, vector) in values.iter().zip(vectors) {
             assert!((m * vector - vector * *value).length() < 1e-12);
         }
+    }
+
+    #[test]
+    fn eigen_of_a_diagonal_matrix_is_exact() {
+        let m = DMat3::from_diagonal(DVec3::new(3.0, 0.5, 2.0));
+        let (values, vectors) = symmetric_eigen(m);
+        assert_eq!(values, [0.5, 2.0, 3.0]);
+        assert_eq!(vectors[0].abs(), DVec3::Y);
     }
 }

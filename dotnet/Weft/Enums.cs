@@ -1,0 +1,90 @@
+namespace Weft
+{
+    /// <summary>How subdivision treats naked (boundary) edges (WEFT_NAKED_EDGES_*).</summary>
+    public enum NakedEdges : uint
+    {
+        /// <summary>The boundary polyline does not move: boundary vertices stay, new ones are edge midpoints.</summary>
+        Fixed = 0,
+        /// <summary>The boundary tends to a cubic B-spline; every boundary vertex moves.</summary>
+        Smooth = 1,
+        /// <summary>As Smooth, but a boundary vertex with only one face (a corner) stays.</summary>
+        CornerFixed = 2,
+    }
+
+    /// <summary>A subdivision scheme (WEFT_SCHEME_*).</summary>
+    public enum Scheme : uint
+    {
+        /// <summary>Catmull-Clark: any polygons in, quads out.</summary>
+        CatmullClark = 0,
+        /// <summary>Loop: triangles in, triangles out.</summary>
+        Loop = 1,
+    }
+
+    /// <summary>How the smoothing operations treat naked edges (WEFT_SMOOTH_NAKED_*).</summary>
+    public enum SmoothNakedEdges : uint
+    {
+        /// <summary>Boundary vertices stay.</summary>
+        Fixed = 0,
+        /// <summary>Boundary vertices move along the boundary, averaged with their boundary neighbours only.</summary>
+        Smooth = 1,
+        /// <summary>As Smooth, but a boundary vertex with a single face (a corner) stays.</summary>
+        CornerFixed = 2,
+    }
+
+    /// <summary>How Offset Mesh and Mesh Thicken move a vertex (WEFT_OFFSET_*).</summary>
+    public enum OffsetType : uint
+    {
+        /// <summary>By the distance along the vertex normal.</summary>
+        Diagonal = 0,
+        /// <summary>Along the vertex normal by the average of distance / cos of the angle to each face normal.</summary>
+        HypotenuseAverage = 1,
+        /// <summary>To where the moved face planes meet (least squares for more than three faces).</summary>
+        PlanesIntersection = 2,
+    }
+
+    /// <summary>How Mesh Window and Picture Frame read their distances (WEFT_INSET_*).</summary>
+    public enum InsetMode : uint
+    {
+        /// <summary>A share of the edges, in [0, 0.5).</summary>
+        EdgeFraction = 0,
+        /// <summary>A width in model units (parallelogram rule).</summary>
+        Parallelogram = 1,
+    }
+
+    /// <summary>Where the dual's vertices go (WEFT_DUAL_*).</summary>
+    public enum DualMode : uint
+    {
+        /// <summary>At each face's centroid.</summary>
+        VertexAverage = 0,
+        /// <summary>As VertexAverage, scaled to the input's bounding box size.</summary>
+        KeepSize = 1,
+    }
+
+    /// <summary>The platonic solids (WEFT_PLATONIC_*).</summary>
+    public enum PlatonicSolid : uint
+    {
+        /// <summary>4 triangles.</summary>
+        Tetrahedron = 0,
+        /// <summary>6 quads (the cube).</summary>
+        Hexahedron = 1,
+        /// <summary>8 triangles.</summary>
+        Octahedron = 2,
+        /// <summary>12 pentagons.</summary>
+        Dodecahedron = 3,
+        /// <summary>20 triangles.</summary>
+        Icosahedron = 4,
+    }
+
+    /// <summary>Solids on a regular n-gon (WEFT_SIDED_*).</summary>
+    public enum SidedSolid : uint
+    {
+        /// <summary>Two n-gons joined by n quads.</summary>
+        Prism = 0,
+        /// <summary>Two n-gons, one turned by half a side, joined by 2n triangles.</summary>
+        Antiprism = 1,
+        /// <summary>An n-gon base and n triangles to the apex.</summary>
+        Pyramid = 2,
+        /// <summary>Two pyramids base to base (2n triangles).</summary>
+        Dipyramid = 3,
+    }
+}

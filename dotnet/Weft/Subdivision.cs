@@ -1,0 +1,155 @@
+using System;
+
+namespace Weft
+{
+    /// <summary>
+    /// Catmull-Clark and Loop subdivision, the parent-face map and
+    /// triangulation. Each method returns a new <see cref="WeftMesh"/> the
+    /// caller disposes; failures raise a <see cref="WeftException"/>.
+    /// </summary>
+    public static class Subdivision
+    {
+        static Subdivision()
+        {
+            NativeLibraryLoader.EnsureLoaded();
+        }
+
+        /// <summary>Catmull-Clark subdivision, <paramref name="levels"/> times (0 copies); every face is a quad after one level.</summary>
+        public static WeftMesh CatmullClark(WeftMesh mesh, int levels, NakedEdges nakedEdges)
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_catmull_clark(
+                Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>Loop subdivision of a triangle mesh (fails with <see cref="WeftStatus.NotTriangles"/> otherwise).</summary>
+        public static WeftMesh Loop(WeftMesh mesh, int levels, NakedEdges nakedEdges)
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_loop(
+                Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>Splits quads along the shorter diagonal and n-gons by ear clipping; vertices keep their indices.</summary>
+        public static WeftMesh Triangulate(WeftMesh mesh)
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_triangulate(Arguments.Mesh(mesh, "mesh"), out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>The number of faces <paramref name="levels"/> steps of <paramref name="scheme"/> make from <paramref name="cage"/>, without subdividing.</summary>
+        public static int FaceCount(WeftMesh cage, Scheme scheme, int levels)
+        {
+            UIntPtr count;
+            WeftException.Check(NativeMethods.weft_subdivision_face_count(
+                Arguments.Mesh(cage, "cage"), (uint)scheme, Arguments.Unsigned(levels, "levels"), out count));
+            return Arguments.ToInt(count);
+        }
+
+        /// <summary>For each face of the subdivided mesh, the index of the cage face it comes from.</summary>
+        public static uint[] ParentFaces(WeftMesh cage, Scheme scheme, int levels)
+        {
+            var parents = new uint[FaceCount(cage, scheme, levels)];
+            WeftException.Check(NativeMethods.weft_subdivision_parent_faces(
+                cage.Handle, (uint)scheme, (uint)levels, parents, (UIntPtr)parents.Length));
+            return parents;
+        }
+    }
+
+    /// <summary>
+    /// The subdivision of one cage topology, planned once: moving the cage's
+    /// vertices costs only <see cref="Evaluate"/>, which writes into a caller
+    /// buffer and allocates nothing. Dispose it to free the native plan.
+    /// </summary>
+    public sealed class Refiner : IDisposable
+    {
+        private readonly WeftRefinerHandle handle;
+
+        static Refiner()
+        {
+            NativeLibraryLoader.EnsureLoaded();
+        }
+
+        /// <summary>
+        /// Plans <paramref name="levels"/> steps of <paramref name="scheme"/> on the faces of
+        /// <paramref name="cage"/> (which may be disposed afterwards).
+        /// </summary>
+        /// <exception cref="WeftException">An unknown scheme or mode, Loop on a non-triangle (<see cref="WeftStatus.NotTriangles"/>), a result too large.</exception>
+        public Refiner(WeftMesh cage, Scheme scheme, int levels, NakedEdges nakedEdges)
+        {
+            WeftRefinerHandle created;
+            uint status = NativeMethods.weft_refiner_new(
+                Arguments.Mesh(cage, "cage"), (uint)scheme, Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out created);
+            if (status != (uint)WeftStatus.Ok)
+            {
+                string message = WeftException.LastErrorMessage();
+                if (created != null) created.Dispose();
+                throw new WeftException((WeftStatus)status, message);
+            }
+            handle = created;
+            CageVertexCount = cage.VertexCount;
+        }
+
+        /// <summary>The number of cage vertices <see cref="Evaluate"/> expects.</summary>
+        public int CageVertexCount { get; private set; }
+
+        /// <summary>The number of refined vertices; <see cref="Evaluate"/> writes 3 doubles for each.</summary>
+        public int VertexCount
+        {
+            get { return Arguments.ToInt(NativeMethods.weft_refiner_vertex_count(Handle)); }
+        }
+
+        /// <summary>The number of refined faces.</summary>
+        public int FaceCount
+        {
+            get { return Arguments.ToInt(NativeMethods.weft_refiner_face_count(Handle)); }
+        }
+
+        /// <summary>
+        /// Computes the refined positions of new cage positions (3 doubles per
+        /// cage vertex) into <paramref name="refinedPositions"/> (at least
+        /// 3 × <see cref="VertexCount"/> doubles). No allocation: the arrays
+        /// are pinned for the call.
+        /// </summary>
+        /// <exception cref="WeftException"><see cref="WeftStatus.CountMismatch"/>, <see cref="WeftStatus.BufferTooSmall"/>, <see cref="WeftStatus.NonFiniteCoordinate"/>.</exception>
+        public void Evaluate(double[] cagePositions, double[] refinedPositions)
+        {
+            UIntPtr vertexCount = Arguments.Triples(cagePositions, "cagePositions");
+            Arguments.NotNull(refinedPositions, "refinedPositions");
+            WeftException.Check(NativeMethods.weft_refiner_evaluate(
+                Handle, cagePositions, vertexCount, refinedPositions, (UIntPtr)refinedPositions.Length));
+        }
+
+        /// <summary>The refined mesh at the cage positions the refiner was built from.</summary>
+        public WeftMesh Mesh()
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_refiner_mesh(Handle, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>True once <see cref="Dispose"/> has run.</summary>
+        public bool IsDisposed
+        {
+            get { return handle.IsClosed; }
+        }
+
+        /// <summary>Frees the native plan; later calls are ignored.</summary>
+        public void Dispose()
+        {
+            handle.Dispose();
+        }
+
+        private WeftRefinerHandle Handle
+        {
+            get
+            {
+                if (handle.IsClosed) throw new ObjectDisposedException("Refiner", "The refiner was disposed and its native memory freed.");
+                return handle;
+            }
+        }
+    }
+}

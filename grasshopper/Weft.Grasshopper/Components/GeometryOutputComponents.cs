@@ -1,0 +1,236 @@
+using System;
+using System.Collections.Generic;
+using Grasshopper.Kernel;
+using Rhino.Geometry;
+
+namespace Weft.Grasshopper
+{
+    /// <summary>Blurs per-vertex values over the mesh (Weaverbird's wbBlur blurs vertex colours; here any values, e.g. colour channels).</summary>
+    public sealed class BlurComponent : WeftComponent
+    {
+        public BlurComponent()
+            : base("Blur", "wbBlur",
+                   "Blurs per-vertex values over the mesh: each iteration moves every value Blend of the way towards its neighbours' average. C values per vertex, vertex after vertex (3 for R, G, B). The mesh is unchanged.",
+                   "Smooth", "blur")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("440c78b1-633d-4b19-a675-8e41bd51c69d"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The mesh whose vertices carry the values.");
+            pManager.AddNumberParameter("Values", "V", "C values per vertex, vertex after vertex.", GH_ParamAccess.list);
+            pManager.AddIntegerParameter("Components", "C", "Values per vertex.", GH_ParamAccess.item, 1);
+            pManager.AddIntegerParameter("Level", "L", "Iterations.", GH_ParamAccess.item, 1);
+            pManager.AddNumberParameter("Blend", "B", "0 to 1 per iteration.", GH_ParamAccess.item, 1.0);
+            AddSmoothNakedInput(pManager);
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddNumberParameter("Values", "V", "The blurred values, in the same layout.", GH_ParamAccess.list);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            double[] values = GetList<double>(DA, 1);
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                DA.SetDataList(0, Toolbar.BlurValues(mesh, values, Get(DA, 2, 1), Get(DA, 3, 1), Get(DA, 4, 1.0), ToSmoothNaked(Get(DA, 5, 0))));
+            }
+        }
+    }
+
+    /// <summary>The vertices of a mesh as points.</summary>
+    public sealed class VerticesComponent : WeftComponent
+    {
+        public VerticesComponent()
+            : base("Mesh Vertices", "wbVertices", "The vertices of the mesh as points, in vertex order (n-gon meshes and polylines as Weft reads them).",
+                   "Extract", "vertices")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("a119335b-605c-4507-8740-0fbda0c60284"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The mesh.");
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddPointParameter("Vertices", "V", "One point per vertex.", GH_ParamAccess.list);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            PolygonArrays mesh = GetPolygons(DA, 0);
+            if (mesh == null) return;
+            DA.SetDataList(0, RhinoMeshes.ToPoints(mesh.Positions));
+        }
+    }
+
+    /// <summary>Each face as a closed polyline.</summary>
+    public sealed class FacePolylinesComponent : WeftComponent
+    {
+        public FacePolylinesComponent()
+            : base("Face Polylines", "wbFacePolylines", "Each face (triangle, quad or n-gon) as a closed polyline, in face order.",
+                   "Extract", "face_polylines")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The mesh.");
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddCurveParameter("Polylines", "P", "One closed polyline per face.", GH_ParamAccess.list);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            PolygonArrays mesh = GetPolygons(DA, 0);
+            if (mesh == null) return;
+            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.FacePolylines(mesh.Positions, mesh.FaceSizes, mesh.FaceIndices)));
+        }
+    }
+
+    /// <summary>The unique edges as lines and vertex index pairs.</summary>
+    public sealed class MeshEdgesComponent : WeftComponent
+    {
+        public MeshEdgesComponent()
+            : base("Mesh Edges", "wbEdges", "The unique edges of the mesh as lines, sorted by their lower then higher vertex index, with those indices.",
+                   "Extract", "edges")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The mesh.");
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddLineParameter("Edges", "E", "One line per edge, from its lower to its higher vertex.", GH_ParamAccess.list);
+            pManager.AddIntegerParameter("Start", "A", "The lower vertex index of each edge.", GH_ParamAccess.list);
+            pManager.AddIntegerParameter("End", "B", "The higher vertex index of each edge.", GH_ParamAccess.list);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                uint[] pairs = Toolbar.Edges(mesh);
+                var starts = new int[pairs.Length / 2];
+                var ends = new int[pairs.Length / 2];
+                for (int e = 0; e < starts.Length; e++)
+                {
+                    starts[e] = (int)pairs[2 * e];
+                    ends[e] = (int)pairs[2 * e + 1];
+                }
+                DA.SetDataList(0, RhinoMeshes.ToLines(Toolbar.EdgeSegments(mesh)));
+                DA.SetDataList(1, starts);
+                DA.SetDataList(2, ends);
+            }
+        }
+    }
+
+    /// <summary>The naked edges chained into polylines.</summary>
+    public sealed class NakedBoundaryComponent : WeftComponent
+    {
+        public NakedBoundaryComponent()
+            : base("Naked Boundary", "wbNakedBoundary",
+                   "The naked edges chained into polylines: each border of a manifold mesh is one closed polyline; polylines stop at vertices with one or three or more naked edges.",
+                   "Extract", "naked_boundary")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            AddMeshInput(pManager, "M", "The mesh.");
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            pManager.AddCurveParameter("Boundaries", "B", "The naked boundary polylines.", GH_ParamAccess.list);
+            pManager.AddBooleanParameter("Closed", "C", "Whether each polyline is closed.", GH_ParamAccess.list);
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                PolylineSet set = Mending.NakedBoundaries(mesh);
+                DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.SplitPolylines(set.Points, set.PointCounts, set.Closed, false)));
+                DA.SetDataList(1, set.Closed);
+            }
+        }
+    }
+
+    /// <summary>Faces from lines.</summary>
+    public sealed class MeshFromLinesComponent : WeftComponent
+    {
+        public MeshFromLinesComponent()
+            : base("Mesh From Lines", "wbMeshFromLines",
+                   "Builds the faces a set of lines encloses: endpoints within the tolerance are welded, dangling lines ignored, and the smallest cycles, seen in their best-fit plane, become faces of at most V corners.",
+                   "Extract", "mesh_from_lines")
+        {
+        }
+
+        public override Guid ComponentGuid
+        {
+            get { return new Guid("cc07b8b1-5e40-4bd9-bf7e-de3149a6332b"); }
+        }
+
+        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        {
+            pManager.AddLineParameter("Lines", "L", "The lines.", GH_ParamAccess.list);
+            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            pManager[1].Optional = true;
+            pManager.AddIntegerParameter("Max Valence", "V", "The largest face size kept, at least 3.", GH_ParamAccess.item, 4);
+        }
+
+        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
+        {
+            AddMeshOutput(pManager, "The mesh of the enclosed faces.");
+        }
+
+        protected override void Solve(IGH_DataAccess DA)
+        {
+            Line[] lines = GetList<Line>(DA, 0);
+            if (lines.Length == 0) return;
+            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), Get(DA, 1, DocumentTolerance()), Get(DA, 2, 4)))
+            {
+                if (mesh.FaceCount == 0) Warn("The lines enclose no face.");
+                SetMesh(DA, 0, mesh);
+            }
+        }
+    }
+}

@@ -1,0 +1,114 @@
+using System;
+
+namespace Weft.Grasshopper
+{
+    /// <summary>A refined mesh as arrays: positions and the faces in both layouts.</summary>
+    public sealed class RefinedArrays
+    {
+        /// <summary>x, y, z per refined vertex.</summary>
+        public double[] Positions;
+        /// <summary>Corner count of each refined face.</summary>
+        public uint[] FaceSizes;
+        /// <summary>The refined faces' vertex indices.</summary>
+        public uint[] FaceIndices;
+        /// <summary>The refined faces as Rhino stores them, converted once per topology.</summary>
+        public RhinoArrays Rhino;
+    }
+
+    /// <summary>
+    /// Keeps one <see cref="Refiner"/> while the cage's faces, the scheme, the
+    /// levels and the naked-edge mode stay the same, so that a slider moving
+    /// the cage costs only <c>weft_refiner_evaluate</c>: no planning, no face
+    /// conversion, and the output positions buffer is reused. A component owns
+    /// one; dispose it with the component's document.
+    /// </summary>
+    public sealed class RefinerCache : IDisposable
+    {
+        private Refiner refiner;
+        private uint[] cageSizes;
+        private uint[] cageIndices;
+        private Scheme scheme;
+        private int levels;
+        private NakedEdges nakedEdges;
+        private RefinedArrays refined;
+
+        /// <summary>True when the last <see cref="Subdivide"/> reused the refiner (only positions were evaluated).</summary>
+        public bool LastReused { get; private set; }
+
+        /// <summary>How many times a refiner was planned.</summary>
+        public int PlanCount { get; private set; }
+
+        /// <summary>
+        /// Subdivides a cage given as arrays. The returned object is owned by
+        /// the cache and overwritten by the next call; copy what must outlive it.
+        /// </summary>
+        public RefinedArrays Subdivide(double[] positions, uint[] faceSizes, uint[] faceIndices, Scheme scheme, int levels, NakedEdges nakedEdges)
+        {
+            if (positions == null) throw new ArgumentNullException("positions");
+            if (refiner != null && scheme == this.scheme && levels == this.levels && nakedEdges == this.nakedEdges
+                && refiner.CageVertexCount * 3 == positions.Length
+                && SameValues(faceSizes, cageSizes) && SameValues(faceIndices, cageIndices))
+            {
+                refiner.Evaluate(positions, refined.Positions);
+                LastReused = true;
+                return refined;
+            }
+            Reset();
+            using (WeftMesh cage = WeftMesh.Create(positions, faceSizes, faceIndices))
+            {
+                var planned = new Refiner(cage, scheme, levels, nakedEdges);
+                try
+                {
+                    var result = new RefinedArrays();
+                    using (WeftMesh mesh = planned.Mesh())
+                    {
+                        result.Positions = mesh.GetPositions();
+                        mesh.GetFaces(out result.FaceSizes, out result.FaceIndices);
+                    }
+                    result.Rhino = MeshArrays.ToRhino(result.Positions, result.FaceSizes, result.FaceIndices);
+                    refiner = planned;
+                    refined = result;
+                }
+                catch
+                {
+                    planned.Dispose();
+                    throw;
+                }
+            }
+            cageSizes = (uint[])faceSizes.Clone();
+            cageIndices = (uint[])faceIndices.Clone();
+            this.scheme = scheme;
+            this.levels = levels;
+            this.nakedEdges = nakedEdges;
+            LastReused = false;
+            PlanCount++;
+            return refined;
+        }
+
+        /// <summary>Forgets the refiner (the next call plans again).</summary>
+        public void Reset()
+        {
+            if (refiner != null) refiner.Dispose();
+            refiner = null;
+            refined = null;
+            cageSizes = null;
+            cageIndices = null;
+        }
+
+        /// <summary>Frees the native refiner.</summary>
+        public void Dispose()
+        {
+            Reset();
+        }
+
+        private static bool SameValues(uint[] a, uint[] b)
+        {
+            if (a == null || b == null || a.Length != b.Length) return false;
+            for (int i = 0; i < a.Length; i++)
+            {
+                if (a[i] != b[i]) return false;
+            }
+            return true;
+        }
+    }
+}

@@ -1,0 +1,566 @@
+//! `weft demo`: the design workflows of Weft, each built only from Weft's own
+//! operations on built-in inputs, written as mesh files and pictures with an
+//! `index.html` that shows them all.
+
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+use weft::io::render::{self, RenderOptions};
+use weft::io::{self, IoError};
+use weft::plane::Plane;
+use weft::stellate::{stellate, Heights};
+use weft::subdivide::{catmull_clark, loop_subdivision, NakedEdges};
+use weft::{DVec3, Error, Mesh};
+
+/// A grayscale picture sampled by the fading pattern, values 0 (black) to 1.
+pub struct Gray {
+    width: usize,
+    height: usize,
+    values: Vec<f64>,
+}
+
+impl Gray {
+    /// A left-to-right gradient that also rises towards the middle.
+    fn built_in() -> Gray {
+        let (width, height) = (64, 64);
+        let mut values = Vec::with_capacity(width * height);
+        for y in 0..height {
+            for x in 0..width {
+                let u = x as f64 / (width - 1) as f64;
+                let v = y as f64 / (height - 1) as f64;
+                let bump = 1.0 - (2.0 * v - 1.0).powi(2);
+                values.push((u * (0.55 + 0.45 * bump)).clamp(0.0, 1.0));
+            }
+        }
+        Gray {
+            width,
+            height,
+            values,
+        }
+    }
+
+    /// Reads a PNG of any colour type as luminance.
+    pub fn read(path: &Path) -> Result<Gray, String> {
+        let name = path.display();
+        let file = std::fs::File::open(path).map_err(|e| format!("{name}: cannot read: {e}"))?;
+        let mut decoder = png::Decoder::new(std::io::BufReader::new(file));
+        decoder.set_transformations(png::Transformations::normalize_to_color8());
+        let mut reader = decoder
+            .read_info()
+            .map_err(|e| format!("{name}: not a PNG picture: {e}"))?;
+        let size = reader
+            .output_buffer_size()
+            .ok_or_else(|| format!("{name}: the picture is too large"))?;
+        let mut buffer = Vec::new();
+        buffer
+            .try_reserve_exact(size)
+            .map_err(|_| format!("{name}: the picture is too large"))?;
+        buffer.resize(size, 0);
+        let frame = reader
+            .next_frame(&mut buffer)
+            .map_err(|e| format!("{name}: cannot decode: {e}"))?;
+        let channels = frame.color_type.samples();
+        let (width, height) = (frame.width as usize, frame.height as usize);
+        let values = (0..width * height)
+            .map(|i| {
+                let p = &buffer[i * channels..];
+                let luminance = match channels {
+                    1 | 2 => p[0] as f64,
+                    _ => 0.2126 * p[0] as f64 + 0.7152 * p[1] as f64 + 0.0722 * p[2] as f64,
+                };
+                luminance / 255.0
+            })
+            .collect();
+        Ok(Gray {
+            width,
+            height,
+            values,
+        })
+    }
+
+    /// The value at `(u, v)` in `[0, 1]²`, `v` = 0 at the picture's bottom.
+    fn sample(&self, u: f64, v: f64) -> f64 {
+        let x = (u.clamp(0.0, 1.0) * (self.width - 1) as f64).round() as usize;
+        let y = ((1.0 - v.clamp(0.0, 1.0)) * (self.height - 1) as f64).round() as usize;
+        self.values[y * self.width + x]
+    }
+}
+
+struct Entry {
+    name: String,
+    caption: String,
+}
+
+struct Section {
+    title: &'static str,
+    entries: Vec<Entry>,
+}
+
+/// Writes each stage's mesh and picture and remembers them for the index.
+struct Demo {
+    dir: PathBuf,
+    sections: Vec<Section>,
+}
+
+/// A failure of the demo, as the message to show.
+type Step<T> = Result<T, String>;
+
+fn op<T>(what: &str, result: Result<T, Error>) -> Step<T> {
+    result.map_err(|e| format!("demo: {what}: {e}"))
+}
+
+fn file<T>(result: Result<T, IoError>) -> Step<T> {
+    result.map_err(|e| e.to_string())
+}
+
+impl Demo {
+    fn section(&mut self, title: &'static str) {
+        self.sections.push(Section {
+            title,
+            entries: Vec::new(),
+        });
+    }
+
+    fn save(&mut self, name: &str, caption: &str, mesh: &Mesh) -> Step<()> {
+        file(io::write_mesh(self.dir.join(format!("{name}.obj")), mesh))?;
+        let image = op(
+            &format!("render {name}"),
+            render::render(mesh, &RenderOptions::default()),
+        )?;
+        file(image.save_png(self.dir.join(format!("{name}.png"))))?;
+        println!(
+            "{name}: {caption} ({} vertices, {} faces)",
+            mesh.vertex_count(),
+            mesh.face_count()
+        );
+        self.sections
+            .last_mut()
+            .expect("a section is open")
+            .entries
+            .push(Entry {
+                name: name.to_string(),
+                caption: caption.to_string(),
+            });
+        Ok(())
+    }
+
+    /// Shows a stage already saved once more, in the current section.
+    fn reuse(&mut self, name: &str, caption: &str) {
+        println!("{name}: {caption} (shown above)");
+        self.sections
+            .last_mut()
+            .expect("a section is open")
+            .entries
+            .push(Entry {
+                name: name.to_string(),
+                caption: caption.to_string(),
+            });
+    }
+
+    fn write_index(&self) -> Step<()> {
+        let mut html = String::from(
+            "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n\
+             <title>Weft demo</title>\n<style>\n\
+             body { font-family: system-ui, sans-serif; margin: 2em; color: #222; background: #fafafa; }\n\
+             .row { display: flex; flex-wrap: wrap; gap: 1em; }\n\
+             figure { margin: 0; width: 400px; }\n\
+             img { width: 400px; border: 1px solid #ddd; background: #fff; }\n\
+             figcaption { font-size: 0.9em; margin-top: 0.3em; }\n\
+             code { font-size: 0.85em; color: #666; }\n\
+             </style>\n</head>\n<body>\n<h1>Weft demo</h1>\n\
+             <p>Each picture is a mesh written beside it (<code>.obj</code>). Front faces are \
+             blue-grey, back faces orange.</p>\n",
+        );
+        for section in &self.sections {
+            let _ = writeln!(
+                html,
+                "<h2>{}</h2>\n<div class=\"row\">",
+                escape(section.title)
+            );
+            for e in &section.entries {
+                let _ = writeln!(
+                    html,
+                    "<figure><img src=\"{0}.png\" alt=\"{1}\"><figcaption>{1} <code>{0}.obj</code></figcaption></figure>",
+                    escape(&e.name),
+                    escape(&e.caption)
+                );
+            }
+            html.push_str("</div>\n");
+        }
+        html.push_str("</body>\n</html>\n");
+        file(io::write_atomically(&self.dir.join("index.html"), |w| {
+            w.write_all(html.as_bytes())
+        }))
+    }
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// A gently curved surface over the xy plane.
+fn surface(x: f64, y: f64) -> DVec3 {
+    DVec3::new(
+        x,
+        y,
+        0.7 * (0.55 * x).sin() * (0.45 * y).cos() + 0.04 * x * y,
+    )
+}
+
+/// The surface sampled on a `u_count` × `v_count` grid over `[x0, x1] × [y0, y1]`.
+fn surface_patch(
+    x0: f64,
+    x1: f64,
+    u_count: usize,
+    y0: f64,
+    y1: f64,
+    v_count: usize,
+    triangles: bool,
+) -> Step<Mesh> {
+    let mut points = Vec::with_capacity(u_count * v_count);
+    for j in 0..v_count {
+        for i in 0..u_count {
+            let x = x0 + (x1 - x0) * i as f64 / (u_count - 1) as f64;
+            let y = y0 + (y1 - y0) * j as f64 / (v_count - 1) as f64;
+            points.push(surface(x, y));
+        }
+    }
+    op(
+        "mesh from grid",
+        weft::grid::mesh_from_grid(&points, u_count, v_count, false, false, triangles),
+    )
+}
+
+/// A small deterministic generator (xorshift), so the demo is the same every run.
+struct Random(u64);
+
+impl Random {
+    fn unit(&mut self) -> f64 {
+        self.0 ^= self.0 << 13;
+        self.0 ^= self.0 >> 7;
+        self.0 ^= self.0 << 17;
+        (self.0 >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
+/// Runs every workflow into `dir` (created when missing, its parent must exist).
+pub fn run(dir: &Path, image: Option<&Path>) -> Step<()> {
+    if !dir.is_dir() {
+        std::fs::create_dir(dir)
+            .map_err(|e| format!("{}: cannot create the folder: {e}", dir.display()))?;
+    }
+    let gray = match image {
+        Some(path) => Gray::read(path)?,
+        None => Gray::built_in(),
+    };
+    let mut demo = Demo {
+        dir: dir.to_path_buf(),
+        sections: Vec::new(),
+    };
+    loop_levels(&mut demo)?;
+    surfaces(&mut demo)?;
+    t_nodes(&mut demo)?;
+    voronoi_skin(&mut demo)?;
+    fading_pattern(&mut demo, &gray)?;
+    boxes(&mut demo)?;
+    demo.write_index()?;
+    println!("index: {}", dir.join("index.html").display());
+    Ok(())
+}
+
+fn loop_levels(demo: &mut Demo) -> Step<()> {
+    demo.section("Loop subdivision of a triangle mesh");
+    let cage = surface_patch(0.0, 6.0, 7, 0.0, 5.0, 6, true)?;
+    demo.save("loop-0-cage", "the triangle mesh (level 0)", &cage)?;
+    for level in 1..=3 {
+        let refined = op("Loop", loop_subdivision(&cage, level, NakedEdges::Fixed))?;
+        demo.save(
+            &format!("loop-{level}"),
+            &format!("Loop level {level}, naked edges fixed"),
+            &refined,
+        )?;
+    }
+    demo.section("Loop level 3 in each naked-edge mode");
+    demo.reuse("loop-3", "naked edges fixed: the boundary polyline stays");
+    for (mode, name, note) in [
+        (
+            NakedEdges::Smooth,
+            "smooth",
+            "the boundary becomes a B-spline and pulls in",
+        ),
+        (
+            NakedEdges::CornerFixed,
+            "corner-fixed",
+            "smooth, but the four corners stay",
+        ),
+    ] {
+        let refined = op("Loop", loop_subdivision(&cage, 3, mode))?;
+        demo.save(
+            &format!("loop-3-{name}"),
+            &format!("naked edges {name}: {note}"),
+            &refined,
+        )?;
+    }
+    demo.section("A triangle mesh with a hole comes out rounded");
+    let holed = weft::shapes::triangle_grid_with_hole();
+    demo.save("hole-0-cage", "a triangle grid with a square hole", &holed)?;
+    let rounded = op("Loop", loop_subdivision(&holed, 3, NakedEdges::Smooth))?;
+    demo.save(
+        "hole-3-smooth",
+        "Loop level 3, naked edges smooth: the hole is rounded",
+        &rounded,
+    )?;
+    Ok(())
+}
+
+fn surfaces(demo: &mut Demo) -> Step<()> {
+    demo.section("Three surface meshes, one flipped: join, weld, Catmull-Clark");
+    let mut parts = Vec::new();
+    for (k, x0) in [0.0, 3.0, 6.0].into_iter().enumerate() {
+        let part = surface_patch(x0, x0 + 3.0, 4, 0.0, 5.0, 6, false)?;
+        parts.push(if k == 1 {
+            weft::orient::flip(&part)
+        } else {
+            part
+        });
+    }
+    let refs: Vec<&Mesh> = parts.iter().collect();
+    let joined = op("join", weft::weld::join(&refs))?;
+    demo.save(
+        "surfaces-joined",
+        "three surface meshes joined; the middle one is flipped",
+        &joined,
+    )?;
+    let (welded, report) = op(
+        "weld",
+        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    let (unified, flipped) = weft::orient::unify_orientation(&welded);
+    demo.save(
+        "surfaces-welded",
+        &format!(
+            "welded ({} vertices merged), orientation unified ({flipped} faces flipped)",
+            report.merged_vertex_count
+        ),
+        &unified,
+    )?;
+    let smooth = op(
+        "Catmull-Clark",
+        catmull_clark(&unified, 3, NakedEdges::Fixed),
+    )?;
+    demo.save(
+        "surfaces-smooth",
+        "Catmull-Clark level 3: one smooth surface",
+        &smooth,
+    )?;
+    Ok(())
+}
+
+fn t_nodes(demo: &mut Demo) -> Step<()> {
+    demo.section("Mismatched U/V counts: T-nodes found and repaired");
+    // The middle strip has 9 rows of faces, its neighbours 5: their seams
+    // meet only every few rows, and the vertices between lie on the
+    // neighbours' edges.
+    let parts = [
+        surface_patch(0.0, 3.0, 4, 0.0, 5.0, 6, false)?,
+        surface_patch(3.0, 6.0, 4, 0.0, 5.0, 10, false)?,
+        surface_patch(6.0, 9.0, 4, 0.0, 5.0, 6, false)?,
+    ];
+    let refs: Vec<&Mesh> = parts.iter().collect();
+    let joined = op("join", weft::weld::join(&refs))?;
+    let (welded, _) = op(
+        "weld",
+        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    // The seams are curved: a vertex of one strip lies on the curve, off the
+    // straight edge of the other by up to about 0.02.
+    let tolerance = 0.05;
+    let found = op("T-nodes", weft::t_nodes::find_t_nodes(&welded, tolerance))?;
+    demo.save(
+        "t-nodes-welded",
+        &format!(
+            "joined and welded: {} T-nodes along the seams (tolerance {tolerance}); naked edges in red",
+            found.len()
+        ),
+        &welded,
+    )?;
+    // Smooth naked edges: a seam that is still a boundary pulls open.
+    let cracked = op(
+        "Catmull-Clark",
+        catmull_clark(&welded, 2, NakedEdges::Smooth),
+    )?;
+    demo.save(
+        "t-nodes-unrepaired-smooth",
+        "Catmull-Clark level 2 without repair: the seams are boundaries and open",
+        &cracked,
+    )?;
+    let (repaired, inserted) = op(
+        "T-node repair",
+        weft::t_nodes::repair_t_nodes(&welded, tolerance),
+    )?;
+    let smooth = op(
+        "Catmull-Clark",
+        catmull_clark(&repaired, 2, NakedEdges::Smooth),
+    )?;
+    demo.save(
+        "t-nodes-repaired-smooth",
+        &format!(
+            "{inserted} T-nodes inserted into their edges, then Catmull-Clark level 2: one surface"
+        ),
+        &smooth,
+    )?;
+    Ok(())
+}
+
+fn voronoi_skin(demo: &mut Demo) -> Step<()> {
+    demo.section("Voronoi skin");
+    let mut random = Random(0x5eed_1234_abcd_0001);
+    let points: Vec<DVec3> = (0..36)
+        .map(|_| DVec3::new(10.0 * random.unit(), 8.0 * random.unit(), 0.0))
+        .collect();
+    let cells = op(
+        "Voronoi",
+        weft::voronoi::voronoi(&points, &Plane::xy(), None, None),
+    )?;
+    let cell_mesh = op("Voronoi cells", weft::voronoi::cells_to_mesh(&cells))?;
+    demo.save(
+        "voronoi-cells",
+        "Voronoi cells of 36 points on a plane",
+        &cell_mesh,
+    )?;
+    // A pyramid per cell, apex below: the cell's centroid moved down.
+    let pyramids = op("stellate", stellate(&cell_mesh, Heights::One(-0.9)))?;
+    let (welded, report) = op(
+        "weld",
+        weft::weld::weld(&pyramids, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    demo.save(
+        "voronoi-pyramids",
+        &format!(
+            "a pyramid per cell, welded ({} vertices merged)",
+            report.merged_vertex_count
+        ),
+        &welded,
+    )?;
+    let skin = op(
+        "Catmull-Clark",
+        catmull_clark(&welded, 2, NakedEdges::Fixed),
+    )?;
+    demo.save(
+        "voronoi-skin",
+        "Catmull-Clark level 2: the Voronoi skin",
+        &skin,
+    )?;
+    Ok(())
+}
+
+fn fading_pattern(demo: &mut Demo, gray: &Gray) -> Step<()> {
+    demo.section("Fading pattern from a grayscale image");
+    // Diamonds on the surface: vertices at the lattice points whose
+    // coordinates add up to an even number, a diamond around every odd one.
+    let (n, m, spacing) = (16usize, 12usize, 0.5);
+    let mut index = vec![u32::MAX; (n + 1) * (m + 1)];
+    let mut positions = Vec::new();
+    for j in 0..=m {
+        for i in 0..=n {
+            if (i + j) % 2 == 0 {
+                index[j * (n + 1) + i] = positions.len() as u32;
+                positions.push(surface(i as f64 * spacing, j as f64 * spacing));
+            }
+        }
+    }
+    let mut diamonds = Vec::new();
+    let mut heights = Vec::new();
+    for j in 1..m {
+        for i in 1..n {
+            if (i + j) % 2 == 1 {
+                let at = |i: usize, j: usize| index[j * (n + 1) + i];
+                diamonds.push([at(i + 1, j), at(i, j + 1), at(i - 1, j), at(i, j - 1)]);
+                let g = gray.sample(i as f64 / n as f64, j as f64 / m as f64);
+                heights.push(0.05 + 0.6 * g);
+            }
+        }
+    }
+    let panels = op(
+        "diamond panels",
+        Mesh::from_polygons(positions, diamonds).map_err(Error::from),
+    )?;
+    demo.save("fading-panels", "diamond panels on a surface", &panels)?;
+    let pyramids = op("stellate", stellate(&panels, Heights::PerFace(&heights)))?;
+    let (welded, _) = op(
+        "weld",
+        weft::weld::weld(&pyramids, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    demo.save(
+        "fading-pyramids",
+        "pyramids whose height follows the image, welded",
+        &welded,
+    )?;
+    let smooth = op(
+        "Catmull-Clark",
+        catmull_clark(&welded, 2, NakedEdges::Fixed),
+    )?;
+    demo.save(
+        "fading-smooth",
+        "Catmull-Clark level 2: the fading pattern",
+        &smooth,
+    )?;
+    Ok(())
+}
+
+fn boxes(demo: &mut Demo) -> Step<()> {
+    demo.section("Aggregation of boxes: join, weld, cull inner faces, Catmull-Clark");
+    // A ring of eight boxes round an empty middle, with towers on it.
+    let cells = [
+        (0, 0, 0),
+        (1, 0, 0),
+        (2, 0, 0),
+        (2, 1, 0),
+        (2, 2, 0),
+        (1, 2, 0),
+        (0, 2, 0),
+        (0, 1, 0),
+        (0, 0, 1),
+        (1, 0, 1),
+        (0, 0, 2),
+        (2, 2, 1),
+        (2, 2, 2),
+    ];
+    let cubes: Vec<Mesh> = cells
+        .iter()
+        .map(|&(x, y, z)| {
+            let mut cube = weft::shapes::cube();
+            for p in cube.positions_mut() {
+                *p += DVec3::new(x as f64, y as f64, z as f64);
+            }
+            cube
+        })
+        .collect();
+    let refs: Vec<&Mesh> = cubes.iter().collect();
+    let joined = op("join", weft::weld::join(&refs))?;
+    let (welded, _) = op(
+        "weld",
+        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    demo.save(
+        "boxes-welded",
+        &format!("{} boxes joined and welded", cells.len()),
+        &welded,
+    )?;
+    let (culled, removed) = weft::cull::cull_adjacent(&welded);
+    let (culled, _) = weft::weld::remove_unused_vertices(&culled);
+    demo.save(
+        "boxes-culled",
+        &format!("{removed} inner faces culled: one closed shell"),
+        &culled,
+    )?;
+    let smooth = op(
+        "Catmull-Clark",
+        catmull_clark(&culled, 3, NakedEdges::Fixed),
+    )?;
+    demo.save("boxes-smooth", "Catmull-Clark level 3", &smooth)?;
+    Ok(())
+}

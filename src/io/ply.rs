@@ -1,0 +1,493 @@
+//! Stanford PLY, ASCII and binary (little and big endian).
+//!
+//! Read: the `vertex` element's `x`, `y`, `z` (any numeric type, float and
+//! double usual) and the `face` element's `vertex_indices` (or
+//! `vertex_index`) list with any integer count and index types; every other
+//! property and element is skipped by its declared type. Write: `double`
+//! coordinates, so positions round-trip exactly, and a `uchar` corner count
+//! (`int` when a face has more than 255 corners) with `int` indices.
+
+use std::io::Write;
+
+use glam::DVec3;
+
+use super::text::{show, words, Tokens};
+use super::{build_mesh, IoError, Location, PlyEncoding};
+use crate::mesh::Mesh;
+
+/// A PLY scalar type.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Scalar {
+    I8,
+    U8,
+    I16,
+    U16,
+    I32,
+    U32,
+    F32,
+    F64,
+}
+
+impl Scalar {
+    fn parse(word: &[u8]) -> Option<Scalar> {
+        Some(match word {
+            b"char" | b"int8" => Scalar::I8,
+            b"uchar" | b"uint8" => Scalar::U8,
+            b"short" | b"int16" => Scalar::I16,
+            b"ushort" | b"uint16" => Scalar::U16,
+            b"int" | b"int32" => Scalar::I32,
+            b"uint" | b"uint32" => Scalar::U32,
+            b"float" | b"float32" => Scalar::F32,
+            b"double" | b"float64" => Scalar::F64,
+            _ => return None,
+        })
+    }
+
+    fn size(self) -> usize {
+        match self {
+            Scalar::I8 | Scalar::U8 => 1,
+            Scalar::I16 | Scalar::U16 => 2,
+            Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
+            Scalar::F64 => 8,
+        }
+    }
+
+    fn is_integer(self) -> bool {
+        !matches!(self, Scalar::F32 | Scalar::F64)
+    }
+}
+
+#[derive(Debug, Clone)]
+enum Property {
+    Scalar(Scalar),
+    List { count: Scalar, item: Scalar },
+}
+
+#[derive(Debug, Clone)]
+struct Element {
+    name: Vec<u8>,
+    count: usize,
+    properties: Vec<(Vec<u8>, Property)>,
+    line: usize,
+}
+
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Encoding {
+    Ascii,
+    Binary { big_endian: bool },
+}
+
+/// Where the values come from: words of text or bytes.
+trait Values {
+    /// Reads one value of type `ty` as `f64` (exact for every PLY integer type).
+    fn read(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, IoError>;
+    /// Where the next value is.
+    fn location(&mut self) -> Location;
+    /// Whether `count` more values of at least `size` bytes could still be in the input.
+    fn has_room(&mut self, count: usize, size: usize) -> bool;
+}
+
+struct Text<'a>(Tokens<'a>);
+
+impl Values for Text<'_> {
+    fn read(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, IoError> {
+        let (word, line) = self.0.expect_word(&what())?;
+        let parsed = std::str::from_utf8(word).ok().and_then(|s| {
+            if ty.is_integer() {
+                s.parse::<i64>().ok().map(|i| i as f64)
+            } else {
+                s.parse::<f64>().ok()
+            }
+        });
+        parsed.ok_or_else(|| {
+            let kind = if ty.is_integer() {
+                "an integer"
+            } else {
+                "a number"
+            };
+            IoError::parse(
+                Location::Line(line),
+                format!("expected {kind} for {}, found {}", what(), show(word)),
+            )
+        })
+    }
+
+    fn location(&mut self) -> Location {
+        Location::Line(self.0.line())
+    }
+
+    fn has_room(&mut self, count: usize, _size: usize) -> bool {
+        // A value and its separator take at least two characters.
+        count <= self.0.remaining() / 2 + 1
+    }
+}
+
+struct Binary<'a> {
+    data: &'a [u8],
+    pos: usize,
+    big_endian: bool,
+}
+
+impl Values for Binary<'_> {
+    fn read(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, IoError> {
+        let size = ty.size();
+        let bytes = self.data.get(self.pos..self.pos + size).ok_or_else(|| {
+            IoError::parse(
+                Location::Byte(self.pos),
+                format!(
+                    "file ends after {} bytes; expected {size} more for {}",
+                    self.data.len(),
+                    what()
+                ),
+            )
+        })?;
+        self.pos += size;
+        let mut b = [0u8; 8];
+        b[..size].copy_from_slice(bytes);
+        if self.big_endian {
+            b[..size].reverse();
+        }
+        Ok(match ty {
+            Scalar::I8 => b[0] as i8 as f64,
+            Scalar::U8 => b[0] as f64,
+            Scalar::I16 => i16::from_le_bytes([b[0], b[1]]) as f64,
+            Scalar::U16 => u16::from_le_bytes([b[0], b[1]]) as f64,
+            Scalar::I32 => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::U32 => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::F32 => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::F64 => f64::from_le_bytes(b),
+        })
+    }
+
+    fn location(&mut self) -> Location {
+        Location::Byte(self.pos)
+    }
+
+    fn has_room(&mut self, count: usize, size: usize) -> bool {
+        count
+            .checked_mul(size)
+            .is_some_and(|n| n <= self.data.len() - self.pos)
+    }
+}
+
+/// Parses a PLY file, ASCII or binary.
+///
+/// # Errors
+/// [`IoError::Parse`] naming the header line, the body line (ASCII) or the
+/// byte offset (binary) where the file stops following its header;
+/// [`IoError::InvalidMesh`] with the place of a face the mesh rejects.
+pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    let (encoding, elements, body, body_line) = parse_header(data)?;
+    match encoding {
+        Encoding::Ascii => read_body(&mut Text(Tokens::new(body, body_line)), &elements),
+        Encoding::Binary { big_endian } => {
+            let offset = data.len() - body.len();
+            let mut source = Binary {
+                data,
+                pos: offset,
+                big_endian,
+            };
+            read_body(&mut source, &elements)
+        }
+    }
+}
+
+fn header_error(line: usize, message: impl Into<String>) -> IoError {
+    IoError::parse(Location::Line(line), message)
+}
+
+type Header<'a> = (Encoding, Vec<Element>, &'a [u8], usize);
+
+fn parse_header(data: &[u8]) -> Result<Header<'_>, IoError> {
+    let mut pos = 0;
+    let mut line = 0;
+    let mut encoding = None;
+    let mut elements: Vec<Element> = Vec::new();
+    loop {
+        line += 1;
+        let Some(length) = data[pos..].iter().position(|&b| b == b'\n') else {
+            return Err(header_error(
+                line,
+                "unexpected end of file in the header; expected \"end_header\"",
+            ));
+        };
+        let text = &data[pos..pos + length];
+        pos += length + 1;
+        let w: Vec<&[u8]> = words(text).collect();
+        if line == 1 {
+            if w.first() != Some(&&b"ply"[..]) {
+                return Err(header_error(1, "expected \"ply\" on the first line"));
+            }
+            continue;
+        }
+        match w.first().copied() {
+            None | Some(b"comment") | Some(b"obj_info") => {}
+            Some(b"format") => {
+                encoding = Some(match w.get(1).copied() {
+                    Some(b"ascii") => Encoding::Ascii,
+                    Some(b"binary_little_endian") => Encoding::Binary { big_endian: false },
+                    Some(b"binary_big_endian") => Encoding::Binary { big_endian: true },
+                    _ => {
+                        return Err(header_error(
+                            line,
+                            "expected \"format ascii\", \"format binary_little_endian\" or \"format binary_big_endian\"",
+                        ))
+                    }
+                });
+            }
+            Some(b"element") => {
+                let (Some(name), Some(count)) = (w.get(1), w.get(2)) else {
+                    return Err(header_error(line, "expected \"element NAME COUNT\""));
+                };
+                let count = super::text::parse_count(count, line, "the element count")?;
+                elements.push(Element {
+                    name: name.to_vec(),
+                    count,
+                    properties: Vec::new(),
+                    line,
+                });
+            }
+            Some(b"property") => {
+                let Some(element) = elements.last_mut() else {
+                    return Err(header_error(line, "expected \"element\" before \"property\""));
+                };
+                let scalar = |word: Option<&&[u8]>| {
+                    word.and_then(|w| Scalar::parse(w)).ok_or_else(|| {
+                        header_error(
+                            line,
+                            format!(
+                                "expected a property type (char, uchar, short, ushort, int, uint, float, double), found {}",
+                                show(word.copied().unwrap_or_default())
+                            ),
+                        )
+                    })
+                };
+                let (property, name) = if w.get(1) == Some(&&b"list"[..]) {
+                    let count = scalar(w.get(2))?;
+                    let item = scalar(w.get(3))?;
+                    if !count.is_integer() {
+                        return Err(header_error(line, "a list's count type must be an integer type"));
+                    }
+                    (Property::List { count, item }, w.get(4))
+                } else {
+                    (Property::Scalar(scalar(w.get(1))?), w.get(2))
+                };
+                let Some(name) = name else {
+                    return Err(header_error(line, "expected a property name"));
+                };
+                element.properties.push((name.to_vec(), property));
+            }
+            Some(b"end_header") => break,
+            Some(other) => {
+                return Err(header_error(
+                    line,
+                    format!("expected a header line (format, element, property, comment or end_header), found {}", show(other)),
+                ))
+            }
+        }
+    }
+    let encoding =
+        encoding.ok_or_else(|| header_error(line, "the header has no \"format\" line"))?;
+    Ok((encoding, elements, &data[pos..], line + 1))
+}
+
+fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoError> {
+    let mut positions = Vec::new();
+    let mut vertex_locations = Vec::new();
+    let mut face_sizes = Vec::new();
+    let mut face_indices = Vec::new();
+    let mut face_locations = Vec::new();
+    for element in elements {
+        let is_vertex = element.name == b"vertex";
+        let is_face = element.name == b"face";
+        let mut axes = [None; 3];
+        let mut index_list = None;
+        for (p, (name, property)) in element.properties.iter().enumerate() {
+            match (property, name.as_slice()) {
+                (Property::Scalar(_), b"x") if is_vertex => axes[0] = Some(p),
+                (Property::Scalar(_), b"y") if is_vertex => axes[1] = Some(p),
+                (Property::Scalar(_), b"z") if is_vertex => axes[2] = Some(p),
+                (Property::List { item, .. }, b"vertex_indices" | b"vertex_index") if is_face => {
+                    if !item.is_integer() {
+                        return Err(header_error(
+                            element.line,
+                            "face indices must have an integer type",
+                        ));
+                    }
+                    index_list = Some(p);
+                }
+                _ => {}
+            }
+        }
+        if is_vertex && axes.iter().any(Option::is_none) {
+            return Err(header_error(
+                element.line,
+                "the vertex element needs properties x, y and z",
+            ));
+        }
+        let min_size: usize = element
+            .properties
+            .iter()
+            .map(|(_, p)| match p {
+                Property::Scalar(s) => s.size(),
+                Property::List { count, .. } => count.size(),
+            })
+            .sum();
+        if !source.has_room(element.count, min_size.max(1)) && min_size > 0 {
+            let location = source.location();
+            return Err(IoError::parse(
+                location,
+                format!(
+                    "the header promises {} {} elements but the file is too short for them",
+                    element.count,
+                    String::from_utf8_lossy(&element.name)
+                ),
+            ));
+        }
+        if element.properties.is_empty() {
+            continue;
+        }
+        // The check above bounds the count by the file's size; capping what is
+        // reserved up front keeps a lying header from claiming much more.
+        let reserve = element.count.min(1 << 20);
+        if is_vertex {
+            positions.reserve(reserve);
+            vertex_locations.reserve(reserve);
+        } else if is_face && index_list.is_some() {
+            face_sizes.reserve(reserve);
+            face_locations.reserve(reserve);
+        }
+        let name = String::from_utf8_lossy(&element.name);
+        for i in 0..element.count {
+            let start = source.location();
+            let mut xyz = [0.0; 3];
+            for (p, (property_name, property)) in element.properties.iter().enumerate() {
+                let what = || {
+                    format!(
+                        "property {} of {name} {i}",
+                        String::from_utf8_lossy(property_name)
+                    )
+                };
+                match *property {
+                    Property::Scalar(ty) => {
+                        let value = source.read(ty, &what)?;
+                        if let Some(axis) = axes.iter().position(|&a| a == Some(p)) {
+                            xyz[axis] = value;
+                        }
+                    }
+                    Property::List { count, item } => {
+                        let location = source.location();
+                        let n = source.read(count, &|| format!("the length of {}", what()))?;
+                        if n < 0.0 || !source.has_room(n as usize, item.size()) {
+                            return Err(IoError::parse(
+                                location,
+                                format!("list length {n} of {} is negative or longer than the rest of the file", what()),
+                            ));
+                        }
+                        let n = n as usize;
+                        let keep = index_list == Some(p);
+                        for k in 0..n {
+                            let location = source.location();
+                            let value =
+                                source.read(item, &|| format!("entry {k} of {}", what()))?;
+                            if keep {
+                                if value < 0.0 || value > u32::MAX as f64 {
+                                    return Err(IoError::parse(
+                                        location,
+                                        format!("vertex index {value} of face {i} is out of range"),
+                                    ));
+                                }
+                                face_indices.push(value as u32);
+                            }
+                        }
+                        if keep {
+                            face_sizes.push(n as u32);
+                            face_locations.push(start);
+                        }
+                    }
+                }
+            }
+            if is_vertex {
+                positions.push(DVec3::from_array(xyz));
+                vertex_locations.push(start);
+            }
+        }
+    }
+    build_mesh(
+        positions,
+        face_sizes,
+        face_indices,
+        |v| vertex_locations[v],
+        |f| face_locations[f],
+    )
+}
+
+/// Writes a mesh as PLY in the given encoding.
+///
+/// # Errors
+/// Whatever the writer returns.
+pub fn write(w: &mut dyn Write, mesh: &Mesh, encoding: PlyEncoding) -> std::io::Result<()> {
+    let format = match encoding {
+        PlyEncoding::Ascii => "ascii",
+        PlyEncoding::BinaryLittleEndian => "binary_little_endian",
+        PlyEncoding::BinaryBigEndian => "binary_big_endian",
+    };
+    let wide = mesh.face_sizes().iter().any(|&s| s > 255);
+    write!(
+        w,
+        "ply\nformat {format} 1.0\ncomment weft {}\nelement vertex {}\n\
+         property double x\nproperty double y\nproperty double z\n\
+         element face {}\nproperty list {} int vertex_indices\nend_header\n",
+        crate::VERSION,
+        mesh.vertex_count(),
+        mesh.face_count(),
+        if wide { "int" } else { "uchar" },
+    )?;
+    match encoding {
+        PlyEncoding::Ascii => {
+            for p in mesh.positions() {
+                writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
+            }
+            for face in mesh.faces() {
+                write!(w, "{}", face.len())?;
+                for &v in face {
+                    write!(w, " {v}")?;
+                }
+                w.write_all(b"\n")?;
+            }
+        }
+        PlyEncoding::BinaryLittleEndian | PlyEncoding::BinaryBigEndian => {
+            let big = encoding == PlyEncoding::BinaryBigEndian;
+            let f64_bytes = |x: f64| {
+                if big {
+                    x.to_be_bytes()
+                } else {
+                    x.to_le_bytes()
+                }
+            };
+            let u32_bytes = |x: u32| {
+                if big {
+                    x.to_be_bytes()
+                } else {
+                    x.to_le_bytes()
+                }
+            };
+            for p in mesh.positions() {
+                for c in p.to_array() {
+                    w.write_all(&f64_bytes(c))?;
+                }
+            }
+            for face in mesh.faces() {
+                if wide {
+                    w.write_all(&u32_bytes(face.len() as u32))?;
+                } else {
+                    w.write_all(&[face.len() as u8])?;
+                }
+                for &v in face {
+                    w.write_all(&u32_bytes(v))?;
+                }
+            }
+        }
+    }
+    Ok(())
+}

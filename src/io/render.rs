@@ -1,0 +1,340 @@
+//! A shaded picture of a mesh: a small software rasterizer that writes PNG.
+//!
+//! The camera looks at the bounding box from a three-quarter view above
+//! (z is up) and fits the mesh to the picture. Faces are lit by a fixed light
+//! beside the camera (Lambert shading plus ambient); front faces are blue-grey
+//! and back faces orange, so a flipped face stands out. Coarse meshes get
+//! their face edges drawn as thin dark lines (polygon edges only, not the
+//! fan diagonals used to fill n-gons). Naked edges (edges of one face) are
+//! always drawn, in red and a little wider, so open seams show even on dense
+//! meshes. Each pixel averages 2 × 2 samples.
+
+use std::io::Write;
+use std::path::Path;
+
+use glam::DVec3;
+
+use super::{write_atomically, IoError};
+use crate::error::{try_vec, Error};
+use crate::mesh::Mesh;
+use crate::topology::Topology;
+
+/// Largest picture side, in pixels.
+pub const MAX_SIDE: u32 = 4096;
+
+/// Meshes with fewer faces than this get their edges drawn by default.
+pub const EDGE_FACE_LIMIT: usize = 4000;
+
+/// How to draw a picture.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RenderOptions {
+    /// Width in pixels, 1 to [`MAX_SIDE`].
+    pub width: u32,
+    /// Height in pixels, 1 to [`MAX_SIDE`].
+    pub height: u32,
+    /// Draw face edges; `None` draws them when the mesh has fewer than
+    /// [`EDGE_FACE_LIMIT`] faces.
+    pub edges: Option<bool>,
+}
+
+impl Default for RenderOptions {
+    fn default() -> Self {
+        RenderOptions {
+            width: 800,
+            height: 600,
+            edges: None,
+        }
+    }
+}
+
+/// An 8-bit RGB picture, rows from the top.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Image {
+    pub width: u32,
+    pub height: u32,
+    /// `3 × width × height` bytes.
+    pub pixels: Vec<u8>,
+}
+
+impl Image {
+    /// The colour at column `x`, row `y`.
+    pub fn pixel(&self, x: u32, y: u32) -> [u8; 3] {
+        let i = 3 * (y as usize * self.width as usize + x as usize);
+        [self.pixels[i], self.pixels[i + 1], self.pixels[i + 2]]
+    }
+
+    /// Encodes the picture as PNG.
+    ///
+    /// # Errors
+    /// Whatever the writer returns.
+    pub fn write_png(&self, w: &mut dyn Write) -> std::io::Result<()> {
+        let mut encoder = png::Encoder::new(w, self.width, self.height);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        let mut writer = encoder.write_header().map_err(std::io::Error::other)?;
+        writer
+            .write_image_data(&self.pixels)
+            .map_err(std::io::Error::other)?;
+        writer.finish().map_err(std::io::Error::other)
+    }
+
+    /// Saves the picture as a PNG file (written whole or not at all).
+    ///
+    /// # Errors
+    /// As [`super::write_atomically`].
+    pub fn save_png(&self, path: impl AsRef<Path>) -> Result<(), IoError> {
+        write_atomically(path.as_ref(), |w| self.write_png(w))
+    }
+}
+
+/// The background, a light grey.
+pub const BACKGROUND: [f32; 3] = [0.96, 0.96, 0.95];
+const FRONT: [f32; 3] = [0.60, 0.70, 0.84];
+const BACK: [f32; 3] = [0.93, 0.50, 0.28];
+const EDGE: [f32; 3] = [0.13, 0.14, 0.17];
+const NAKED_EDGE: [f32; 3] = [0.85, 0.08, 0.10];
+/// Half the width of an edge line, in supersampled pixels.
+const EDGE_HALF_WIDTH: f64 = 0.85;
+/// Half the width of a naked edge line, in supersampled pixels.
+const NAKED_HALF_WIDTH: f64 = 1.7;
+
+/// How a side of a fan triangle is drawn.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Side {
+    /// Inside the polygon (a fan diagonal), or edges are off.
+    Hidden,
+    /// A polygon edge.
+    Edge,
+    /// A polygon edge that only this face has.
+    Naked,
+}
+const SAMPLES: usize = 2;
+
+/// The camera: an eye, its axes, and the map from view directions to pixels.
+struct Camera {
+    eye: DVec3,
+    right: DVec3,
+    up: DVec3,
+    forward: DVec3,
+    scale: f64,
+    center: (f64, f64),
+    size: (f64, f64),
+}
+
+impl Camera {
+    fn fit(mesh: &Mesh, width: usize, height: usize) -> Camera {
+        let (lo, hi) = mesh.bounding_box().unwrap_or((DVec3::ZERO, DVec3::ONE));
+        let target = (lo + hi) / 2.0;
+        let radius = ((hi - lo).length() / 2.0).max(1e-9);
+        let toward_eye = DVec3::new(0.95, -1.45, 1.05).normalize();
+        let eye = target + toward_eye * radius * 3.0;
+        let forward = -toward_eye;
+        let right = forward.cross(DVec3::Z).normalize();
+        let up = right.cross(forward);
+        let mut camera = Camera {
+            eye,
+            right,
+            up,
+            forward,
+            scale: 1.0,
+            center: (0.0, 0.0),
+            size: (width as f64, height as f64),
+        };
+        // Fit the projected vertices, with a margin, into the picture.
+        let (mut min, mut max) = ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
+        for &p in mesh.positions() {
+            let (x, y, _) = camera.project_unscaled(p);
+            min = (min.0.min(x), min.1.min(y));
+            max = (max.0.max(x), max.1.max(y));
+        }
+        if min.0 <= max.0 {
+            let extent = ((max.0 - min.0) / camera.size.0).max((max.1 - min.1) / camera.size.1);
+            camera.scale = 0.86 / extent.max(1e-12);
+            camera.center = ((min.0 + max.0) / 2.0, (min.1 + max.1) / 2.0);
+        }
+        camera
+    }
+
+    fn project_unscaled(&self, p: DVec3) -> (f64, f64, f64) {
+        let d = p - self.eye;
+        let depth = d.dot(self.forward).max(1e-12);
+        (d.dot(self.right) / depth, d.dot(self.up) / depth, depth)
+    }
+
+    /// Pixel coordinates (x right, y down) and depth.
+    fn project(&self, p: DVec3) -> (f64, f64, f64) {
+        let (x, y, depth) = self.project_unscaled(p);
+        (
+            self.size.0 / 2.0 + (x - self.center.0) * self.scale,
+            self.size.1 / 2.0 - (y - self.center.1) * self.scale,
+            depth,
+        )
+    }
+}
+
+/// Draws a mesh.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] for a width or height outside 1 to
+/// [`MAX_SIDE`]; [`Error::OutOfMemory`] when the picture cannot be allocated.
+pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
+    for (name, side) in [("width", options.width), ("height", options.height)] {
+        if side == 0 || side > MAX_SIDE {
+            return Err(Error::InvalidArgument(format!(
+                "picture {name} {side} is outside 1 to {MAX_SIDE}"
+            )));
+        }
+    }
+    let (w, h) = (
+        options.width as usize * SAMPLES,
+        options.height as usize * SAMPLES,
+    );
+    let mut color: Vec<[f32; 3]> = try_vec(w * h, "the picture")?;
+    color.resize(w * h, BACKGROUND);
+    let mut depth: Vec<f32> = try_vec(w * h, "the depth buffer")?;
+    depth.resize(w * h, f32::INFINITY);
+
+    let camera = Camera::fit(mesh, w, h);
+    let light = (camera.up * 0.7 - camera.right * 0.45 - camera.forward * 0.75).normalize();
+    let fill = (camera.right * 0.6 - camera.forward * 0.4).normalize();
+    let edges = options.edges.unwrap_or(mesh.face_count() < EDGE_FACE_LIMIT);
+
+    let topology = Topology::new(mesh);
+    let side = |corner: usize| {
+        if topology.is_naked_edge(topology.corner_edges()[corner] as usize) {
+            Side::Naked
+        } else if edges {
+            Side::Edge
+        } else {
+            Side::Hidden
+        }
+    };
+
+    let mut corners = Vec::new();
+    let mut screen = Vec::new();
+    for f in 0..mesh.face_count() {
+        let first = mesh.face_offsets()[f] as usize;
+        corners.clear();
+        corners.extend(mesh.face_positions(f));
+        let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
+        let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+        let front = normal.dot(camera.eye - centroid) >= 0.0;
+        let (base, facing) = if front {
+            (FRONT, normal)
+        } else {
+            (BACK, -normal)
+        };
+        let lambert = if facing == DVec3::ZERO {
+            0.5
+        } else {
+            0.7 * facing.dot(light).max(0.0) + 0.22 * facing.dot(fill).max(0.0)
+        };
+        let shade = (0.34 + lambert) as f32;
+        let shaded = base.map(|c| (c * shade).min(1.0));
+
+        screen.clear();
+        screen.extend(corners.iter().map(|&p| camera.project(p)));
+        let n = screen.len();
+        for i in 1..n - 1 {
+            // Side k of the fan triangle (0, i, i + 1) is opposite its corner k:
+            // the polygon's edges from corner i, from corner n − 1 (when
+            // i + 1 is the last corner) and from corner 0 (when i is 1).
+            let sides = [
+                side(first + i),
+                if i + 1 == n - 1 {
+                    side(first + n - 1)
+                } else {
+                    Side::Hidden
+                },
+                if i == 1 { side(first) } else { Side::Hidden },
+            ];
+            let triangle = [screen[0], screen[i], screen[i + 1]];
+            fill_triangle(&mut color, &mut depth, (w, h), triangle, shaded, sides);
+        }
+    }
+
+    // Average each 2 × 2 block of samples.
+    let mut pixels = try_vec(
+        options.width as usize * options.height as usize * 3,
+        "the picture",
+    )?;
+    for y in 0..options.height as usize {
+        for x in 0..options.width as usize {
+            let mut sum = [0.0f32; 3];
+            for sy in 0..SAMPLES {
+                for sx in 0..SAMPLES {
+                    let c = color[(y * SAMPLES + sy) * w + x * SAMPLES + sx];
+                    for k in 0..3 {
+                        sum[k] += c[k];
+                    }
+                }
+            }
+            let n = (SAMPLES * SAMPLES) as f32;
+            pixels.extend(sum.map(|s| (s / n * 255.0).round().clamp(0.0, 255.0) as u8));
+        }
+    }
+    Ok(Image {
+        width: options.width,
+        height: options.height,
+        pixels,
+    })
+}
+
+/// Fills one triangle, z-buffered, drawing the sides marked in `sides` as lines.
+fn fill_triangle(
+    color: &mut [[f32; 3]],
+    depth: &mut [f32],
+    (w, h): (usize, usize),
+    [a, b, c]: [(f64, f64, f64); 3],
+    shaded: [f32; 3],
+    sides: [Side; 3],
+) {
+    let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
+    if !area.is_finite() || area.abs() < 1e-12 {
+        return;
+    }
+    let x0 = a.0.min(b.0).min(c.0).floor().max(0.0);
+    let x1 = a.0.max(b.0).max(c.0).ceil().min(w as f64 - 1.0);
+    let y0 = a.1.min(b.1).min(c.1).floor().max(0.0);
+    let y1 = a.1.max(b.1).max(c.1).ceil().min(h as f64 - 1.0);
+    if x0 > x1 || y0 > y1 {
+        return;
+    }
+    // Length of the side opposite each corner, for distances to the sides.
+    let side = |p: (f64, f64, f64), q: (f64, f64, f64)| (q.0 - p.0).hypot(q.1 - p.1);
+    let lengths = [side(b, c), side(c, a), side(a, b)];
+    let inverse_depth = [1.0 / a.2, 1.0 / b.2, 1.0 / c.2];
+    for y in y0 as usize..=y1 as usize {
+        let py = y as f64 + 0.5;
+        for x in x0 as usize..=x1 as usize {
+            let px = x as f64 + 0.5;
+            let wa = ((b.0 - px) * (c.1 - py) - (b.1 - py) * (c.0 - px)) / area;
+            let wb = ((c.0 - px) * (a.1 - py) - (c.1 - py) * (a.0 - px)) / area;
+            let wc = 1.0 - wa - wb;
+            if wa < 0.0 || wb < 0.0 || wc < 0.0 {
+                continue;
+            }
+            let weights = [wa, wb, wc];
+            let z = 1.0 / (wa * inverse_depth[0] + wb * inverse_depth[1] + wc * inverse_depth[2]);
+            let i = y * w + x;
+            if z as f32 >= depth[i] {
+                continue;
+            }
+            depth[i] = z as f32;
+            // Distance to side k: twice the area of (pixel, side) over its length.
+            let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
+            let line = if (0..3).any(|k| sides[k] == Side::Naked && distance(k) < NAKED_HALF_WIDTH)
+            {
+                Some(NAKED_EDGE)
+            } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
+                Some(EDGE)
+            } else {
+                None
+            };
+            color[i] = match line {
+                Some(ink) => [0, 1, 2].map(|k| shaded[k] * 0.15 + ink[k] * 0.85),
+                None => shaded,
+            };
+        }
+    }
+}

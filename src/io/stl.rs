@@ -1,0 +1,214 @@
+//! STL, ASCII and binary: a soup of triangles, each with its own three
+//! corners. Read as such (3 vertices per triangle, unwelded); weld them with
+//! [`super::weld_identical`] or the `weld` operation. Written as triangles:
+//! polygons are split into fans.
+//!
+//! A file is binary when its size is exactly 84 + 50 × the triangle count at
+//! byte 80 (binary headers may start with `solid` too), text when it starts
+//! with `solid`, and binary otherwise.
+
+use std::io::Write;
+
+use glam::DVec3;
+
+use super::text::{show, Tokens};
+use super::{build_mesh, IoError, Location};
+use crate::mesh::Mesh;
+
+const HEADER: usize = 80;
+const RECORD: usize = 50;
+
+/// Parses an STL file, ASCII or binary.
+///
+/// # Errors
+/// [`IoError::Parse`] with the byte offset where a binary file is too short
+/// for its triangle count, or the line where a text file departs from
+/// `facet normal … outer loop vertex … endloop endfacet`;
+/// [`IoError::InvalidMesh`] for a non-finite coordinate.
+pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    let binary_size = data
+        .get(HEADER..HEADER + 4)
+        .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as u64 * RECORD as u64 + 84);
+    let starts_with_solid = {
+        let start = data
+            .iter()
+            .position(|b| !b.is_ascii_whitespace())
+            .unwrap_or(0);
+        data[start..].starts_with(b"solid")
+    };
+    if binary_size == Some(data.len() as u64) || !starts_with_solid {
+        parse_binary(data)
+    } else {
+        parse_ascii(data)
+    }
+}
+
+fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
+    let Some(count) = data.get(HEADER..HEADER + 4) else {
+        return Err(IoError::parse(
+            Location::Byte(data.len()),
+            format!(
+                "binary STL ends after {} bytes; expected an 80-byte header and a 4-byte triangle count",
+                data.len()
+            ),
+        ));
+    };
+    let count = u32::from_le_bytes([count[0], count[1], count[2], count[3]]) as usize;
+    let available = (data.len() - 84) / RECORD;
+    if count > available {
+        return Err(IoError::parse(
+            Location::Byte(84 + available * RECORD),
+            format!(
+                "binary STL is truncated: the header promises {count} triangles ({} bytes) but only {} bytes follow it",
+                count as u64 * RECORD as u64,
+                data.len() - 84
+            ),
+        ));
+    }
+    let mut positions = Vec::with_capacity(count * 3);
+    for t in 0..count {
+        let record = &data[84 + t * RECORD..84 + (t + 1) * RECORD];
+        for corner in 0..3 {
+            let mut xyz = [0.0; 3];
+            for (axis, value) in xyz.iter_mut().enumerate() {
+                let at = 12 + corner * 12 + axis * 4;
+                let b = &record[at..at + 4];
+                *value = f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64;
+            }
+            positions.push(DVec3::from_array(xyz));
+        }
+    }
+    let indices = (0..count as u32 * 3).collect();
+    build_mesh(
+        positions,
+        vec![3; count],
+        indices,
+        |v| Location::Byte(84 + v / 3 * RECORD + 12 + v % 3 * 12),
+        |f| Location::Byte(84 + f * RECORD),
+    )
+}
+
+fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
+    let mut tokens = Tokens::new(data, 1);
+    let mut positions = Vec::new();
+    let mut vertex_lines = Vec::new();
+    let mut face_sizes = Vec::new();
+    let mut face_lines = Vec::new();
+    tokens.expect_keyword("solid")?;
+    tokens.skip_line(); // the solid's name
+    while let Some((word, line)) = tokens.next_word() {
+        if word.eq_ignore_ascii_case(b"endsolid") {
+            tokens.skip_line();
+            // Some files hold several solids one after another.
+            if tokens
+                .next_word()
+                .is_some_and(|(w, _)| w.eq_ignore_ascii_case(b"solid"))
+            {
+                tokens.skip_line();
+                continue;
+            }
+            break;
+        }
+        if !word.eq_ignore_ascii_case(b"facet") {
+            return Err(IoError::parse(
+                Location::Line(line),
+                format!("expected \"facet\" or \"endsolid\", found {}", show(word)),
+            ));
+        }
+        tokens.expect_keyword("normal")?;
+        for _ in 0..3 {
+            tokens.next_f64("a normal coordinate")?;
+        }
+        tokens.expect_keyword("outer")?;
+        tokens.expect_keyword("loop")?;
+        let mut size = 0u32;
+        loop {
+            let (word, line) = tokens.expect_word("\"vertex\" or \"endloop\"")?;
+            if word.eq_ignore_ascii_case(b"endloop") {
+                break;
+            }
+            if !word.eq_ignore_ascii_case(b"vertex") {
+                return Err(IoError::parse(
+                    Location::Line(line),
+                    format!("expected \"vertex\" or \"endloop\", found {}", show(word)),
+                ));
+            }
+            let x = tokens.next_f64("the x coordinate of a vertex")?;
+            let y = tokens.next_f64("the y coordinate of a vertex")?;
+            let z = tokens.next_f64("the z coordinate of a vertex")?;
+            positions.push(DVec3::new(x, y, z));
+            vertex_lines.push(line);
+            size += 1;
+        }
+        tokens.expect_keyword("endfacet")?;
+        face_sizes.push(size);
+        face_lines.push(line);
+    }
+    let indices = (0..positions.len() as u32).collect();
+    build_mesh(
+        positions,
+        face_sizes,
+        indices,
+        |v| Location::Line(vertex_lines[v]),
+        |f| Location::Line(face_lines[f]),
+    )
+}
+
+/// The triangles of a mesh: polygons as fans from their first corner.
+fn triangles(mesh: &Mesh) -> impl Iterator<Item = [DVec3; 3]> + '_ {
+    mesh.faces().flat_map(move |face| {
+        let p = |i: usize| mesh.positions()[face[i] as usize];
+        (1..face.len() - 1).map(move |i| [p(0), p(i), p(i + 1)])
+    })
+}
+
+fn normal([a, b, c]: [DVec3; 3]) -> DVec3 {
+    (b - a).cross(c - a).normalize_or_zero()
+}
+
+/// Writes a mesh as STL, binary or text. Binary stores `f32` coordinates;
+/// text keeps every digit of the `f64`s.
+///
+/// # Errors
+/// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when a
+/// binary file would need more than 2^32 − 1 triangles.
+pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()> {
+    if ascii {
+        writeln!(w, "solid weft")?;
+        for t in triangles(mesh) {
+            let n = normal(t);
+            writeln!(w, "  facet normal {} {} {}", n.x, n.y, n.z)?;
+            writeln!(w, "    outer loop")?;
+            for p in t {
+                writeln!(w, "      vertex {} {} {}", p.x, p.y, p.z)?;
+            }
+            writeln!(w, "    endloop")?;
+            writeln!(w, "  endfacet")?;
+        }
+        writeln!(w, "endsolid weft")?;
+        return Ok(());
+    }
+    let count: u64 = mesh.face_sizes().iter().map(|&s| s as u64 - 2).sum();
+    let count = u32::try_from(count).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "too many triangles for a binary STL file",
+        )
+    })?;
+    let mut header = [b' '; HEADER];
+    let title = format!("binary STL written by weft {}", crate::VERSION);
+    header[..title.len()].copy_from_slice(title.as_bytes());
+    w.write_all(&header)?;
+    w.write_all(&count.to_le_bytes())?;
+    for t in triangles(mesh) {
+        let mut record = [0u8; RECORD];
+        for (k, v) in std::iter::once(normal(t)).chain(t).enumerate() {
+            for (axis, c) in v.to_array().into_iter().enumerate() {
+                let at = k * 12 + axis * 4;
+                record[at..at + 4].copy_from_slice(&(c as f32).to_le_bytes());
+            }
+        }
+        w.write_all(&record)?;
+    }
+    Ok(())
+}

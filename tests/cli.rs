@@ -1,0 +1,622 @@
+//! The `weft` command, run as a program: each command's success path, and
+//! its failures with their exit codes and messages.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use weft::io;
+use weft::shapes;
+
+/// A fresh folder for one test under the system's temporary folder.
+fn folder(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("weft-cli-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn weft(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .expect("the weft binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[track_caller]
+fn assert_exit(o: &Output, code: i32) {
+    assert_eq!(
+        o.status.code(),
+        Some(code),
+        "stdout:\n{}\nstderr:\n{}",
+        stdout(o),
+        stderr(o)
+    );
+}
+
+#[test]
+fn info_reports_counts_and_properties() {
+    let dir = folder("info");
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(8, 6)).unwrap();
+    io::write_mesh(dir.join("hole.ply"), &shapes::quad_grid_with_hole()).unwrap();
+
+    let o = weft(&dir, &["info", "torus.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    for expected in [
+        "vertices              48",
+        "faces                 48 (0 triangles, 48 quads, 0 n-gons)",
+        "edges                 96",
+        "naked edges           0",
+        "closed                yes",
+        "orientable            yes",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+
+    let o = weft(&dir, &["info", "hole.ply", "--json"]);
+    assert_exit(&o, 0);
+    let json = stdout(&o);
+    assert!(
+        json.trim_start().starts_with('{') && json.trim_end().ends_with('}'),
+        "{json}"
+    );
+    assert!(json.contains("\"faces\": 12"), "{json}");
+    assert!(json.contains("\"naked_edges\": 24"), "{json}");
+    assert!(json.contains("\"closed\": false"), "{json}");
+    assert!(
+        json.contains("\"bounding_box\": {\"min\": [0, 0, 0], \"max\": [4, 4, 0]}"),
+        "{json}"
+    );
+}
+
+#[test]
+fn convert_keeps_the_mesh_and_welds_stl_on_request() {
+    let dir = folder("convert");
+    let cube = shapes::cube();
+    io::write_mesh(dir.join("cube.obj"), &cube).unwrap();
+
+    let o = weft(&dir, &["convert", "cube.obj", "cube.off"]);
+    assert_exit(&o, 0);
+    assert_eq!(io::read_mesh(dir.join("cube.off")).unwrap(), cube);
+    let o = weft(&dir, &["convert", "cube.off", "cube.ply", "--ascii"]);
+    assert_exit(&o, 0);
+    assert!(std::fs::read(dir.join("cube.ply"))
+        .unwrap()
+        .starts_with(b"ply\nformat ascii"));
+    assert_eq!(io::read_mesh(dir.join("cube.ply")).unwrap(), cube);
+
+    let o = weft(&dir, &["convert", "cube.obj", "cube.stl"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("triangle fans"), "{}", stderr(&o));
+    let o = weft(&dir, &["convert", "cube.stl", "soup.obj"]);
+    assert_exit(&o, 0);
+    let soup = io::read_mesh(dir.join("soup.obj")).unwrap();
+    assert_eq!((soup.vertex_count(), soup.face_count()), (36, 12));
+    let o = weft(&dir, &["convert", "--weld", "cube.stl", "welded.obj"]);
+    assert_exit(&o, 0);
+    let welded = io::read_mesh(dir.join("welded.obj")).unwrap();
+    assert_eq!((welded.vertex_count(), welded.face_count()), (8, 12));
+}
+
+#[test]
+fn render_writes_a_picture_of_the_requested_size() {
+    let dir = folder("render");
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(16, 8)).unwrap();
+    let o = weft(
+        &dir,
+        &["render", "torus.obj", "torus.png", "--size", "160x120"],
+    );
+    assert_exit(&o, 0);
+
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(dir.join("torus.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    let frame = reader.next_frame(&mut pixels).unwrap();
+    assert_eq!((frame.width, frame.height), (160, 120));
+    assert_eq!(frame.color_type, png::ColorType::Rgb);
+    let at = |x: usize, y: usize| {
+        let i = 3 * (y * 160 + x);
+        [pixels[i], pixels[i + 1], pixels[i + 2]]
+    };
+    let background = at(0, 0);
+    let differing = (0..120)
+        .flat_map(|y| (0..160).map(move |x| (x, y)))
+        .filter(|&(x, y)| at(x, y) != background)
+        .count();
+    // The torus covers a good part of the picture, and not all of it.
+    assert!(differing > 160 * 120 / 5, "{differing} pixels differ");
+    assert!(differing < 160 * 120 * 9 / 10, "{differing} pixels differ");
+    // The hole in the middle shows the background; the ring in front does not.
+    assert_eq!(at(80, 58), background);
+    assert_ne!(at(80, 100), background);
+}
+
+#[test]
+fn flipped_faces_show_in_another_tone() {
+    let dir = folder("flipped");
+    let grid = shapes::quad_grid(3, 3);
+    let polygons: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if f == 4 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    let flipped = weft::Mesh::from_polygons(grid.positions().to_vec(), polygons).unwrap();
+    io::write_mesh(dir.join("grid.obj"), &flipped).unwrap();
+    let o = weft(
+        &dir,
+        &[
+            "render", "grid.obj", "grid.png", "--size", "120x90", "--edges", "never",
+        ],
+    );
+    assert_exit(&o, 0);
+    let decoder = png::Decoder::new(std::io::BufReader::new(
+        std::fs::File::open(dir.join("grid.png")).unwrap(),
+    ));
+    let mut reader = decoder.read_info().unwrap();
+    let mut pixels = vec![0; reader.output_buffer_size().unwrap()];
+    reader.next_frame(&mut pixels).unwrap();
+    let (mut warm, mut cool) = (0, 0);
+    for c in pixels.chunks(3) {
+        let (r, b) = (c[0] as i32, c[2] as i32);
+        if r > b + 60 {
+            warm += 1;
+        } else if b > r + 30 {
+            cool += 1;
+        }
+    }
+    // One face of nine is seen from the back, in the warm tone; the others
+    // in the cool one. Perspective makes the far faces smaller.
+    let share = warm as f64 / (warm + cool) as f64;
+    assert!(
+        (0.06..0.2).contains(&share),
+        "{warm} warm, {cool} cool pixels"
+    );
+}
+
+#[test]
+fn bad_usage_exits_with_2() {
+    let dir = folder("usage");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    for args in [
+        &["render", "cube.obj", "cube.png", "--size", "0x10"][..],
+        &["render", "cube.obj", "cube.png", "--size", "big"],
+        &["render", "cube.obj", "cube.jpg"],
+        &["info"],
+        &["info", "cube.obj", "--colour"],
+        &["convert", "cube.obj", "cube.dae"],
+        &["frobnicate"],
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 2);
+        assert!(stderr(&o).contains("error"), "{args:?}: {}", stderr(&o));
+    }
+    let o = weft(&dir, &["render", "cube.obj", "cube.png", "--size", "0x10"]);
+    assert!(stderr(&o).contains("WIDTHxHEIGHT"), "{}", stderr(&o));
+}
+
+#[test]
+fn help_on_every_command_has_an_example() {
+    let dir = folder("help");
+    for command in [
+        "info",
+        "render",
+        "convert",
+        "subdivide",
+        "triangulate",
+        "weld",
+        "cull-adjacent",
+        "flip",
+        "t-nodes",
+    ] {
+        let o = weft(&dir, &[command, "--help"]);
+        assert_exit(&o, 0);
+        let text = stdout(&o);
+        assert!(
+            text.contains(&format!("weft {command} ")),
+            "{command}: {text}"
+        );
+        assert!(text.contains("Example"), "{command}: {text}");
+    }
+    let o = weft(&dir, &["--help"]);
+    assert_exit(&o, 0);
+    for command in [
+        "info",
+        "render",
+        "convert",
+        "subdivide",
+        "triangulate",
+        "weld",
+        "cull-adjacent",
+        "flip",
+        "t-nodes",
+    ] {
+        assert!(stdout(&o).contains(command));
+    }
+}
+
+#[test]
+fn failed_operations_exit_with_1_and_name_the_file() {
+    let dir = folder("failures");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    std::fs::write(
+        dir.join("bad.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("short.stl"), [0u8; 50]).unwrap();
+
+    let o = weft(&dir, &["info", "missing.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("missing.obj"), "{}", stderr(&o));
+
+    let o = weft(&dir, &["info", "bad.obj"]);
+    assert_exit(&o, 1);
+    let message = stderr(&o);
+    assert!(
+        message.contains("bad.obj") && message.contains("line 3"),
+        "{message}"
+    );
+
+    let o = weft(&dir, &["convert", "short.stl", "out.obj"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("short.stl") && stderr(&o).contains("byte"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("out.obj").exists());
+
+    for args in [
+        &["convert", "cube.obj", "nowhere/cube.ply"][..],
+        &["render", "cube.obj", "nowhere/cube.png"],
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 1);
+        assert!(stderr(&o).contains("nowhere"), "{args:?}: {}", stderr(&o));
+    }
+
+    // A folder given as the input is unreadable as a file.
+    std::fs::create_dir_all(dir.join("folder.obj")).unwrap();
+    let o = weft(&dir, &["render", "folder.obj", "x.png"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("folder.obj"), "{}", stderr(&o));
+    assert!(!dir.join("x.png").exists());
+}
+
+#[test]
+fn subdivide_runs_each_scheme_and_mode() {
+    let dir = folder("subdivide");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    io::write_mesh(dir.join("grid.off"), &shapes::triangle_grid(2, 2)).unwrap();
+
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "cc.ply",
+            "--scheme",
+            "catmull-clark",
+            "--levels",
+            "2",
+            "--naked-edges",
+            "fixed",
+        ],
+    );
+    assert_exit(&o, 0);
+    let cc = io::read_mesh(dir.join("cc.ply")).unwrap();
+    // Level 1: 8 + 12 + 6 vertices, 24 quads; level 2: 26 + 48 + 24, 96 quads.
+    assert_eq!((cc.vertex_count(), cc.face_count()), (98, 96));
+    assert!(cc.is_quad_mesh());
+
+    // A corner of the grid with one face: corner-fixed keeps it, smooth moves it.
+    let grid = shapes::triangle_grid(2, 2);
+    let lone = (0..grid.vertex_count() as u32)
+        .find(|v| grid.faces().filter(|f| f.contains(v)).count() == 1)
+        .unwrap() as usize;
+    for mode in ["fixed", "smooth", "corner-fixed"] {
+        let out = format!("loop-{mode}.obj");
+        let o = weft(
+            &dir,
+            &[
+                "subdivide",
+                "grid.off",
+                &out,
+                "--scheme",
+                "loop",
+                "--levels",
+                "1",
+                "--naked-edges",
+                mode,
+            ],
+        );
+        assert_exit(&o, 0);
+        let refined = io::read_mesh(dir.join(&out)).unwrap();
+        assert_eq!(refined.face_count(), 32, "{mode}");
+        let corner = refined.positions()[lone];
+        assert_eq!(
+            corner == grid.positions()[lone],
+            mode != "smooth",
+            "{mode}: {corner}"
+        );
+    }
+
+    // Loop on quads triangulates first and says so.
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "cube-loop.obj",
+            "--scheme",
+            "loop",
+            "--levels",
+            "1",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("triangulated"), "{}", stderr(&o));
+    assert_eq!(
+        io::read_mesh(dir.join("cube-loop.obj"))
+            .unwrap()
+            .face_count(),
+        48
+    );
+
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.obj", "x.obj", "--scheme", "butterfly"],
+    );
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["subdivide", "cube.obj", "x.obj", "--levels", "-1"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["subdivide", "cube.obj", "x.obj", "--levels", "40"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("cube.obj") && stderr(&o).contains("too large"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn triangulate_splits_polygons() {
+    let dir = folder("triangulate");
+    io::write_mesh(dir.join("mixed.obj"), &shapes::mixed_polygons()).unwrap();
+    let o = weft(&dir, &["triangulate", "mixed.obj", "tri.obj"]);
+    assert_exit(&o, 0);
+    let mixed = shapes::mixed_polygons();
+    let tri = io::read_mesh(dir.join("tri.obj")).unwrap();
+    let expected: u32 = mixed.face_sizes().iter().map(|s| s - 2).sum();
+    assert_eq!(tri.face_count(), expected as usize);
+    assert!(tri.is_triangle_mesh());
+    assert_eq!(tri.positions(), mixed.positions());
+    let o = weft(&dir, &["triangulate", "mixed.obj", "missing/tri.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("missing"), "{}", stderr(&o));
+}
+
+#[test]
+fn weld_joins_inputs_and_cull_removes_twins() {
+    let dir = folder("weld");
+    let cube = shapes::cube();
+    let mut shifted = cube.clone();
+    for p in shifted.positions_mut() {
+        p.x += 1.0 + 1e-4; // a seam within the default tolerance
+    }
+    io::write_mesh(dir.join("a.obj"), &cube).unwrap();
+    io::write_mesh(dir.join("b.stl"), &shifted).unwrap();
+
+    let o = weft(&dir, &["weld", "a.obj", "b.stl", "-o", "boxes.ply"]);
+    assert_exit(&o, 0);
+    let boxes = io::read_mesh(dir.join("boxes.ply")).unwrap();
+    // Two cubes sharing a face: 12 vertices; the STL cube came as 12 triangles.
+    assert_eq!((boxes.vertex_count(), boxes.face_count()), (12, 6 + 12));
+
+    let o = weft(
+        &dir,
+        &[
+            "weld",
+            "a.obj",
+            "b.stl",
+            "-o",
+            "apart.obj",
+            "--tolerance",
+            "0",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(
+        io::read_mesh(dir.join("apart.obj")).unwrap().vertex_count(),
+        16
+    );
+
+    // Two cubes with quads on the shared wall: culling removes both walls.
+    let mut quads = shapes::cube();
+    for p in quads.positions_mut() {
+        p.x += 1.0;
+    }
+    io::write_mesh(dir.join("c.obj"), &quads).unwrap();
+    let o = weft(&dir, &["weld", "a.obj", "c.obj", "-o", "pair.obj"]);
+    assert_exit(&o, 0);
+    let o = weft(&dir, &["cull-adjacent", "pair.obj", "hull.obj"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("removed 2 of 12"), "{}", stderr(&o));
+    let hull = io::read_mesh(dir.join("hull.obj")).unwrap();
+    assert_eq!(hull.face_count(), 10);
+    let o = weft(&dir, &["info", "hull.obj"]);
+    assert!(
+        stdout(&o).contains("closed                yes"),
+        "{}",
+        stdout(&o)
+    );
+
+    let o = weft(&dir, &["weld", "-o", "x.obj"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["weld", "a.obj", "-o", "x.obj", "--tolerance", "-1"]);
+    assert_exit(&o, 2);
+    let o = weft(&dir, &["weld", "a.obj", "gone.obj", "-o", "x.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("gone.obj"), "{}", stderr(&o));
+    assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn flip_reverses_or_unifies() {
+    let dir = folder("flip");
+    let grid = shapes::quad_grid(3, 3);
+    let polygons: Vec<Vec<u32>> = grid
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if f == 4 || f == 7 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    let mixed = weft::Mesh::from_polygons(grid.positions().to_vec(), polygons).unwrap();
+    io::write_mesh(dir.join("mixed.obj"), &mixed).unwrap();
+
+    let o = weft(&dir, &["flip", "mixed.obj", "unified.obj", "--unify"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("flipped 2 of 9"), "{}", stderr(&o));
+    let unified = io::read_mesh(dir.join("unified.obj")).unwrap();
+    assert_eq!(unified.positions(), grid.positions());
+    for (f, face) in unified.faces().enumerate() {
+        assert_same_cycle(face, grid.face(f).to_vec(), f);
+    }
+
+    let o = weft(&dir, &["flip", "unified.obj", "down.obj"]);
+    assert_exit(&o, 0);
+    let down = io::read_mesh(dir.join("down.obj")).unwrap();
+    for (f, face) in down.faces().enumerate() {
+        let mut expected = grid.face(f).to_vec();
+        expected.reverse();
+        assert_same_cycle(face, expected, f);
+    }
+}
+
+/// The same cycle of vertices, whatever corner it starts at.
+#[track_caller]
+fn assert_same_cycle(face: &[u32], mut expected: Vec<u32>, f: usize) {
+    let start = expected.iter().position(|v| *v == face[0]);
+    assert!(start.is_some(), "face {f}: {face:?} vs {expected:?}");
+    expected.rotate_left(start.unwrap());
+    assert_eq!(face, expected.as_slice(), "face {f}");
+}
+
+#[test]
+fn t_nodes_are_listed_and_repaired() {
+    let dir = folder("t-nodes");
+    // A tall quad beside two short ones: vertex 5 at (1, 1) lies on the
+    // tall quad's edge from (1, 0) to (1, 2).
+    std::fs::write(
+        dir.join("t.obj"),
+        "v 0 0 0\nv 1 0 0\nv 1 2 0\nv 0 2 0\nv 2 0 0\nv 1 1 0\nv 2 1 0\nv 2 2 0\n\
+         f 1 2 3 4\nf 2 5 7 6\nf 6 7 8 3\n",
+    )
+    .unwrap();
+    let o = weft(&dir, &["t-nodes", "t.obj", "--repair", "fixed.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    assert!(text.contains("1 T-nodes"), "{text}");
+    assert!(
+        text.contains("vertex 5 lies on edge 1-2 of face 0"),
+        "{text}"
+    );
+    let fixed = io::read_mesh(dir.join("fixed.obj")).unwrap();
+    assert_eq!(fixed.face(0), &[0, 1, 5, 2, 3]);
+    let o = weft(&dir, &["info", "fixed.obj", "--json"]);
+    // The outline of the 2 × 2 square, and the seam is gone.
+    assert!(stdout(&o).contains("\"naked_edges\": 7"), "{}", stdout(&o));
+
+    let o = weft(&dir, &["t-nodes", "fixed.obj"]);
+    assert_exit(&o, 0);
+    assert!(stdout(&o).contains("0 T-nodes"), "{}", stdout(&o));
+    let o = weft(&dir, &["t-nodes", "t.obj", "--tolerance", "nan"]);
+    assert_exit(&o, 2);
+}
+
+#[test]
+fn demo_writes_every_workflow_with_an_index() {
+    let dir = folder("demo");
+    let o = weft(&dir, &["demo", "--out", "pictures"]);
+    assert_exit(&o, 0);
+    let out = dir.join("pictures");
+    let index = std::fs::read_to_string(out.join("index.html")).unwrap();
+    let lines: Vec<String> = stdout(&o).lines().map(str::to_string).collect();
+    let mut pictures = 0;
+    for name in [
+        "loop-1",
+        "loop-2",
+        "loop-3",
+        "loop-3-smooth",
+        "loop-3-corner-fixed",
+        "hole-3-smooth",
+        "surfaces-joined",
+        "surfaces-smooth",
+        "t-nodes-welded",
+        "t-nodes-repaired-smooth",
+        "voronoi-skin",
+        "fading-smooth",
+        "boxes-culled",
+        "boxes-smooth",
+    ] {
+        assert!(
+            index.contains(&format!("src=\"{name}.png\"")),
+            "{name} missing from the index"
+        );
+        assert!(
+            lines.iter().any(|l| l.starts_with(&format!("{name}: "))),
+            "no summary line for {name}"
+        );
+        let mesh = io::read_mesh(out.join(format!("{name}.obj"))).unwrap();
+        assert!(mesh.face_count() > 0, "{name}");
+        let decoder = png::Decoder::new(std::io::BufReader::new(
+            std::fs::File::open(out.join(format!("{name}.png"))).unwrap(),
+        ));
+        let info = decoder.read_info().unwrap();
+        assert_eq!((info.info().width, info.info().height), (800, 600));
+        pictures += 1;
+    }
+    assert_eq!(pictures, 14);
+    // The culled boxes are one closed shell; the repaired surfaces one piece.
+    let o = weft(&out, &["info", "boxes-culled.obj", "--json"]);
+    assert!(stdout(&o).contains("\"closed\": true"), "{}", stdout(&o));
+    let o = weft(&out, &["info", "t-nodes-repaired-smooth.obj", "--json"]);
+    assert!(stdout(&o).contains("\"components\": 1"), "{}", stdout(&o));
+}
+
+#[test]
+fn demo_failures_name_the_folder_or_picture() {
+    let dir = folder("demo-failures");
+    let o = weft(&dir, &["demo", "--out", "no/such/folder"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("no/such/folder"), "{}", stderr(&o));
+    std::fs::write(dir.join("fake.png"), b"not a picture").unwrap();
+    let o = weft(&dir, &["demo", "--image", "fake.png"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("fake.png"), "{}", stderr(&o));
+    let o = weft(&dir, &["demo", "--image", "heights.jpg"]);
+    assert_exit(&o, 2);
+}
