@@ -391,7 +391,10 @@ extern "C" {
  * Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
  * all collinear points or a degenerate plane, and with
  * WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
- * coordinate.
+ * coordinate. More than 2^31 − 1 points fail with
+ * WEFT_STATUS_INPUT_TOO_LARGE before the buffer is read; more than a sixth
+ * of that (up to two triangles per point must fit the cap) with
+ * WEFT_STATUS_RESULT_TOO_LARGE.
  *
  * # Safety
  * `points` holds the doubles stated; `plane` is NULL or readable;
@@ -425,7 +428,9 @@ WeftStatus weft_delaunay(const double *points, size_t point_count, const struct 
  * Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
  * corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
  * crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
- * for a degenerate plane or a boundary without area.
+ * for a degenerate plane or a boundary without area. More than 2^31 − 1
+ * points or boundary corners fail with WEFT_STATUS_INPUT_TOO_LARGE before
+ * the buffers are read.
  *
  * # Safety
  * Each non-NULL buffer holds the doubles stated; `plane` is NULL or
@@ -561,7 +566,10 @@ WeftStatus weft_stellate(const struct WeftMesh *mesh, const double *heights, siz
  * Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
  * the origin and facing +z, of `u_count × v_count` quads.
  *
- * Sizes must be positive and finite, counts at least 1.
+ * Sizes must be positive and finite, counts at least 1. Counts whose
+ * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+ * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated.
  * `out_mesh` receives the new mesh on success; it must not be NULL.
  *
  * # Safety
@@ -573,7 +581,10 @@ WeftStatus weft_plane_grid(double size_x, double size_y, size_t u_count, size_t 
  * Makes a closed, welded box centred on the origin whose sides are divided
  * into quads: `u_count` along x, `v_count` along y, `w_count` along z.
  *
- * Sizes must be positive and finite, counts at least 1.
+ * Sizes must be positive and finite, counts at least 1. Counts whose
+ * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+ * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated.
  * `out_mesh` receives the new mesh on success; it must not be NULL.
  *
  * # Safety
@@ -585,6 +596,9 @@ WeftStatus weft_box(double size_x, double size_y, double size_z, size_t u_count,
  * Makes a sphere of `radius` centred on the origin with `u_count` segments
  * around the z axis (at least 3) and `v_count` from pole to pole (at least
  * 2); each pole is one vertex with a fan of triangles, the rest are quads.
+ * Counts whose result would pass 2^31 − 1 face corners (any count
+ * near SIZE_MAX included) fail with WEFT_STATUS_RESULT_TOO_LARGE before
+ * anything is allocated.
  *
  * `out_mesh` receives the new mesh on success; it must not be NULL.
  *
@@ -614,8 +628,9 @@ WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mes
  *
  * `kind` is one of the WEFT_SIDED_* values; another value fails with
  * WEFT_STATUS_INVALID_ARGUMENT.
- * `sides` is n, at least 3; `radius` and `height` must be positive and
- * finite.
+ * `sides` is n, at least 3; a count whose result would pass 2^31 − 1 face
+ * corners fails with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated. `radius` and `height` must be positive and finite.
  * `out_mesh` receives the new mesh on success; it must not be NULL.
  *
  * # Safety

@@ -91,7 +91,19 @@ pub(crate) fn project_and_triangulate(points: &[DVec3], plane: &Plane) -> Result
 ///   infinite coordinate (or one beyond the triangulation's range).
 /// - [`Error::DegenerateInput`] for fewer than 3 distinct projections or when
 ///   they are all collinear.
+/// - [`Error::ResultTooLarge`] for more than [`MAX_ELEMENTS`]` / 6` points
+///   (up to two triangles per point must fit the cap), before anything is
+///   allocated.
 pub fn delaunay(points: &[DVec3], plane: &Plane) -> Result<(Mesh, DelaunayReport)> {
+    // n points make at most 2n - 5 triangles: 6n face corners at most.
+    if points.len() as u64 > MAX_ELEMENTS / 6 {
+        return Err(Error::ResultTooLarge(format!(
+            "a triangulation of {} points may have up to {} face corners; the limit is {MAX_ELEMENTS}, so at most {} points",
+            points.len(),
+            6 * points.len() as u128,
+            MAX_ELEMENTS / 6
+        )));
+    }
     let projected = project_and_triangulate(points, plane)?;
     let triangulation = &projected.triangulation;
     let distinct = triangulation.num_vertices();

@@ -12,7 +12,7 @@ use std::f64::consts::TAU;
 
 use glam::DVec3;
 
-use crate::error::{Error, Result, MAX_ELEMENTS};
+use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::grid::mesh_from_grid;
 use crate::mesh::Mesh;
 
@@ -64,14 +64,27 @@ fn check_count(value: usize, minimum: usize, name: &str) -> Result<()> {
     }
 }
 
-fn check_total(corners: u64, what: &str) -> Result<()> {
-    if corners > MAX_ELEMENTS {
-        Err(Error::ResultTooLarge(format!(
+/// Refuses a result of `corners` face corners past [`MAX_ELEMENTS`]; `None`
+/// is a count that overflowed 64 bits. The corners bound the vertex and
+/// face counts of every primitive, so this one check covers all three.
+fn check_total(corners: Option<u64>, what: &str) -> Result<()> {
+    match corners {
+        Some(corners) if corners <= MAX_ELEMENTS => Ok(()),
+        Some(corners) => Err(Error::ResultTooLarge(format!(
             "{what} would have {corners} face corners, over the limit of {MAX_ELEMENTS}"
-        )))
-    } else {
-        Ok(())
+        ))),
+        None => Err(Error::ResultTooLarge(format!(
+            "{what} would have more than {} face corners, over the limit of {MAX_ELEMENTS}",
+            u64::MAX
+        ))),
     }
+}
+
+/// `a × b × c` in 64 bits, `None` on overflow.
+fn product(factors: &[usize]) -> Option<u64> {
+    factors
+        .iter()
+        .try_fold(1u64, |total, &f| total.checked_mul(u64::try_from(f).ok()?))
 }
 
 /// A flat rectangle of `size_x × size_y` on the XY plane, centred on the
@@ -86,8 +99,8 @@ pub fn plane_grid(size_x: f64, size_y: f64, u_count: usize, v_count: usize) -> R
     check_size(size_y, "size_y")?;
     check_count(u_count, 1, "u_count")?;
     check_count(v_count, 1, "v_count")?;
-    check_total(u_count as u64 * v_count as u64 * 4, "the plane grid")?;
-    let mut points = Vec::new();
+    check_total(product(&[u_count, v_count, 4]), "the plane grid")?;
+    let mut points = try_vec((u_count + 1) * (v_count + 1), "the plane grid's points")?;
     for j in 0..=v_count {
         for i in 0..=u_count {
             points.push(DVec3::new(
@@ -114,10 +127,24 @@ pub fn box_grid(size: DVec3, u_count: usize, v_count: usize, w_count: usize) -> 
     for (count, name) in counts.iter().zip(["u_count", "v_count", "w_count"]) {
         check_count(*count, 1, name)?;
     }
-    let [u, v, w] = counts.map(|c| c as u64);
-    check_total(8 * (u * v + v * w + w * u), "the box")?;
-    let mut positions = Vec::new();
+    let sides = [
+        product(&[u_count, v_count]),
+        product(&[v_count, w_count]),
+        product(&[w_count, u_count]),
+    ];
+    let quads = sides
+        .into_iter()
+        .try_fold(0u64, |total, side| total.checked_add(side?));
+    check_total(quads.and_then(|q| q.checked_mul(8)), "the box")?;
+    // Each quad has 4 corners and the sides' corners bound the vertices.
+    let quad_count = 2 * quads.unwrap_or(0) as usize;
+    let mut positions = try_vec(quad_count + 2, "the box's vertices")?;
     let mut lattice: HashMap<[usize; 3], u32> = HashMap::new();
+    lattice.try_reserve(quad_count + 2).map_err(|_| {
+        Error::OutOfMemory(format!(
+            "could not reserve the box's {quad_count} lattice cells"
+        ))
+    })?;
     let mut vertex = |cell: [usize; 3], positions: &mut Vec<DVec3>| -> u32 {
         *lattice.entry(cell).or_insert_with(|| {
             positions.push(DVec3::new(
@@ -128,7 +155,7 @@ pub fn box_grid(size: DVec3, u_count: usize, v_count: usize, w_count: usize) -> 
             (positions.len() - 1) as u32
         })
     };
-    let mut polygons: Vec<[u32; 4]> = Vec::new();
+    let mut polygons: Vec<[u32; 4]> = try_vec(quad_count, "the box's faces")?;
     // For the side across axis a, walk axes b and c with e_b × e_c = e_a.
     for a in 0..3 {
         let (b, c) = ((a + 1) % 3, (a + 2) % 3);
@@ -169,9 +196,10 @@ pub fn uv_sphere(radius: f64, u_count: usize, v_count: usize) -> Result<Mesh> {
     check_size(radius, "radius")?;
     check_count(u_count, 3, "u_count")?;
     check_count(v_count, 2, "v_count")?;
-    check_total(u_count as u64 * v_count as u64 * 4, "the sphere")?;
+    check_total(product(&[u_count, v_count, 4]), "the sphere")?;
     let rings = v_count - 1;
-    let mut positions = vec![DVec3::new(0.0, 0.0, -radius)];
+    let mut positions = try_vec(u_count * rings + 2, "the sphere's vertices")?;
+    positions.push(DVec3::new(0.0, 0.0, -radius));
     for j in 1..v_count {
         let polar = std::f64::consts::PI * j as f64 / v_count as f64;
         for i in 0..u_count {
@@ -186,7 +214,7 @@ pub fn uv_sphere(radius: f64, u_count: usize, v_count: usize) -> Result<Mesh> {
     positions.push(DVec3::new(0.0, 0.0, radius));
     let north = (positions.len() - 1) as u32;
     let ring = |j: usize, i: usize| (1 + (j - 1) * u_count + i % u_count) as u32;
-    let mut polygons: Vec<Vec<u32>> = Vec::new();
+    let mut polygons: Vec<Vec<u32>> = try_vec(u_count * v_count, "the sphere's faces")?;
     for i in 0..u_count {
         polygons.push(vec![0, ring(1, i + 1), ring(1, i)]);
     }
@@ -208,6 +236,9 @@ pub fn uv_sphere(radius: f64, u_count: usize, v_count: usize) -> Result<Mesh> {
 
 /// A platonic solid whose vertices lie on the sphere of `radius` about the
 /// origin (the circumradius).
+///
+/// Any positive finite radius works, `f64::MAX` included: the faces are
+/// found on the solid of radius 1, then scaled.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] for a radius that is not positive and finite.
@@ -255,9 +286,13 @@ pub fn platonic(kind: Platonic, radius: f64) -> Result<Mesh> {
         Platonic::Icosahedron => cyclic(1.0, phi, &mut points),
     }
     for p in &mut points {
-        *p = *p / p.length() * radius;
+        *p /= p.length();
     }
-    convex_hull_of_few(points)
+    // The faces are found on the unit solid: at the given radius the hull's
+    // cross products overflow (radius near f64::MAX) or underflow (near 0).
+    let unit = convex_hull_of_few(points)?;
+    let scaled = unit.positions().iter().map(|&p| p * radius).collect();
+    Ok(unit.with_positions(scaled)?)
 }
 
 /// The faces of the convex hull of a few points in convex position (all
@@ -295,7 +330,7 @@ fn convex_hull_of_few(points: Vec<DVec3>) -> Result<Mesh> {
                 let mut on: Vec<u32> = (0..n as u32)
                     .filter(|&m| side(points[m as usize]).abs() <= tolerance)
                     .collect();
-                if seen.contains(&on) {
+                if on.len() < 3 || seen.contains(&on) {
                     continue;
                 }
                 seen.push(on.clone());
@@ -329,7 +364,7 @@ pub fn sided(kind: Sided, sides: usize, radius: f64, height: f64) -> Result<Mesh
     check_count(sides, 3, "sides")?;
     check_size(radius, "radius")?;
     check_size(height, "height")?;
-    check_total(sides as u64 * 8, "the solid")?;
+    check_total(product(&[sides, 8]), "the solid")?;
     let n = sides;
     let corner = |i: f64, z: f64| {
         let a = TAU * i / n as f64;

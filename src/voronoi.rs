@@ -19,7 +19,7 @@ use glam::{DVec2, DVec3};
 use spade::Triangulation;
 
 use crate::delaunay::project_and_triangulate;
-use crate::error::{try_vec, Error, Result};
+use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 use crate::plane::{check_points, Plane};
 
@@ -60,12 +60,20 @@ pub const DEFAULT_MARGIN: f64 = 0.1;
 ///   boundary of fewer than 3 corners or one that crosses itself (naming the
 ///   two edges).
 /// - [`Error::DegenerateInput`] for a boundary of zero area.
+/// - [`Error::ResultTooLarge`] for more than [`MAX_ELEMENTS`] points (one
+///   cell each), before anything is allocated.
 pub fn voronoi(
     points: &[DVec3],
     plane: &Plane,
     boundary: Option<&[DVec3]>,
     radius: Option<f64>,
 ) -> Result<Vec<Vec<DVec3>>> {
+    if points.len() as u64 > MAX_ELEMENTS {
+        return Err(Error::ResultTooLarge(format!(
+            "{} points would make as many cells; the limit is {MAX_ELEMENTS}",
+            points.len()
+        )));
+    }
     check_points(points, "point")?;
     if let Some(r) = radius {
         if !(r.is_finite() && r > 0.0) {
@@ -138,9 +146,18 @@ pub fn voronoi(
 ///
 /// # Errors
 /// [`Error::InvalidMesh`] when a non-empty cell has fewer than 3 corners
-/// (naming its face) or a non-finite corner (naming its vertex).
+/// (naming its face) or a non-finite corner (naming its vertex);
+/// [`Error::ResultTooLarge`] when the cells have more than [`MAX_ELEMENTS`]
+/// corners or faces.
 pub fn cells_to_mesh(cells: &[Vec<DVec3>]) -> Result<Mesh> {
-    let total: usize = cells.iter().map(Vec::len).sum();
+    let total: u64 = cells.iter().map(|c| c.len() as u64).sum();
+    if total > MAX_ELEMENTS || cells.len() as u64 > MAX_ELEMENTS {
+        return Err(Error::ResultTooLarge(format!(
+            "{} cells with {total} corners in all would pass the limit of {MAX_ELEMENTS}",
+            cells.len()
+        )));
+    }
+    let total = total as usize;
     let mut positions = try_vec(total, "the cells' corners")?;
     let mut polygons = try_vec::<Vec<u32>>(cells.len(), "the cells' faces")?;
     for cell in cells.iter().filter(|c| !c.is_empty()) {

@@ -42,3 +42,13 @@ fn header_version_macros_match_the_package() {
         );
     }
 }
+
+#[test]
+fn readme_shows_the_c_example_as_it_is() {
+    let readme = include_str!("../README.md");
+    let example = include_str!("../examples/subdivide_cube.c");
+    assert!(
+        readme.contains(&format!("```c\n{example}```")),
+        "README.md's C example differs from examples/subdivide_cube.c"
+    );
+}

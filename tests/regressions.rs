@@ -46,3 +46,87 @@ fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
     assert_valid(&twice);
     assert_eq!(twice.face_count(), 32);
 }
+
+/// `weft_platonic` with a radius of 1e300: the hull was searched at that
+/// scale, where the cross products overflow to infinity, no plane had the
+/// points on one side, and an empty corner list was indexed (a panic). The
+/// faces are now found on the unit solid and scaled afterwards.
+#[test]
+fn platonic_solids_at_extreme_radii() {
+    use weft::primitives::{platonic, Platonic};
+    let expected = [
+        (Platonic::Tetrahedron, 4, 4),
+        (Platonic::Hexahedron, 8, 6),
+        (Platonic::Octahedron, 6, 8),
+        (Platonic::Dodecahedron, 20, 12),
+        (Platonic::Icosahedron, 12, 20),
+    ];
+    for radius in [1e300, f64::MAX, 1e-300] {
+        for (kind, vertices, faces) in expected {
+            let solid = platonic(kind, radius).unwrap();
+            assert_valid(&solid);
+            assert_eq!(solid.vertex_count(), vertices, "{kind:?} at {radius}");
+            assert_eq!(solid.face_count(), faces, "{kind:?} at {radius}");
+            assert_eq!(
+                solid.face_indices(),
+                platonic(kind, 1.0).unwrap().face_indices()
+            );
+            for p in solid.positions() {
+                let relative = (p / radius).length();
+                assert!((relative - 1.0).abs() < 1e-12, "{kind:?} at {radius}");
+            }
+        }
+    }
+}
+
+/// A triangle fan whose coordinates are near `f64::MAX`: the sums inside
+/// smoothing, offset and the dual's rescaling overflow to infinity, which
+/// used to come back as a mesh with infinite coordinates.
+fn huge_fan() -> Mesh {
+    let big = 1.5e308;
+    mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [big, 0.0, 0.0],
+            [big, big, 0.0],
+            [0.0, big, 0.0],
+            [-big, big, 0.0],
+        ],
+        &[&[0, 1, 2], &[0, 2, 3], &[0, 3, 4]],
+    )
+}
+
+fn assert_degenerate_naming_a_vertex(result: weft::Result<Mesh>) {
+    match result {
+        Err(weft::Error::DegenerateInput(message)) => {
+            assert!(message.contains("vertex"), "{message}")
+        }
+        Err(other) => panic!("unexpected error: {other}"),
+        Ok(m) => panic!("accepted with positions {:?}", m.positions()),
+    }
+}
+
+#[test]
+fn overflowing_coordinates_are_refused_not_returned() {
+    use weft::smooth::{laplacian, laplacian_hc, NakedEdges};
+    use weft::transform::{offset, OffsetType};
+    let fan = huge_fan();
+    assert_degenerate_naming_a_vertex(laplacian(&fan, 1, 1.0, NakedEdges::Smooth));
+    assert_degenerate_naming_a_vertex(laplacian_hc(&fan, 1, 0.5, 0.5, NakedEdges::Smooth));
+    // A triangle far along its own normal, offset further.
+    let far = mesh(
+        &[
+            [0.0, 0.0, 1.5e308],
+            [1.0, 0.0, 1.5e308],
+            [0.0, 1.0, 1.5e308],
+        ],
+        &[&[0, 1, 2]],
+    );
+    assert_degenerate_naming_a_vertex(offset(&far, 1e308, OffsetType::Diagonal));
+    assert_degenerate_naming_a_vertex(weft::transform::thicken(&far, 1e308, OffsetType::Diagonal));
+    // The same shape at an ordinary scale smooths and offsets as before.
+    let small = fan.with_positions(fan.positions().iter().map(|p| *p * 1e-300).collect());
+    let small = small.unwrap();
+    assert_valid(&laplacian(&small, 1, 1.0, NakedEdges::Smooth).unwrap());
+    assert_valid(&offset(&small, 1.0, OffsetType::Diagonal).unwrap());
+}

@@ -2,7 +2,7 @@
 
 use crate::error::Result;
 use crate::mesh::Mesh;
-use crate::split::{face_centroid, vertex_fans, Builder};
+use crate::split::{face_centroid, moved, vertex_fans, Builder};
 use crate::topology::Topology;
 
 /// How the dual's vertices are placed.
@@ -34,7 +34,9 @@ pub enum DualMode {
 ///
 /// # Errors
 /// [`crate::Error::ResultTooLarge`] past the size cap (never for a valid
-/// mesh, whose dual is no larger).
+/// mesh, whose dual is no larger); [`crate::Error::DegenerateInput`] when
+/// keeping the size scales a vertex past `f64` (coordinates near
+/// `f64::MAX`).
 pub fn dual(mesh: &Mesh, mode: DualMode) -> Result<Mesh> {
     let topology = Topology::new(mesh);
     let fans: Vec<_> = vertex_fans(mesh, &topology)
@@ -66,16 +68,19 @@ pub fn dual(mesh: &Mesh, mode: DualMode) -> Result<Mesh> {
         );
         out.face(&polygon);
     }
-    let mut result = out.finish();
+    let result = out.finish()?;
     if mode == DualMode::KeepSize {
         if let (Some((lo, hi)), Some((dlo, dhi))) = (mesh.bounding_box(), result.bounding_box()) {
             let (size, dual_size) = ((hi - lo).length(), (dhi - dlo).length());
             if dual_size > 0.0 {
                 let (centre, dual_centre) = ((lo + hi) * 0.5, (dlo + dhi) * 0.5);
                 let scale = size / dual_size;
-                for p in result.positions_mut() {
-                    *p = centre + (*p - dual_centre) * scale;
-                }
+                let scaled = result
+                    .positions()
+                    .iter()
+                    .map(|&p| centre + (p - dual_centre) * scale)
+                    .collect();
+                return moved(&result, scaled, "dual");
             }
         }
     }

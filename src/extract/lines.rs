@@ -136,7 +136,7 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
         }
         out.face(face);
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 /// Welds endpoints within `tolerance`; returns the points (cluster averages,

@@ -9,6 +9,7 @@
 use glam::DVec3;
 
 use crate::delaunay::delaunay;
+use crate::error::MAX_ELEMENTS;
 use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, out_param, output_slice, required, Failure,
     WeftStatus,
@@ -70,6 +71,13 @@ pub struct WeftCells {
 /// # Safety
 /// `points` is NULL or holds `3 * count` doubles.
 unsafe fn points_arg(points: *const f64, count: usize, name: &str) -> Result<Vec<DVec3>, Failure> {
+    // Before the buffer is read, so a count past the cap never touches memory.
+    if count as u64 > MAX_ELEMENTS {
+        return Err(Failure::new(
+            WeftStatus::InputTooLarge,
+            format!("{name}: a count of {count} points exceeds the limit of {MAX_ELEMENTS}"),
+        ));
+    }
     let length = count.checked_mul(3).ok_or_else(|| {
         Failure::new(
             WeftStatus::InputTooLarge,
@@ -133,7 +141,10 @@ unsafe fn plane_arg(plane: *const WeftPlane) -> Result<Plane, Failure> {
 /// Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
 /// all collinear points or a degenerate plane, and with
 /// WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
-/// coordinate.
+/// coordinate. More than 2^31 − 1 points fail with
+/// WEFT_STATUS_INPUT_TOO_LARGE before the buffer is read; more than a sixth
+/// of that (up to two triangles per point must fit the cap) with
+/// WEFT_STATUS_RESULT_TOO_LARGE.
 ///
 /// # Safety
 /// `points` holds the doubles stated; `plane` is NULL or readable;
@@ -184,7 +195,9 @@ pub unsafe extern "C" fn weft_delaunay(
 /// Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
 /// corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
 /// crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
-/// for a degenerate plane or a boundary without area.
+/// for a degenerate plane or a boundary without area. More than 2^31 − 1
+/// points or boundary corners fail with WEFT_STATUS_INPUT_TOO_LARGE before
+/// the buffers are read.
 ///
 /// # Safety
 /// Each non-NULL buffer holds the doubles stated; `plane` is NULL or
@@ -417,7 +430,10 @@ pub unsafe extern "C" fn weft_stellate(
 /// Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
 /// the origin and facing +z, of `u_count × v_count` quads.
 ///
-/// Sizes must be positive and finite, counts at least 1.
+/// Sizes must be positive and finite, counts at least 1. Counts whose
+/// result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+/// included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+/// allocated.
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
@@ -440,7 +456,10 @@ pub unsafe extern "C" fn weft_plane_grid(
 /// Makes a closed, welded box centred on the origin whose sides are divided
 /// into quads: `u_count` along x, `v_count` along y, `w_count` along z.
 ///
-/// Sizes must be positive and finite, counts at least 1.
+/// Sizes must be positive and finite, counts at least 1. Counts whose
+/// result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+/// included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+/// allocated.
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
@@ -466,6 +485,9 @@ pub unsafe extern "C" fn weft_box(
 /// Makes a sphere of `radius` centred on the origin with `u_count` segments
 /// around the z axis (at least 3) and `v_count` from pole to pole (at least
 /// 2); each pole is one vertex with a fan of triangles, the rest are quads.
+/// Counts whose result would pass 2^31 − 1 face corners (any count
+/// near SIZE_MAX included) fail with WEFT_STATUS_RESULT_TOO_LARGE before
+/// anything is allocated.
 ///
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
@@ -527,8 +549,9 @@ pub unsafe extern "C" fn weft_platonic(
 ///
 /// `kind` is one of the WEFT_SIDED_* values; another value fails with
 /// WEFT_STATUS_INVALID_ARGUMENT.
-/// `sides` is n, at least 3; `radius` and `height` must be positive and
-/// finite.
+/// `sides` is n, at least 3; a count whose result would pass 2^31 − 1 face
+/// corners fails with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+/// allocated. `radius` and `height` must be positive and finite.
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety

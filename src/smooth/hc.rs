@@ -6,6 +6,8 @@ use crate::analysis::vertex_normals;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
+use crate::split::moved;
+
 use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 
 /// Which way a vertex may move while smoothing (Weaverbird's orientation
@@ -65,7 +67,9 @@ pub struct HcOptions<'a> {
 ///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] when `alpha` or `beta` is outside
-/// [0, 1] or `iterations` passes [`super::MAX_ITERATIONS`].
+/// [0, 1] or `iterations` passes [`super::MAX_ITERATIONS`];
+/// [`crate::Error::DegenerateInput`] naming a vertex whose update overflows
+/// `f64` (coordinates near `f64::MAX`).
 pub fn laplacian_hc(
     mesh: &Mesh,
     iterations: u32,
@@ -140,9 +144,7 @@ pub fn laplacian_hc_with(mesh: &Mesh, iterations: u32, options: &HcOptions) -> R
             };
         }
     }
-    let mut out = mesh.clone();
-    out.positions_mut().copy_from_slice(&p);
-    Ok(out)
+    moved(mesh, p, "HC smoothing")
 }
 
 /// Checks the activation list: one weight in [0, 1] per vertex.

@@ -5,6 +5,8 @@ use glam::DVec3;
 use crate::error::Result;
 use crate::mesh::Mesh;
 
+use crate::split::moved;
+
 use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 
 /// Moves every vertex `blend` of the way towards the average of its
@@ -15,7 +17,9 @@ use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 ///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] when `blend` is outside [0, 1] or
-/// `iterations` passes [`super::MAX_ITERATIONS`].
+/// `iterations` passes [`super::MAX_ITERATIONS`];
+/// [`crate::Error::DegenerateInput`] naming a vertex whose average overflows
+/// `f64` (coordinates near `f64::MAX`).
 pub fn laplacian(mesh: &Mesh, iterations: u32, blend: f64, naked: NakedEdges) -> Result<Mesh> {
     check_iterations(iterations)?;
     check_unit("blend", blend)?;
@@ -34,7 +38,5 @@ pub fn laplacian(mesh: &Mesh, iterations: u32, blend: f64, naked: NakedEdges) ->
         }
         std::mem::swap(&mut current, &mut next);
     }
-    let mut out = mesh.clone();
-    out.positions_mut().copy_from_slice(&current);
-    Ok(out)
+    moved(mesh, current, "Laplacian smoothing")
 }

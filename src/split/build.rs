@@ -35,6 +35,7 @@ pub(crate) fn check_size(what: &str, vertices: u64, faces: u64, indices: u64) ->
 
 /// Collects an output mesh whose size was checked beforehand.
 pub(crate) struct Builder {
+    what: String,
     pub(crate) positions: Vec<DVec3>,
     sizes: Vec<u32>,
     indices: Vec<u32>,
@@ -45,6 +46,7 @@ impl Builder {
     pub(crate) fn new(what: &str, vertices: u64, faces: u64, indices: u64) -> Result<Builder> {
         check_size(what, vertices, faces, indices)?;
         Ok(Builder {
+            what: what.to_owned(),
             positions: try_vec(vertices as usize, what)?,
             sizes: try_vec(faces as usize, what)?,
             indices: try_vec(indices as usize, what)?,
@@ -62,9 +64,40 @@ impl Builder {
         self.indices.extend_from_slice(corners);
     }
 
-    pub(crate) fn finish(self) -> Mesh {
-        Mesh::from_valid_parts(self.positions, self.sizes, self.indices)
+    /// The mesh, checked as [`Mesh::new`] checks a host's buffers. The
+    /// operations build valid faces by construction; the check is linear and
+    /// cheap next to them, and turns a case they missed (say, a coordinate
+    /// pushed past `f64::MAX` by a huge argument) into an error instead of an
+    /// invalid mesh.
+    ///
+    /// # Errors
+    /// [`Error::DegenerateInput`] naming the operation and what is wrong.
+    pub(crate) fn finish(self) -> Result<Mesh> {
+        Mesh::new(self.positions, self.sizes, self.indices).map_err(|e| {
+            Error::DegenerateInput(format!(
+                "{} cannot make a valid mesh from this input: {e}",
+                self.what
+            ))
+        })
     }
+}
+
+/// The mesh with its vertices moved by an operation that keeps the faces
+/// (smoothing, offset, scaling).
+///
+/// # Errors
+/// [`Error::DegenerateInput`] naming the first vertex moved to a non-finite
+/// position: coordinates or arguments so large that the arithmetic
+/// overflowed `f64`.
+pub(crate) fn moved(mesh: &Mesh, positions: Vec<DVec3>, what: &str) -> Result<Mesh> {
+    if let Some(v) = positions.iter().position(|p| !p.is_finite()) {
+        let p = positions[v];
+        return Err(Error::DegenerateInput(format!(
+            "{what} moves vertex {v} to ({}, {}, {}); the coordinates or arguments are too large for f64 arithmetic",
+            p.x, p.y, p.z
+        )));
+    }
+    mesh.with_positions(positions).map_err(Error::from)
 }
 
 /// The average of a face's corners.

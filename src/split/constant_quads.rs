@@ -67,5 +67,5 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
             }
         }
     }
-    Ok(out.finish())
+    out.finish()
 }

@@ -54,5 +54,5 @@ fn inner_once(mesh: &Mesh, pull: f64) -> Result<Mesh> {
             out.face(&[outer[k], outer[next], inner[next], inner[k]]);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }

@@ -80,5 +80,5 @@ fn midedge_once(mesh: &Mesh) -> Result<Mesh> {
         }
         out.face(&polygon);
     }
-    Ok(out.finish())
+    out.finish()
 }

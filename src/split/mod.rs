@@ -24,7 +24,7 @@ mod triangles;
 
 pub use build::MAX_LEVELS;
 pub(crate) use build::{
-    check_levels, corner_prev, face_centroid, face_normal, vertex_fans, Builder,
+    check_levels, corner_prev, face_centroid, face_normal, moved, vertex_fans, Builder,
 };
 pub use constant_quads::constant_quads_split;
 pub use inner::inner_polygons;

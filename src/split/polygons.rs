@@ -54,7 +54,7 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
             ]);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 #[cfg(test)]

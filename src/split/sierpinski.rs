@@ -44,5 +44,5 @@ fn sierpinski_once(mesh: &Mesh) -> Result<Mesh> {
             v as u32 + edges[prev[c] as usize],
         ]);
     }
-    Ok(out.finish())
+    out.finish()
 }

@@ -45,5 +45,5 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
         out.face(&[ca, bc, c]);
         out.face(&[ab, bc, ca]);
     }
-    Ok(out.finish())
+    out.finish()
 }

@@ -88,7 +88,7 @@ pub fn bevel_vertices(mesh: &Mesh, fraction: f64) -> Result<Mesh> {
             out.face(&polygon);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 /// Bevels every edge: each face shrinks towards its centroid by `fraction`
@@ -151,5 +151,5 @@ pub fn bevel_edges(mesh: &Mesh, fraction: f64) -> Result<Mesh> {
     for fan in &fans {
         out.face(&fan.corners);
     }
-    Ok(out.finish())
+    out.finish()
 }

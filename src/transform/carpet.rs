@@ -87,5 +87,5 @@ fn carpet_once(mesh: &Mesh) -> Result<Mesh> {
             }
         }
     }
-    Ok(out.finish())
+    out.finish()
 }

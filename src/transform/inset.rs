@@ -111,7 +111,7 @@ fn inset(mesh: &Mesh, distances: &[f64], mode: InsetMode, keep_inner: bool) -> R
             out.face(&inner);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }
 
 fn parallelogram(p: DVec3, next: DVec3, prev: DVec3, normal: DVec3, d: f64) -> DVec3 {

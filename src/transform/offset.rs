@@ -4,7 +4,7 @@ use glam::{DMat3, DVec3};
 
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
-use crate::split::{face_normal, Builder};
+use crate::split::{face_normal, moved, Builder};
 use crate::topology::Topology;
 
 use crate::linalg::symmetric_eigen;
@@ -99,12 +99,12 @@ fn planes_step(normals: impl Iterator<Item = DVec3>, distance: f64) -> DVec3 {
 /// towards the front), as [`OffsetType`] says; the faces are kept.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`] when `distance` is not finite.
+/// [`Error::InvalidArgument`] when `distance` is not finite;
+/// [`Error::DegenerateInput`] naming a vertex whose offset overflows `f64`
+/// (a distance or coordinates near `f64::MAX`).
 pub fn offset(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Mesh> {
     let positions = offset_positions(mesh, distance, kind)?;
-    let mut out = mesh.clone();
-    out.positions_mut().copy_from_slice(&positions);
-    Ok(out)
+    moved(mesh, positions, "offset")
 }
 
 /// Makes a solid of a surface (Weaverbird's Mesh Thicken): the mesh, its
@@ -160,5 +160,5 @@ pub fn thicken(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Mesh> {
             out.face(&[b, a, a2, b2]);
         }
     }
-    Ok(out.finish())
+    out.finish()
 }

@@ -41,5 +41,10 @@ for source in tests/c/test_*.c; do
   compile_and_run "$name" ""
   compile_and_run "$name" "$sanitize"
 done
+# The examples of the README, built as a user would and run.
+for source in examples/*.c; do
+  name=$(basename "$source" .c)
+  run "example $name" sh -c "cc -std=c99 ${warn[*]} -Iinclude '$source' -o '$build/$name' -L'$lib' -lweft && '$build/$name'"
+done
 echo "C tests: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -1,0 +1,70 @@
+/* The size cap through the C ABI: a request whose result would pass
+ * 2^31 - 1 elements fails with WEFT_STATUS_RESULT_TOO_LARGE (or, for an
+ * input count past the cap, WEFT_STATUS_INPUT_TOO_LARGE) and a sentence,
+ * before anything is allocated or a buffer is read; the output stays NULL. */
+#include <stdint.h>
+#include <time.h>
+
+#include "check.h"
+
+/* The call is refused with `expected`, leaves the output NULL, and the
+ * message names the limit. */
+#define CHECK_REFUSED(call, out, expected) \
+  do { (out) = NULL; CHECK_STATUS((call), (expected)); CHECK((out) == NULL); \
+    CHECK_MESSAGE("2147483647"); } while (0)
+
+static void test_primitives(void) {
+  WeftMesh *mesh = NULL;
+  clock_t start = clock();
+  CHECK_REFUSED(weft_box(1, 1, 1, 100000, 100000, 100000, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_MESSAGE("240000000000 face corners");
+  CHECK_REFUSED(weft_box(1, 1, 1, SIZE_MAX, SIZE_MAX, SIZE_MAX, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_box(1, 1, 1, 1, 1, 1000000000, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_uv_sphere(1, SIZE_MAX, SIZE_MAX, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_uv_sphere(1, 3, SIZE_MAX, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_plane_grid(1, 1, SIZE_MAX, 2, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_sided_solid(WEFT_SIDED_PRISM, SIZE_MAX, 1, 1, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  /* Nothing of that size was built: all of it takes well under a second. */
+  CHECK((double)(clock() - start) / CLOCKS_PER_SEC < 1.0);
+  /* What fits is still made. */
+  CHECK_STATUS(weft_box(1, 1, 1, 1, 2, 3, &mesh), WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(mesh) == 22);
+  weft_mesh_free(mesh);
+}
+
+static void test_point_counts(void) {
+  /* Counts past the cap with a buffer of three points: refused before the
+   * buffer is read (under AddressSanitizer a read would be caught). */
+  const double points[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+  const size_t huge = (size_t)1 << 32;
+  WeftMesh *mesh = NULL;
+  WeftCells *cells = NULL;
+  CHECK_REFUSED(weft_delaunay(points, huge, NULL, &mesh, NULL), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_REFUSED(weft_delaunay(points, SIZE_MAX, NULL, &mesh, NULL), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_REFUSED(weft_voronoi(points, huge, NULL, NULL, 0, 0, &cells), cells, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_REFUSED(weft_voronoi(points, 3, NULL, points, huge, 0, &cells), cells, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_REFUSED(weft_mesh_from_grid(points, huge, 1 << 16, 1 << 16, false, false, false, &mesh), mesh,
+                WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_REFUSED(weft_mesh_new(points, huge, NULL, 0, NULL, 0, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+}
+
+static void test_levels(void) {
+  WeftMesh *cube = NULL, *mesh = NULL;
+  CHECK_STATUS(weft_box(2, 2, 2, 1, 1, 1, &cube), WEFT_STATUS_OK);
+  CHECK_REFUSED(weft_split_polygons(cube, 20, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_constant_quads_split(cube, 20, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_sierpinski_carpet(cube, 20, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  CHECK_REFUSED(weft_catmull_clark(cube, 16, WEFT_NAKED_EDGES_FIXED, &mesh), mesh, WEFT_STATUS_RESULT_TOO_LARGE);
+  /* More levels than any result could hold is an argument error. */
+  mesh = NULL;
+  CHECK_STATUS(weft_split_polygons(cube, 1000, &mesh), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK(mesh == NULL);
+  weft_mesh_free(cube);
+}
+
+int main(void) {
+  test_primitives();
+  test_point_counts();
+  test_levels();
+  return check_summary("test_limits");
+}
