@@ -145,6 +145,74 @@
 #define WEFT_SMOOTH_DIRECTION_TANGENTIAL 2
 
 /**
+ * Tile fill: the chosen faces stay as they are.
+ */
+#define WEFT_TILE_FILL_SKIP 0
+
+/**
+ * Tile fill: the most robust triangulation (a quad along its shorter
+ * diagonal, larger polygons ear-clipped, right for concave faces).
+ */
+#define WEFT_TILE_FILL_BEST 1
+
+/**
+ * Tile fill: a centroid and a triangle from it to each edge.
+ */
+#define WEFT_TILE_FILL_TRIANGLE_FAN 2
+
+/**
+ * Tile fill: triangles all sharing the face's first corner.
+ */
+#define WEFT_TILE_FILL_TRIANGLE_HAND 3
+
+/**
+ * Tile fill: the quad stitch with each quad cut the same way.
+ */
+#define WEFT_TILE_FILL_TRIANGLE_KNIT 4
+
+/**
+ * Tile fill: a strip of triangles from the first corner whose diagonals
+ * zigzag.
+ */
+#define WEFT_TILE_FILL_TRIANGLE_ZIGZAG 5
+
+/**
+ * Tile fill: a strip of quads from the first corner, a triangle last when
+ * the corner count is odd.
+ */
+#define WEFT_TILE_FILL_QUAD_STITCH 6
+
+/**
+ * Tile fill: a centroid and a quad from it over every two edges.
+ */
+#define WEFT_TILE_FILL_QUAD_FAN 7
+
+/**
+ * Tile faces: every face is filled.
+ */
+#define WEFT_TILE_FACES_ALL 0
+
+/**
+ * Tile faces: every face but triangles.
+ */
+#define WEFT_TILE_FACES_QUADS_AND_MORE 1
+
+/**
+ * Tile faces: pentagons and larger.
+ */
+#define WEFT_TILE_FACES_PENTAGONS_AND_MORE 2
+
+/**
+ * Tile faces: triangles only (Weaverbird's number 9).
+ */
+#define WEFT_TILE_FACES_TRIANGLES 9
+
+/**
+ * Tile faces: quads only (Weaverbird's number 16).
+ */
+#define WEFT_TILE_FACES_QUADS 16
+
+/**
  * Dual mode: a vertex at each face's centroid.
  */
 #define WEFT_DUAL_VERTEX_AVERAGE 0
@@ -1602,6 +1670,27 @@ WeftStatus weft_reroute_faces(const struct WeftMesh *mesh, int64_t shift, struct
  * NULL or writable.
  */
 WeftStatus weft_mesh_from_lines(const double *segments, size_t segment_count, double tolerance, uint32_t max_valence, struct WeftMesh **out_mesh);
+
+/**
+ * Re-fills the chosen faces of a mesh by a pattern of triangles or quads
+ * (Weaverbird's Tile, with its numbers for both choices). Every pattern
+ * keeps each face's outline and winding and the input's vertices (their
+ * indices too), so seams stay welded and a closed mesh stays closed; the
+ * fans' centroids follow the input's vertices, one per filled face.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fill` is one of the WEFT_TILE_FILL_* values.
+ * `faces` is one of the WEFT_TILE_FACES_* values; the other faces are kept.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown fill or faces
+ * value, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_tile(const struct WeftMesh *mesh, uint32_t fill, uint32_t faces, struct WeftMesh **out_mesh);
 
 #ifdef __cplusplus
 }  // extern "C"

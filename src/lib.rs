@@ -12,7 +12,8 @@
 //! - Making: [`plane`], [`delaunay`], [`voronoi`], [`grid`], [`stellate`], [`primitives`].
 //! - The rest of Weaverbird's toolbar: [`split`] (linear subdivisions),
 //!   [`smooth`], [`transform`] (offset, thicken, window, bevel) and
-//!   [`extract`] (dual, edges, reroute, mesh from lines).
+//!   [`extract`] (dual, edges, reroute, mesh from lines), [`tile`] (faces
+//!   re-filled by fans, strips and stitches).
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
 //! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
 //!   checks; the geometry knows nothing of it.
@@ -55,6 +56,8 @@ pub mod stellate;
 pub mod subdivide;
 /// cbindgen:ignore
 pub mod t_nodes;
+/// cbindgen:ignore
+pub mod tile;
 /// cbindgen:ignore
 pub mod topology;
 /// cbindgen:ignore

@@ -42,6 +42,42 @@ namespace Weft
         Tangential = 2,
     }
 
+    /// <summary>How Tile fills a chosen face (WEFT_TILE_FILL_*; Weaverbird's F numbers).</summary>
+    public enum TileFill : uint
+    {
+        /// <summary>The face stays as it is.</summary>
+        Skip = 0,
+        /// <summary>The most robust triangulation: shorter diagonal, ear clipping (right for concave faces).</summary>
+        Best = 1,
+        /// <summary>A centroid and a triangle from it to each edge.</summary>
+        TriangleFan = 2,
+        /// <summary>Triangles all sharing the first corner.</summary>
+        TriangleHand = 3,
+        /// <summary>The quad stitch with each quad cut the same way.</summary>
+        TriangleKnit = 4,
+        /// <summary>A strip of triangles from the first corner whose diagonals zigzag.</summary>
+        TriangleZigzag = 5,
+        /// <summary>A strip of quads from the first corner; a triangle last when the corner count is odd.</summary>
+        QuadStitch = 6,
+        /// <summary>A centroid and a quad from it over every two edges.</summary>
+        QuadFan = 7,
+    }
+
+    /// <summary>Which faces Tile fills (WEFT_TILE_FACES_*; Weaverbird's O numbers).</summary>
+    public enum TileFaces : uint
+    {
+        /// <summary>Every face.</summary>
+        All = 0,
+        /// <summary>Every face but triangles.</summary>
+        QuadsAndMore = 1,
+        /// <summary>Pentagons and larger.</summary>
+        PentagonsAndMore = 2,
+        /// <summary>Triangles only.</summary>
+        Triangles = 9,
+        /// <summary>Quads only.</summary>
+        Quads = 16,
+    }
+
     /// <summary>How Offset Mesh and Mesh Thicken move a vertex (WEFT_OFFSET_*).</summary>
     public enum OffsetType : uint
     {

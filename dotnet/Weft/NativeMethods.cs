@@ -279,6 +279,9 @@ namespace Weft
             double[] activation, UIntPtr activationCount, out WeftMeshHandle outMesh);
 
         [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_tile(WeftMeshHandle mesh, uint fill, uint faces, out WeftMeshHandle outMesh);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern uint weft_blur_values(
             WeftMeshHandle mesh, double[] values, UIntPtr valueCount, UIntPtr components,
             uint iterations, double blend, uint nakedEdges, [Out] double[] outValues, UIntPtr outLen);

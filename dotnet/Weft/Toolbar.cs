@@ -111,6 +111,18 @@ namespace Weft
         }
 
         /// <summary>
+        /// Re-fills the faces chosen by <paramref name="faces"/> with the pattern of
+        /// <paramref name="fill"/> (Weaverbird's Tile): outlines, windings and the
+        /// input's vertices are kept, so seams stay welded; fan centroids follow the input's vertices.
+        /// </summary>
+        public static WeftMesh Tile(WeftMesh mesh, TileFill fill, TileFaces faces)
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_tile(Arguments.Mesh(mesh, "mesh"), (uint)fill, (uint)faces, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>
         /// Blurs per-vertex values (<paramref name="components"/> per vertex,
         /// vertex after vertex) over the mesh; returns the blurred values in
         /// the same layout.

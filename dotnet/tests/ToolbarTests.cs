@@ -21,6 +21,7 @@ namespace Weft.Tests
             t.Run("LaplacianHC keeps more of the bump than Laplacian", LaplacianHc);
             t.Run("LaplacianHC activation and direction", LaplacianHcInputs);
             t.Run("blur moves a peak to its neighbours", Blur);
+            t.Run("tile a cube by fans and hands", Tile);
             t.Run("smoothing refuses bad modes, betas and value counts", SmoothingErrors);
             t.Run("offset a grid along +z", Offset);
             t.Run("thicken a grid into a closed solid", Thicken);
@@ -177,6 +178,30 @@ namespace Weft.Tests
                              WeftStatus.InvalidArgument, "activation has 8 values but the mesh has 9 vertices");
                 Shapes.Fails(() => Toolbar.LaplacianHcSmooth(grid, 1, 0, 0.6, SmoothNakedEdges.Fixed, (SmoothDirection)3, null),
                              WeftStatus.InvalidArgument, "direction is 3");
+            }
+        }
+
+        private static void Tile()
+        {
+            using (var cube = Shapes.Cube())
+            {
+                using (var fan = Toolbar.Tile(cube, TileFill.TriangleFan, TileFaces.All))
+                {
+                    t.Equal(14, fan.VertexCount, "a centroid per face");
+                    t.Equal(24, fan.FaceCount, "four triangles per quad");
+                    WeftMeshInfo info = fan.Info();
+                    t.True(info.IsClosed, "still closed: the seams stay welded");
+                }
+                using (var stitch = Toolbar.Tile(cube, TileFill.QuadStitch, TileFaces.Quads))
+                {
+                    t.Equal(6, stitch.FaceCount, "a quad's stitch is the quad");
+                }
+                using (var kept = Toolbar.Tile(cube, TileFill.TriangleHand, TileFaces.Triangles))
+                {
+                    t.Equal(6, kept.FaceCount, "no triangle to fill: the quads stay");
+                }
+                Shapes.Fails(() => Toolbar.Tile(cube, (TileFill)8, TileFaces.All), WeftStatus.InvalidArgument, "fill is 8");
+                Shapes.Fails(() => Toolbar.Tile(cube, TileFill.Best, (TileFaces)3), WeftStatus.InvalidArgument, "faces is 3");
             }
         }
 

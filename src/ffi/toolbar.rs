@@ -12,6 +12,7 @@ use crate::ffi::boundary::{
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
 use crate::split;
+use crate::tile::{self, TileFaces, TileFill};
 use crate::topology::Topology;
 use crate::transform::{self, InsetMode, OffsetType};
 
@@ -37,6 +38,37 @@ pub const WEFT_SMOOTH_DIRECTION_ALONG_NORMAL: u32 = 1;
 /// Smoothing direction: each vertex moves only within the plane through its
 /// original position across its original normal (relaxation).
 pub const WEFT_SMOOTH_DIRECTION_TANGENTIAL: u32 = 2;
+
+/// Tile fill: the chosen faces stay as they are.
+pub const WEFT_TILE_FILL_SKIP: u32 = 0;
+/// Tile fill: the most robust triangulation (a quad along its shorter
+/// diagonal, larger polygons ear-clipped, right for concave faces).
+pub const WEFT_TILE_FILL_BEST: u32 = 1;
+/// Tile fill: a centroid and a triangle from it to each edge.
+pub const WEFT_TILE_FILL_TRIANGLE_FAN: u32 = 2;
+/// Tile fill: triangles all sharing the face's first corner.
+pub const WEFT_TILE_FILL_TRIANGLE_HAND: u32 = 3;
+/// Tile fill: the quad stitch with each quad cut the same way.
+pub const WEFT_TILE_FILL_TRIANGLE_KNIT: u32 = 4;
+/// Tile fill: a strip of triangles from the first corner whose diagonals
+/// zigzag.
+pub const WEFT_TILE_FILL_TRIANGLE_ZIGZAG: u32 = 5;
+/// Tile fill: a strip of quads from the first corner, a triangle last when
+/// the corner count is odd.
+pub const WEFT_TILE_FILL_QUAD_STITCH: u32 = 6;
+/// Tile fill: a centroid and a quad from it over every two edges.
+pub const WEFT_TILE_FILL_QUAD_FAN: u32 = 7;
+
+/// Tile faces: every face is filled.
+pub const WEFT_TILE_FACES_ALL: u32 = 0;
+/// Tile faces: every face but triangles.
+pub const WEFT_TILE_FACES_QUADS_AND_MORE: u32 = 1;
+/// Tile faces: pentagons and larger.
+pub const WEFT_TILE_FACES_PENTAGONS_AND_MORE: u32 = 2;
+/// Tile faces: triangles only (Weaverbird's number 9).
+pub const WEFT_TILE_FACES_TRIANGLES: u32 = 9;
+/// Tile faces: quads only (Weaverbird's number 16).
+pub const WEFT_TILE_FACES_QUADS: u32 = 16;
 
 /// Dual mode: a vertex at each face's centroid.
 pub const WEFT_DUAL_VERTEX_AVERAGE: u32 = 0;
@@ -783,5 +815,46 @@ pub unsafe extern "C" fn weft_mesh_from_lines(
         let mesh = extract::mesh_from_lines(&segments, tolerance, max_valence)?;
         WeftMesh::write(out, mesh);
         Ok(())
+    })
+}
+
+/// Re-fills the chosen faces of a mesh by a pattern of triangles or quads
+/// (Weaverbird's Tile, with its numbers for both choices). Every pattern
+/// keeps each face's outline and winding and the input's vertices (their
+/// indices too), so seams stay welded and a closed mesh stays closed; the
+/// fans' centroids follow the input's vertices, one per filled face.
+///
+/// `mesh` is the input; it must not be NULL.
+/// `fill` is one of the WEFT_TILE_FILL_* values.
+/// `faces` is one of the WEFT_TILE_FACES_* values; the other faces are kept.
+/// `out_mesh` receives the new mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown fill or faces
+/// value, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_tile(
+    mesh: *const WeftMesh,
+    fill: u32,
+    faces: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    mesh_op(mesh, out_mesh, |m| {
+        let fill = enum_arg(
+            fill,
+            "fill",
+            TileFill::from_number,
+            "a WEFT_TILE_FILL_* value, 0 to 7",
+        )?;
+        let faces = enum_arg(
+            faces,
+            "faces",
+            TileFaces::from_number,
+            "WEFT_TILE_FACES_ALL (0), _QUADS_AND_MORE (1), _PENTAGONS_AND_MORE (2), _TRIANGLES (9) or _QUADS (16)",
+        )?;
+        Ok(tile::tile(m, fill, faces)?)
     })
 }

@@ -207,10 +207,41 @@ static void test_extract(void) {
   weft_mesh_free(c);
 }
 
+static void test_tile(void) {
+  WeftMesh *c = cube(), *g = grid(), *out = NULL, *untouched = (WeftMesh *)&out;
+  WeftMeshInfo info;
+  uint32_t corners[4];
+  CHECK_STATUS(weft_tile(c, WEFT_TILE_FILL_TRIANGLE_FAN, WEFT_TILE_FACES_ALL, &out), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(out, &info), WEFT_STATUS_OK);
+  CHECK(info.vertex_count == 14 && info.face_count == 24 && info.is_closed && info.is_oriented);
+  /* The first face's centroid comes right after the cube's 8 vertices. */
+  CHECK(weft_mesh_positions(out)[8 * 3 + 0] == 0.5 && weft_mesh_positions(out)[8 * 3 + 2] == 0.0);
+  weft_mesh_free(out);
+  CHECK_STATUS(weft_tile(c, WEFT_TILE_FILL_TRIANGLE_HAND, WEFT_TILE_FACES_QUADS, &out), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(out, &info), WEFT_STATUS_OK);
+  CHECK(info.vertex_count == 8 && info.face_count == 12 && info.is_closed && info.is_oriented);
+  weft_mesh_free(out);
+  /* Only triangles chosen: the quads of the grid stay as they are. */
+  CHECK_STATUS(weft_tile(g, WEFT_TILE_FILL_QUAD_FAN, WEFT_TILE_FACES_TRIANGLES, &out), WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(out) == 4 && weft_mesh_vertex_count(out) == 9);
+  memcpy(corners, weft_mesh_face_indices(out), sizeof corners);
+  CHECK(memcmp(corners, grid_indices, sizeof corners) == 0);
+  weft_mesh_free(out);
+  out = untouched;
+  CHECK_STATUS(weft_tile(c, 8, WEFT_TILE_FACES_ALL, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("fill is 8");
+  CHECK_STATUS(weft_tile(c, WEFT_TILE_FILL_BEST, 3, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("faces is 3");
+  CHECK(out == untouched);
+  weft_mesh_free(c);
+  weft_mesh_free(g);
+}
+
 int main(void) {
   test_subdivisions();
   test_smoothing();
   test_transforms();
   test_extract();
+  test_tile();
   return check_summary("test_toolbar");
 }
