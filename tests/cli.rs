@@ -620,3 +620,317 @@ fn demo_failures_name_the_folder_or_picture() {
     let o = weft(&dir, &["demo", "--image", "heights.jpg"]);
     assert_exit(&o, 2);
 }
+
+/// Runs `weft ARGS` in `dir`, expects success, and reads the mesh it wrote.
+fn run_and_read(dir: &Path, args: &[&str], output: &str) -> weft::Mesh {
+    let o = weft(dir, args);
+    assert_exit(&o, 0);
+    io::read_mesh(dir.join(output)).unwrap()
+}
+
+fn counts(mesh: &weft::Mesh) -> (usize, usize) {
+    (mesh.vertex_count(), mesh.face_count())
+}
+
+#[test]
+fn toolbar_subdivisions_have_their_counts() {
+    let dir = folder("toolbar-split");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    io::write_mesh(dir.join("tetra.obj"), &shapes::tetrahedron()).unwrap();
+    let run = |args: &[&str]| counts(&run_and_read(&dir, args, args[2]));
+    assert_eq!(
+        run(&["split-polygons", "cube.obj", "a.obj", "--levels", "2"]),
+        (98, 96)
+    );
+    assert_eq!(run(&["quad-split", "cube.obj", "b.obj"]), (26, 24));
+    assert_eq!(run(&["midedge", "cube.obj", "c.obj"]), (12, 14));
+    assert_eq!(
+        run(&["inner-polygons", "cube.obj", "d.obj", "--pull", "0.3"]),
+        (32, 30)
+    );
+    assert_eq!(
+        run(&["sierpinski", "tetra.obj", "e.obj", "--levels", "2"]),
+        (34, 36)
+    );
+    assert_eq!(run(&["split-triangles", "tetra.obj", "f.obj"]), (10, 16));
+    // Quads are triangulated first, and the command says so.
+    let o = weft(&dir, &["split-triangles", "cube.obj", "g.obj"]);
+    assert_exit(&o, 0);
+    assert!(
+        stderr(&o).contains("triangulated 6 faces into 12"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(counts(&io::read_mesh(dir.join("g.obj")).unwrap()), (26, 48));
+
+    let o = weft(
+        &dir,
+        &["inner-polygons", "cube.obj", "h.obj", "--pull", "1"],
+    );
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("pull is 1"), "{}", stderr(&o));
+    let o = weft(
+        &dir,
+        &["split-polygons", "cube.obj", "i.obj", "--levels", "21"],
+    );
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("levels is 21"), "{}", stderr(&o));
+    assert!(!dir.join("i.obj").exists());
+    let o = weft(&dir, &["midedge", "cube.obj"]);
+    assert_exit(&o, 2);
+}
+
+#[test]
+fn smooth_moves_a_raised_centre_by_each_method() {
+    let dir = folder("toolbar-smooth");
+    let mut grid = shapes::quad_grid(2, 2);
+    grid.positions_mut()[4].z = 1.0;
+    io::write_mesh(dir.join("bump.obj"), &grid).unwrap();
+    let centre = |file: &str| io::read_mesh(dir.join(file)).unwrap().positions()[4].z;
+    // Laplacian with blend 1 takes the centre to its neighbours' average, 0.
+    run_and_read(
+        &dir,
+        &["smooth", "bump.obj", "l.obj", "--method", "laplacian"],
+        "l.obj",
+    );
+    assert_eq!(centre("l.obj"), 0.0);
+    // HC pushes back: the centre keeps part of its height.
+    run_and_read(
+        &dir,
+        &[
+            "smooth",
+            "bump.obj",
+            "h.obj",
+            "--method",
+            "hc",
+            "--iterations",
+            "1",
+        ],
+        "h.obj",
+    );
+    let z = centre("h.obj");
+    assert!(z > 0.0 && z < 1.0, "{z}");
+    // Tangential smoothing keeps the centre in its plane z = 1.
+    run_and_read(
+        &dir,
+        &[
+            "smooth",
+            "bump.obj",
+            "t.obj",
+            "--method",
+            "hc",
+            "--iterations",
+            "3",
+            "--direction",
+            "tangential",
+        ],
+        "t.obj",
+    );
+    assert!((centre("t.obj") - 1.0).abs() < 1e-12);
+    // Corner-fixed naked edges let the boundary slide but keep the corners.
+    let mut skew = shapes::quad_grid(2, 2);
+    skew.positions_mut()[1].x = 0.6;
+    io::write_mesh(dir.join("skew.obj"), &skew).unwrap();
+    let moved = run_and_read(
+        &dir,
+        &[
+            "smooth",
+            "skew.obj",
+            "s.obj",
+            "--iterations",
+            "2",
+            "--naked-edges",
+            "corner-fixed",
+            "--blend",
+            "0.5",
+        ],
+        "s.obj",
+    );
+    assert!(moved.positions()[1].x > 0.6 && moved.positions()[1].y == 0.0);
+    assert_eq!(moved.positions()[0], skew.positions()[0]);
+
+    let o = weft(
+        &dir,
+        &[
+            "smooth", "bump.obj", "x.obj", "--method", "hc", "--beta", "2",
+        ],
+    );
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("beta is 2"), "{}", stderr(&o));
+    let o = weft(&dir, &["smooth", "bump.obj", "x.obj", "--method", "taubin"]);
+    assert_exit(&o, 2);
+}
+
+#[test]
+fn toolbar_transforms_keep_their_defining_properties() {
+    let dir = folder("toolbar-transform");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    io::write_mesh(dir.join("grid.obj"), &shapes::quad_grid(2, 2)).unwrap();
+    io::write_mesh(dir.join("tetra.obj"), &shapes::tetrahedron()).unwrap();
+    let info = |m: &weft::Mesh| weft::Topology::new(m).info(m);
+
+    let inner = run_and_read(
+        &dir,
+        &[
+            "offset",
+            "cube.obj",
+            "o.obj",
+            "--distance",
+            "-0.25",
+            "--type",
+            "planes-intersection",
+        ],
+        "o.obj",
+    );
+    let (lo, hi) = inner.bounding_box().unwrap();
+    assert!(
+        (lo - weft::DVec3::splat(0.25)).length() < 1e-12
+            && (hi - weft::DVec3::splat(0.75)).length() < 1e-12
+    );
+    let solid = run_and_read(
+        &dir,
+        &["thicken", "grid.obj", "t.obj", "--distance", "0.1"],
+        "t.obj",
+    );
+    assert!(info(&solid).is_closed);
+    assert_eq!(counts(&solid), (18, 4 + 4 + 8));
+    assert_eq!(
+        counts(&run_and_read(
+            &dir,
+            &["window", "cube.obj", "w.obj", "--distance", "0.2"],
+            "w.obj"
+        )),
+        (32, 30)
+    );
+    let frame = run_and_read(
+        &dir,
+        &[
+            "frame",
+            "cube.obj",
+            "f.obj",
+            "--distance",
+            "0.1",
+            "--mode",
+            "parallelogram",
+        ],
+        "f.obj",
+    );
+    assert_eq!(counts(&frame), (32, 24));
+    assert_eq!(info(&frame).naked_edge_count, 24);
+    assert_eq!(
+        counts(&run_and_read(
+            &dir,
+            &["carpet", "grid.obj", "c.obj"],
+            "c.obj"
+        ))
+        .1,
+        4 * 8
+    );
+    assert_eq!(
+        counts(&run_and_read(
+            &dir,
+            &["bevel-edges", "cube.obj", "be.obj"],
+            "be.obj"
+        )),
+        (24, 26)
+    );
+    assert_eq!(
+        counts(&run_and_read(
+            &dir,
+            &["bevel-vertices", "cube.obj", "bv.obj"],
+            "bv.obj"
+        )),
+        (24, 14)
+    );
+    assert_eq!(
+        counts(&run_and_read(&dir, &["dual", "cube.obj", "d.obj"], "d.obj")),
+        (6, 8)
+    );
+    let spikes = run_and_read(
+        &dir,
+        &["stellate", "cube.obj", "s.obj", "--height", "-0.5"],
+        "s.obj",
+    );
+    assert_eq!(counts(&spikes), (14, 24));
+    assert_eq!(spikes.positions()[8], weft::DVec3::new(0.5, 0.5, 0.5));
+    let fans = run_and_read(
+        &dir,
+        &["tile", "cube.obj", "ti.obj", "--fill", "triangle-fan"],
+        "ti.obj",
+    );
+    assert_eq!(counts(&fans), (14, 24));
+    assert!(info(&fans).is_closed && info(&fans).is_oriented);
+    let kept = run_and_read(
+        &dir,
+        &[
+            "tile",
+            "cube.obj",
+            "k.obj",
+            "--fill",
+            "quad-fan",
+            "--faces",
+            "triangles",
+        ],
+        "k.obj",
+    );
+    assert_eq!(counts(&kept), (8, 6));
+
+    let o = weft(&dir, &["carpet", "tetra.obj", "x.obj"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("needs a quad mesh"), "{}", stderr(&o));
+    let o = weft(&dir, &["window", "cube.obj", "x.obj", "--distance", "0.5"]);
+    assert_exit(&o, 1);
+    let o = weft(&dir, &["offset", "cube.obj", "x.obj"]);
+    assert_exit(&o, 2);
+    assert!(stderr(&o).contains("--distance"), "{}", stderr(&o));
+    let o = weft(&dir, &["tile", "cube.obj", "x.obj", "--fill", "hexagon"]);
+    assert_exit(&o, 2);
+}
+
+#[test]
+fn primitive_builds_the_define_panel() {
+    let dir = folder("toolbar-primitive");
+    let run = |args: &[&str]| run_and_read(&dir, args, args[2]);
+    assert_eq!(
+        counts(&run(&[
+            "primitive",
+            "dodecahedron",
+            "d.obj",
+            "--radius",
+            "1"
+        ])),
+        (20, 12)
+    );
+    assert_eq!(
+        counts(&run(&[
+            "primitive",
+            "box",
+            "b.off",
+            "--size",
+            "2",
+            "--divisions",
+            "2"
+        ])),
+        (26, 24)
+    );
+    assert_eq!(
+        counts(&run(&["primitive", "plane", "p.obj", "--divisions", "3"])),
+        (16, 9)
+    );
+    assert_eq!(
+        counts(&run(&["primitive", "antiprism", "a.obj", "--sides", "5"])),
+        (10, 12)
+    );
+    let ball = run(&["primitive", "sphere", "s.obj", "--radius", "2"]);
+    assert!(ball
+        .positions()
+        .iter()
+        .all(|p| (p.length() - 2.0).abs() < 1e-9));
+    assert!(weft::Topology::new(&ball).info(&ball).is_closed);
+
+    let o = weft(&dir, &["primitive", "prism", "x.obj", "--sides", "2"]);
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("sides is 2"), "{}", stderr(&o));
+    let o = weft(&dir, &["primitive", "torus", "x.obj"]);
+    assert_exit(&o, 2);
+}

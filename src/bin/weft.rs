@@ -13,6 +13,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 
 #[path = "weft/demo.rs"]
 mod demo;
+#[path = "weft/toolbar.rs"]
+mod toolbar;
 
 use weft::io::render::{self, RenderOptions};
 use weft::io::{self, Format, IoError, ReadOptions};
@@ -196,6 +198,8 @@ enum Command {
         #[arg(long, conflicts_with = "ascii")]
         big_endian: bool,
     },
+    #[command(flatten)]
+    Toolbar(toolbar::ToolbarCommand),
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -473,6 +477,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             };
             write(output, &mesh, &options)
         }
+        Command::Toolbar(command) => toolbar::run(cli, command),
     }
 }
 

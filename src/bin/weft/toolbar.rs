@@ -1,0 +1,596 @@
+//! The `weft` commands of Weaverbird's toolbar: linear subdivisions,
+//! smoothing, offsets and insets, bevels, dual, stellate, tile, and the
+//! Define panel's primitives. Each reads a mesh file (or, for `primitive`,
+//! builds one), runs one library operation and writes the result.
+
+use std::path::{Path, PathBuf};
+
+use clap::{Subcommand, ValueEnum};
+
+use weft::extract::DualMode;
+use weft::primitives::{Platonic, Sided};
+use weft::smooth::{HcOptions, SmoothDirection};
+use weft::stellate::Heights;
+use weft::tile::{TileFaces, TileFill};
+use weft::transform::{InsetMode, OffsetType};
+use weft::{DVec3, Mesh};
+
+use super::{io, mesh_path, operation_failed, read, with_progress, write, Cli, Failure};
+use super::{NakedEdges, NakedEdgesArg};
+
+/// A mesh file in and a mesh file out, the arguments every command shares.
+#[derive(clap::Args)]
+pub(crate) struct InOut {
+    /// The mesh file to read (.obj, .ply, .stl, .off).
+    #[arg(value_parser = mesh_path)]
+    input: PathBuf,
+    /// The mesh file to write (.obj, .ply, .stl, .off).
+    #[arg(value_parser = mesh_path)]
+    output: PathBuf,
+}
+
+/// How many times a repeated operation runs.
+#[derive(clap::Args)]
+pub(crate) struct Levels {
+    /// How many times to apply it (0 copies the mesh; at most 20).
+    #[arg(long, default_value_t = 1)]
+    levels: u32,
+}
+
+#[derive(Subcommand)]
+pub(crate) enum ToolbarCommand {
+    /// Splits each n-gon into n quads through its edge midpoints and
+    /// centroid, without smoothing (Weaverbird's Split Polygons).
+    #[command(
+        name = "split-polygons",
+        after_help = "Example:\n  weft split-polygons cage.obj split.obj --levels 2"
+    )]
+    SplitPolygons {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// Splits each triangle into four through its edge midpoints, without
+    /// smoothing; other faces are triangulated first (Weaverbird's Split
+    /// Triangles).
+    #[command(
+        name = "split-triangles",
+        after_help = "Example:\n  weft split-triangles shell.obj finer.obj --levels 2"
+    )]
+    SplitTriangles {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// Splits quads into four quads, triangles into four triangles and larger
+    /// polygons into quads around their centroid (Weaverbird's Constant
+    /// Quads Split).
+    #[command(
+        name = "quad-split",
+        after_help = "Example:\n  weft quad-split panels.obj panels-4.obj --levels 1"
+    )]
+    QuadSplit {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// The mid-edge subdivision (Peters and Reif): a face of edge midpoints
+    /// per face and per vertex; boundary vertices stay.
+    #[command(after_help = "Example:\n  weft midedge cube.obj cuboctahedron.obj")]
+    Midedge {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// Gives each face an inner face pulled towards its centroid, joined to
+    /// it by a quad per edge (Weaverbird's Inner Polygons).
+    #[command(
+        name = "inner-polygons",
+        after_help = "Example:\n  weft inner-polygons panels.obj inner.obj --pull 0.3"
+    )]
+    InnerPolygons {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+        /// How far the inner corners move towards the centroid, strictly
+        /// between 0 and 1.
+        #[arg(long, default_value_t = 0.5)]
+        pull: f64,
+    },
+    /// Places a triangle in each corner of each face and leaves the middle
+    /// open: one new hole per face and level (Weaverbird's Sierpinski
+    /// Triangles).
+    #[command(after_help = "Example:\n  weft sierpinski shell.obj lace.obj --levels 2")]
+    Sierpinski {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// Cuts each quad into 3 × 3 quads and removes the middle one; quads
+    /// only (Weaverbird's Sierpinski Carpet).
+    #[command(after_help = "Example:\n  weft carpet facade.obj carpet.obj --levels 2")]
+    Carpet {
+        #[command(flatten)]
+        files: InOut,
+        #[command(flatten)]
+        levels: Levels,
+    },
+    /// Moves vertices towards the average of their neighbours; the faces do
+    /// not change. laplacian shrinks as it smooths; hc (Vollmer, Mann and
+    /// Müller 1999) pushes back to keep the volume.
+    #[command(
+        after_help = "Examples:\n  weft smooth scan.obj smooth.obj --method hc --iterations 10\n  weft smooth panel.obj relaxed.obj --method hc --direction tangential --naked-edges smooth\n  weft smooth panel.obj soft.obj --method laplacian --blend 0.5 --naked-edges corner-fixed"
+    )]
+    Smooth {
+        #[command(flatten)]
+        files: InOut,
+        /// The smoothing rule.
+        #[arg(long, value_enum, default_value = "laplacian")]
+        method: SmoothMethod,
+        /// How many steps (at most 10000).
+        #[arg(long, default_value_t = 1)]
+        iterations: u32,
+        /// Boundary vertices: fixed stay, smooth slide along the boundary,
+        /// corner-fixed slide but keep corners.
+        #[arg(long, value_enum, default_value = "fixed")]
+        naked_edges: NakedEdgesArg,
+        /// laplacian: how far towards the average per step, 0 to 1.
+        #[arg(long, default_value_t = 1.0)]
+        blend: f64,
+        /// hc: how much the push-back aims at the original points, 0 to 1.
+        #[arg(long, default_value_t = 0.0)]
+        alpha: f64,
+        /// hc: the share of a vertex's own displacement undone, 0 to 1.
+        #[arg(long, default_value_t = 0.6)]
+        beta: f64,
+        /// hc: which way vertices may move: freely, only along their normal,
+        /// or only in their tangent plane.
+        #[arg(long, value_enum, default_value = "free")]
+        direction: DirectionArg,
+    },
+    /// Moves every vertex by the distance along the surface normal
+    /// (positive: to the front); the faces are kept (Weaverbird's Offset).
+    #[command(
+        after_help = "Example:\n  weft offset shell.obj outer.obj --distance 0.2 --type planes-intersection"
+    )]
+    Offset {
+        #[command(flatten)]
+        files: InOut,
+        /// The offset, in model units.
+        #[arg(long, allow_negative_numbers = true)]
+        distance: f64,
+        /// How far each vertex moves along its normal.
+        #[arg(long = "type", value_enum, default_value = "diagonal")]
+        offset_type: OffsetArg,
+    },
+    /// A solid from a surface: the input, its offset, and a quad along every
+    /// naked edge joining them (Weaverbird's Mesh Thicken).
+    #[command(
+        after_help = "Example:\n  weft thicken canopy.obj canopy-solid.obj --distance 0.05 --type hypotenuse-average"
+    )]
+    Thicken {
+        #[command(flatten)]
+        files: InOut,
+        /// The thickness, in model units; its sign picks the side.
+        #[arg(long, allow_negative_numbers = true)]
+        distance: f64,
+        /// How far each vertex moves along its normal.
+        #[arg(long = "type", value_enum, default_value = "diagonal")]
+        offset_type: OffsetArg,
+    },
+    /// Insets each face, keeping the frame of quads and the inner face
+    /// (Weaverbird's Mesh Window).
+    #[command(
+        after_help = "Examples:\n  weft window facade.obj windows.obj --distance 0.2\n  weft window facade.obj windows.obj --distance 0.05 --mode parallelogram"
+    )]
+    Window {
+        #[command(flatten)]
+        files: InOut,
+        /// edge-fraction: a share of the edges in [0, 0.5); parallelogram: a
+        /// width in model units.
+        #[arg(long)]
+        distance: f64,
+        /// How the distance is read.
+        #[arg(long, value_enum, default_value = "edge-fraction")]
+        mode: InsetArg,
+    },
+    /// Insets each face and keeps only the frame: each face becomes a ring
+    /// around a hole (Weaverbird's Picture Frame).
+    #[command(
+        after_help = "Example:\n  weft frame facade.obj lattice.obj --distance 0.1 --mode parallelogram"
+    )]
+    Frame {
+        #[command(flatten)]
+        files: InOut,
+        /// edge-fraction: a share of the edges in [0, 0.5); parallelogram: a
+        /// width in model units.
+        #[arg(long)]
+        distance: f64,
+        /// How the distance is read.
+        #[arg(long, value_enum, default_value = "edge-fraction")]
+        mode: InsetArg,
+    },
+    /// Bevels every edge: faces shrink towards their centroids, each inner
+    /// edge becomes a quad and each inner vertex a face (Weaverbird's Bevel
+    /// Edges).
+    #[command(
+        name = "bevel-edges",
+        after_help = "Example:\n  weft bevel-edges cube.obj rhombicuboctahedron.obj --fraction 0.3"
+    )]
+    BevelEdges {
+        #[command(flatten)]
+        files: InOut,
+        /// How far faces shrink, strictly between 0 and 1.
+        #[arg(long, default_value_t = 0.25)]
+        fraction: f64,
+    },
+    /// Cuts every vertex off at a share of each edge, adding a face per
+    /// vertex (Weaverbird's Bevel Vertices).
+    #[command(
+        name = "bevel-vertices",
+        after_help = "Example:\n  weft bevel-vertices cube.obj truncated.obj --fraction 0.2"
+    )]
+    BevelVertices {
+        #[command(flatten)]
+        files: InOut,
+        /// Where each edge is cut, strictly between 0 and 0.5.
+        #[arg(long, default_value_t = 0.25)]
+        fraction: f64,
+    },
+    /// The dual mesh: a vertex per face, a face per inner vertex
+    /// (Weaverbird's Dual).
+    #[command(after_help = "Example:\n  weft dual cube.obj octahedron.obj --keep-size")]
+    Dual {
+        #[command(flatten)]
+        files: InOut,
+        /// Scale the dual to the input's bounding box size.
+        #[arg(long)]
+        keep_size: bool,
+    },
+    /// Raises a pyramid on every face: an apex above its centroid along its
+    /// normal and a fan of triangles (Weaverbird's Stellate/Cumulation).
+    #[command(after_help = "Example:\n  weft stellate cells.obj spikes.obj --height -0.3")]
+    Stellate {
+        #[command(flatten)]
+        files: InOut,
+        /// The apex's distance from the face (negative: behind it).
+        #[arg(long, allow_negative_numbers = true)]
+        height: f64,
+    },
+    /// Re-fills chosen faces by a pattern of triangles or quads, keeping
+    /// outlines and welded seams (Weaverbird's Tile).
+    #[command(
+        after_help = "Examples:\n  weft tile panels.obj fans.obj --fill triangle-fan\n  weft tile mixed.obj quads.obj --fill quad-stitch --faces pentagons-and-more"
+    )]
+    Tile {
+        #[command(flatten)]
+        files: InOut,
+        /// The pattern of each chosen face.
+        #[arg(long, value_enum, default_value = "best")]
+        fill: FillArg,
+        /// Which faces are filled; the others stay.
+        #[arg(long, value_enum, default_value = "all")]
+        faces: FacesArg,
+    },
+    /// Builds one of the Define panel's meshes, centred on the origin:
+    /// plane, box, sphere, the platonic solids, prisms and pyramids.
+    #[command(
+        after_help = "Examples:\n  weft primitive plane plane.obj --size 10 --divisions 4\n  weft primitive box box.obj --size 2 --divisions 3\n  weft primitive sphere ball.obj --radius 5 --divisions 16\n  weft primitive dodecahedron d12.off --radius 1\n  weft primitive antiprism a.obj --sides 8 --radius 2 --height 1"
+    )]
+    Primitive {
+        /// What to build.
+        #[arg(value_enum)]
+        kind: PrimitiveKind,
+        /// The mesh file to write (.obj, .ply, .stl, .off).
+        #[arg(value_parser = mesh_path)]
+        output: PathBuf,
+        /// plane and box: the side length.
+        #[arg(long, default_value_t = 10.0)]
+        size: f64,
+        /// plane and box: quads along each side (default 10 and 1); sphere:
+        /// segments around, half as many from pole to pole (default 16).
+        #[arg(long)]
+        divisions: Option<usize>,
+        /// sphere, platonic solids, prisms and pyramids: the circumradius.
+        #[arg(long, default_value_t = 5.0)]
+        radius: f64,
+        /// prisms and pyramids: the corners of the base polygon.
+        #[arg(long, default_value_t = 6)]
+        sides: usize,
+        /// prisms and pyramids: the height.
+        #[arg(long, default_value_t = 10.0)]
+        height: f64,
+    },
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum SmoothMethod {
+    Laplacian,
+    Hc,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum DirectionArg {
+    Free,
+    AlongNormal,
+    Tangential,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum OffsetArg {
+    Diagonal,
+    HypotenuseAverage,
+    PlanesIntersection,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum InsetArg {
+    EdgeFraction,
+    Parallelogram,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum FillArg {
+    Skip,
+    Best,
+    TriangleFan,
+    TriangleHand,
+    TriangleKnit,
+    TriangleZigzag,
+    QuadStitch,
+    QuadFan,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum FacesArg {
+    All,
+    QuadsAndMore,
+    PentagonsAndMore,
+    Triangles,
+    Quads,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub(crate) enum PrimitiveKind {
+    Plane,
+    Box,
+    Sphere,
+    Tetrahedron,
+    Cube,
+    Octahedron,
+    Dodecahedron,
+    Icosahedron,
+    Prism,
+    Antiprism,
+    Pyramid,
+    Dipyramid,
+}
+
+fn naked(arg: NakedEdgesArg) -> NakedEdges {
+    match arg {
+        NakedEdgesArg::Fixed => NakedEdges::Fixed,
+        NakedEdgesArg::Smooth => NakedEdges::Smooth,
+        NakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
+    }
+}
+
+fn offset_type(arg: OffsetArg) -> OffsetType {
+    match arg {
+        OffsetArg::Diagonal => OffsetType::Diagonal,
+        OffsetArg::HypotenuseAverage => OffsetType::HypotenuseAverage,
+        OffsetArg::PlanesIntersection => OffsetType::PlanesIntersection,
+    }
+}
+
+fn inset_mode(arg: InsetArg) -> InsetMode {
+    match arg {
+        InsetArg::EdgeFraction => InsetMode::EdgeFraction,
+        InsetArg::Parallelogram => InsetMode::Parallelogram,
+    }
+}
+
+/// Reads `files.input`, applies `op` (named `what` in messages) and writes
+/// `files.output`.
+fn apply(
+    cli: &Cli,
+    files: &InOut,
+    what: &str,
+    op: impl FnOnce(&Mesh) -> weft::Result<Mesh>,
+) -> Result<(), Failure> {
+    let mesh = read(cli, &files.input)?;
+    let result =
+        with_progress(what, || op(&mesh)).map_err(|e| operation_failed(&files.input, what, e))?;
+    write(&files.output, &result, &io::WriteOptions::default())
+}
+
+/// Triangulates a mesh that has other faces, saying so, for the commands
+/// that need triangles.
+fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Option<Mesh>> {
+    let Some((face, size)) = mesh.first_non_triangle() else {
+        return Ok(None);
+    };
+    let triangulated = weft::triangulate::triangulate(mesh)?.mesh;
+    eprintln!(
+        "{}: splitting triangles needs triangles (face {face} has {size} corners): triangulated {} faces into {}",
+        input.display(),
+        mesh.face_count(),
+        triangulated.face_count()
+    );
+    Ok(Some(triangulated))
+}
+
+pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
+    use weft::{extract, split, transform};
+    match command {
+        ToolbarCommand::SplitPolygons { files, levels } => {
+            apply(cli, files, "split polygons", |m| {
+                split::split_polygons(m, levels.levels)
+            })
+        }
+        ToolbarCommand::SplitTriangles { files, levels } => {
+            apply(cli, files, "split triangles", |m| {
+                match triangles(&files.input, m)? {
+                    Some(t) => split::split_triangles(&t, levels.levels),
+                    None => split::split_triangles(m, levels.levels),
+                }
+            })
+        }
+        ToolbarCommand::QuadSplit { files, levels } => apply(cli, files, "quad split", |m| {
+            split::constant_quads_split(m, levels.levels)
+        }),
+        ToolbarCommand::Midedge { files, levels } => {
+            apply(cli, files, "midedge", |m| split::midedge(m, levels.levels))
+        }
+        ToolbarCommand::InnerPolygons {
+            files,
+            levels,
+            pull,
+        } => apply(cli, files, "inner polygons", |m| {
+            split::inner_polygons(m, levels.levels, *pull)
+        }),
+        ToolbarCommand::Sierpinski { files, levels } => apply(cli, files, "sierpinski", |m| {
+            split::sierpinski_triangles(m, levels.levels)
+        }),
+        ToolbarCommand::Carpet { files, levels } => apply(cli, files, "carpet", |m| {
+            transform::sierpinski_carpet(m, levels.levels)
+        }),
+        ToolbarCommand::Smooth {
+            files,
+            method,
+            iterations,
+            naked_edges,
+            blend,
+            alpha,
+            beta,
+            direction,
+        } => apply(cli, files, "smooth", |m| match method {
+            SmoothMethod::Laplacian => {
+                weft::smooth::laplacian(m, *iterations, *blend, naked(*naked_edges))
+            }
+            SmoothMethod::Hc => {
+                let options = HcOptions {
+                    alpha: *alpha,
+                    beta: *beta,
+                    naked: naked(*naked_edges),
+                    direction: match direction {
+                        DirectionArg::Free => SmoothDirection::Free,
+                        DirectionArg::AlongNormal => SmoothDirection::AlongNormal,
+                        DirectionArg::Tangential => SmoothDirection::Tangential,
+                    },
+                    activation: None,
+                };
+                weft::smooth::laplacian_hc_with(m, *iterations, &options)
+            }
+        }),
+        ToolbarCommand::Offset {
+            files,
+            distance,
+            offset_type: kind,
+        } => apply(cli, files, "offset", |m| {
+            transform::offset(m, *distance, offset_type(*kind))
+        }),
+        ToolbarCommand::Thicken {
+            files,
+            distance,
+            offset_type: kind,
+        } => apply(cli, files, "thicken", |m| {
+            transform::thicken(m, *distance, offset_type(*kind))
+        }),
+        ToolbarCommand::Window {
+            files,
+            distance,
+            mode,
+        } => apply(cli, files, "window", |m| {
+            transform::window(m, &[*distance], inset_mode(*mode))
+        }),
+        ToolbarCommand::Frame {
+            files,
+            distance,
+            mode,
+        } => apply(cli, files, "frame", |m| {
+            transform::picture_frame(m, &[*distance], inset_mode(*mode))
+        }),
+        ToolbarCommand::BevelEdges { files, fraction } => apply(cli, files, "bevel edges", |m| {
+            transform::bevel_edges(m, *fraction)
+        }),
+        ToolbarCommand::BevelVertices { files, fraction } => {
+            apply(cli, files, "bevel vertices", |m| {
+                transform::bevel_vertices(m, *fraction)
+            })
+        }
+        ToolbarCommand::Dual { files, keep_size } => apply(cli, files, "dual", |m| {
+            let mode = if *keep_size {
+                DualMode::KeepSize
+            } else {
+                DualMode::VertexAverage
+            };
+            extract::dual(m, mode)
+        }),
+        ToolbarCommand::Stellate { files, height } => apply(cli, files, "stellate", |m| {
+            weft::stellate::stellate(m, Heights::One(*height))
+        }),
+        ToolbarCommand::Tile { files, fill, faces } => apply(cli, files, "tile", |m| {
+            let fill = match fill {
+                FillArg::Skip => TileFill::Skip,
+                FillArg::Best => TileFill::Best,
+                FillArg::TriangleFan => TileFill::TriangleFan,
+                FillArg::TriangleHand => TileFill::TriangleHand,
+                FillArg::TriangleKnit => TileFill::TriangleKnit,
+                FillArg::TriangleZigzag => TileFill::TriangleZigzag,
+                FillArg::QuadStitch => TileFill::QuadStitch,
+                FillArg::QuadFan => TileFill::QuadFan,
+            };
+            let faces = match faces {
+                FacesArg::All => TileFaces::All,
+                FacesArg::QuadsAndMore => TileFaces::QuadsAndMore,
+                FacesArg::PentagonsAndMore => TileFaces::PentagonsAndMore,
+                FacesArg::Triangles => TileFaces::Triangles,
+                FacesArg::Quads => TileFaces::Quads,
+            };
+            weft::tile::tile(m, fill, faces)
+        }),
+        ToolbarCommand::Primitive {
+            kind,
+            output,
+            size,
+            divisions,
+            radius,
+            sides,
+            height,
+        } => {
+            use weft::primitives as p;
+            let size = *size;
+            let built = match kind {
+                PrimitiveKind::Plane => {
+                    let n = divisions.unwrap_or(10);
+                    p::plane_grid(size, size, n, n)
+                }
+                PrimitiveKind::Box => {
+                    let n = divisions.unwrap_or(1);
+                    p::box_grid(DVec3::splat(size), n, n, n)
+                }
+                PrimitiveKind::Sphere => {
+                    let n = divisions.unwrap_or(16);
+                    p::uv_sphere(*radius, n, n / 2)
+                }
+                PrimitiveKind::Tetrahedron => p::platonic(Platonic::Tetrahedron, *radius),
+                PrimitiveKind::Cube => p::platonic(Platonic::Hexahedron, *radius),
+                PrimitiveKind::Octahedron => p::platonic(Platonic::Octahedron, *radius),
+                PrimitiveKind::Dodecahedron => p::platonic(Platonic::Dodecahedron, *radius),
+                PrimitiveKind::Icosahedron => p::platonic(Platonic::Icosahedron, *radius),
+                PrimitiveKind::Prism => p::sided(Sided::Prism, *sides, *radius, *height),
+                PrimitiveKind::Antiprism => p::sided(Sided::Antiprism, *sides, *radius, *height),
+                PrimitiveKind::Pyramid => p::sided(Sided::Pyramid, *sides, *radius, *height),
+                PrimitiveKind::Dipyramid => p::sided(Sided::Dipyramid, *sides, *radius, *height),
+            }
+            .map_err(|e| Failure::Failed(format!("cannot build the primitive: {e}")))?;
+            write(output, &built, &io::WriteOptions::default())
+        }
+    }
+}
