@@ -356,6 +356,14 @@ impl Cell {
     pub(crate) fn offset(self, d: [i64; 3]) -> Cell {
         Cell([self.0[0] + d[0], self.0[1] + d[1], self.0[2] + d[2]])
     }
+
+    /// How many face-to-face steps lead from this cell to `other` (the
+    /// Manhattan distance, saturating).
+    pub(crate) fn steps_to(self, other: Cell) -> u64 {
+        (0..3).fold(0u64, |total, i| {
+            total.saturating_add(self.0[i].abs_diff(other.0[i]))
+        })
+    }
 }
 
 impl Hash for Cell {
@@ -407,8 +415,10 @@ impl CellGrid {
         let reach = points.fold(0.0f64, |m, p| m.max(p.abs().max_element()));
         // 2^-40 of the coordinates' reach keeps cell numbers below 2^41, and a
         // cell that wide is still below the round-off of the coordinates.
+        // Never below the smallest normal number: a cell width of 0 (the
+        // floor of subnormal coordinates) would put points in no cell at all.
         let floor = if reach > 0.0 {
-            reach * 2f64.powi(-40)
+            (reach * 2f64.powi(-40)).max(f64::MIN_POSITIVE)
         } else {
             1.0
         };
