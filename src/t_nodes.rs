@@ -19,7 +19,7 @@ use glam::DVec3;
 use crate::error::{try_vec, Result};
 use crate::mesh::Mesh;
 use crate::topology::Topology;
-use crate::weld::{check_tolerance, Cell, CellGrid, CellMap};
+use crate::weld::{check_tolerance, within, Cell, CellGrid, CellMap};
 
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -236,14 +236,6 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
             .then(x.1.vertex.cmp(&y.1.vertex))
     });
     Ok(found)
-}
-
-/// Whether `p` and `q` are at most `tolerance` apart, without squaring the
-/// coordinates' differences (which underflows near 1e-300).
-fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
-    let d = p - q;
-    let unit = d.abs().max_element();
-    unit == 0.0 || unit * (d / unit).length() <= tolerance
 }
 
 /// The cells the segment from `a` to `b` passes through, in order

@@ -167,3 +167,26 @@ fn t_nodes_at_tiny_coordinates_stay_linear() {
     assert_eq!(nodes.len(), 1);
     assert_eq!((nodes[0].vertex, nodes[0].edge), (3, [0, 1]));
 }
+
+/// Weld compared squared distances: near 1e-300 they underflow to 0 and
+/// near 1e300 they overflow to infinity, so two vertices 1.5 tolerances
+/// apart were welded at both ends of the range.
+#[test]
+fn weld_keeps_its_meaning_at_extreme_scales() {
+    for scale in [1e-300, 1.0, 1e300] {
+        let strip = mesh(
+            &[
+                [0.0, 0.0, 0.0],
+                [1.5 * scale, 0.0, 0.0],
+                [0.0, 1.5 * scale, 0.0],
+                [1.5 * scale, 1.5 * scale, 0.0],
+            ],
+            &[&[0, 1, 2], &[2, 1, 3]],
+        );
+        let (welded, _) = weft::weld::weld(&strip, scale).unwrap();
+        assert_eq!(welded, strip, "at scale {scale:e}");
+        // 1.6 tolerances: the 1.5 edges weld, every face collapses.
+        let (welded, _) = weft::weld::weld(&strip, 1.6 * scale).unwrap();
+        assert_eq!(welded.face_count(), 0, "at scale {scale:e}");
+    }
+}
