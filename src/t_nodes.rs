@@ -19,7 +19,7 @@ use glam::DVec3;
 use crate::error::{try_vec, Result};
 use crate::mesh::Mesh;
 use crate::topology::Topology;
-use crate::weld::{check_tolerance, Cell, CellGrid, CellMap};
+use crate::weld::{check_tolerance, within, Cell, CellGrid, CellMap};
 
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -43,6 +43,11 @@ pub struct TNode {
 ///
 /// Only boundary vertices are candidates: a vertex inside its own surface
 /// that touches another piece's boundary cannot be stitched into it.
+///
+/// Distances are measured without squaring coordinates, so the search works
+/// the same for coordinates near 1e-300 or 1e300, and the grid of cells the
+/// edges are filed in coarsens until they cross a number of cells linear in
+/// their count: time and memory stay linear whatever the scale.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when `tolerance`
@@ -129,7 +134,22 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
         })
         .sum::<f64>()
         / naked.len() as f64;
-    let grid = CellGrid::new(positions.iter().copied(), mean_length.max(tolerance));
+    // The mean can underflow to 0 (coordinates near 1e-300 square to 0) or
+    // come out far too small; coarsen until the edges pass through a number
+    // of cells linear in their count, so the cell lists stay small.
+    let cell_limit = 8 * naked.len() as u64 + 64;
+    let mut size = mean_length.max(tolerance);
+    let grid = loop {
+        let grid = CellGrid::new(positions.iter().copied(), size);
+        let cell_count = (0..naked.len()).fold(0u64, |total, k| {
+            let (a, b) = segment(k);
+            total.saturating_add(1 + grid.cell(a).steps_to(grid.cell(b)))
+        });
+        if cell_count <= cell_limit || !grid.size.is_finite() {
+            break grid;
+        }
+        size = grid.size * 2.0;
+    };
 
     let mut entries: Vec<(Cell, u32)> = Vec::new();
     let mut cells = Vec::new();
@@ -155,7 +175,6 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
         on_boundary[a as usize] = true;
         on_boundary[b as usize] = true;
     }
-    let squared = tolerance * tolerance;
     let corner_faces = topology.corner_faces();
     let mut found = Vec::new();
     let mut candidates: Vec<u32> = Vec::new();
@@ -185,17 +204,20 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
                 continue;
             }
             let (a, b) = (positions[va as usize], positions[vb as usize]);
-            let d = b - a;
-            let length_squared = d.length_squared();
-            if length_squared == 0.0 {
+            // Measured in units of the edge's largest coordinate difference,
+            // so squares neither underflow (coordinates near 1e-300) nor
+            // overflow (near 1e300).
+            let unit = (b - a).abs().max_element();
+            if unit == 0.0 || !unit.is_finite() {
                 continue;
             }
-            let t = (p - a).dot(d) / length_squared;
+            let d = (b - a) / unit;
+            let t = ((p - a) / unit).dot(d) / d.length_squared();
             if !(t > 0.0 && t < 1.0) {
                 continue;
             }
-            let near_end = p.distance_squared(a) <= squared || p.distance_squared(b) <= squared;
-            if !near_end && p.distance_squared(a + d * t) <= squared {
+            let near_end = within(p, a, tolerance) || within(p, b, tolerance);
+            if !near_end && within(p, a.lerp(b, t), tolerance) {
                 found.push((
                     c as u32,
                     TNode {
@@ -241,7 +263,7 @@ fn cells_on_segment(grid: &CellGrid, a: DVec3, b: DVec3, cells: &mut Vec<Cell>) 
         }
     }
     // The number of steps is fixed by the end cell, so round-off cannot loop.
-    let steps: i64 = (0..3).map(|i| (end.0[i] - start.0[i]).abs()).sum();
+    let steps = start.steps_to(end);
     for _ in 0..steps {
         let axis = if t_max[0] <= t_max[1] && t_max[0] <= t_max[2] {
             0

@@ -96,6 +96,8 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 /// A cell whose vertices all lie within the tolerance of each other merges
 /// without comparing them. The cost is linear in the vertex count unless
 /// many distinct vertices crowd into cells without all being that close.
+/// Distances are compared without squaring the coordinates' differences, so
+/// welding means the same near 1e-300 and near 1e300.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`] when `tolerance` is negative, NaN or infinite;
@@ -210,6 +212,18 @@ pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
     }
 }
 
+/// Whether `p` and `q` are at most `tolerance` apart. The difference is
+/// scaled by its largest coordinate before it is squared, so the test holds
+/// for coordinates near 1e-300 (whose squares underflow to 0, which would
+/// weld distinct vertices at tolerance 0) and near 1e300 (whose squares
+/// overflow).
+#[inline]
+pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
+    let d = p - q;
+    let unit = d.abs().max_element();
+    unit == 0.0 || unit * (d / unit).length() <= tolerance
+}
+
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
@@ -270,7 +284,6 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         cell_lookup.insert(key, k as u32);
     }
     let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
-    let squared = tolerance * tolerance;
     // A cell whose sites all lie within the tolerance of each other (its
     // box's diagonal is short enough) is one cluster without comparing its
     // pairs, and two such cells need only one close pair to become one.
@@ -284,7 +297,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
                 let p = positions[v as usize];
                 (lo.min(p), hi.max(p))
             });
-            lo.distance_squared(hi) <= squared
+            within(lo, hi, tolerance)
         })
         .collect();
     for (k, &key) in cell_keys.iter().enumerate() {
@@ -297,7 +310,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
             for (i, &a) in here.iter().enumerate() {
                 let pa = positions[a as usize];
                 for &b in &here[i + 1..] {
-                    if pa.distance_squared(positions[b as usize]) <= squared {
+                    if within(pa, positions[b as usize], tolerance) {
                         clusters.union(a, b);
                     }
                 }
@@ -316,7 +329,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
             'pairs: for &a in here {
                 let pa = positions[a as usize];
                 for &b in there {
-                    if pa.distance_squared(positions[b as usize]) <= squared {
+                    if within(pa, positions[b as usize], tolerance) {
                         clusters.union(a, b);
                         if both_tight {
                             break 'pairs;
@@ -355,6 +368,14 @@ impl Cell {
     #[inline]
     pub(crate) fn offset(self, d: [i64; 3]) -> Cell {
         Cell([self.0[0] + d[0], self.0[1] + d[1], self.0[2] + d[2]])
+    }
+
+    /// How many face-to-face steps lead from this cell to `other` (the
+    /// Manhattan distance, saturating).
+    pub(crate) fn steps_to(self, other: Cell) -> u64 {
+        (0..3).fold(0u64, |total, i| {
+            total.saturating_add(self.0[i].abs_diff(other.0[i]))
+        })
     }
 }
 
@@ -407,8 +428,10 @@ impl CellGrid {
         let reach = points.fold(0.0f64, |m, p| m.max(p.abs().max_element()));
         // 2^-40 of the coordinates' reach keeps cell numbers below 2^41, and a
         // cell that wide is still below the round-off of the coordinates.
+        // Never below the smallest normal number: a cell width of 0 (the
+        // floor of subnormal coordinates) would put points in no cell at all.
         let floor = if reach > 0.0 {
-            reach * 2f64.powi(-40)
+            (reach * 2f64.powi(-40)).max(f64::MIN_POSITIVE)
         } else {
             1.0
         };

@@ -130,3 +130,63 @@ fn overflowing_coordinates_are_refused_not_returned() {
     assert_valid(&laplacian(&small, 1, 1.0, NakedEdges::Smooth).unwrap());
     assert_valid(&offset(&small, 1.0, OffsetType::Diagonal).unwrap());
 }
+
+/// `weft_repair_t_nodes` with tolerance 0 on two triangles whose
+/// coordinates are near 1e-300: the mean naked-edge length, the cell size
+/// of the edge grid, squared to 0, the cells fell to 2^-40 of the
+/// coordinates, and listing the cells each edge crosses ran out of memory.
+/// The grid now coarsens until the edges cross a linear number of cells.
+#[test]
+fn t_nodes_at_tiny_coordinates_stay_linear() {
+    let tiny = |p: [f64; 3]| p.map(|c| c * 1e-300);
+    let m = mesh(
+        &[
+            tiny([-10.96484375, -15.9990234375, -14.6123046875]),
+            tiny([-15.458984375, -10.623046875, -15.333984375]),
+            tiny([5.416015625, 5.416015625, 5.25]),
+            tiny([-15.998046875, -15.767578125, -13.4794921875]),
+        ],
+        &[&[1, 2, 3], &[1, 0, 2]],
+    );
+    let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&m, 0.0).unwrap();
+    assert_eq!(inserted, 0);
+    assert_eq!(repaired, m);
+    // A vertex in the middle of a naked edge is still found at that scale.
+    let seam = mesh(
+        &[
+            tiny([0.0, 0.0, 0.0]),
+            tiny([2.0, 0.0, 0.0]),
+            tiny([1.0, 1.0, 0.0]),
+            tiny([1.0, 0.0, 0.0]),
+            tiny([0.0, -1.0, 0.0]),
+            tiny([2.0, -1.0, 0.0]),
+        ],
+        &[&[0, 1, 2], &[4, 5, 1, 3, 0]],
+    );
+    let nodes = weft::t_nodes::find_t_nodes(&seam, 1e-310).unwrap();
+    assert_eq!(nodes.len(), 1);
+    assert_eq!((nodes[0].vertex, nodes[0].edge), (3, [0, 1]));
+}
+
+/// Weld compared squared distances: near 1e-300 they underflow to 0 and
+/// near 1e300 they overflow to infinity, so two vertices 1.5 tolerances
+/// apart were welded at both ends of the range.
+#[test]
+fn weld_keeps_its_meaning_at_extreme_scales() {
+    for scale in [1e-300, 1.0, 1e300] {
+        let strip = mesh(
+            &[
+                [0.0, 0.0, 0.0],
+                [1.5 * scale, 0.0, 0.0],
+                [0.0, 1.5 * scale, 0.0],
+                [1.5 * scale, 1.5 * scale, 0.0],
+            ],
+            &[&[0, 1, 2], &[2, 1, 3]],
+        );
+        let (welded, _) = weft::weld::weld(&strip, scale).unwrap();
+        assert_eq!(welded, strip, "at scale {scale:e}");
+        // 1.6 tolerances: the 1.5 edges weld, every face collapses.
+        let (welded, _) = weft::weld::weld(&strip, 1.6 * scale).unwrap();
+        assert_eq!(welded.face_count(), 0, "at scale {scale:e}");
+    }
+}

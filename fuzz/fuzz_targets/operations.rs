@@ -1,7 +1,10 @@
 //! Every operation of the C ABI on arbitrary valid meshes and arbitrary
 //! arguments — out-of-range enumeration values, NaN, infinities and huge
 //! numbers included — as a host would call it. Each call must return a
-//! status; a success must hand back a mesh that reads back consistently.
+//! status; a success must hand back a valid mesh (the checking constructor
+//! accepts its buffers: distinct in-range corners, finite coordinates).
+//! Primitives get counts that are either small or past the size cap, so a
+//! refusal must come before any allocation.
 #![no_main]
 
 use std::ptr::{null, null_mut};
@@ -42,15 +45,36 @@ impl Bytes<'_> {
         }
     }
 
+    /// A count: small, or so large that any result would pass the size cap.
+    fn count(&mut self) -> usize {
+        match self.byte() % 8 {
+            0 => usize::MAX,
+            1 => 1 << 31,
+            2 => 1_000_000_000,
+            3 => usize::MAX / 3,
+            _ => self.small(7) as usize,
+        }
+    }
+
     fn finite(&mut self) -> f64 {
         (self.byte() as f64 - 128.0) / 8.0 + self.byte() as f64 / 1024.0
     }
 }
 
 /// A valid mesh made from the bytes: up to 12 vertices and 10 faces of 3 to 6 corners.
-fn build_mesh(bytes: &mut Bytes) -> *mut WeftMesh {
+/// The input's last byte picks the scale of the coordinates: mostly around
+/// 1, sometimes near `f64::MAX`, near the smallest normal numbers, or far
+/// from the origin.
+fn build_mesh(bytes: &mut Bytes, scale_byte: u8) -> *mut WeftMesh {
+    let (scale, shift) = match scale_byte % 16 {
+        0 => (1e306, 0.0),
+        1 => (1e153, 0.0),
+        2 => (1e-300, 0.0),
+        3 => (1.0, 1e9),
+        _ => (1.0, 0.0),
+    };
     let vertex_count = 3 + bytes.small(10) as usize;
-    let positions: Vec<f64> = (0..vertex_count * 3).map(|_| bytes.finite()).collect();
+    let positions: Vec<f64> = (0..vertex_count * 3).map(|_| bytes.finite() * scale + shift).collect();
     let mut sizes = Vec::new();
     let mut indices = Vec::new();
     for _ in 0..1 + bytes.small(10) {
@@ -91,28 +115,169 @@ fn settle(status: WeftStatus, out: *mut WeftMesh) {
         unsafe {
             assert_eq!(weft_mesh_info(out, &mut info), WeftStatus::Ok);
             assert_eq!(info.vertex_count, weft_mesh_vertex_count(out));
+            assert_eq!(info.face_count, weft_mesh_face_count(out));
             let mut positions = vec![0.0; info.vertex_count * 3];
             assert_eq!(
                 weft_mesh_copy_positions(out, positions.as_mut_ptr(), positions.len()),
                 WeftStatus::Ok
             );
+            let mut sizes = vec![0u32; weft_mesh_face_count(out)];
+            let mut indices = vec![0u32; weft_mesh_index_count(out)];
+            assert_eq!(
+                weft_mesh_copy_faces(out, sizes.as_mut_ptr(), sizes.len(), indices.as_mut_ptr(), indices.len()),
+                WeftStatus::Ok
+            );
+            let mut copy = null_mut();
+            let status = weft_mesh_new(
+                positions.as_ptr(),
+                info.vertex_count,
+                sizes.as_ptr(),
+                sizes.len(),
+                indices.as_ptr(),
+                indices.len(),
+                &mut copy,
+            );
+            assert_eq!(status, WeftStatus::Ok, "an operation returned an invalid mesh: {}", message());
+            weft_mesh_free(copy);
             weft_mesh_free(out);
         }
     } else {
         assert!(out.is_null(), "an output was written on failure");
-        assert_ne!(status, WeftStatus::InternalPanic, "a panic was caught: {}", unsafe {
-            std::ffi::CStr::from_ptr(weft_last_error_message()).to_string_lossy()
-        });
+        assert_ne!(status, WeftStatus::InternalPanic, "a panic was caught: {}", message());
     }
+}
+
+fn message() -> String {
+    unsafe { std::ffi::CStr::from_ptr(weft_last_error_message()).to_string_lossy().into_owned() }
+}
+
+/// Checks a status of an export that fills caller buffers.
+fn settle_status(status: WeftStatus) {
+    assert_ne!(status, WeftStatus::InternalPanic, "a panic was caught: {}", message());
+}
+
+/// The exports that are not a mesh-to-mesh operation: primitives with
+/// hostile counts, join, queries that fill caller buffers, Voronoi with a
+/// boundary. Returns the status and the mesh made, if any.
+unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (WeftStatus, *mut WeftMesh) {
+    let mut out = null_mut();
+    let count = weft_mesh_vertex_count(mesh);
+    let points = std::slice::from_raw_parts(weft_mesh_positions(mesh), count * 3).to_vec();
+    let status = match op {
+        0 => weft_plane_grid(bytes.number(), bytes.number(), bytes.count(), bytes.count(), &mut out),
+        1 => weft_box(bytes.number(), 1.0, bytes.number(), bytes.count(), bytes.count(), bytes.count(), &mut out),
+        2 => weft_uv_sphere(bytes.number(), bytes.count(), bytes.count(), &mut out),
+        3 => weft_platonic(bytes.small(8), bytes.number(), &mut out),
+        4 => weft_sided_solid(bytes.small(6), bytes.count(), bytes.number(), bytes.number(), &mut out),
+        5 => {
+            let parts = [mesh as *const WeftMesh, mesh, null()];
+            weft_join(parts.as_ptr(), 1 + bytes.small(3) as usize, &mut out)
+        }
+        6 => {
+            let mut nodes = vec![WeftTNode::default(); bytes.small(8) as usize];
+            let mut found = 0;
+            weft_find_t_nodes(mesh, bytes.number(), nodes.as_mut_ptr(), nodes.len(), &mut found)
+        }
+        7 => {
+            let mut normals = vec![0.0; 3 * weft_mesh_vertex_count(mesh).max(weft_mesh_face_count(mesh))];
+            let len = normals.len() - bytes.small(2) as usize;
+            settle_status(weft_face_normals(mesh, normals.as_mut_ptr(), len));
+            settle_status(weft_planarity(mesh, normals.as_mut_ptr(), len));
+            weft_vertex_normals(mesh, normals.as_mut_ptr(), len)
+        }
+        8 => {
+            let index_count = weft_mesh_index_count(mesh);
+            let mut points = vec![0.0; 3 * index_count];
+            let mut counts = vec![0usize; index_count];
+            let mut closed = vec![false; index_count];
+            let (mut total, mut lines) = (0, 0);
+            weft_naked_boundaries(
+                mesh,
+                points.as_mut_ptr(),
+                points.len() - bytes.small(2) as usize,
+                counts.as_mut_ptr(),
+                closed.as_mut_ptr(),
+                counts.len(),
+                &mut total,
+                &mut lines,
+            )
+        }
+        9 => {
+            let components = bytes.small(4) as usize;
+            let values: Vec<f64> = (0..count * components.max(1)).map(|_| bytes.number()).collect();
+            let mut blurred = vec![0.0; values.len()];
+            weft_blur_values(
+                mesh,
+                values.as_ptr(),
+                values.len(),
+                components,
+                bytes.small(20),
+                bytes.number(),
+                bytes.small(5),
+                blurred.as_mut_ptr(),
+                blurred.len(),
+            )
+        }
+        10 => {
+            let mut edges = 0;
+            settle_status(weft_mesh_edge_count(mesh, &mut edges));
+            let mut pairs = vec![0u32; 2 * edges];
+            settle_status(weft_mesh_copy_edges(mesh, pairs.as_mut_ptr(), pairs.len()));
+            let mut segments = vec![0.0; 6 * edges];
+            weft_mesh_copy_edge_segments(mesh, segments.as_mut_ptr(), segments.len())
+        }
+        11 => {
+            let (scheme, levels) = (bytes.small(3), bytes.small(40));
+            let mut faces = 0;
+            let status = weft_subdivision_face_count(mesh, scheme, levels, &mut faces);
+            settle_status(status);
+            if status == WeftStatus::Ok && faces < 1 << 16 {
+                let mut parents = vec![0u32; faces];
+                weft_subdivision_parent_faces(mesh, scheme, levels, parents.as_mut_ptr(), parents.len())
+            } else {
+                status
+            }
+        }
+        _ => {
+            // Voronoi with a boundary polygon of hostile numbers.
+            let boundary: Vec<f64> = (0..3 * bytes.small(7)).map(|_| bytes.number()).collect();
+            let plane = WeftPlane { origin: [0.0; 3], x_axis: [1.0, 0.0, 0.0], y_axis: [0.0, 1.0, 0.0] };
+            let mut cells = null_mut();
+            let status =
+                weft_voronoi(points.as_ptr(), count, &plane, boundary.as_ptr(), boundary.len() / 3, bytes.number(), &mut cells);
+            if status == WeftStatus::Ok {
+                let status = weft_cells_to_mesh(cells, &mut out);
+                weft_cells_free(cells);
+                status
+            } else {
+                assert!(cells.is_null());
+                status
+            }
+        }
+    };
+    (status, out)
 }
 
 fuzz_target!(|data: &[u8]| {
     let mut bytes = Bytes(data);
-    let mesh = build_mesh(&mut bytes);
+    let mesh = build_mesh(&mut bytes, data.last().copied().unwrap_or(0));
     let (levels, mode) = (bytes.small(3), bytes.small(5));
     let mut out = null_mut();
     unsafe {
-        let status = match bytes.small(30) {
+        // Operation bytes below 240 keep the meaning they had in the corpus.
+        let op = bytes.byte();
+        if op >= 240 {
+            let (status, out) = other_operation(op - 240, mesh, &mut bytes);
+            // The queries make no mesh.
+            if out.is_null() {
+                settle_status(status);
+            } else {
+                settle(status, out);
+            }
+            weft_mesh_free(mesh);
+            return;
+        }
+        let status = match op % 30 {
             0 => weft_catmull_clark(mesh, levels, mode, &mut out),
             1 => weft_loop(mesh, levels, mode, &mut out),
             2 => weft_triangulate(mesh, &mut out),
