@@ -46,6 +46,12 @@ static void test_point_counts(void) {
   CHECK_REFUSED(weft_mesh_from_grid(points, huge, 1 << 16, 1 << 16, false, false, false, &mesh), mesh,
                 WEFT_STATUS_INPUT_TOO_LARGE);
   CHECK_REFUSED(weft_mesh_new(points, huge, NULL, 0, NULL, 0, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  /* A grid whose u × v overflows is refused as not matching the points given. */
+  mesh = NULL;
+  CHECK_STATUS(weft_mesh_from_grid(points, 3, SIZE_MAX, SIZE_MAX, false, false, false, &mesh),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK(mesh == NULL);
+  CHECK_MESSAGE("more than memory can hold");
 }
 
 static void test_levels(void) {
