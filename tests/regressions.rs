@@ -221,3 +221,24 @@ fn catmull_clark_near_f64_max_stays_finite() {
         Err(e) => assert!(matches!(e, weft::Error::DegenerateInput(_)), "{e}"),
     }
 }
+
+/// The readers' fuzz target: a text STL with a coordinate of 1.9e89 read
+/// fine, but binary STL stores `f32`, so writing it produced an infinite
+/// coordinate and the file could not be read back. Binary STL now refuses
+/// such a mesh, naming the vertex; text STL keeps every digit.
+#[test]
+fn binary_stl_refuses_coordinates_beyond_f32() {
+    use weft::io::{parse_mesh, stl, Format};
+    let m = mesh(
+        &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.9e89, 0.0]],
+        &[&[0, 1, 2]],
+    );
+    let mut binary = Vec::new();
+    let error = stl::write(&mut binary, &m, false).unwrap_err();
+    assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput);
+    assert!(error.to_string().contains("vertex 2"), "{error}");
+    let mut text = Vec::new();
+    stl::write(&mut text, &m, true).unwrap();
+    let again = parse_mesh(Format::Stl, &text).unwrap();
+    assert_eq!(again.positions()[2].y, 1.9e89);
+}
