@@ -1103,7 +1103,9 @@ WeftStatus weft_refiner_evaluate(const struct WeftRefiner *refiner, const double
  * `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
  * it with `weft_mesh_free`); it must not be NULL.
  *
- * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
+ * with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when coordinates near
+ * the largest double overflow the rules.
  *
  * # Safety
  * `refiner` is NULL or live; `out_mesh` is NULL or writable.
@@ -1154,7 +1156,8 @@ void weft_refiner_free(struct WeftRefiner *refiner);
  * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
  * unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
  * pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
- * WEFT_STATUS_OUT_OF_MEMORY.
+ * WEFT_STATUS_OUT_OF_MEMORY; with WEFT_STATUS_DEGENERATE_INPUT naming the
+ * vertex when coordinates near the largest double overflow the rules.
  *
  * # Safety
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.

@@ -190,3 +190,55 @@ fn weld_keeps_its_meaning_at_extreme_scales() {
         assert_eq!(welded.face_count(), 0, "at scale {scale:e}");
     }
 }
+
+/// Found by fuzzing, in `src/subdivide/` (being reworked on other branches,
+/// so not fixed here): two levels of Catmull-Clark on three faces whose
+/// coordinates are near 1.6e307 return a vertex at -inf. The rules sum
+/// several positions before dividing (face points: Σ corners / n; the
+/// vertex rule: (Q + 2R + (n − 3)S) / n), and the sum passes `f64::MAX`
+/// although the average would not. Fix: average relative to one of the
+/// points (S + ((Q − S) + 2(R − S)) / n), or check the result's finiteness
+/// and return `DegenerateInput` naming the vertex. Meanwhile the C ABI
+/// refuses such a result (see `weft_catmull_clark`).
+#[test]
+#[ignore = "overflow in src/subdivide, reported to its owners"]
+fn catmull_clark_near_f64_max_stays_finite() {
+    use weft::subdivide::{catmull_clark, NakedEdges};
+    let m = mesh(
+        &[
+            [-15.5, -15.873046875, -15.62109375],
+            [-15.369140625, -15.1171875, -14.4892578125],
+            [-14.865234375, -14.298828125, -14.109375],
+            [-13.857421875, -13.4482421875, -15.5],
+            [-11.7490234375, -15.6171875, -15.494140625],
+            [15.263671875, -15.1162109375, -14.7470703125],
+        ]
+        .map(|p| p.map(|c| c * 1e306)),
+        &[&[2, 5, 4, 3], &[2, 3, 4], &[2, 1, 0, 3, 4, 5]],
+    );
+    match catmull_clark(&m, 2, NakedEdges::Fixed) {
+        Ok(smooth) => assert_valid(&smooth),
+        Err(e) => assert!(matches!(e, weft::Error::DegenerateInput(_)), "{e}"),
+    }
+}
+
+/// The readers' fuzz target: a text STL with a coordinate of 1.9e89 read
+/// fine, but binary STL stores `f32`, so writing it produced an infinite
+/// coordinate and the file could not be read back. Binary STL now refuses
+/// such a mesh, naming the vertex; text STL keeps every digit.
+#[test]
+fn binary_stl_refuses_coordinates_beyond_f32() {
+    use weft::io::{parse_mesh, stl, Format};
+    let m = mesh(
+        &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.9e89, 0.0]],
+        &[&[0, 1, 2]],
+    );
+    let mut binary = Vec::new();
+    let error = stl::write(&mut binary, &m, false).unwrap_err();
+    assert_eq!(error.kind(), std::io::ErrorKind::InvalidInput);
+    assert!(error.to_string().contains("vertex 2"), "{error}");
+    let mut text = Vec::new();
+    stl::write(&mut text, &m, true).unwrap();
+    let again = parse_mesh(Format::Stl, &text).unwrap();
+    assert_eq!(again.positions()[2].y, 1.9e89);
+}

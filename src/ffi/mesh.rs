@@ -38,6 +38,27 @@ impl WeftMesh {
     }
 }
 
+/// Passes on a result whose coordinates are all finite, or fails with
+/// WEFT_STATUS_DEGENERATE_INPUT naming the first vertex that is not: the
+/// arithmetic of `what` overflowed `f64` on coordinates near `f64::MAX`.
+/// A last check at the boundary for operations that do not check their own
+/// output, so a host never receives an invalid mesh.
+pub(crate) fn finite_result(mesh: Mesh, what: &str) -> Result<Mesh, Failure> {
+    match mesh.positions().iter().position(|p| !p.is_finite()) {
+        None => Ok(mesh),
+        Some(v) => {
+            let p = mesh.positions()[v];
+            Err(Failure::new(
+                WeftStatus::DegenerateInput,
+                format!(
+                    "degenerate input: {what} moves vertex {v} to ({}, {}, {}); the coordinates are too large for f64 arithmetic",
+                    p.x, p.y, p.z
+                ),
+            ))
+        }
+    }
+}
+
 /// Borrows the mesh behind a handle that may be NULL.
 ///
 /// # Safety

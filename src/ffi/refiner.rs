@@ -6,7 +6,7 @@ use glam::DVec3;
 use crate::ffi::boundary::{
     check_room, guard, input_slice, out_param, output_slice, required, Failure, WeftStatus,
 };
-use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
 use crate::subdivide::Refiner;
 
@@ -111,7 +111,9 @@ pub unsafe extern "C" fn weft_refiner_evaluate(
 /// `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
 /// it with `weft_mesh_free`); it must not be NULL.
 ///
-/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
+/// with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when coordinates near
+/// the largest double overflow the rules.
 ///
 /// # Safety
 /// `refiner` is NULL or live; `out_mesh` is NULL or writable.
@@ -123,7 +125,7 @@ pub unsafe extern "C" fn weft_refiner_mesh(
     guard(|| {
         let out = out_param(out_mesh, "out_mesh")?;
         let refiner = &required(refiner, "refiner")?.refiner;
-        WeftMesh::write(out, refiner.mesh()?);
+        WeftMesh::write(out, finite_result(refiner.mesh()?, "subdivision")?);
         Ok(())
     })
 }

@@ -4,7 +4,7 @@
 use crate::ffi::boundary::{
     check_room, enum_arg, guard, out_param, output_slice, Failure, WeftStatus,
 };
-use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::subdivide::{self, NakedEdges, Scheme};
 use crate::triangulate::triangulate;
 
@@ -55,7 +55,8 @@ pub(crate) fn scheme_arg(value: u32) -> Result<Scheme, Failure> {
 /// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
 /// unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
 /// pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
-/// WEFT_STATUS_OUT_OF_MEMORY.
+/// WEFT_STATUS_OUT_OF_MEMORY; with WEFT_STATUS_DEGENERATE_INPUT naming the
+/// vertex when coordinates near the largest double overflow the rules.
 ///
 /// # Safety
 /// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
@@ -105,7 +106,7 @@ unsafe fn run_scheme(
         let mesh = mesh_ref(mesh, "mesh")?;
         let naked_edges = naked_edges_arg(naked_edges)?;
         let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
-        WeftMesh::write(out, result);
+        WeftMesh::write(out, finite_result(result, "subdivision")?);
         Ok(())
     })
 }

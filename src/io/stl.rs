@@ -171,7 +171,9 @@ fn normal([a, b, c]: [DVec3; 3]) -> DVec3 {
 ///
 /// # Errors
 /// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when a
-/// binary file would need more than 2^32 − 1 triangles.
+/// binary file would need more than 2^32 − 1 triangles, or naming the first
+/// vertex with a coordinate beyond the `f32` range (about 3.4e38), which
+/// would be written as infinity; text STL keeps such coordinates.
 pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()> {
     if ascii {
         writeln!(w, "solid weft")?;
@@ -195,6 +197,21 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()>
             "too many triangles for a binary STL file",
         )
     })?;
+    let positions = mesh.positions();
+    if let Some(&v) = mesh
+        .face_indices()
+        .iter()
+        .find(|&&v| positions[v as usize].abs().max_element() > f32::MAX as f64)
+    {
+        let p = positions[v as usize];
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!(
+                "vertex {v} ({}, {}, {}) is beyond the range of the 32-bit floats of a binary STL file; write text STL instead",
+                p.x, p.y, p.z
+            ),
+        ));
+    }
     let mut header = [b' '; HEADER];
     let title = format!("binary STL written by weft {}", crate::VERSION);
     header[..title.len()].copy_from_slice(title.as_bytes());

@@ -46,6 +46,12 @@ static void test_point_counts(void) {
   CHECK_REFUSED(weft_mesh_from_grid(points, huge, 1 << 16, 1 << 16, false, false, false, &mesh), mesh,
                 WEFT_STATUS_INPUT_TOO_LARGE);
   CHECK_REFUSED(weft_mesh_new(points, huge, NULL, 0, NULL, 0, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  /* A grid whose u × v overflows is refused as not matching the points given. */
+  mesh = NULL;
+  CHECK_STATUS(weft_mesh_from_grid(points, 3, SIZE_MAX, SIZE_MAX, false, false, false, &mesh),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK(mesh == NULL);
+  CHECK_MESSAGE("more than memory can hold");
 }
 
 static void test_levels(void) {
@@ -62,9 +68,40 @@ static void test_levels(void) {
   weft_mesh_free(cube);
 }
 
+static void test_huge_coordinates(void) {
+  /* Three faces with coordinates near 1.6e307: Catmull-Clark's sums pass
+   * the largest double. The result is refused, naming the vertex, rather
+   * than handed out with infinite coordinates. */
+  const double corners[] = {-15.5, -15.873046875, -15.62109375, -15.369140625, -15.1171875, -14.4892578125,
+                            -14.865234375, -14.298828125, -14.109375, -13.857421875, -13.4482421875, -15.5,
+                            -11.7490234375, -15.6171875, -15.494140625, 15.263671875, -15.1162109375,
+                            -14.7470703125};
+  const uint32_t sizes[] = {4, 3, 6};
+  const uint32_t indices[] = {2, 5, 4, 3, 2, 3, 4, 2, 1, 0, 3, 4, 5};
+  double positions[18];
+  WeftMesh *cage = NULL, *mesh = NULL;
+  WeftRefiner *refiner = NULL;
+  size_t i;
+  for (i = 0; i < 18; ++i) positions[i] = corners[i] * 1e306;
+  CHECK_STATUS(weft_mesh_new(positions, 6, sizes, 3, indices, 13, &cage), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_catmull_clark(cage, 2, WEFT_NAKED_EDGES_FIXED, &mesh), WEFT_STATUS_DEGENERATE_INPUT);
+  CHECK(mesh == NULL);
+  CHECK_MESSAGE("vertex");
+  CHECK_STATUS(weft_refiner_new(cage, WEFT_SCHEME_CATMULL_CLARK, 2, WEFT_NAKED_EDGES_FIXED, &refiner), WEFT_STATUS_OK);
+  weft_refiner_free(refiner);
+  /* At an ordinary scale the same cage subdivides. */
+  weft_mesh_free(cage);
+  CHECK_STATUS(weft_mesh_new(corners, 6, sizes, 3, indices, 13, &cage), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_catmull_clark(cage, 2, WEFT_NAKED_EDGES_FIXED, &mesh), WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(mesh) == 52);
+  weft_mesh_free(mesh);
+  weft_mesh_free(cage);
+}
+
 int main(void) {
   test_primitives();
   test_point_counts();
   test_levels();
+  test_huge_coordinates();
   return check_summary("test_limits");
 }
