@@ -133,20 +133,31 @@ pub fn subdivide(
     levels: u32,
     naked_edges: NakedEdges,
 ) -> Result<Mesh> {
-    let mut positions = mesh.positions().to_vec();
-    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, |plan, _| {
-        let face_points = match scheme {
-            Scheme::CatmullClark => plan.face_count(),
-            Scheme::Loop => 0,
-        };
-        let count = plan.vertex_count + plan.edge_count() + face_points;
-        let mut next = try_vec(count, "refined positions")?;
-        next.resize(count, DVec3::ZERO);
-        refiner::apply(scheme, &plan, &positions, &mut next);
-        positions = next;
+    // The first level reads the cage's positions in place.
+    let mut positions: Option<Vec<DVec3>> = None;
+    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, false, |plan, _| {
+        let source = positions.as_deref().unwrap_or(mesh.positions());
+        let next = refiner::points(scheme, &plan, source)?;
+        drop(plan);
+        positions = Some(next);
         Ok(())
     })?;
-    let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+    let positions = match positions {
+        Some(positions) => positions,
+        None => mesh.positions().to_vec(),
+    };
+    let sizes = if faces.offsets.is_empty() {
+        // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
+        let size = match scheme {
+            Scheme::CatmullClark => 4,
+            Scheme::Loop => 3,
+        };
+        let mut sizes = try_vec(faces.indices.len() / size, "face sizes")?;
+        sizes.resize(faces.indices.len() / size, size as u32);
+        sizes
+    } else {
+        faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
+    };
     Ok(Mesh::from_valid_parts(positions, sizes, faces.indices))
 }
 

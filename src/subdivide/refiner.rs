@@ -44,7 +44,7 @@ impl Refiner {
         naked_edges: NakedEdges,
     ) -> Result<Refiner> {
         let mut plans = Vec::new();
-        let faces = plan_levels(cage, scheme, levels, naked_edges, |p, _| {
+        let faces = plan_levels(cage, scheme, levels, naked_edges, true, |p, _| {
             plans.push(p);
             Ok(())
         })?;
@@ -186,6 +186,14 @@ fn face_sizes(faces: &Faces) -> Vec<u32> {
     faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
+/// Applies one plan of `scheme` into a new vector, each point written once.
+pub(crate) fn points(scheme: Scheme, plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    match scheme {
+        Scheme::CatmullClark => catmull_clark::points(plan, points),
+        Scheme::Loop => loop_subdivision::points(plan, points),
+    }
+}
+
 /// Applies one plan of `scheme`.
 pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     match scheme {
@@ -195,13 +203,15 @@ pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DV
 }
 
 /// Plans every level in turn, handing each plan with its level index to
-/// `each`, and returns the faces of the last level. Checks the scheme's
-/// preconditions and every level's size before allocating.
+/// `each`, and returns the faces of the last level (without offsets unless
+/// `last_offsets`: every face of a refined level has the same size). Checks
+/// the scheme's preconditions and every level's size before allocating.
 pub(crate) fn plan_levels(
     cage: &Mesh,
     scheme: Scheme,
     levels: u32,
     naked_edges: NakedEdges,
+    last_offsets: bool,
     mut each: impl FnMut(Plan, usize) -> Result<()>,
 ) -> Result<Faces> {
     if scheme == Scheme::Loop {
@@ -228,16 +238,30 @@ pub(crate) fn plan_levels(
     )?;
     let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
     for level in 0..levels as usize {
+        let last = level + 1 == levels as usize;
         let next_faces = match scheme {
-            Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity)?,
-            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity)?,
+            Scheme::CatmullClark => {
+                catmull_clark::child_faces(&faces, &connectivity, !last || last_offsets)?
+            }
+            Scheme::Loop => {
+                loop_subdivision::child_faces(&faces, &connectivity, !last || last_offsets)?
+            }
         };
-        each(plan(scheme, &faces, &connectivity, &tags)?, level)?;
-        if level + 1 < levels as usize {
-            let next_connectivity = Connectivity::new(&next_faces)?;
+        let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
+        if !last {
+            // The next level's edges and adjacency, written from this one's.
+            let next_connectivity = connectivity.refine(scheme, &faces)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
             connectivity = next_connectivity;
+        } else {
+            // Not needed any more: free it before the last, largest pass.
+            connectivity = Connectivity::default();
         }
+        if scheme == Scheme::CatmullClark {
+            plan.face_offsets = faces.offsets;
+            plan.face_indices = faces.indices;
+        }
+        each(plan, level)?;
         faces = next_faces;
     }
     Ok(faces)

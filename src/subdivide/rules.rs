@@ -296,14 +296,11 @@ pub(crate) fn plan(
         }
     }
 
-    let (face_offsets, face_indices) = match scheme {
-        Scheme::CatmullClark => (faces.offsets.clone(), faces.indices.clone()),
-        Scheme::Loop => (Vec::new(), Vec::new()),
-    };
+    // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
     Ok(Plan {
         vertex_count,
-        face_offsets,
-        face_indices,
+        face_offsets: Vec::new(),
+        face_indices: Vec::new(),
         edges,
         vertex_rules: tags.vertex_rules.clone(),
         vertex_ring_offsets: ring_offsets,
