@@ -386,8 +386,8 @@ impl Subdivider {
         let mut kept = Vec::new();
         for _ in 0..levels {
             let next_faces = match scheme {
-                Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity)?,
-                Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity)?,
+                Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity, true)?,
+                Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, true)?,
             };
             let next_connectivity = Connectivity::new(&next_faces)?;
             let mut next_sharpness = child_sharpness(
