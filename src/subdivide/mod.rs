@@ -24,14 +24,20 @@
 //! corners — as OpenSubdiv does. No face is ever dropped.
 
 mod catmull_clark;
+mod creases;
 mod level;
+mod limit;
 mod loop_subdivision;
 mod refiner;
 pub(crate) mod rules;
+mod stencils;
 
 use glam::DVec3;
 
+pub use creases::{creases_from_mesh, Crease, Creasing, SubdivisionOptions, SHARPNESS_INFINITE};
+pub use limit::Limit;
 pub use refiner::Refiner;
+pub use stencils::{subdivide_with, Subdivider};
 
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
