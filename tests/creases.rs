@@ -9,13 +9,14 @@
 //! through the faces: corner k of refined face f is the same vertex in both.
 
 use weft::shapes;
+use weft::subdivide::FaceVaryingLinear;
 use weft::subdivide::{
     subdivide, subdivide_with, Crease, Creasing, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
 };
 use weft::{DVec3, Mesh};
 use weft_reference::{
-    boundary_vertices, opensubdiv_refine, BoundaryInterpolation, CreasingMethod, OsdOptions,
-    OsdRefiner, RefMesh,
+    boundary_vertices, opensubdiv_refine, opensubdiv_refine_face_varying, BoundaryInterpolation,
+    CreasingMethod, FVarLinear, OsdOptions, OsdRefiner, RefMesh,
 };
 
 fn to_ref(mesh: &Mesh) -> RefMesh {
@@ -166,7 +167,6 @@ fn vertex_map(ours: &Mesh, theirs: &RefMesh, what: &str) -> Vec<usize> {
         .collect()
 }
 
-#[allow(dead_code)] // used by the face-varying comparison
 /// For every face of ours, OpenSubdiv's face with the same vertices and
 /// the rotation `r` such that our corner k is its corner (k + r) mod n.
 fn face_map(ours: &Mesh, theirs: &RefMesh, vertices: &[usize]) -> Vec<(usize, usize)> {
@@ -425,4 +425,153 @@ fn limit_positions_and_normals_equal_opensubdiv() {
             }
         }
     }
+}
+
+/// UVs with seams: per-face islands on the cube, a wrapped cylindrical map
+/// on closed shapes (seams where it wraps), two islands on grids.
+fn uv_layout(name: &str, mesh: &Mesh) -> (Vec<f64>, Vec<u32>) {
+    let mut keys: std::collections::HashMap<(u32, u64, u64), u32> = Default::default();
+    let mut values = Vec::new();
+    let mut indices = Vec::new();
+    for (f, face) in mesh.faces().enumerate() {
+        let raw: Vec<[f64; 2]> = face
+            .iter()
+            .map(|&v| {
+                let p = mesh.positions()[v as usize];
+                if name.contains("grid") {
+                    [p.x, p.y]
+                } else if name == "cube" {
+                    [
+                        p.x + 0.5 * p.z + 0.3 * f as f64,
+                        p.y - 0.25 * p.z + 0.1 * f as f64,
+                    ]
+                } else {
+                    let u = p.y.atan2(p.x) / std::f64::consts::TAU + 0.5;
+                    let r = (p.x * p.x + p.y * p.y).sqrt();
+                    let w = p.z.atan2(r - 1.0) / std::f64::consts::TAU + 0.5;
+                    [u, w]
+                }
+            })
+            .collect();
+        let mut uv = raw.clone();
+        for axis in 0..2 {
+            let max = raw.iter().map(|t| t[axis]).fold(f64::MIN, f64::max);
+            for t in uv.iter_mut() {
+                if max - t[axis] > 0.5 {
+                    t[axis] += 1.0;
+                }
+            }
+        }
+        let centroid_x = raw.iter().map(|t| t[0]).sum::<f64>() / raw.len() as f64;
+        for (k, &v) in face.iter().enumerate() {
+            let mut t = uv[k];
+            let island = if name == "cube" {
+                f as u64
+            } else if name.contains("grid") && centroid_x > 1.5 {
+                t[0] += 0.25;
+                1
+            } else {
+                0
+            };
+            let key = (v, t[0].to_bits() ^ island, t[1].to_bits());
+            let index = *keys.entry(key).or_insert_with(|| {
+                values.extend_from_slice(&t);
+                (values.len() / 2 - 1) as u32
+            });
+            indices.push(index);
+        }
+    }
+    (values, indices)
+}
+
+#[test]
+fn face_varying_uvs_equal_opensubdiv() {
+    let modes = [
+        (FaceVaryingLinear::All, FVarLinear::All),
+        (FaceVaryingLinear::Boundaries, FVarLinear::Boundaries),
+        (FaceVaryingLinear::CornersOnly, FVarLinear::CornersOnly),
+        (FaceVaryingLinear::Smooth, FVarLinear::None),
+    ];
+    let mut failures = Vec::new();
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        for (name, cage, closed) in shapes_for(scheme) {
+            let (uvs, uv_indices) = uv_layout(name, &cage);
+            let reference_cage = to_ref(&cage);
+            let (creases, corners) = creased(&cage, &[f64::INFINITY, 1.5, 0.5], &[]);
+            for with_creases in [false, true] {
+                let naked_edges = if closed {
+                    NakedEdges::Smooth
+                } else {
+                    NakedEdges::CornerFixed
+                };
+                let options = SubdivisionOptions {
+                    naked_edges,
+                    creases: if with_creases {
+                        creases.clone()
+                    } else {
+                        Vec::new()
+                    },
+                    corners: if with_creases {
+                        corners.clone()
+                    } else {
+                        Vec::new()
+                    },
+                    creasing: Creasing::Uniform,
+                };
+                for (ours_linear, their_linear) in modes {
+                    let mut osd = osd_options(scheme, &options, &reference_cage);
+                    osd.fvar_linear = their_linear;
+                    for levels in 1..=3 {
+                        let what = format!("{scheme:?} {name} creased {with_creases} {ours_linear:?} level {levels}");
+                        let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                        let ours = subdivider
+                            .face_varying(&uvs, 2, &uv_indices, ours_linear)
+                            .unwrap();
+                        let (values, indices) = opensubdiv_refine_face_varying(
+                            &reference_cage,
+                            &osd,
+                            levels,
+                            &uvs,
+                            &uv_indices,
+                        )
+                        .unwrap();
+                        let theirs_mesh = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                        let refined = subdivider.mesh().unwrap();
+                        let map = vertex_map(&refined, &theirs_mesh, &what);
+                        let faces = face_map(&refined, &theirs_mesh, &map);
+                        let their_offsets: Vec<usize> = std::iter::once(0)
+                            .chain(theirs_mesh.face_sizes.iter().scan(0usize, |s, &n| {
+                                *s += n as usize;
+                                Some(*s)
+                            }))
+                            .collect();
+                        let mut worst = 0.0f64;
+                        for (f, &(g, r)) in faces.iter().enumerate() {
+                            let n = refined.face(f).len();
+                            for k in 0..n {
+                                let ours_corner = refined.face_offsets()[f] as usize + k;
+                                let their_corner = their_offsets[g] + (k + r) % n;
+                                let value = indices[their_corner] as usize;
+                                for axis in 0..2 {
+                                    let d = (ours[2 * ours_corner + axis]
+                                        - values[2 * value + axis])
+                                        .abs();
+                                    worst = worst.max(d);
+                                }
+                            }
+                        }
+                        if worst > 1e-9 {
+                            failures.push(format!("{what}: off by {worst:e}"));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
 }

@@ -25,6 +25,7 @@
 
 mod catmull_clark;
 mod creases;
+mod face_varying;
 mod level;
 mod limit;
 mod loop_subdivision;
@@ -35,6 +36,7 @@ mod stencils;
 use glam::DVec3;
 
 pub use creases::{creases_from_mesh, Crease, Creasing, SubdivisionOptions, SHARPNESS_INFINITE};
+pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;
 pub use stencils::{subdivide_with, Subdivider};
