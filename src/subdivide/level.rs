@@ -178,14 +178,20 @@ impl Connectivity {
 
     /// The connectivity of the level `scheme` makes from `faces`, whose
     /// connectivity is `self`, written from the parent's without sorting. Equal
-    /// to [`Connectivity::new`] of the child faces.
+    /// to [`Connectivity::new`] of the child faces. The vertices' edges, only
+    /// needed to refine once more, are left empty unless `vertex_edges`.
     ///
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
-    pub(crate) fn refine(&self, scheme: Scheme, faces: &Faces) -> Result<Connectivity> {
+    pub(crate) fn refine(
+        &self,
+        scheme: Scheme,
+        faces: &Faces,
+        vertex_edges: bool,
+    ) -> Result<Connectivity> {
         match scheme {
-            Scheme::CatmullClark => self.refine_catmull_clark(faces),
-            Scheme::Loop => self.refine_loop(faces),
+            Scheme::CatmullClark => self.refine_catmull_clark(faces, vertex_edges),
+            Scheme::Loop => self.refine_loop(faces, vertex_edges),
         }
     }
 
@@ -194,7 +200,7 @@ impl Connectivity {
     /// `[v, V + e]` for every vertex v and its edges e in order (the slots of
     /// `vertex_edges`), then `[V + e, V + E + f]` for every edge e and its
     /// corners in order (the slots of `edge_corners`).
-    fn refine_catmull_clark(&self, faces: &Faces) -> Result<Connectivity> {
+    fn refine_catmull_clark(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
         let (v_count, e_count, c_count) =
             (faces.vertex_count, self.edge_count(), faces.corner_count());
         let idx = &faces.indices;
@@ -287,26 +293,32 @@ impl Connectivity {
             vertex_offsets.push(vertex_corners.len() as u32);
         }
 
-        let mut vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-        let mut vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-        vertex_edge_offsets.push(0);
-        for v in 0..v_count {
-            vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-            vertex_edge_offsets.push(vertex_edges.len() as u32);
-        }
-        for (e, &[a, b]) in self.edges.iter().enumerate() {
-            let e32 = e as u32;
-            vertex_edges
-                .extend_from_slice(&[self.vertex_edge_slot(a, e32), self.vertex_edge_slot(b, e32)]);
-            vertex_edges.extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
-            vertex_edge_offsets.push(vertex_edges.len() as u32);
-        }
-        for w in faces.offsets.windows(2) {
-            let start = vertex_edges.len();
-            vertex_edges
-                .extend((w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)));
-            vertex_edges[start..].sort_unstable();
-            vertex_edge_offsets.push(vertex_edges.len() as u32);
+        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+        if with_vertex_edges {
+            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+            vertex_edge_offsets.push(0);
+            for v in 0..v_count {
+                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for (e, &[a, b]) in self.edges.iter().enumerate() {
+                let e32 = e as u32;
+                vertex_edges.extend_from_slice(&[
+                    self.vertex_edge_slot(a, e32),
+                    self.vertex_edge_slot(b, e32),
+                ]);
+                vertex_edges.extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for w in faces.offsets.windows(2) {
+                let start = vertex_edges.len();
+                vertex_edges.extend(
+                    (w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)),
+                );
+                vertex_edges[start..].sort_unstable();
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
         }
 
         Ok(Connectivity {
@@ -328,7 +340,7 @@ impl Connectivity {
     /// Catmull-Clark, then the edges inside the triangles, `[V + m, V + h]`
     /// grouped by the lower parent edge m and sorted by h (two triangles that
     /// share two edges share that child edge).
-    fn refine_loop(&self, faces: &Faces) -> Result<Connectivity> {
+    fn refine_loop(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
         let (v_count, e_count, f_count) =
             (faces.vertex_count, self.edge_count(), faces.face_count());
         let idx = &faces.indices;
@@ -471,38 +483,43 @@ impl Connectivity {
             vertex_offsets.push(vertex_corners.len() as u32);
         }
 
-        let mut vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-        let mut vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-        vertex_edge_offsets.push(0);
-        for v in 0..v_count {
-            vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-            vertex_edge_offsets.push(vertex_edges.len() as u32);
-        }
-        for (e, &[a, b]) in self.edges.iter().enumerate() {
-            let e32 = e as u32;
-            vertex_edges
-                .extend_from_slice(&[self.vertex_edge_slot(a, e32), self.vertex_edge_slot(b, e32)]);
-            let start = vertex_edges.len();
-            for &c in self.edge_corners(e) {
-                let (f, i) = (c as usize / 3, c as usize % 3);
-                let edges = face_edges(f);
-                for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
-                    if x < e32 {
-                        vertex_edges.push(inner(x, e32));
+        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+        if with_vertex_edges {
+            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+            vertex_edge_offsets.push(0);
+            for v in 0..v_count {
+                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for (e, &[a, b]) in self.edges.iter().enumerate() {
+                let e32 = e as u32;
+                vertex_edges.extend_from_slice(&[
+                    self.vertex_edge_slot(a, e32),
+                    self.vertex_edge_slot(b, e32),
+                ]);
+                let start = vertex_edges.len();
+                for &c in self.edge_corners(e) {
+                    let (f, i) = (c as usize / 3, c as usize % 3);
+                    let edges = face_edges(f);
+                    for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
+                        if x < e32 {
+                            vertex_edges.push(inner(x, e32));
+                        }
                     }
                 }
-            }
-            vertex_edges[start..].sort_unstable();
-            let mut kept = start;
-            for k in start..vertex_edges.len() {
-                if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
-                    vertex_edges[kept] = vertex_edges[k];
-                    kept += 1;
+                vertex_edges[start..].sort_unstable();
+                let mut kept = start;
+                for k in start..vertex_edges.len() {
+                    if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
+                        vertex_edges[kept] = vertex_edges[k];
+                        kept += 1;
+                    }
                 }
+                vertex_edges.truncate(kept);
+                vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
             }
-            vertex_edges.truncate(kept);
-            vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
-            vertex_edge_offsets.push(vertex_edges.len() as u32);
         }
 
         Ok(Connectivity {
@@ -762,7 +779,7 @@ mod tests {
                     }
                 }
                 .unwrap();
-                let derived = connectivity.refine(scheme, &faces).unwrap();
+                let derived = connectivity.refine(scheme, &faces, true).unwrap();
                 assert_same(
                     &derived,
                     &Connectivity::new(&child).unwrap(),

@@ -291,7 +291,8 @@ pub(crate) fn plan_levels(
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
         if !last {
             // The next level's edges and adjacency, written from this one's.
-            let next_connectivity = connectivity.refine(scheme, &faces)?;
+            let next_connectivity =
+                connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
             connectivity = next_connectivity;
         } else {
