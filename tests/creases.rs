@@ -575,3 +575,104 @@ fn face_varying_uvs_equal_opensubdiv() {
         failures.join("\n")
     );
 }
+
+#[test]
+fn every_named_shape_with_creases_equals_opensubdiv_and_never_panics() {
+    let all = [
+        ("tetrahedron", shapes::tetrahedron()),
+        ("quad grid with a hole", shapes::quad_grid_with_hole()),
+        ("mixed polygons", shapes::mixed_polygons()),
+        ("fin", shapes::fin()),
+        ("bow-tie", shapes::bow_tie()),
+        ("Möbius strip", shapes::mobius_strip(8)),
+    ];
+    for (name, cage) in all {
+        let schemes: &[Scheme] = if cage.is_triangle_mesh() {
+            &[Scheme::CatmullClark, Scheme::Loop]
+        } else {
+            &[Scheme::CatmullClark]
+        };
+        let (creases, corners) = creased(&cage, &[2.5, f64::INFINITY, 0.5], &[1.5]);
+        for &scheme in schemes {
+            for naked_edges in [
+                NakedEdges::Fixed,
+                NakedEdges::Smooth,
+                NakedEdges::CornerFixed,
+            ] {
+                let options = SubdivisionOptions {
+                    naked_edges,
+                    creases: creases.clone(),
+                    corners: corners.clone(),
+                    creasing: Creasing::Chaikin,
+                };
+                let reference_cage = to_ref(&cage);
+                let osd = osd_options(scheme, &options, &reference_cage);
+                for levels in 1..=2 {
+                    let what = format!("{scheme:?} {name} {naked_edges:?} level {levels}");
+                    let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                    let ours = subdivider.mesh().unwrap();
+                    let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                    let map = vertex_map(&ours, &theirs, &what);
+                    let flat: Vec<f64> =
+                        ours.positions().iter().flat_map(|p| p.to_array()).collect();
+                    assert_rows_close(&flat, &theirs.positions, 3, &map, tolerance(&ours), &what);
+                    // The limit and face-varying values are defined everywhere.
+                    let limit = subdivider.limit().unwrap();
+                    assert!(limit.positions.iter().all(|p| p.is_finite()), "{what}");
+                    assert!(limit.normals.iter().all(|n| n.is_finite()), "{what}");
+                    let uvs: Vec<f64> = cage.positions().iter().flat_map(|p| [p.x, p.y]).collect();
+                    let values = subdivider
+                        .face_varying(&uvs, 2, cage.face_indices(), FaceVaryingLinear::Smooth)
+                        .unwrap();
+                    assert_eq!(values.len(), 2 * ours.index_count(), "{what}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn unwelded_seams_and_folds_become_creases() {
+    // Two unit quads side by side, their shared edge unwelded (vertices 1, 4
+    // and 2, 5 coincide), folded by 90 degrees along it.
+    let positions = vec![
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(1.0, 1.0, 1.0),
+        DVec3::new(1.0, 0.0, 1.0),
+    ];
+    let mesh = Mesh::from_polygons(positions, vec![vec![0, 1, 2, 3], vec![4, 7, 6, 5]]).unwrap();
+    let (welded, creases) = weft::subdivide::creases_from_mesh(&mesh, 180.0).unwrap();
+    assert_eq!(welded.vertex_count(), 6);
+    assert_eq!(creases.len(), 1);
+    let [a, b] = creases[0].0;
+    let ends = [
+        welded.positions()[a as usize],
+        welded.positions()[b as usize],
+    ];
+    assert!(ends.contains(&DVec3::new(1.0, 0.0, 0.0)) && ends.contains(&DVec3::new(1.0, 1.0, 0.0)));
+    assert!(creases[0].1.is_infinite() || creases[0].1 >= 10.0);
+    // A cube: every edge folds by 90 degrees, sharper than 60, none by more than 120.
+    let (_, folds) = weft::subdivide::creases_from_mesh(&shapes::cube(), 60.0).unwrap();
+    assert_eq!(folds.len(), 12);
+    let (_, none) = weft::subdivide::creases_from_mesh(&shapes::cube(), 120.0).unwrap();
+    assert!(none.is_empty());
+    assert!(weft::subdivide::creases_from_mesh(&shapes::cube(), f64::NAN).is_err());
+    // The creases subdivide: the fold stays a straight line.
+    let options = SubdivisionOptions {
+        naked_edges: NakedEdges::Smooth,
+        creases,
+        ..SubdivisionOptions::default()
+    };
+    let out = subdivide_with(&welded, Scheme::CatmullClark, 2, &options).unwrap();
+    let on_fold = out
+        .positions()
+        .iter()
+        .filter(|p| (p.x - 1.0).abs() < 1e-12 && p.z.abs() < 1e-12)
+        .count();
+    assert_eq!(on_fold, 5);
+}

@@ -22,6 +22,15 @@
 //! Edges with three or more faces, or whose two faces run them the same way,
 //! are infinitely sharp creases; bow-tie and other non-manifold vertices are
 //! corners — as OpenSubdiv does. No face is ever dropped.
+//!
+//! # Creases, carried data and the limit
+//! [`Subdivider`] (and [`subdivide_with`], [`Refiner::with_options`]) takes
+//! [`SubdivisionOptions`]: semi-sharp and infinite edge creases and vertex
+//! corners with Uniform or Chaikin creasing, as OpenSubdiv's
+//! `TopologyDescriptor` and `Sdc::Options`; it carries per-vertex data of any
+//! width and face-varying values ([`FaceVaryingLinear`]), and projects the
+//! last level onto the limit surface ([`Limit`]). [`creases_from_mesh`]
+//! turns unwelded seams and sharp folds into creases.
 
 mod catmull_clark;
 mod creases;
