@@ -518,89 +518,83 @@ fn face_varying_uvs_equal_opensubdiv() {
         for (name, cage, closed) in cases {
             let (uvs, uv_indices) = uv_layout(name, &cage);
             let reference_cage = to_ref(&cage);
-            let (creases, corners) = creased(&cage, &[f64::INFINITY, 1.5, 0.5], &[]);
-            for with_creases in [false, true] {
-                // Known gap: where a seam ends (a dart) on a semi-sharp crease,
-                // OpenSubdiv blends the value's rules; only the linear modes
-                // are compared there.
-                let dart_on_crease = with_creases && name.starts_with("dart");
-                let naked_edges = if closed {
-                    NakedEdges::Smooth
+            let naked_modes: &[NakedEdges] = if closed {
+                &[NakedEdges::Smooth]
+            } else {
+                &[NakedEdges::Smooth, NakedEdges::CornerFixed]
+            };
+            let crease_sets = std::iter::once(("uncreased", &[][..], &[][..]))
+                .chain(SHARPNESS_SETS.iter().copied());
+            for (k, (set, sharpness, corner_sharpness)) in crease_sets.enumerate() {
+                let (creases, corners) = if sharpness.is_empty() {
+                    (Vec::new(), Vec::new())
                 } else {
-                    NakedEdges::CornerFixed
+                    creased(&cage, sharpness, corner_sharpness)
                 };
-                let options = SubdivisionOptions {
-                    naked_edges,
-                    creases: if with_creases {
-                        creases.clone()
-                    } else {
-                        Vec::new()
-                    },
-                    corners: if with_creases {
-                        corners.clone()
-                    } else {
-                        Vec::new()
-                    },
-                    creasing: Creasing::Uniform,
-                };
-                for (ours_linear, their_linear) in modes {
-                    if dart_on_crease
-                        && !matches!(
-                            ours_linear,
-                            FaceVaryingLinear::All
-                                | FaceVaryingLinear::Boundaries
-                                | FaceVaryingLinear::CornersPlus2
-                        )
-                    {
-                        continue;
-                    }
-                    let mut osd = osd_options(scheme, &options, &reference_cage);
-                    osd.fvar_linear = their_linear;
-                    for levels in 1..=3 {
-                        let what = format!("{scheme:?} {name} creased {with_creases} {ours_linear:?} level {levels}");
-                        let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
-                        let ours = subdivider
-                            .face_varying(&uvs, 2, &uv_indices, ours_linear)
+                for &naked_edges in naked_modes {
+                    let options = SubdivisionOptions {
+                        naked_edges,
+                        creases: creases.clone(),
+                        corners: corners.clone(),
+                        creasing: if k % 2 == 0 {
+                            Creasing::Uniform
+                        } else {
+                            Creasing::Chaikin
+                        },
+                    };
+                    for (ours_linear, their_linear) in modes {
+                        let mut osd = osd_options(scheme, &options, &reference_cage);
+                        osd.fvar_linear = their_linear;
+                        for levels in 1..=3 {
+                            let what = format!("{scheme:?} {name} {set} {naked_edges:?} {ours_linear:?} level {levels}");
+                            let subdivider =
+                                Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                            let ours = subdivider
+                                .face_varying(&uvs, 2, &uv_indices, ours_linear)
+                                .unwrap();
+                            let (values, indices) = opensubdiv_refine_face_varying(
+                                &reference_cage,
+                                &osd,
+                                levels,
+                                &uvs,
+                                &uv_indices,
+                            )
                             .unwrap();
-                        let (values, indices) = opensubdiv_refine_face_varying(
-                            &reference_cage,
-                            &osd,
-                            levels,
-                            &uvs,
-                            &uv_indices,
-                        )
-                        .unwrap();
-                        let theirs_mesh = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
-                        let refined = subdivider.mesh().unwrap();
-                        let map = vertex_map(&refined, &theirs_mesh, &what);
-                        let faces = face_map(&refined, &theirs_mesh, &map);
-                        let their_offsets: Vec<usize> = std::iter::once(0)
-                            .chain(theirs_mesh.face_sizes.iter().scan(0usize, |s, &n| {
-                                *s += n as usize;
-                                Some(*s)
-                            }))
-                            .collect();
-                        let mut worst = 0.0f64;
-                        for (f, &(g, r)) in faces.iter().enumerate() {
-                            let n = refined.face(f).len();
-                            for k in 0..n {
-                                let ours_corner = refined.face_offsets()[f] as usize + k;
-                                let their_corner = their_offsets[g] + (k + r) % n;
-                                let value = indices[their_corner] as usize;
-                                for axis in 0..2 {
-                                    let d = (ours[2 * ours_corner + axis]
-                                        - values[2 * value + axis])
-                                        .abs();
-                                    worst = worst.max(d);
-                                    if d > 1e-9 && std::env::var("FV_DEBUG").is_ok() && levels == 1
-                                    {
-                                        eprintln!("{what}: face {f} corner {k} vertex {} ours {} theirs {}", refined.face(f)[k], ours[2 * ours_corner + axis], values[2 * value + axis]);
+                            let theirs_mesh =
+                                opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                            let refined = subdivider.mesh().unwrap();
+                            let map = vertex_map(&refined, &theirs_mesh, &what);
+                            let faces = face_map(&refined, &theirs_mesh, &map);
+                            let their_offsets: Vec<usize> = std::iter::once(0)
+                                .chain(theirs_mesh.face_sizes.iter().scan(0usize, |s, &n| {
+                                    *s += n as usize;
+                                    Some(*s)
+                                }))
+                                .collect();
+                            let mut worst = 0.0f64;
+                            for (f, &(g, r)) in faces.iter().enumerate() {
+                                let n = refined.face(f).len();
+                                for k in 0..n {
+                                    let ours_corner = refined.face_offsets()[f] as usize + k;
+                                    let their_corner = their_offsets[g] + (k + r) % n;
+                                    let value = indices[their_corner] as usize;
+                                    for axis in 0..2 {
+                                        let d = (ours[2 * ours_corner + axis]
+                                            - values[2 * value + axis])
+                                            .abs();
+                                        worst = worst.max(d);
+                                        if d > 1e-9
+                                            && std::env::var("FV_DEBUG").is_ok()
+                                            && levels == 1
+                                        {
+                                            eprintln!("{what}: face {f} corner {k} vertex {} ours {} theirs {}", refined.face(f)[k], ours[2 * ours_corner + axis], values[2 * value + axis]);
+                                        }
                                     }
                                 }
                             }
-                        }
-                        if worst > 1e-9 {
-                            failures.push(format!("{what}: off by {worst:e}"));
+                            if worst > 1e-9 {
+                                failures.push(format!("{what}: off by {worst:e}"));
+                            }
                         }
                     }
                 }

@@ -12,7 +12,7 @@
 //! the seam), or stays, as the linear option says; seam and naked edges make
 //! midpoints.
 
-use super::creases::{Rule, SHARPNESS_INFINITE};
+use super::creases::{fractional_weight, Sharpness, SHARPNESS_INFINITE};
 use super::level::{Connectivity, Faces};
 use super::stencils::{edge_weights, vertex_mask, KeptLevel, Subdivider};
 use super::Scheme;
@@ -177,29 +177,36 @@ impl Subdivider {
                 || edges
                     .iter()
                     .any(|&e| connectivity.edge_corners(e as usize).len() == 2 && seam(e as usize));
-            let fan_of = |sibling: u32| -> Vec<usize> {
-                corners
-                    .iter()
-                    .map(|&c| c as usize)
-                    .filter(|&c| indices[c] == sibling)
-                    .collect()
-            };
-            // CornersPlus2 sharpens both values of a two-value seam vertex
-            // when one is a corner, and the end of a seam (a dart).
-            let plus2_sharp = linear == FaceVaryingLinear::CornersPlus2
-                && ((siblings.len() == 2 && siblings.iter().any(|&s| fan_of(s).len() == 1))
-                    || (siblings.len() == 1 && seamed));
-            for &sibling in &siblings {
-                let fan = fan_of(sibling);
+            let plus = matches!(
+                linear,
+                FaceVaryingLinear::CornersPlus1 | FaceVaryingLinear::CornersPlus2
+            );
+            // Values OpenSubdiv makes corners all at once
+            // (`FVarLevel::completeTopologyFromFaceValues`): at an infinitely
+            // sharp vertex, where three or more regions meet (Plus1, Plus2),
+            // at the end of a seam inside the mesh (Plus2).
+            let mut all_sharp = sharpness.vertices[v] >= SHARPNESS_INFINITE as f32
+                || (plus && siblings.len() > 2)
+                || (linear == FaceVaryingLinear::CornersPlus2 && siblings.len() == 1 && !naked);
+            let spans: Vec<Span> = siblings
+                .iter()
+                .map(|&sibling| span_of(faces, connectivity, sharpness, indices, v, sibling))
+                .collect();
+            if plus && spans.len() == 2 {
+                all_sharp |= spans.iter().any(|span| span.infinite_edges > 0);
+                if linear == FaceVaryingLinear::CornersPlus2 {
+                    all_sharp |= spans.iter().any(|span| span.corners.len() == 1);
+                }
+            }
+            for (&sibling, span) in siblings.iter().zip(&spans) {
+                let fan = &span.corners;
                 let corner = (naked || seamed) && fan.len() == 1;
                 let stays = match linear {
                     FaceVaryingLinear::All => true,
                     FaceVaryingLinear::Boundaries => naked || seamed,
                     FaceVaryingLinear::Smooth => false,
-                    FaceVaryingLinear::CornersOnly => corner,
-                    FaceVaryingLinear::CornersPlus1 => corner || siblings.len() > 2,
-                    FaceVaryingLinear::CornersPlus2 => corner || siblings.len() > 2 || plus2_sharp,
-                } || seamed && sharpness.vertices[v] >= SHARPNESS_INFINITE as f32;
+                    _ => corner,
+                } || (seamed && (all_sharp || span.infinite_edges > 0));
                 let index = if stays {
                     emit(&mut out, &[(1.0, sibling)], &[])
                 } else if !seamed {
@@ -229,34 +236,75 @@ impl Subdivider {
                         Vec::new()
                     };
                     emit(&mut out, &terms, &face_sums)
-                } else if siblings.len() == 1 && sharpness.rules[v] == Rule::Corner {
-                    emit(&mut out, &[(1.0, sibling)], &[])
-                } else if siblings.len() == 1 {
-                    // The end of a seam (a dart): a crease along the seam
-                    // edge, towards its far value on either side.
-                    let seams: Vec<u32> = edges
+                } else {
+                    // A crease along the seam, towards the far values of the
+                    // span's two bounding edges (both sides of the one seam
+                    // edge at the end of a seam); a semi-sharp span is a
+                    // corner until its sharpness decays, then blends.
+                    let ends = if siblings.len() == 1 {
+                        let seams: Vec<u32> = edges
+                            .iter()
+                            .copied()
+                            .filter(|&e| {
+                                connectivity.edge_corners(e as usize).len() == 2 && seam(e as usize)
+                            })
+                            .collect();
+                        match seams[..] {
+                            [e] => far_values(faces, connectivity, indices, e, v).to_vec(),
+                            _ => Vec::new(),
+                        }
+                    } else {
+                        fan_ends(faces, connectivity, indices, fan)
+                    };
+                    let parent_vertex = sharpness.vertices[v];
+                    let child_vertex = child.sharpness.vertices[v];
+                    let parent_edges: Vec<f32> = span
+                        .interior_edges
                         .iter()
-                        .copied()
-                        .filter(|&e| {
-                            connectivity.edge_corners(e as usize).len() == 2 && seam(e as usize)
+                        .map(|&e| sharpness.edges[e as usize])
+                        .collect();
+                    let child_edges: Vec<f32> = span
+                        .interior_edges
+                        .iter()
+                        .map(|&e| {
+                            sharpness.child_edge_sharpness(
+                                self.options.creasing,
+                                connectivity,
+                                e as usize,
+                                v,
+                            )
                         })
                         .collect();
-                    match seams[..] {
-                        [e] => {
-                            let [x, y] = far_values(faces, connectivity, indices, e, v);
-                            emit(&mut out, &[(0.75, sibling), (0.125, x), (0.125, y)], &[])
+                    let semi_sharp = parent_vertex > 0.0 || parent_edges.iter().any(|&s| s > 0.0);
+                    let still_sharp = child_vertex > 0.0 || child_edges.iter().any(|&s| s > 0.0);
+                    match ends[..] {
+                        [a, b] if !(semi_sharp && still_sharp) => {
+                            let corner_weight = if semi_sharp {
+                                f64::from(fractional_weight(
+                                    parent_vertex,
+                                    child_vertex,
+                                    parent_edges.iter().copied(),
+                                    &child_edges,
+                                ))
+                            } else {
+                                0.0
+                            };
+                            let crease_weight = 1.0 - corner_weight;
+                            let end = crease_weight * 0.125;
+                            emit(
+                                &mut out,
+                                &[
+                                    (end, a),
+                                    (end, b),
+                                    (crease_weight * 0.75 + corner_weight, sibling),
+                                ],
+                                &[],
+                            )
                         }
                         _ => emit(&mut out, &[(1.0, sibling)], &[]),
                     }
-                } else {
-                    // Along the seam: the far values of the fan's two boundary edges.
-                    let ends = fan_ends(faces, connectivity, indices, &fan);
-                    match ends[..] {
-                        [a, b] => emit(&mut out, &[(0.75, sibling), (0.125, a), (0.125, b)], &[]),
-                        _ => emit(&mut out, &[(1.0, sibling)], &[]),
-                    }
                 };
-                for &c in &fan {
+                for &c in fan {
                     vertex_child[c] = index;
                 }
             }
@@ -428,4 +476,72 @@ fn fan_ends(
         }
     }
     ends
+}
+
+/// The faces around a vertex that share one of its values, and the edges
+/// between two of them (`FVarLevel::gatherValueSpans`).
+struct Span {
+    /// The corners at the vertex with this value.
+    corners: Vec<usize>,
+    /// Edges at the vertex whose two faces both use this value there.
+    interior_edges: Vec<u32>,
+    /// How many of those are infinitely sharp.
+    infinite_edges: usize,
+}
+
+fn span_of(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    sharpness: &Sharpness,
+    indices: &[u32],
+    v: usize,
+    sibling: u32,
+) -> Span {
+    let corners: Vec<usize> = connectivity
+        .vertex_corners(v)
+        .iter()
+        .map(|&c| c as usize)
+        .filter(|&c| indices[c] == sibling)
+        .collect();
+    let at_vertex = |c: usize| {
+        let f = connectivity.corner_faces[c] as usize;
+        if faces.indices[c] as usize == v {
+            c
+        } else {
+            faces.next(c, f)
+        }
+    };
+    let interior_edges: Vec<u32> = sharpness
+        .edges_at(v)
+        .iter()
+        .copied()
+        .filter(|&e| match *connectivity.edge_corners(e as usize) {
+            [c1, c2] => {
+                let (a, b) = (at_vertex(c1 as usize), at_vertex(c2 as usize));
+                let (na, nb) = (
+                    faces.next(c1 as usize, connectivity.corner_faces[c1 as usize] as usize),
+                    faces.next(c2 as usize, connectivity.corner_faces[c2 as usize] as usize),
+                );
+                // Both faces use the value here, and agree at the far end
+                // too (a seam inside the span, at a dart, bounds it instead).
+                let far_a = if a == c1 as usize { na } else { c1 as usize };
+                let far_b = if b == c2 as usize { nb } else { c2 as usize };
+                faces.indices[a] as usize == v
+                    && faces.indices[b] as usize == v
+                    && indices[a] == sibling
+                    && indices[b] == sibling
+                    && indices[far_a] == indices[far_b]
+            }
+            _ => false,
+        })
+        .collect();
+    let infinite_edges = interior_edges
+        .iter()
+        .filter(|&&e| sharpness.edges[e as usize] >= SHARPNESS_INFINITE as f32)
+        .count();
+    Span {
+        corners,
+        interior_edges,
+        infinite_edges,
+    }
 }
