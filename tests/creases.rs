@@ -390,7 +390,7 @@ fn limit_positions_and_normals_equal_opensubdiv() {
                         creasing: Creasing::Chaikin,
                     };
                     let osd = osd_options(scheme, &options, &reference_cage);
-                    for levels in 1..=3 {
+                    for levels in 0..=3 {
                         let what = format!(
                             "{scheme:?} {name} {set} {naked_edges:?} limit at level {levels}"
                         );

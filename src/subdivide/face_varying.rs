@@ -1,16 +1,19 @@
 //! Face-varying data (UVs): values per face corner, where corners of one
 //! vertex may use different values (a seam), refined as OpenSubdiv's
 //! `PrimvarRefiner::InterpolateFaceVarying` does with its
-//! `Sdc::Options::FVarLinearInterpolation`.
+//! `Sdc::Options::FVarLinearInterpolation` (`Vtr::FVarLevel` tags).
 //!
-//! Each level, every distinct value at a vertex (a *sibling*: the fan of
-//! faces around the vertex that share it) makes one child value; an edge
-//! makes one child value, or one per face where it is a seam or naked; a
-//! Catmull-Clark face makes one (the average). A value whose vertex has no
-//! seam is refined with the vertex's own mask (creases included); a value on
-//! a seam follows the seam as a crease (3/4 itself, 1/8 each neighbour along
-//! the seam), or stays, as the linear option says; seam and naked edges make
-//! midpoints.
+//! Each level, every distinct value at a vertex (a *sibling*, whose *span*
+//! is the fan of faces around the vertex that share it) makes one child
+//! value; an edge makes one child value, or one per face where it is a seam
+//! or naked; a Catmull-Clark face makes one (the average). A value whose
+//! vertex has no seam is refined with the vertex's own mask (creases
+//! included). A value on a seam follows the seam as a crease (3/4 itself,
+//! 1/8 each neighbour along the seam; at the end of a seam, a dart, the
+//! neighbours on either side of the seam edge); it stays where the linear
+//! option, an infinitely sharp vertex or an infinitely sharp edge inside its
+//! span makes it a corner, and a semi-sharp span is a corner until its
+//! sharpness decays, then blends. Seam and naked edges make midpoints.
 
 use super::creases::{fractional_weight, Sharpness, SHARPNESS_INFINITE};
 use super::level::{Connectivity, Faces};
