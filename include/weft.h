@@ -411,6 +411,31 @@ WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSu
 WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftRefiner **out_refiner);
 
 /**
+ * Prepares a mesh whose creases are unwelded seams or sharp folds for
+ * creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
+ * same position, and lists as creases every edge that was naked before
+ * welding and has two faces after, and every edge whose faces' normals
+ * differ by more than `angle_degrees` (180 or more: no fold test). Pass the
+ * pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+ *
+ * `mesh` must not be NULL. `angle_degrees` must be 0 or more.
+ * `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL. `out_pairs` has room for `capacity` indices and receives
+ * two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
+ * always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
+ * `out_crease_count` receives the number of creases; it must not be NULL.
+ * Nothing is written on failure.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
+ * or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
+ * writable indices; the other outputs are NULL or writable.
+ */
+WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count);
+
+/**
  * Returns the library's version as a string such as "0.1.0".
  *
  * The string is static: do not free it.

@@ -427,3 +427,49 @@ pub unsafe extern "C" fn weft_refiner_new_ex(
         Ok(())
     })
 }
+
+/// Prepares a mesh whose creases are unwelded seams or sharp folds for
+/// creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
+/// same position, and lists as creases every edge that was naked before
+/// welding and has two faces after, and every edge whose faces' normals
+/// differ by more than `angle_degrees` (180 or more: no fold test). Pass the
+/// pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+///
+/// `mesh` must not be NULL. `angle_degrees` must be 0 or more.
+/// `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
+/// must not be NULL. `out_pairs` has room for `capacity` indices and receives
+/// two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
+/// always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
+/// `out_crease_count` receives the number of creases; it must not be NULL.
+/// Nothing is written on failure.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
+/// or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
+/// writable indices; the other outputs are NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_crease_edges_from_mesh(
+    mesh: *const WeftMesh,
+    angle_degrees: f64,
+    out_welded: *mut *mut WeftMesh,
+    out_pairs: *mut u32,
+    capacity: usize,
+    out_crease_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let welded_out = out_param(out_welded, "out_welded")?;
+        let count_out = out_param(out_crease_count, "out_crease_count")?;
+        let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (welded, creases) = subdivide::creases_from_mesh(mesh, angle_degrees)?;
+        check_room("out_pairs", capacity, 2 * creases.len())?;
+        for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
+            slot.copy_from_slice(pair);
+        }
+        *count_out = creases.len();
+        WeftMesh::write(welded_out, welded);
+        Ok(())
+    })
+}

@@ -251,7 +251,38 @@ static void test_errors(void) {
   weft_mesh_free(mesh);
 }
 
+static void test_crease_edges_from_mesh(void) {
+  /* Two quads sharing an unwelded edge (vertices 1, 4 and 2, 5 coincide). */
+  static const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 2, 1, 0, 2, 0, 0};
+  static const uint32_t sizes[] = {4, 4};
+  static const uint32_t faces[] = {0, 1, 2, 3, 4, 7, 6, 5};
+  WeftMesh *mesh = NULL, *welded = NULL, *cube_mesh = cube();
+  uint32_t pairs[16];
+  size_t count = 99;
+  CHECK_STATUS(weft_mesh_new(p, 8, sizes, 2, faces, 8, &mesh), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_crease_edges_from_mesh(mesh, 180.0, &welded, pairs, 16, &count), WEFT_STATUS_OK);
+  CHECK(count == 1 && weft_mesh_vertex_count(welded) == 6);
+  CHECK((pairs[0] == 1 && pairs[1] == 2) || (pairs[0] == 2 && pairs[1] == 1));
+  weft_mesh_free(welded);
+  welded = NULL;
+  /* Every edge of a cube folds by 90 degrees. */
+  {
+    uint32_t cube_pairs[48];
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, 45.0, &welded, cube_pairs, 48, &count), WEFT_STATUS_OK);
+    CHECK(count == 12);
+    weft_mesh_free(welded);
+    welded = NULL;
+    count = 99;
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, 45.0, &welded, cube_pairs, 23, &count), WEFT_STATUS_BUFFER_TOO_SMALL);
+    CHECK(count == 99 && welded == NULL);
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, NAN, &welded, cube_pairs, 48, &count), WEFT_STATUS_INVALID_ARGUMENT);
+  }
+  weft_mesh_free(cube_mesh);
+  weft_mesh_free(mesh);
+}
+
 int main(void) {
+  test_crease_edges_from_mesh();
   test_creases_and_corners();
   test_counts_and_vertex_data();
   test_face_varying();
