@@ -10,6 +10,7 @@
 //! [`Subdivider`], which takes [`SubdivisionOptions`].
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::creases::{
     cage_sharpness, child_sharpness, child_sharpness_around, fractional_weight, is_sharp, Rule,
@@ -20,6 +21,9 @@ use super::rules::loop_smooth_weights;
 use super::{catmull_clark, check_counts, loop_subdivision, Scheme};
 use crate::error::{try_vec, Error, Result};
 use crate::mesh::Mesh;
+
+/// Rows per rayon task.
+const CHUNK: usize = 1024;
 
 /// One level's stencils: row r (a point of the next level) is
 /// `Σ weights[k] · source(sources[k])` over `offsets[r]..offsets[r + 1]`, where
@@ -42,34 +46,41 @@ impl LevelStencils {
     }
 
     /// Applies the stencils to `parent` (`width` numbers per point) into
-    /// `child` (`width` numbers per point of the next level).
+    /// `child` (`width` numbers per point of the next level): the rows that
+    /// read only the parent first, then the others, each pass in parallel.
     pub(crate) fn apply(&self, parent: &[f64], width: usize, child: &mut [f64]) {
-        let rows = self.child_count();
-        let order = (self.first_independent..rows).chain(0..self.first_independent);
-        for r in order {
-            let (start, end) = (self.offsets[r] as usize, self.offsets[r + 1] as usize);
-            let mut sum = [0.0f64; 16];
-            let mut wide = Vec::new();
-            let acc: &mut [f64] = if width <= 16 {
-                &mut sum[..width]
+        let (dependent, independent) = child.split_at_mut(self.first_independent * width);
+        independent
+            .par_chunks_mut(width)
+            .with_min_len(CHUNK)
+            .enumerate()
+            .for_each(|(i, out)| self.row(self.first_independent + i, parent, &[], out));
+        let independent = &*independent;
+        dependent
+            .par_chunks_mut(width)
+            .with_min_len(CHUNK)
+            .enumerate()
+            .for_each(|(r, out)| self.row(r, parent, independent, out));
+    }
+
+    /// Row `r` into `out`; `next` holds the next level's points from
+    /// `first_independent` on.
+    #[inline]
+    fn row(&self, r: usize, parent: &[f64], next: &[f64], out: &mut [f64]) {
+        let width = out.len();
+        out.fill(0.0);
+        for k in self.offsets[r] as usize..self.offsets[r + 1] as usize {
+            let s = self.sources[k] as usize;
+            let w = self.weights[k];
+            let source = if s < self.parent_count {
+                &parent[s * width..(s + 1) * width]
             } else {
-                wide.resize(width, 0.0);
-                &mut wide
+                let s = s - self.parent_count - self.first_independent;
+                &next[s * width..(s + 1) * width]
             };
-            for k in start..end {
-                let s = self.sources[k] as usize;
-                let w = self.weights[k];
-                let row = if s < self.parent_count {
-                    &parent[s * width..(s + 1) * width]
-                } else {
-                    let s = s - self.parent_count;
-                    &child[s * width..(s + 1) * width]
-                };
-                for (a, &x) in acc.iter_mut().zip(row) {
-                    *a += w * x;
-                }
+            for (o, &x) in out.iter_mut().zip(source) {
+                *o += w * x;
             }
-            child[r * width..(r + 1) * width].copy_from_slice(acc);
         }
     }
 }
