@@ -9,13 +9,14 @@
 //! through the faces: corner k of refined face f is the same vertex in both.
 
 use weft::shapes;
+use weft::subdivide::FaceVaryingLinear;
 use weft::subdivide::{
     subdivide, subdivide_with, Crease, Creasing, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
 };
 use weft::{DVec3, Mesh};
 use weft_reference::{
-    boundary_vertices, opensubdiv_refine, BoundaryInterpolation, CreasingMethod, OsdOptions,
-    OsdRefiner, RefMesh,
+    boundary_vertices, opensubdiv_refine, opensubdiv_refine_face_varying, BoundaryInterpolation,
+    CreasingMethod, FVarLinear, OsdOptions, OsdRefiner, RefMesh,
 };
 
 fn to_ref(mesh: &Mesh) -> RefMesh {
@@ -166,7 +167,6 @@ fn vertex_map(ours: &Mesh, theirs: &RefMesh, what: &str) -> Vec<usize> {
         .collect()
 }
 
-#[allow(dead_code)] // used by the face-varying comparison
 /// For every face of ours, OpenSubdiv's face with the same vertices and
 /// the rotation `r` such that our corner k is its corner (k + r) mod n.
 fn face_map(ours: &Mesh, theirs: &RefMesh, vertices: &[usize]) -> Vec<(usize, usize)> {
@@ -390,7 +390,7 @@ fn limit_positions_and_normals_equal_opensubdiv() {
                         creasing: Creasing::Chaikin,
                     };
                     let osd = osd_options(scheme, &options, &reference_cage);
-                    for levels in 1..=3 {
+                    for levels in 0..=3 {
                         let what = format!(
                             "{scheme:?} {name} {set} {naked_edges:?} limit at level {levels}"
                         );
@@ -425,4 +425,287 @@ fn limit_positions_and_normals_equal_opensubdiv() {
             }
         }
     }
+}
+
+/// UVs with seams: per-face islands on the cube, a wrapped cylindrical map
+/// on closed shapes (seams where it wraps), two islands on grids.
+fn uv_layout(name: &str, mesh: &Mesh) -> (Vec<f64>, Vec<u32>) {
+    let mut keys: std::collections::HashMap<(u32, u64, u64), u32> = Default::default();
+    let mut values = Vec::new();
+    let mut indices = Vec::new();
+    for (f, face) in mesh.faces().enumerate() {
+        let raw: Vec<[f64; 2]> = face
+            .iter()
+            .map(|&v| {
+                let p = mesh.positions()[v as usize];
+                if name.contains("grid") {
+                    [p.x, p.y]
+                } else if name == "cube" {
+                    [
+                        p.x + 0.5 * p.z + 0.3 * f as f64,
+                        p.y - 0.25 * p.z + 0.1 * f as f64,
+                    ]
+                } else {
+                    let u = p.y.atan2(p.x) / std::f64::consts::TAU + 0.5;
+                    let r = (p.x * p.x + p.y * p.y).sqrt();
+                    let w = p.z.atan2(r - 1.0) / std::f64::consts::TAU + 0.5;
+                    [u, w]
+                }
+            })
+            .collect();
+        let mut uv = raw.clone();
+        for axis in 0..2 {
+            let max = raw.iter().map(|t| t[axis]).fold(f64::MIN, f64::max);
+            for t in uv.iter_mut() {
+                if max - t[axis] > 0.5 {
+                    t[axis] += 1.0;
+                }
+            }
+        }
+        let centroid_x = raw.iter().map(|t| t[0]).sum::<f64>() / raw.len() as f64;
+        if name.starts_with("dart") {
+            // One value per vertex, except at vertex 1 (on the border) left
+            // of x = 1: a seam from the border that ends inside (a dart).
+            for (k, &v) in face.iter().enumerate() {
+                let p = mesh.positions()[v as usize];
+                let split = v == 1 && centroid_x < 1.0;
+                let key = (v, split as u64, 0);
+                let index = *keys.entry(key).or_insert_with(|| {
+                    values.extend_from_slice(&[p.x + if split { 0.3 } else { 0.0 }, p.y]);
+                    (values.len() / 2 - 1) as u32
+                });
+                let _ = k;
+                indices.push(index);
+            }
+            continue;
+        }
+        for (k, &v) in face.iter().enumerate() {
+            let mut t = uv[k];
+            let island = if name == "cube" {
+                f as u64
+            } else if name.contains("grid") && centroid_x > 1.5 {
+                t[0] += 0.25;
+                1
+            } else {
+                0
+            };
+            let key = (v, t[0].to_bits() ^ island, t[1].to_bits());
+            let index = *keys.entry(key).or_insert_with(|| {
+                values.extend_from_slice(&t);
+                (values.len() / 2 - 1) as u32
+            });
+            indices.push(index);
+        }
+    }
+    (values, indices)
+}
+
+#[test]
+fn face_varying_uvs_equal_opensubdiv() {
+    let modes = [
+        (FaceVaryingLinear::All, FVarLinear::All),
+        (FaceVaryingLinear::Boundaries, FVarLinear::Boundaries),
+        (FaceVaryingLinear::CornersOnly, FVarLinear::CornersOnly),
+        (FaceVaryingLinear::Smooth, FVarLinear::None),
+        (FaceVaryingLinear::CornersPlus1, FVarLinear::CornersPlus1),
+        (FaceVaryingLinear::CornersPlus2, FVarLinear::CornersPlus2),
+    ];
+    let mut failures = Vec::new();
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        let mut cases = shapes_for(scheme);
+        let (_, grid, _) = cases[2].clone();
+        cases.push(("dart grid", grid, false));
+        for (name, cage, closed) in cases {
+            let (uvs, uv_indices) = uv_layout(name, &cage);
+            let reference_cage = to_ref(&cage);
+            let naked_modes: &[NakedEdges] = if closed {
+                &[NakedEdges::Smooth]
+            } else {
+                &[NakedEdges::Smooth, NakedEdges::CornerFixed]
+            };
+            let crease_sets = std::iter::once(("uncreased", &[][..], &[][..]))
+                .chain(SHARPNESS_SETS.iter().copied());
+            for (k, (set, sharpness, corner_sharpness)) in crease_sets.enumerate() {
+                let (creases, corners) = if sharpness.is_empty() {
+                    (Vec::new(), Vec::new())
+                } else {
+                    creased(&cage, sharpness, corner_sharpness)
+                };
+                for &naked_edges in naked_modes {
+                    let options = SubdivisionOptions {
+                        naked_edges,
+                        creases: creases.clone(),
+                        corners: corners.clone(),
+                        creasing: if k % 2 == 0 {
+                            Creasing::Uniform
+                        } else {
+                            Creasing::Chaikin
+                        },
+                    };
+                    for (ours_linear, their_linear) in modes {
+                        let mut osd = osd_options(scheme, &options, &reference_cage);
+                        osd.fvar_linear = their_linear;
+                        for levels in 1..=3 {
+                            let what = format!("{scheme:?} {name} {set} {naked_edges:?} {ours_linear:?} level {levels}");
+                            let subdivider =
+                                Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                            let ours = subdivider
+                                .face_varying(&uvs, 2, &uv_indices, ours_linear)
+                                .unwrap();
+                            let (values, indices) = opensubdiv_refine_face_varying(
+                                &reference_cage,
+                                &osd,
+                                levels,
+                                &uvs,
+                                &uv_indices,
+                            )
+                            .unwrap();
+                            let theirs_mesh =
+                                opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                            let refined = subdivider.mesh().unwrap();
+                            let map = vertex_map(&refined, &theirs_mesh, &what);
+                            let faces = face_map(&refined, &theirs_mesh, &map);
+                            let their_offsets: Vec<usize> = std::iter::once(0)
+                                .chain(theirs_mesh.face_sizes.iter().scan(0usize, |s, &n| {
+                                    *s += n as usize;
+                                    Some(*s)
+                                }))
+                                .collect();
+                            let mut worst = 0.0f64;
+                            for (f, &(g, r)) in faces.iter().enumerate() {
+                                let n = refined.face(f).len();
+                                for k in 0..n {
+                                    let ours_corner = refined.face_offsets()[f] as usize + k;
+                                    let their_corner = their_offsets[g] + (k + r) % n;
+                                    let value = indices[their_corner] as usize;
+                                    for axis in 0..2 {
+                                        let d = (ours[2 * ours_corner + axis]
+                                            - values[2 * value + axis])
+                                            .abs();
+                                        worst = worst.max(d);
+                                        if d > 1e-9
+                                            && std::env::var("FV_DEBUG").is_ok()
+                                            && levels == 1
+                                        {
+                                            eprintln!("{what}: face {f} corner {k} vertex {} ours {} theirs {}", refined.face(f)[k], ours[2 * ours_corner + axis], values[2 * value + axis]);
+                                        }
+                                    }
+                                }
+                            }
+                            if worst > 1e-9 {
+                                failures.push(format!("{what}: off by {worst:e}"));
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        failures.is_empty(),
+        "{} failures:\n{}",
+        failures.len(),
+        failures.join("\n")
+    );
+}
+
+#[test]
+fn every_named_shape_with_creases_equals_opensubdiv_and_never_panics() {
+    let all = [
+        ("tetrahedron", shapes::tetrahedron()),
+        ("quad grid with a hole", shapes::quad_grid_with_hole()),
+        ("mixed polygons", shapes::mixed_polygons()),
+        ("fin", shapes::fin()),
+        ("bow-tie", shapes::bow_tie()),
+        ("Möbius strip", shapes::mobius_strip(8)),
+    ];
+    for (name, cage) in all {
+        let schemes: &[Scheme] = if cage.is_triangle_mesh() {
+            &[Scheme::CatmullClark, Scheme::Loop]
+        } else {
+            &[Scheme::CatmullClark]
+        };
+        let (creases, corners) = creased(&cage, &[2.5, f64::INFINITY, 0.5], &[1.5]);
+        for &scheme in schemes {
+            for naked_edges in [
+                NakedEdges::Fixed,
+                NakedEdges::Smooth,
+                NakedEdges::CornerFixed,
+            ] {
+                let options = SubdivisionOptions {
+                    naked_edges,
+                    creases: creases.clone(),
+                    corners: corners.clone(),
+                    creasing: Creasing::Chaikin,
+                };
+                let reference_cage = to_ref(&cage);
+                let osd = osd_options(scheme, &options, &reference_cage);
+                for levels in 1..=2 {
+                    let what = format!("{scheme:?} {name} {naked_edges:?} level {levels}");
+                    let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                    let ours = subdivider.mesh().unwrap();
+                    let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                    let map = vertex_map(&ours, &theirs, &what);
+                    let flat: Vec<f64> =
+                        ours.positions().iter().flat_map(|p| p.to_array()).collect();
+                    assert_rows_close(&flat, &theirs.positions, 3, &map, tolerance(&ours), &what);
+                    // The limit and face-varying values are defined everywhere.
+                    let limit = subdivider.limit().unwrap();
+                    assert!(limit.positions.iter().all(|p| p.is_finite()), "{what}");
+                    assert!(limit.normals.iter().all(|n| n.is_finite()), "{what}");
+                    let uvs: Vec<f64> = cage.positions().iter().flat_map(|p| [p.x, p.y]).collect();
+                    let values = subdivider
+                        .face_varying(&uvs, 2, cage.face_indices(), FaceVaryingLinear::Smooth)
+                        .unwrap();
+                    assert_eq!(values.len(), 2 * ours.index_count(), "{what}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn unwelded_seams_and_folds_become_creases() {
+    // Two unit quads side by side, their shared edge unwelded (vertices 1, 4
+    // and 2, 5 coincide), folded by 90 degrees along it.
+    let positions = vec![
+        DVec3::new(0.0, 0.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 0.0),
+        DVec3::new(1.0, 1.0, 1.0),
+        DVec3::new(1.0, 0.0, 1.0),
+    ];
+    let mesh = Mesh::from_polygons(positions, vec![vec![0, 1, 2, 3], vec![4, 7, 6, 5]]).unwrap();
+    let (welded, creases) = weft::subdivide::creases_from_mesh(&mesh, 180.0).unwrap();
+    assert_eq!(welded.vertex_count(), 6);
+    assert_eq!(creases.len(), 1);
+    let [a, b] = creases[0].0;
+    let ends = [
+        welded.positions()[a as usize],
+        welded.positions()[b as usize],
+    ];
+    assert!(ends.contains(&DVec3::new(1.0, 0.0, 0.0)) && ends.contains(&DVec3::new(1.0, 1.0, 0.0)));
+    assert!(creases[0].1.is_infinite() || creases[0].1 >= 10.0);
+    // A cube: every edge folds by 90 degrees, sharper than 60, none by more than 120.
+    let (_, folds) = weft::subdivide::creases_from_mesh(&shapes::cube(), 60.0).unwrap();
+    assert_eq!(folds.len(), 12);
+    let (_, none) = weft::subdivide::creases_from_mesh(&shapes::cube(), 120.0).unwrap();
+    assert!(none.is_empty());
+    assert!(weft::subdivide::creases_from_mesh(&shapes::cube(), f64::NAN).is_err());
+    // The creases subdivide: the fold stays a straight line.
+    let options = SubdivisionOptions {
+        naked_edges: NakedEdges::Smooth,
+        creases,
+        ..SubdivisionOptions::default()
+    };
+    let out = subdivide_with(&welded, Scheme::CatmullClark, 2, &options).unwrap();
+    let on_fold = out
+        .positions()
+        .iter()
+        .filter(|p| (p.x - 1.0).abs() < 1e-12 && p.z.abs() < 1e-12)
+        .count();
+    assert_eq!(on_fold, 5);
 }

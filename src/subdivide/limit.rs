@@ -88,7 +88,7 @@ impl Subdivider {
         }
         let mut points = vec![DVec3::ZERO; self.vertex_count()];
         self.evaluate(cage, &mut points)?;
-        let sharpness = &self.last_sharpness;
+        let sharpness = &last.sharpness;
         let n = points.len();
         let mut limit = Limit {
             positions: Vec::with_capacity(n),

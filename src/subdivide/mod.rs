@@ -22,9 +22,19 @@
 //! Edges with three or more faces, or whose two faces run them the same way,
 //! are infinitely sharp creases; bow-tie and other non-manifold vertices are
 //! corners — as OpenSubdiv does. No face is ever dropped.
+//!
+//! # Creases, carried data and the limit
+//! [`Subdivider`](crate::subdivide::Subdivider) (and [`subdivide_with`](crate::subdivide::subdivide_with), [`Refiner::with_options`](crate::subdivide::Refiner::with_options)) takes
+//! [`SubdivisionOptions`](crate::subdivide::SubdivisionOptions): semi-sharp and infinite edge creases and vertex
+//! corners with Uniform or Chaikin creasing, as OpenSubdiv's
+//! `TopologyDescriptor` and `Sdc::Options`; it carries per-vertex data of any
+//! width and face-varying values ([`FaceVaryingLinear`](crate::subdivide::FaceVaryingLinear)), and projects the
+//! last level onto the limit surface ([`Limit`](crate::subdivide::Limit)). [`creases_from_mesh`](crate::subdivide::creases_from_mesh)
+//! turns unwelded seams and sharp folds into creases.
 
 mod catmull_clark;
 mod creases;
+mod face_varying;
 mod level;
 mod limit;
 mod loop_subdivision;
@@ -35,6 +45,7 @@ mod stencils;
 use glam::DVec3;
 
 pub use creases::{creases_from_mesh, Crease, Creasing, SubdivisionOptions, SHARPNESS_INFINITE};
+pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;
 pub use stencils::{subdivide_with, Subdivider};

@@ -9,7 +9,10 @@ use glam::DVec3;
 
 use super::level::{Connectivity, Faces, Plan};
 use super::rules::{cage_tags, child_tags, plan, Tags};
-use super::{catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme};
+use super::{
+    catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme, Subdivider,
+    SubdivisionOptions,
+};
 use crate::error::{try_vec, Error, Result};
 use crate::mesh::Mesh;
 
@@ -27,6 +30,8 @@ pub struct Refiner {
     cage_positions: Vec<DVec3>,
     /// Two buffers for the intermediate levels, reserved once.
     scratch: Mutex<[Vec<DVec3>; 2]>,
+    /// With creases or corners: the stencils that evaluate instead of the plans.
+    creased: Option<Box<Subdivider>>,
 }
 
 impl Refiner {
@@ -66,7 +71,38 @@ impl Refiner {
             faces,
             cage_positions: cage.positions().to_vec(),
             scratch: Mutex::new([a, b]),
+            creased: None,
         })
+    }
+
+    /// Plans `levels` levels of `scheme` on `cage`'s faces with creases,
+    /// corners and the naked-edge mode of `options` (see [`Subdivider`]).
+    ///
+    /// # Errors
+    /// As [`Subdivider::new`].
+    pub fn with_options(
+        cage: &Mesh,
+        scheme: Scheme,
+        levels: u32,
+        options: &SubdivisionOptions,
+    ) -> Result<Refiner> {
+        let creased = Subdivider::new(cage, scheme, levels, options)?;
+        Ok(Refiner {
+            scheme,
+            naked_edges: options.naked_edges,
+            cage_vertex_count: cage.vertex_count(),
+            plans: Vec::new(),
+            faces: creased.last().faces.clone(),
+            cage_positions: cage.positions().to_vec(),
+            scratch: Mutex::new([Vec::new(), Vec::new()]),
+            creased: Some(Box::new(creased)),
+        })
+    }
+
+    /// The creased subdivision, when built [`Refiner::with_options`]: for
+    /// carried data, face-varying values and the limit.
+    pub fn subdivider(&self) -> Option<&Subdivider> {
+        self.creased.as_deref()
     }
 
     /// The scheme it refines with.
@@ -81,7 +117,9 @@ impl Refiner {
 
     /// Number of levels.
     pub fn levels(&self) -> usize {
-        self.plans.len()
+        self.creased
+            .as_ref()
+            .map_or(self.plans.len(), |creased| creased.levels())
     }
 
     /// Number of cage vertices [`Refiner::evaluate`] expects.
@@ -135,6 +173,9 @@ impl Refiner {
             return Err(Error::InvalidArgument(format!(
                 "cage vertex {v} has a non-finite coordinate"
             )));
+        }
+        if let Some(creased) = &self.creased {
+            return creased.evaluate(cage, out);
         }
         let Some((last, intermediate)) = self.plans.split_last() else {
             out.copy_from_slice(cage);

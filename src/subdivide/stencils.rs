@@ -10,6 +10,7 @@
 //! [`Subdivider`], which takes [`SubdivisionOptions`].
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::creases::{
     cage_sharpness, child_sharpness, child_sharpness_around, fractional_weight, is_sharp, Rule,
@@ -20,6 +21,9 @@ use super::rules::loop_smooth_weights;
 use super::{catmull_clark, check_counts, loop_subdivision, Scheme};
 use crate::error::{try_vec, Error, Result};
 use crate::mesh::Mesh;
+
+/// Rows per rayon task.
+const CHUNK: usize = 1024;
 
 /// One level's stencils: row r (a point of the next level) is
 /// `Σ weights[k] · source(sources[k])` over `offsets[r]..offsets[r + 1]`, where
@@ -42,34 +46,41 @@ impl LevelStencils {
     }
 
     /// Applies the stencils to `parent` (`width` numbers per point) into
-    /// `child` (`width` numbers per point of the next level).
+    /// `child` (`width` numbers per point of the next level): the rows that
+    /// read only the parent first, then the others, each pass in parallel.
     pub(crate) fn apply(&self, parent: &[f64], width: usize, child: &mut [f64]) {
-        let rows = self.child_count();
-        let order = (self.first_independent..rows).chain(0..self.first_independent);
-        for r in order {
-            let (start, end) = (self.offsets[r] as usize, self.offsets[r + 1] as usize);
-            let mut sum = [0.0f64; 16];
-            let mut wide = Vec::new();
-            let acc: &mut [f64] = if width <= 16 {
-                &mut sum[..width]
+        let (dependent, independent) = child.split_at_mut(self.first_independent * width);
+        independent
+            .par_chunks_mut(width)
+            .with_min_len(CHUNK)
+            .enumerate()
+            .for_each(|(i, out)| self.row(self.first_independent + i, parent, &[], out));
+        let independent = &*independent;
+        dependent
+            .par_chunks_mut(width)
+            .with_min_len(CHUNK)
+            .enumerate()
+            .for_each(|(r, out)| self.row(r, parent, independent, out));
+    }
+
+    /// Row `r` into `out`; `next` holds the next level's points from
+    /// `first_independent` on.
+    #[inline]
+    fn row(&self, r: usize, parent: &[f64], next: &[f64], out: &mut [f64]) {
+        let width = out.len();
+        out.fill(0.0);
+        for k in self.offsets[r] as usize..self.offsets[r + 1] as usize {
+            let s = self.sources[k] as usize;
+            let w = self.weights[k];
+            let source = if s < self.parent_count {
+                &parent[s * width..(s + 1) * width]
             } else {
-                wide.resize(width, 0.0);
-                &mut wide
+                let s = s - self.parent_count - self.first_independent;
+                &next[s * width..(s + 1) * width]
             };
-            for k in start..end {
-                let s = self.sources[k] as usize;
-                let w = self.weights[k];
-                let row = if s < self.parent_count {
-                    &parent[s * width..(s + 1) * width]
-                } else {
-                    let s = s - self.parent_count;
-                    &child[s * width..(s + 1) * width]
-                };
-                for (a, &x) in acc.iter_mut().zip(row) {
-                    *a += w * x;
-                }
+            for (o, &x) in out.iter_mut().zip(source) {
+                *o += w * x;
             }
-            child[r * width..(r + 1) * width].copy_from_slice(acc);
         }
     }
 }
@@ -77,10 +88,10 @@ impl LevelStencils {
 /// A small vertex mask: the vertex's own weight, one weight per incident
 /// edge (applied to its far end) and one per incident face.
 #[derive(Debug, Clone, Default)]
-struct Mask {
-    vertex: f64,
-    edges: Vec<f64>,
-    faces: Vec<f64>,
+pub(crate) struct Mask {
+    pub(crate) vertex: f64,
+    pub(crate) edges: Vec<f64>,
+    pub(crate) faces: Vec<f64>,
 }
 
 impl Mask {
@@ -152,6 +163,77 @@ impl Mask {
     }
 }
 
+/// The mask of vertex `v`'s child: its own weight, one per edge in the
+/// order of [`Sharpness::edges_at`], one per face in the order of
+/// `vertex_corners` (face points; zero for Loop). The parent's rule's mask,
+/// blended with the child's by the fractional weight when the rule changes
+/// (`Sdc::Scheme::ComputeVertexVertexMask`).
+pub(crate) fn vertex_mask(
+    scheme: Scheme,
+    options: &SubdivisionOptions,
+    connectivity: &Connectivity,
+    sharpness: &Sharpness,
+    child: &Sharpness,
+    v: usize,
+    scratch: &mut Vec<f32>,
+) -> Mask {
+    let around: Vec<f32> = sharpness
+        .edges_at(v)
+        .iter()
+        .map(|&e| sharpness.edges[e as usize])
+        .collect();
+    let faces = connectivity.vertex_corners(v).len();
+    let parent_rule = sharpness.rules[v];
+    let child_rule = child.rules[v];
+    let mut mask = Mask::of(parent_rule, scheme, &around, faces);
+    if !parent_rule.is_smooth() && child_rule != parent_rule {
+        child_sharpness_around(sharpness, options.creasing, connectivity, v, scratch);
+        let child_mask = Mask::of(child_rule, scheme, scratch, faces);
+        let weight = fractional_weight(
+            sharpness.vertices[v],
+            child.vertices[v],
+            around.iter().copied(),
+            scratch,
+        );
+        mask.blend(f64::from(weight), &child_mask);
+    }
+    mask
+}
+
+/// The weights of edge `e`'s point on each end and each wing (face point or
+/// opposite vertex), or `None` for the crease's midpoint
+/// (`Sdc::Scheme::ComputeEdgeVertexMask`: smooth, crease, or blended by the
+/// sharpness of a crease whose point turns smooth).
+pub(crate) fn edge_weights(
+    scheme: Scheme,
+    sharpness: &Sharpness,
+    child: &Sharpness,
+    vertex_count: usize,
+    e: usize,
+    face_count: usize,
+) -> Option<(f64, f64)> {
+    let s = sharpness.edges[e];
+    if is_sharp(s) && child.rules[vertex_count + e] == Rule::Crease || face_count != 2 {
+        return None;
+    }
+    let (parent_weight, child_weight) = if is_sharp(s) {
+        let p = f64::from(s);
+        (p, 1.0 - p)
+    } else {
+        (0.0, 1.0)
+    };
+    Some(match scheme {
+        Scheme::CatmullClark => (
+            parent_weight * 0.5 + child_weight * 0.25,
+            0.25 * child_weight,
+        ),
+        Scheme::Loop => (
+            parent_weight * 0.5 + child_weight * 0.375,
+            0.125 * child_weight,
+        ),
+    })
+}
+
 /// The stencils taking one level (`faces`, `connectivity`, `sharpness`) to
 /// the next (whose sharpness is `child`).
 fn level_stencils(
@@ -184,33 +266,19 @@ fn level_stencils(
     };
 
     // Vertex points.
-    let mut around = Vec::new();
-    let mut child_around = Vec::new();
+    let mut scratch = Vec::new();
     for v in 0..vertex_count {
         let edges = sharpness.edges_at(v);
-        around.clear();
-        around.extend(edges.iter().map(|&e| sharpness.edges[e as usize]));
         let corners = connectivity.vertex_corners(v);
-        let parent_rule = sharpness.rules[v];
-        let child_rule = child.rules[v];
-        let mut mask = Mask::of(parent_rule, scheme, &around, corners.len());
-        if !parent_rule.is_smooth() && child_rule != parent_rule {
-            child_sharpness_around(
-                sharpness,
-                options.creasing,
-                connectivity,
-                v,
-                &mut child_around,
-            );
-            let child_mask = Mask::of(child_rule, scheme, &child_around, corners.len());
-            let weight = fractional_weight(
-                sharpness.vertices[v],
-                child.vertices[v],
-                around.iter().copied(),
-                &child_around,
-            );
-            mask.blend(f64::from(weight), &child_mask);
-        }
+        let mask = vertex_mask(
+            scheme,
+            options,
+            connectivity,
+            sharpness,
+            child,
+            v,
+            &mut scratch,
+        );
         let far_end = |e: u32| {
             let [a, b] = connectivity.edges[e as usize];
             if a as usize == v {
@@ -240,24 +308,15 @@ fn level_stencils(
 
     // Edge points.
     for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
-        let s = sharpness.edges[e];
         let corners = connectivity.edge_corners(e);
-        let child_rule = child.rules[vertex_count + e];
-        if is_sharp(s) && child_rule == Rule::Crease || corners.len() != 2 {
+        let Some((end, wing)) =
+            edge_weights(scheme, sharpness, child, vertex_count, e, corners.len())
+        else {
             push(&mut [(a, 0.5), (b, 0.5)].into_iter());
             continue;
-        }
-        // Smooth, or a crease that turns smooth: blend by the sharpness.
-        let (parent_weight, child_weight) = if is_sharp(s) {
-            let p = f64::from(s);
-            (p, 1.0 - p)
-        } else {
-            (0.0, 1.0)
         };
         match scheme {
             Scheme::CatmullClark => {
-                let end = parent_weight * 0.5 + child_weight * 0.25;
-                let wing = 0.25 * child_weight;
                 push(
                     &mut [
                         (a, end),
@@ -269,8 +328,6 @@ fn level_stencils(
                 );
             }
             Scheme::Loop => {
-                let end = parent_weight * 0.5 + child_weight * 0.375;
-                let wing = 0.125 * child_weight;
                 let opposite = |c: u32| {
                     let f = face_of(c as usize);
                     faces.indices[faces.next(faces.next(c as usize, f), f)]
@@ -309,6 +366,7 @@ fn level_stencils(
 pub(crate) struct KeptLevel {
     pub(crate) faces: Faces,
     pub(crate) connectivity: Connectivity,
+    pub(crate) sharpness: Sharpness,
 }
 
 /// A subdivision with creases, corners and carried data, planned once for a
@@ -330,8 +388,6 @@ pub struct Subdivider {
     pub(crate) stencils: Vec<LevelStencils>,
     /// Every level's faces and connectivity, the cage first, the last level last.
     pub(crate) levels: Vec<KeptLevel>,
-    /// The sharpness of the last level, for the limit.
-    pub(crate) last_sharpness: Sharpness,
     /// Per vertex of the last level, the corner OpenSubdiv starts its walk
     /// around the vertex from (its first incident face).
     pub(crate) first_corners: Vec<u32>,
@@ -423,12 +479,13 @@ impl Subdivider {
             kept.push(KeptLevel {
                 faces: std::mem::replace(&mut faces, next_faces),
                 connectivity: std::mem::replace(&mut connectivity, next_connectivity),
+                sharpness: std::mem::replace(&mut sharpness, next_sharpness),
             });
-            sharpness = next_sharpness;
         }
         kept.push(KeptLevel {
             faces,
             connectivity,
+            sharpness,
         });
         Ok(Subdivider {
             scheme,
@@ -437,7 +494,6 @@ impl Subdivider {
             cage_positions: cage.positions().to_vec(),
             stencils,
             levels: kept,
-            last_sharpness: sharpness,
             first_corners: vertex_first,
         })
     }
