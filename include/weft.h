@@ -9,6 +9,51 @@
 
 
 /**
+ * Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).
+ */
+#define WEFT_CREASING_UNIFORM 0
+
+/**
+ * Semi-sharp creases are averaged with their neighbours first (OpenSubdiv CREASE_CHAIKIN).
+ */
+#define WEFT_CREASING_CHAIKIN 1
+
+/**
+ * Face-varying values are smooth everywhere (OpenSubdiv FVAR_LINEAR_NONE).
+ */
+#define WEFT_FACE_VARYING_SMOOTH 0
+
+/**
+ * Face-varying values are linear at their corners only (FVAR_LINEAR_CORNERS_ONLY).
+ */
+#define WEFT_FACE_VARYING_CORNERS_ONLY 1
+
+/**
+ * As corners only, and sharper at junctions of three or more regions (FVAR_LINEAR_CORNERS_PLUS1).
+ */
+#define WEFT_FACE_VARYING_CORNERS_PLUS1 2
+
+/**
+ * As corners plus one, and sharper where boundaries meet (FVAR_LINEAR_CORNERS_PLUS2).
+ */
+#define WEFT_FACE_VARYING_CORNERS_PLUS2 3
+
+/**
+ * Face-varying values are linear along every seam and boundary (FVAR_LINEAR_BOUNDARIES).
+ */
+#define WEFT_FACE_VARYING_BOUNDARIES 4
+
+/**
+ * Face-varying values are linear everywhere (FVAR_LINEAR_ALL, OpenSubdiv's default).
+ */
+#define WEFT_FACE_VARYING_ALL 5
+
+/**
+ * The sharpness at and above which a crease or corner never softens.
+ */
+#define WEFT_SHARPNESS_INFINITE 10.0
+
+/**
  * Platonic solid for `weft_platonic`: the tetrahedron (4 triangles).
  */
 #define WEFT_PLATONIC_TETRAHEDRON 0
@@ -324,6 +369,51 @@ typedef struct WeftMesh WeftMesh;
 typedef struct WeftRefiner WeftRefiner;
 
 /**
+ * What besides the mesh shapes a subdivision: the scheme, the naked-edge
+ * mode, the creasing method, and OpenSubdiv-style crease and corner arrays.
+ * Zero-initialise it, then fill what you need: all zeros is Catmull-Clark
+ * with fixed naked edges and nothing creased.
+ */
+typedef struct WeftSubdivisionOptions {
+  /**
+   * A WEFT_SCHEME_* value.
+   */
+  uint32_t scheme;
+  /**
+   * A WEFT_NAKED_EDGES_* value.
+   */
+  uint32_t naked_edges;
+  /**
+   * A WEFT_CREASING_* value.
+   */
+  uint32_t creasing;
+  /**
+   * Number of creased edges.
+   */
+  size_t crease_count;
+  /**
+   * `2 * crease_count` vertex indices: the ends of each creased edge, which must be an edge of the mesh; NULL when `crease_count` is 0.
+   */
+  const uint32_t *crease_vertex_pairs;
+  /**
+   * `crease_count` sharpness values: 0 or more, WEFT_SHARPNESS_INFINITE or more (or INFINITY) for a hard crease.
+   */
+  const double *crease_sharpness;
+  /**
+   * Number of sharp vertices.
+   */
+  size_t corner_count;
+  /**
+   * `corner_count` vertex indices; NULL when `corner_count` is 0.
+   */
+  const uint32_t *corner_vertices;
+  /**
+   * `corner_count` sharpness values, as for creases.
+   */
+  const double *corner_sharpness;
+} WeftSubdivisionOptions;
+
+/**
  * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
  * The axes need not be unit length or orthogonal (they are
  * orthonormalised, keeping the x axis's direction); the normal, the front
@@ -439,6 +529,159 @@ typedef struct WeftMeshInfo {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/**
+ * Subdivides a mesh `levels` times with the scheme, naked-edge mode,
+ * creases and corners of `options`, as OpenSubdiv does with the same
+ * `Sdc::Options` and `TopologyDescriptor` arrays. Output order as
+ * `weft_catmull_clark` and `weft_loop`.
+ *
+ * `mesh` must not be NULL. `options` must not be NULL; see
+ * `WeftSubdivisionOptions`. `levels` is the number of steps; 0 returns a copy.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
+ * unknown enumeration value, a crease pair that is not an edge of the mesh,
+ * a corner past the vertex count, a negative or NaN sharpness — the
+ * message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
+ * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `options` is NULL or readable with
+ * arrays of the lengths it states; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_subdivide_ex(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Gives the vertex, face and face-index counts of the mesh `levels` steps
+ * of `scheme` make from `mesh` (creases do not change them), without
+ * subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
+ * `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
+ *
+ * `mesh` must not be NULL. `scheme` is a WEFT_SCHEME_* value. Each
+ * `out_*` receives its count on success; none may be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; the `out_*` are NULL or writable.
+ */
+WeftStatus weft_subdivision_counts(const struct WeftMesh *mesh, uint32_t scheme, uint32_t levels, size_t *out_vertex_count, size_t *out_face_count, size_t *out_index_count);
+
+/**
+ * Carries per-vertex data of any width (colours, weights) through the
+ * subdivision of `weft_subdivide_ex`: every refined vertex gets the same
+ * weighted sum of cage values as its position (OpenSubdiv's
+ * `PrimvarRefiner::Interpolate`).
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+ * `data` holds `width` doubles per cage vertex (`width` ≥ 1), `data_len` in all.
+ * `out_data` has room for `capacity` doubles; it needs `width` times the
+ * refined vertex count (`weft_subdivision_counts`), else the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
+ * `data_len` is not `width` times the cage's vertex count, and
+ * WEFT_STATUS_INVALID_ARGUMENT when `width` is 0.
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
+ * `capacity` writable doubles (either may be NULL when its length is 0).
+ */
+WeftStatus weft_subdivide_vertex_data(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, const double *data, size_t data_len, size_t width, double *out_data, size_t capacity);
+
+/**
+ * Carries per-face-corner values (UVs) through the subdivision of
+ * `weft_subdivide_ex`, face-varying as OpenSubdiv's
+ * `PrimvarRefiner::InterpolateFaceVarying`: corners of one vertex that use
+ * different values are a seam, and `face_varying_linear` says where values
+ * are interpolated linearly.
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+ * `face_varying_linear` is a WEFT_FACE_VARYING_* value.
+ * `values` holds `width` doubles for each of `value_count` values (`width` ≥ 1).
+ * `value_indices` holds the value of every face corner of `mesh`, face
+ * after face: `index_count` must equal the mesh's face-index count.
+ * `out_values` has room for `capacity` doubles; it receives `width` doubles
+ * per face corner of the refined mesh, face after face, and needs `width`
+ * times the refined face-index count (`weft_subdivision_counts`), else the
+ * call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
+ * WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; the buffers hold the elements stated.
+ */
+WeftStatus weft_subdivide_face_varying(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, uint32_t face_varying_linear, const double *values, size_t value_count, size_t width, const uint32_t *value_indices, size_t index_count, double *out_values, size_t capacity);
+
+/**
+ * Projects the vertices of the subdivision of `weft_subdivide_ex` onto the
+ * limit surface, and gives the surface's unit normals there (OpenSubdiv's
+ * `PrimvarRefiner::Limit`; normal = du × dv normalised, outward for
+ * counter-clockwise faces, zero where undefined).
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`
+ * (Catmull-Clark needs at least 1 unless every face is a quad).
+ * `out_positions` and `out_normals` each have room for `capacity` doubles
+ * and need 3 per refined vertex (`weft_subdivision_counts`), else the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing;
+ * `out_normals` may be NULL when the normals are not wanted.
+ *
+ * Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
+ * Catmull-Clark at level 0 on a mesh with faces that are not quads.
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
+ */
+WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, double *out_positions, double *out_normals, size_t capacity);
+
+/**
+ * Plans a subdivision with the scheme, naked-edge mode, creases and corners
+ * of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
+ * other `weft_refiner_*` functions work on it as on one from
+ * `weft_refiner_new`).
+ *
+ * `cage` and `options` must not be NULL; the cage's positions are kept for
+ * `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
+ * it with `weft_refiner_free`) and is left untouched on failure; it must
+ * not be NULL.
+ *
+ * Fails as `weft_subdivide_ex`.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
+ * `out_refiner` is NULL or writable.
+ */
+WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftRefiner **out_refiner);
+
+/**
+ * Prepares a mesh whose creases are unwelded seams or sharp folds for
+ * creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
+ * same position, and lists as creases every edge that was naked before
+ * welding and has two faces after, and every edge whose faces' normals
+ * differ by more than `angle_degrees` (180 or more: no fold test). Pass the
+ * pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+ *
+ * `mesh` must not be NULL. `angle_degrees` must be 0 or more.
+ * `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL. `out_pairs` has room for `capacity` indices and receives
+ * two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
+ * always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
+ * `out_crease_count` receives the number of creases; it must not be NULL.
+ * Nothing is written on failure.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
+ * or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
+ * writable indices; the other outputs are NULL or writable.
+ */
+WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count);
 
 /**
  * Triangulates points by the Delaunay criterion of their projections onto

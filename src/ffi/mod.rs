@@ -5,6 +5,7 @@
 //! all follow (see its doc).
 
 pub mod boundary;
+pub mod creases;
 pub mod make;
 pub mod mend;
 pub mod mesh;

@@ -17,6 +17,13 @@ pub struct WeftRefiner {
     refiner: Refiner,
 }
 
+impl WeftRefiner {
+    /// A new handle owning `refiner`, for the other exports that make one.
+    pub(crate) fn boxed(refiner: Refiner) -> *mut WeftRefiner {
+        Box::into_raw(Box::new(WeftRefiner { refiner }))
+    }
+}
+
 /// Plans `levels` steps of `scheme` on the faces of `cage`: everything that
 /// depends only on its topology (the faces of each level and what each new
 /// vertex is made of) is computed here, once.

@@ -22,30 +22,46 @@ use crate::error::{try_vec, Result};
 /// Items per rayon task: small enough to balance, large enough to amortise.
 const CHUNK: usize = 2048;
 
-/// The quads of the next level (see the module doc for their order).
-pub(crate) fn child_faces(faces: &Faces, connectivity: &Connectivity) -> Result<Faces> {
+/// The quads of the next level (see the module doc for their order), with
+/// their offsets when `with_offsets` (else `offsets` is left empty: every
+/// face is a quad).
+pub(crate) fn child_faces(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    with_offsets: bool,
+) -> Result<Faces> {
     let vertex_count = faces.vertex_count;
     let edge_count = connectivity.edge_count();
     let corner_count = faces.corner_count();
-    let mut offsets = try_vec(corner_count + 1, "child faces")?;
-    offsets.extend((0..=corner_count as u32).map(|q| 4 * q));
+    let mut offsets = Vec::new();
+    if with_offsets {
+        offsets = try_vec(corner_count + 1, "child faces")?;
+        offsets.par_extend(
+            (0..corner_count as u32 + 1)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|q| 4 * q),
+        );
+    }
     let mut indices = try_vec(4 * corner_count, "child faces")?;
     let edge_base = vertex_count as u32;
     let face_base = (vertex_count + edge_count) as u32;
-    for (f, w) in faces.offsets.windows(2).enumerate() {
-        let (start, end) = (w[0] as usize, w[1] as usize);
-        let mut previous_edge = connectivity.corner_edges[end - 1];
-        for c in start..end {
-            let edge = connectivity.corner_edges[c];
-            indices.extend_from_slice(&[
-                faces.indices[c],
-                edge_base + edge,
-                face_base + f as u32,
-                edge_base + previous_edge,
-            ]);
-            previous_edge = edge;
-        }
-    }
+    let (corner_edges, corner_faces) = (&connectivity.corner_edges, &connectivity.corner_faces);
+    // Quad c = [v_c, e_c, f, e_prev(c)]: each index written once, in place.
+    indices.par_extend(
+        (0..4 * corner_count)
+            .into_par_iter()
+            .with_min_len(4 * CHUNK)
+            .map(|k| {
+                let c = k / 4;
+                match k % 4 {
+                    0 => faces.indices[c],
+                    1 => edge_base + corner_edges[c],
+                    2 => face_base + corner_faces[c],
+                    _ => edge_base + corner_edges[faces.prev(c, corner_faces[c] as usize)],
+                }
+            }),
+    );
     Ok(Faces {
         vertex_count: vertex_count + edge_count + faces.face_count(),
         offsets,
@@ -53,63 +69,101 @@ pub(crate) fn child_faces(faces: &Faces, connectivity: &Connectivity) -> Result<
     })
 }
 
+#[inline]
+fn face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
+    let corners =
+        &plan.face_indices[plan.face_offsets[f] as usize..plan.face_offsets[f + 1] as usize];
+    let sum = corners
+        .iter()
+        .fold(DVec3::ZERO, |s, &v| s + points[v as usize]);
+    sum / corners.len() as f64
+}
+
+#[inline]
+fn edge_point(plan: &Plan, points: &[DVec3], face_points: &[DVec3], e: usize) -> DVec3 {
+    let [a, b, f0, f1] = plan.edges[e];
+    let ends = points[a as usize] + points[b as usize];
+    if f0 == NONE {
+        ends * 0.5
+    } else {
+        (ends + face_points[f0 as usize] + face_points[f1 as usize]) * 0.25
+    }
+}
+
+#[inline]
+fn vertex_point(plan: &Plan, points: &[DVec3], face_points: &[DVec3], v: usize) -> DVec3 {
+    let p = points[v];
+    let ring = plan.ring(v);
+    match plan.vertex_rules[v] {
+        VertexRule::Corner => p,
+        VertexRule::Crease => {
+            p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
+        }
+        VertexRule::Smooth => {
+            let n = ring.len() / 2;
+            let (neighbours, faces) = ring.split_at(n);
+            let sum = neighbours
+                .iter()
+                .fold(DVec3::ZERO, |s, &u| s + points[u as usize])
+                + faces
+                    .iter()
+                    .fold(DVec3::ZERO, |s, &f| s + face_points[f as usize]);
+            let n = n as f64;
+            (p * (n - 2.0) + sum / n) / n
+        }
+    }
+}
+
 /// Applies one level's plan: reads `points` (the level's V positions) and
 /// fills `out` with the V + E + F positions of the next level.
 pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
     let (edge_points, face_points) = rest.split_at_mut(plan.edge_count());
-
     face_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(f, out)| {
-            let corners = &plan.face_indices
-                [plan.face_offsets[f] as usize..plan.face_offsets[f + 1] as usize];
-            let sum = corners
-                .iter()
-                .fold(DVec3::ZERO, |s, &v| s + points[v as usize]);
-            *out = sum / corners.len() as f64;
-        });
+        .for_each(|(f, out)| *out = face_point(plan, points, f));
     let face_points = &*face_points;
-
     edge_points
         .par_iter_mut()
         .with_min_len(CHUNK)
-        .zip(plan.edges.par_iter())
-        .for_each(|(out, &[a, b, f0, f1])| {
-            let ends = points[a as usize] + points[b as usize];
-            *out = if f0 == NONE {
-                ends * 0.5
-            } else {
-                (ends + face_points[f0 as usize] + face_points[f1 as usize]) * 0.25
-            };
-        });
-
+        .enumerate()
+        .for_each(|(e, out)| *out = edge_point(plan, points, face_points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| {
-            let p = points[v];
-            let ring = plan.ring(v);
-            *out = match plan.vertex_rules[v] {
-                VertexRule::Corner => p,
-                VertexRule::Crease => {
-                    p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
-                }
-                VertexRule::Smooth => {
-                    let n = ring.len() / 2;
-                    let (neighbours, faces) = ring.split_at(n);
-                    let sum = neighbours
-                        .iter()
-                        .fold(DVec3::ZERO, |s, &u| s + points[u as usize])
-                        + faces
-                            .iter()
-                            .fold(DVec3::ZERO, |s, &f| s + face_points[f as usize]);
-                    let n = n as f64;
-                    (p * (n - 2.0) + sum / n) / n
-                }
-            };
-        });
+        .for_each(|(v, out)| *out = vertex_point(plan, points, face_points, v));
+}
+
+/// As [`apply`], into a new vector written once (no zero-filling): the face
+/// points go first to a buffer of their own, as the others read them.
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`].
+pub(crate) fn points(plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    let (v, e, f) = (plan.vertex_count, plan.edge_count(), plan.face_count());
+    let mut face_points = try_vec(f, "face points")?;
+    face_points.par_extend(
+        (0..f)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|f| face_point(plan, points, f)),
+    );
+    let mut out = try_vec(v + e + f, "refined positions")?;
+    out.par_extend(
+        (0..v)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|v| vertex_point(plan, points, &face_points, v)),
+    );
+    out.par_extend(
+        (0..e)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|e| edge_point(plan, points, &face_points, e)),
+    );
+    out.par_extend(face_points.par_iter().with_min_len(CHUNK).copied());
+    Ok(out)
 }

@@ -1,12 +1,21 @@
 //! One level of a subdivision: its faces, their connectivity, and the plan
 //! that turns the level's positions into the next level's.
 //!
-//! The connectivity is flat index arrays found by bucketing every face corner
-//! under its lower vertex (as in [`crate::topology`]), without the mesh's
-//! positions, so that a refiner can plan every level before it sees a single
-//! coordinate.
+//! The connectivity is flat index arrays, without the mesh's positions, so
+//! that a refiner can plan every level before it sees a single coordinate.
+//! The cage's is found by bucketing every face corner under its lower vertex
+//! (as in [`crate::topology`]); every refined level's is written
+//! arithmetically from its parent's ([`Connectivity::refine`]): the child
+//! edges, corners and rings of each parent vertex, edge and face have a known
+//! place, so no sorting of the whole level is needed.
 
+use rayon::prelude::*;
+
+use super::Scheme;
 use crate::error::{try_vec, Result};
+
+/// Items per rayon task: small enough to balance, large enough to amortise.
+const CHUNK: usize = 4096;
 
 /// Marks a missing index (a sharp edge has no wings).
 pub(crate) const NONE: u32 = u32::MAX;
@@ -52,7 +61,7 @@ impl Faces {
 
 /// Edges and adjacency of a [`Faces`]. Edges are unique `[low, high]` vertex
 /// pairs sorted ascending: this is the order of the edge points.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub(crate) struct Connectivity {
     pub(crate) edges: Vec<[u32; 2]>,
     /// For each corner, its face.
@@ -65,6 +74,9 @@ pub(crate) struct Connectivity {
     /// `vertex_corners[vertex_offsets[v]..vertex_offsets[v + 1]]`: the corners at vertex v, ascending.
     pub(crate) vertex_offsets: Vec<u32>,
     pub(crate) vertex_corners: Vec<u32>,
+    /// `vertex_edges[vertex_edge_offsets[v]..vertex_edge_offsets[v + 1]]`: the edges at vertex v, ascending.
+    pub(crate) vertex_edge_offsets: Vec<u32>,
+    pub(crate) vertex_edges: Vec<u32>,
 }
 
 impl Connectivity {
@@ -148,6 +160,9 @@ impl Connectivity {
             fill[v as usize] += 1;
         }
 
+        drop(fill);
+        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&edges, vertex_count)?;
+
         Ok(Connectivity {
             edges,
             corner_faces,
@@ -156,6 +171,367 @@ impl Connectivity {
             edge_corners,
             vertex_offsets,
             vertex_corners,
+            vertex_edge_offsets,
+            vertex_edges,
+        })
+    }
+
+    /// The connectivity of the level `scheme` makes from `faces`, whose
+    /// connectivity is `self`, written from the parent's without sorting. Equal
+    /// to [`Connectivity::new`] of the child faces. The vertices' edges, only
+    /// needed to refine once more, are left empty unless `vertex_edges`.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`].
+    pub(crate) fn refine(
+        &self,
+        scheme: Scheme,
+        faces: &Faces,
+        vertex_edges: bool,
+    ) -> Result<Connectivity> {
+        match scheme {
+            Scheme::CatmullClark => self.refine_catmull_clark(faces, vertex_edges),
+            Scheme::Loop => self.refine_loop(faces, vertex_edges),
+        }
+    }
+
+    /// Catmull-Clark: parent corner c of face f becomes quad c =
+    /// `[v_c, V + e_c, V + E + f, V + e_prev]`. The child edges, sorted, are
+    /// `[v, V + e]` for every vertex v and its edges e in order (the slots of
+    /// `vertex_edges`), then `[V + e, V + E + f]` for every edge e and its
+    /// corners in order (the slots of `edge_corners`).
+    fn refine_catmull_clark(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
+        let (v_count, e_count, c_count) =
+            (faces.vertex_count, self.edge_count(), faces.corner_count());
+        let idx = &faces.indices;
+        let (v_base, f_base, two_e) = (
+            v_count as u32,
+            (v_count + e_count) as u32,
+            2 * e_count as u32,
+        );
+        let face_of = |c: usize| self.corner_faces[c] as usize;
+        let next = |c: usize| faces.next(c, face_of(c));
+        let edge_slots = 2 * e_count + c_count;
+
+        let mut edges = try_vec(edge_slots, "edges")?;
+        for v in 0..v_count {
+            edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
+        }
+        for e in 0..e_count {
+            let point = v_base + e as u32;
+            edges.extend(
+                self.edge_corners(e)
+                    .iter()
+                    .map(|&c| [point, f_base + face_of(c as usize) as u32]),
+            );
+        }
+
+        let mut corner_faces = try_vec(4 * c_count, "corner faces")?;
+        corner_faces.extend((0..4 * c_count as u32).map(|k| k / 4));
+
+        // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
+        let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
+        corner_edges.par_extend(
+            (0..4 * c_count)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|k| {
+                    let c = k / 4;
+                    let previous = faces.prev(c, face_of(c));
+                    match k % 4 {
+                        0 => self.vertex_edge_slot(idx[c], self.corner_edges[c]),
+                        1 => two_e + self.edge_corner_slot(c),
+                        2 => two_e + self.edge_corner_slot(previous),
+                        _ => self.vertex_edge_slot(idx[c], self.corner_edges[previous]),
+                    }
+                }),
+        );
+
+        let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
+        let mut edge_corners = try_vec(4 * c_count, "edge corners")?;
+        edge_offsets.push(0);
+        for v in 0..v_count {
+            for &e in self.vertex_edges(v) {
+                let start = edge_corners.len();
+                edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
+                    let c = c as usize;
+                    if idx[c] == v as u32 {
+                        4 * c as u32
+                    } else {
+                        4 * next(c) as u32 + 3
+                    }
+                }));
+                edge_corners[start..].sort_unstable();
+                edge_offsets.push(edge_corners.len() as u32);
+            }
+        }
+        for &c in &self.edge_corners {
+            let c = c as usize;
+            let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
+            edge_corners.extend_from_slice(&[a.min(b), a.max(b)]);
+            edge_offsets.push(edge_corners.len() as u32);
+        }
+
+        let child_vertices = v_count + e_count + faces.face_count();
+        let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
+        let mut vertex_corners = try_vec(4 * c_count, "vertex corners")?;
+        vertex_offsets.push(0);
+        for v in 0..v_count {
+            vertex_corners.extend(self.vertex_corners(v).iter().map(|&c| 4 * c));
+            vertex_offsets.push(vertex_corners.len() as u32);
+        }
+        for e in 0..e_count {
+            let start = vertex_corners.len();
+            for &c in self.edge_corners(e) {
+                vertex_corners.extend_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
+            }
+            vertex_corners[start..].sort_unstable();
+            vertex_offsets.push(vertex_corners.len() as u32);
+        }
+        for w in faces.offsets.windows(2) {
+            vertex_corners.extend((w[0]..w[1]).map(|c| 4 * c + 2));
+            vertex_offsets.push(vertex_corners.len() as u32);
+        }
+
+        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+        if with_vertex_edges {
+            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+            vertex_edge_offsets.push(0);
+            for v in 0..v_count {
+                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for (e, &[a, b]) in self.edges.iter().enumerate() {
+                let e32 = e as u32;
+                vertex_edges.extend_from_slice(&[
+                    self.vertex_edge_slot(a, e32),
+                    self.vertex_edge_slot(b, e32),
+                ]);
+                vertex_edges.extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for w in faces.offsets.windows(2) {
+                let start = vertex_edges.len();
+                vertex_edges.extend(
+                    (w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)),
+                );
+                vertex_edges[start..].sort_unstable();
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+        }
+
+        Ok(Connectivity {
+            edges,
+            corner_faces,
+            corner_edges,
+            edge_offsets,
+            edge_corners,
+            vertex_offsets,
+            vertex_corners,
+            vertex_edge_offsets,
+            vertex_edges,
+        })
+    }
+
+    /// Loop: triangle f = `[v0, v1, v2]` with edges `e_i = v_i v_(i+1)` and
+    /// `E_i = V + e_i` becomes `T_i = [v_i, E_i, E_(i-1)]` (i < 3) and
+    /// `T_3 = [E0, E1, E2]`. The child edges, sorted, are `[v, V + e]` as for
+    /// Catmull-Clark, then the edges inside the triangles, `[V + m, V + h]`
+    /// grouped by the lower parent edge m and sorted by h (two triangles that
+    /// share two edges share that child edge).
+    fn refine_loop(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
+        let (v_count, e_count, f_count) =
+            (faces.vertex_count, self.edge_count(), faces.face_count());
+        let idx = &faces.indices;
+        let v_base = v_count as u32;
+        let two_e = 2 * e_count as u32;
+        let face_edges = |f: usize| -> [u32; 3] {
+            [
+                self.corner_edges[3 * f],
+                self.corner_edges[3 * f + 1],
+                self.corner_edges[3 * f + 2],
+            ]
+        };
+
+        // Inside edges grouped by their lower parent edge.
+        let mut inner_offsets = try_vec(e_count + 1, "edges")?;
+        let mut inner_high = try_vec(3 * f_count, "edges")?;
+        inner_offsets.push(0u32);
+        for m in 0..e_count as u32 {
+            let start = inner_high.len();
+            for &c in self.edge_corners(m as usize) {
+                let (f, i) = (c as usize / 3, c as usize % 3);
+                let edges = face_edges(f);
+                inner_high.extend(
+                    [edges[(i + 1) % 3], edges[(i + 2) % 3]]
+                        .into_iter()
+                        .filter(|&h| h > m),
+                );
+            }
+            inner_high[start..].sort_unstable();
+            let mut kept = start;
+            for k in start..inner_high.len() {
+                if k == start || inner_high[k] != inner_high[kept - 1] {
+                    inner_high[kept] = inner_high[k];
+                    kept += 1;
+                }
+            }
+            inner_high.truncate(kept);
+            inner_offsets.push(inner_high.len() as u32);
+        }
+        let inner = |x: u32, y: u32| -> u32 {
+            let (m, h) = (x.min(y) as usize, x.max(y));
+            let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
+            two_e + inner_offsets[m] + position(block, h)
+        };
+
+        let edge_slots = 2 * e_count + inner_high.len();
+        let mut edges = try_vec(edge_slots, "edges")?;
+        for v in 0..v_count {
+            edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
+        }
+        for m in 0..e_count {
+            let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
+            edges.extend(block.iter().map(|&h| [v_base + m as u32, v_base + h]));
+        }
+
+        let mut corner_faces = try_vec(12 * f_count, "corner faces")?;
+        corner_faces.extend((0..12 * f_count as u32).map(|k| k / 3));
+
+        let mut corner_edges = try_vec(12 * f_count, "corner edges")?;
+        for f in 0..f_count {
+            let e = face_edges(f);
+            for i in 0..3 {
+                let (v, e_previous) = (idx[3 * f + i], e[(i + 2) % 3]);
+                corner_edges.extend_from_slice(&[
+                    self.vertex_edge_slot(v, e[i]),
+                    inner(e[i], e_previous),
+                    self.vertex_edge_slot(v, e_previous),
+                ]);
+            }
+            corner_edges.extend_from_slice(&[
+                inner(e[0], e[1]),
+                inner(e[1], e[2]),
+                inner(e[2], e[0]),
+            ]);
+        }
+
+        let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
+        let mut edge_corners = try_vec(12 * f_count, "edge corners")?;
+        edge_offsets.push(0);
+        for v in 0..v_count {
+            for &e in self.vertex_edges(v) {
+                let start = edge_corners.len();
+                edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
+                    let (f, i) = (c / 3, c % 3);
+                    if idx[c as usize] == v as u32 {
+                        12 * f + 3 * i
+                    } else {
+                        12 * f + 3 * ((i + 1) % 3) + 2
+                    }
+                }));
+                edge_corners[start..].sort_unstable();
+                edge_offsets.push(edge_corners.len() as u32);
+            }
+        }
+        for m in 0..e_count {
+            for &h in &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize] {
+                let start = edge_corners.len();
+                for &c in self.edge_corners(m) {
+                    let (f, i) = (c / 3, c % 3);
+                    let e = face_edges(f as usize);
+                    // The inside edge {E_j, E_(j+1)} is T_(j+1)'s corner 1 and T_3's corner j.
+                    let j = if e[(i as usize + 1) % 3] == h {
+                        i
+                    } else if e[(i as usize + 2) % 3] == h {
+                        (i + 2) % 3
+                    } else {
+                        continue;
+                    };
+                    edge_corners
+                        .extend_from_slice(&[12 * f + 3 * ((j + 1) % 3) + 1, 12 * f + 9 + j]);
+                }
+                edge_corners[start..].sort_unstable();
+                edge_offsets.push(edge_corners.len() as u32);
+            }
+        }
+
+        let child_vertices = v_count + e_count;
+        let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
+        let mut vertex_corners = try_vec(12 * f_count, "vertex corners")?;
+        vertex_offsets.push(0);
+        for v in 0..v_count {
+            vertex_corners.extend(
+                self.vertex_corners(v)
+                    .iter()
+                    .map(|&c| 12 * (c / 3) + 3 * (c % 3)),
+            );
+            vertex_offsets.push(vertex_corners.len() as u32);
+        }
+        for e in 0..e_count {
+            let start = vertex_corners.len();
+            for &c in self.edge_corners(e) {
+                let (f, i) = (c / 3, c % 3);
+                vertex_corners.extend_from_slice(&[
+                    12 * f + 3 * i + 1,
+                    12 * f + 3 * ((i + 1) % 3) + 2,
+                    12 * f + 9 + i,
+                ]);
+            }
+            vertex_corners[start..].sort_unstable();
+            vertex_offsets.push(vertex_corners.len() as u32);
+        }
+
+        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+        if with_vertex_edges {
+            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+            vertex_edge_offsets.push(0);
+            for v in 0..v_count {
+                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+            for (e, &[a, b]) in self.edges.iter().enumerate() {
+                let e32 = e as u32;
+                vertex_edges.extend_from_slice(&[
+                    self.vertex_edge_slot(a, e32),
+                    self.vertex_edge_slot(b, e32),
+                ]);
+                let start = vertex_edges.len();
+                for &c in self.edge_corners(e) {
+                    let (f, i) = (c as usize / 3, c as usize % 3);
+                    let edges = face_edges(f);
+                    for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
+                        if x < e32 {
+                            vertex_edges.push(inner(x, e32));
+                        }
+                    }
+                }
+                vertex_edges[start..].sort_unstable();
+                let mut kept = start;
+                for k in start..vertex_edges.len() {
+                    if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
+                        vertex_edges[kept] = vertex_edges[k];
+                        kept += 1;
+                    }
+                }
+                vertex_edges.truncate(kept);
+                vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
+                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            }
+        }
+
+        Ok(Connectivity {
+            edges,
+            corner_faces,
+            corner_edges,
+            edge_offsets,
+            edge_corners,
+            vertex_offsets,
+            vertex_corners,
+            vertex_edge_offsets,
+            vertex_edges,
         })
     }
 
@@ -174,6 +550,52 @@ impl Connectivity {
     pub(crate) fn vertex_corners(&self, v: usize) -> &[u32] {
         &self.vertex_corners[self.vertex_offsets[v] as usize..self.vertex_offsets[v + 1] as usize]
     }
+
+    /// The edges at vertex `v`, ascending.
+    #[inline]
+    pub(crate) fn vertex_edges(&self, v: usize) -> &[u32] {
+        &self.vertex_edges
+            [self.vertex_edge_offsets[v] as usize..self.vertex_edge_offsets[v + 1] as usize]
+    }
+
+    /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`.
+    #[inline]
+    fn vertex_edge_slot(&self, v: u32, e: u32) -> u32 {
+        self.vertex_edge_offsets[v as usize] + position(self.vertex_edges(v as usize), e)
+    }
+
+    /// Where corner `c` sits in `edge_corners`.
+    #[inline]
+    fn edge_corner_slot(&self, c: usize) -> u32 {
+        let e = self.corner_edges[c] as usize;
+        self.edge_offsets[e] + position(self.edge_corners(e), c as u32)
+    }
+}
+
+/// The index of `x` in the short list `list`, which holds it.
+#[inline]
+fn position(list: &[u32], x: u32) -> u32 {
+    list.iter().position(|&y| y == x).unwrap_or(0) as u32
+}
+
+/// Every vertex's edges, ascending, from the sorted edges.
+fn vertex_edges_of(edges: &[[u32; 2]], vertex_count: usize) -> Result<(Vec<u32>, Vec<u32>)> {
+    let mut offsets = zeroed(vertex_count + 1, "vertex edges")?;
+    for &[a, b] in edges {
+        offsets[a as usize + 1] += 1;
+        offsets[b as usize + 1] += 1;
+    }
+    prefix_sum(&mut offsets);
+    let mut fill = try_vec(vertex_count + 1, "vertex edges")?;
+    fill.extend_from_slice(&offsets);
+    let mut list = zeroed(2 * edges.len(), "vertex edges")?;
+    for (e, &[a, b]) in edges.iter().enumerate() {
+        for v in [a as usize, b as usize] {
+            list[fill[v] as usize] = e as u32;
+            fill[v] += 1;
+        }
+    }
+    Ok((offsets, list))
 }
 
 /// How a vertex point is made from its neighbourhood (OpenSubdiv's
@@ -258,5 +680,113 @@ mod tests {
         assert_eq!(c.edge_corners(diagonal), &[2, 3]);
         assert_eq!(c.vertex_corners(0), &[0, 3]);
         assert_eq!(c.corner_edges, vec![0, 3, 1, 1, 4, 2]);
+        assert_eq!(c.vertex_edges(2), &[1, 3, 4]);
+    }
+
+    fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
+        assert_eq!(derived.edges, bucketed.edges, "{what}: edges");
+        assert_eq!(
+            derived.corner_faces, bucketed.corner_faces,
+            "{what}: corner faces"
+        );
+        assert_eq!(
+            derived.corner_edges, bucketed.corner_edges,
+            "{what}: corner edges"
+        );
+        assert_eq!(
+            derived.edge_offsets, bucketed.edge_offsets,
+            "{what}: edge offsets"
+        );
+        assert_eq!(
+            derived.edge_corners, bucketed.edge_corners,
+            "{what}: edge corners"
+        );
+        assert_eq!(
+            derived.vertex_offsets, bucketed.vertex_offsets,
+            "{what}: vertex offsets"
+        );
+        assert_eq!(
+            derived.vertex_corners, bucketed.vertex_corners,
+            "{what}: vertex corners"
+        );
+        assert_eq!(
+            derived.vertex_edge_offsets, bucketed.vertex_edge_offsets,
+            "{what}: vertex edge offsets"
+        );
+        assert_eq!(
+            derived.vertex_edges, bucketed.vertex_edges,
+            "{what}: vertex edges"
+        );
+    }
+
+    /// The arithmetic child connectivity equals bucketing the child faces,
+    /// on closed, open, mixed and non-manifold shapes, over three levels.
+    #[test]
+    fn refined_connectivity_equals_bucketing() {
+        use crate::shapes;
+        let pillow = crate::Mesh::from_polygons(
+            vec![crate::DVec3::ZERO, crate::DVec3::X, crate::DVec3::Y],
+            [[0u32, 1, 2], [1, 0, 2]],
+        )
+        .unwrap();
+        let polygons = [
+            ("cube", shapes::cube()),
+            ("grid", shapes::quad_grid(3, 2)),
+            ("grid with hole", shapes::quad_grid_with_hole()),
+            ("mixed", shapes::mixed_polygons()),
+            ("fin", shapes::fin()),
+            ("bow tie", shapes::bow_tie()),
+            ("mobius", shapes::mobius_strip(6)),
+        ];
+        let triangles = [
+            ("tetrahedron", shapes::tetrahedron()),
+            ("icosahedron", shapes::icosahedron()),
+            ("triangle grid", shapes::triangle_grid(3, 2)),
+            ("triangle grid with hole", shapes::triangle_grid_with_hole()),
+            ("pillow", pillow),
+        ];
+        let cases = polygons
+            .into_iter()
+            .map(|(n, m)| (n, m, Scheme::CatmullClark))
+            .chain(
+                triangles
+                    .clone()
+                    .into_iter()
+                    .map(|(n, m)| (n, m, Scheme::Loop)),
+            )
+            .chain(
+                triangles
+                    .into_iter()
+                    .map(|(n, m)| (n, m, Scheme::CatmullClark)),
+            );
+        for (name, mesh, scheme) in cases {
+            if scheme == Scheme::Loop && mesh.first_non_triangle().is_some() {
+                continue;
+            }
+            let mut faces = Faces {
+                vertex_count: mesh.vertex_count(),
+                offsets: mesh.face_offsets().to_vec(),
+                indices: mesh.face_indices().to_vec(),
+            };
+            let mut connectivity = Connectivity::new(&faces).unwrap();
+            for level in 1..=3 {
+                let child = match scheme {
+                    Scheme::CatmullClark => {
+                        super::super::catmull_clark::child_faces(&faces, &connectivity, true)
+                    }
+                    Scheme::Loop => {
+                        super::super::loop_subdivision::child_faces(&faces, &connectivity, true)
+                    }
+                }
+                .unwrap();
+                let derived = connectivity.refine(scheme, &faces, true).unwrap();
+                assert_same(
+                    &derived,
+                    &Connectivity::new(&child).unwrap(),
+                    &format!("{name} {scheme:?} level {level}"),
+                );
+                (faces, connectivity) = (child, derived);
+            }
+        }
     }
 }

@@ -21,28 +21,45 @@ use crate::error::{try_vec, Result};
 
 const CHUNK: usize = 2048;
 
-/// The triangles of the next level (see the module doc for their order).
+/// The triangles of the next level (see the module doc for their order),
+/// with their offsets when `with_offsets` (else `offsets` is left empty).
 /// Every face of `faces` is a triangle.
-pub(crate) fn child_faces(faces: &Faces, connectivity: &Connectivity) -> Result<Faces> {
+pub(crate) fn child_faces(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    with_offsets: bool,
+) -> Result<Faces> {
     let vertex_count = faces.vertex_count;
     let face_count = faces.face_count();
-    let mut offsets = try_vec(4 * face_count + 1, "child faces")?;
-    offsets.extend((0..=4 * face_count as u32).map(|t| 3 * t));
+    let mut offsets = Vec::new();
+    if with_offsets {
+        offsets = try_vec(4 * face_count + 1, "child faces")?;
+        offsets.par_extend(
+            (0..4 * face_count as u32 + 1)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|t| 3 * t),
+        );
+    }
     let mut indices = try_vec(12 * face_count, "child faces")?;
     let base = vertex_count as u32;
-    for (v, e) in faces
-        .indices
-        .chunks_exact(3)
-        .zip(connectivity.corner_edges.chunks_exact(3))
-    {
-        let e = [base + e[0], base + e[1], base + e[2]];
-        indices.extend_from_slice(&[
-            v[0], e[0], e[2], //
-            v[1], e[1], e[0], //
-            v[2], e[2], e[1], //
-            e[0], e[1], e[2],
-        ]);
-    }
+    let corner_edges = &connectivity.corner_edges;
+    // Where each of the 12 indices of a triangle's children comes from: a
+    // corner (0..3) or an edge (3..6) of the parent.
+    const SOURCE: [usize; 12] = [0, 3, 5, 1, 4, 3, 2, 5, 4, 3, 4, 5];
+    indices.par_extend(
+        (0..12 * face_count)
+            .into_par_iter()
+            .with_min_len(4 * CHUNK)
+            .map(|k| {
+                let (f, source) = (k / 12, SOURCE[k % 12]);
+                if source < 3 {
+                    faces.indices[3 * f + source]
+                } else {
+                    base + corner_edges[3 * f + source - 3]
+                }
+            }),
+    );
     Ok(Faces {
         vertex_count: vertex_count + connectivity.edge_count(),
         offsets,
@@ -50,43 +67,70 @@ pub(crate) fn child_faces(faces: &Faces, connectivity: &Connectivity) -> Result<
     })
 }
 
+#[inline]
+fn edge_point(plan: &Plan, points: &[DVec3], e: usize) -> DVec3 {
+    let [a, b, c, d] = plan.edges[e];
+    let ends = points[a as usize] + points[b as usize];
+    if c == NONE {
+        ends * 0.5
+    } else {
+        ends * 0.375 + (points[c as usize] + points[d as usize]) * 0.125
+    }
+}
+
+#[inline]
+fn vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
+    let p = points[v];
+    let ring = plan.ring(v);
+    match plan.vertex_rules[v] {
+        VertexRule::Corner => p,
+        VertexRule::Crease => {
+            p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
+        }
+        VertexRule::Smooth => {
+            let (own, each) = loop_smooth_weights(ring.len());
+            let sum = ring
+                .iter()
+                .fold(DVec3::ZERO, |s, &u| s + points[u as usize]);
+            p * own + sum * each
+        }
+    }
+}
+
 /// Applies one level's plan: reads `points` (the level's V positions) and
 /// fills `out` with the V + E positions of the next level.
 pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
-
     edge_points
         .par_iter_mut()
         .with_min_len(CHUNK)
-        .zip(plan.edges.par_iter())
-        .for_each(|(out, &[a, b, c, d])| {
-            let ends = points[a as usize] + points[b as usize];
-            *out = if c == NONE {
-                ends * 0.5
-            } else {
-                ends * 0.375 + (points[c as usize] + points[d as usize]) * 0.125
-            };
-        });
-
+        .enumerate()
+        .for_each(|(e, out)| *out = edge_point(plan, points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| {
-            let p = points[v];
-            let ring = plan.ring(v);
-            *out = match plan.vertex_rules[v] {
-                VertexRule::Corner => p,
-                VertexRule::Crease => {
-                    p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
-                }
-                VertexRule::Smooth => {
-                    let (own, each) = loop_smooth_weights(ring.len());
-                    let sum = ring
-                        .iter()
-                        .fold(DVec3::ZERO, |s, &u| s + points[u as usize]);
-                    p * own + sum * each
-                }
-            };
-        });
+        .for_each(|(v, out)| *out = vertex_point(plan, points, v));
+}
+
+/// As [`apply`], into a new vector written once (no zero-filling).
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`].
+pub(crate) fn points(plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    let (v, e) = (plan.vertex_count, plan.edge_count());
+    let mut out = try_vec(v + e, "refined positions")?;
+    out.par_extend(
+        (0..v)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|v| vertex_point(plan, points, v)),
+    );
+    out.par_extend(
+        (0..e)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|e| edge_point(plan, points, e)),
+    );
+    Ok(out)
 }

@@ -22,16 +22,33 @@
 //! Edges with three or more faces, or whose two faces run them the same way,
 //! are infinitely sharp creases; bow-tie and other non-manifold vertices are
 //! corners — as OpenSubdiv does. No face is ever dropped.
+//!
+//! # Creases, carried data and the limit
+//! [`Subdivider`](crate::subdivide::Subdivider) (and [`subdivide_with`](crate::subdivide::subdivide_with), [`Refiner::with_options`](crate::subdivide::Refiner::with_options)) takes
+//! [`SubdivisionOptions`](crate::subdivide::SubdivisionOptions): semi-sharp and infinite edge creases and vertex
+//! corners with Uniform or Chaikin creasing, as OpenSubdiv's
+//! `TopologyDescriptor` and `Sdc::Options`; it carries per-vertex data of any
+//! width and face-varying values ([`FaceVaryingLinear`](crate::subdivide::FaceVaryingLinear)), and projects the
+//! last level onto the limit surface ([`Limit`](crate::subdivide::Limit)). [`creases_from_mesh`](crate::subdivide::creases_from_mesh)
+//! turns unwelded seams and sharp folds into creases.
 
 mod catmull_clark;
+mod creases;
+mod face_varying;
 mod level;
+mod limit;
 mod loop_subdivision;
 mod refiner;
 pub(crate) mod rules;
+mod stencils;
 
 use glam::DVec3;
 
+pub use creases::{creases_from_mesh, Crease, Creasing, SubdivisionOptions, SHARPNESS_INFINITE};
+pub use face_varying::FaceVaryingLinear;
+pub use limit::Limit;
 pub use refiner::Refiner;
+pub use stencils::{subdivide_with, Subdivider};
 
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
@@ -127,20 +144,31 @@ pub fn subdivide(
     levels: u32,
     naked_edges: NakedEdges,
 ) -> Result<Mesh> {
-    let mut positions = mesh.positions().to_vec();
-    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, |plan, _| {
-        let face_points = match scheme {
-            Scheme::CatmullClark => plan.face_count(),
-            Scheme::Loop => 0,
-        };
-        let count = plan.vertex_count + plan.edge_count() + face_points;
-        let mut next = try_vec(count, "refined positions")?;
-        next.resize(count, DVec3::ZERO);
-        refiner::apply(scheme, &plan, &positions, &mut next);
-        positions = next;
+    // The first level reads the cage's positions in place.
+    let mut positions: Option<Vec<DVec3>> = None;
+    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, false, |plan, _| {
+        let source = positions.as_deref().unwrap_or(mesh.positions());
+        let next = refiner::points(scheme, &plan, source)?;
+        drop(plan);
+        positions = Some(next);
         Ok(())
     })?;
-    let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+    let positions = match positions {
+        Some(positions) => positions,
+        None => mesh.positions().to_vec(),
+    };
+    let sizes = if faces.offsets.is_empty() {
+        // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
+        let size = match scheme {
+            Scheme::CatmullClark => 4,
+            Scheme::Loop => 3,
+        };
+        let mut sizes = try_vec(faces.indices.len() / size, "face sizes")?;
+        sizes.resize(faces.indices.len() / size, size as u32);
+        sizes
+    } else {
+        faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
+    };
     Ok(Mesh::from_valid_parts(positions, sizes, faces.indices))
 }
 

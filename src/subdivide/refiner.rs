@@ -9,7 +9,10 @@ use glam::DVec3;
 
 use super::level::{Connectivity, Faces, Plan};
 use super::rules::{cage_tags, child_tags, plan, Tags};
-use super::{catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme};
+use super::{
+    catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme, Subdivider,
+    SubdivisionOptions,
+};
 use crate::error::{try_vec, Error, Result};
 use crate::mesh::Mesh;
 
@@ -27,6 +30,8 @@ pub struct Refiner {
     cage_positions: Vec<DVec3>,
     /// Two buffers for the intermediate levels, reserved once.
     scratch: Mutex<[Vec<DVec3>; 2]>,
+    /// With creases or corners: the stencils that evaluate instead of the plans.
+    creased: Option<Box<Subdivider>>,
 }
 
 impl Refiner {
@@ -44,7 +49,7 @@ impl Refiner {
         naked_edges: NakedEdges,
     ) -> Result<Refiner> {
         let mut plans = Vec::new();
-        let faces = plan_levels(cage, scheme, levels, naked_edges, |p, _| {
+        let faces = plan_levels(cage, scheme, levels, naked_edges, true, |p, _| {
             plans.push(p);
             Ok(())
         })?;
@@ -66,7 +71,38 @@ impl Refiner {
             faces,
             cage_positions: cage.positions().to_vec(),
             scratch: Mutex::new([a, b]),
+            creased: None,
         })
+    }
+
+    /// Plans `levels` levels of `scheme` on `cage`'s faces with creases,
+    /// corners and the naked-edge mode of `options` (see [`Subdivider`]).
+    ///
+    /// # Errors
+    /// As [`Subdivider::new`].
+    pub fn with_options(
+        cage: &Mesh,
+        scheme: Scheme,
+        levels: u32,
+        options: &SubdivisionOptions,
+    ) -> Result<Refiner> {
+        let creased = Subdivider::new(cage, scheme, levels, options)?;
+        Ok(Refiner {
+            scheme,
+            naked_edges: options.naked_edges,
+            cage_vertex_count: cage.vertex_count(),
+            plans: Vec::new(),
+            faces: creased.last().faces.clone(),
+            cage_positions: cage.positions().to_vec(),
+            scratch: Mutex::new([Vec::new(), Vec::new()]),
+            creased: Some(Box::new(creased)),
+        })
+    }
+
+    /// The creased subdivision, when built [`Refiner::with_options`]: for
+    /// carried data, face-varying values and the limit.
+    pub fn subdivider(&self) -> Option<&Subdivider> {
+        self.creased.as_deref()
     }
 
     /// The scheme it refines with.
@@ -81,7 +117,9 @@ impl Refiner {
 
     /// Number of levels.
     pub fn levels(&self) -> usize {
-        self.plans.len()
+        self.creased
+            .as_ref()
+            .map_or(self.plans.len(), |creased| creased.levels())
     }
 
     /// Number of cage vertices [`Refiner::evaluate`] expects.
@@ -136,6 +174,9 @@ impl Refiner {
                 "cage vertex {v} has a non-finite coordinate"
             )));
         }
+        if let Some(creased) = &self.creased {
+            return creased.evaluate(cage, out);
+        }
         let Some((last, intermediate)) = self.plans.split_last() else {
             out.copy_from_slice(cage);
             return Ok(());
@@ -186,6 +227,14 @@ fn face_sizes(faces: &Faces) -> Vec<u32> {
     faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
+/// Applies one plan of `scheme` into a new vector, each point written once.
+pub(crate) fn points(scheme: Scheme, plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    match scheme {
+        Scheme::CatmullClark => catmull_clark::points(plan, points),
+        Scheme::Loop => loop_subdivision::points(plan, points),
+    }
+}
+
 /// Applies one plan of `scheme`.
 pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     match scheme {
@@ -195,13 +244,15 @@ pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DV
 }
 
 /// Plans every level in turn, handing each plan with its level index to
-/// `each`, and returns the faces of the last level. Checks the scheme's
-/// preconditions and every level's size before allocating.
+/// `each`, and returns the faces of the last level (without offsets unless
+/// `last_offsets`: every face of a refined level has the same size). Checks
+/// the scheme's preconditions and every level's size before allocating.
 pub(crate) fn plan_levels(
     cage: &Mesh,
     scheme: Scheme,
     levels: u32,
     naked_edges: NakedEdges,
+    last_offsets: bool,
     mut each: impl FnMut(Plan, usize) -> Result<()>,
 ) -> Result<Faces> {
     if scheme == Scheme::Loop {
@@ -228,16 +279,31 @@ pub(crate) fn plan_levels(
     )?;
     let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
     for level in 0..levels as usize {
+        let last = level + 1 == levels as usize;
         let next_faces = match scheme {
-            Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity)?,
-            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity)?,
+            Scheme::CatmullClark => {
+                catmull_clark::child_faces(&faces, &connectivity, !last || last_offsets)?
+            }
+            Scheme::Loop => {
+                loop_subdivision::child_faces(&faces, &connectivity, !last || last_offsets)?
+            }
         };
-        each(plan(scheme, &faces, &connectivity, &tags)?, level)?;
-        if level + 1 < levels as usize {
-            let next_connectivity = Connectivity::new(&next_faces)?;
+        let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
+        if !last {
+            // The next level's edges and adjacency, written from this one's.
+            let next_connectivity =
+                connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
             connectivity = next_connectivity;
+        } else {
+            // Not needed any more: free it before the last, largest pass.
+            connectivity = Connectivity::default();
         }
+        if scheme == Scheme::CatmullClark {
+            plan.face_offsets = faces.offsets;
+            plan.face_indices = faces.indices;
+        }
+        each(plan, level)?;
         faces = next_faces;
     }
     Ok(faces)

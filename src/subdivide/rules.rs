@@ -40,10 +40,46 @@ pub(crate) fn cage_tags(
     connectivity: &Connectivity,
     naked_edges: NakedEdges,
 ) -> Result<Tags> {
+    let forced = forced_sharpness(faces, connectivity, naked_edges)?;
+    let mut vertex_rules = try_vec(faces.vertex_count, "vertex tags")?;
+    for (v, &sharp) in forced.vertex_infinite.iter().enumerate() {
+        vertex_rules.push(if sharp {
+            VertexRule::Corner
+        } else {
+            match forced.sharp_edge_counts[v] {
+                0 | 1 => VertexRule::Smooth,
+                2 => VertexRule::Crease,
+                _ => VertexRule::Corner,
+            }
+        });
+    }
+    Ok(Tags {
+        edge_sharp: forced.edge_infinite,
+        vertex_rules,
+    })
+}
+
+/// What the topology and the naked-edge mode make infinitely sharp on the
+/// cage, before any crease or corner given by the user.
+pub(crate) struct ForcedSharpness {
+    /// Naked and non-manifold edges.
+    pub(crate) edge_infinite: Vec<bool>,
+    /// Corners of the naked-edge mode, non-manifold and isolated vertices.
+    pub(crate) vertex_infinite: Vec<bool>,
+    /// Per vertex, how many of its edges are in `edge_infinite`.
+    pub(crate) sharp_edge_counts: Vec<u32>,
+}
+
+/// Finds the edges and vertices the topology makes infinitely sharp (see the
+/// module doc).
+pub(crate) fn forced_sharpness(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    naked_edges: NakedEdges,
+) -> Result<ForcedSharpness> {
     let vertex_count = faces.vertex_count;
     let edge_count = connectivity.edge_count();
     let mut edge_sharp = zeroed(edge_count, "edge tags")?;
-    let mut non_manifold_edge: Vec<bool> = zeroed(edge_count, "edge tags")?;
     // Per vertex: incident edges, naked edges, non-manifold edges, sharp edges.
     let mut counts: Vec<[u32; 4]> = zeroed(vertex_count, "vertex tags")?;
     for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
@@ -54,7 +90,6 @@ pub(crate) fn cage_tags(
         let non_manifold = corners.len() > 2 || same_direction;
         let sharp = naked || non_manifold;
         edge_sharp[e] = sharp;
-        non_manifold_edge[e] = non_manifold;
         for v in [a, b] {
             let count = &mut counts[v as usize];
             count[0] += 1;
@@ -64,7 +99,8 @@ pub(crate) fn cage_tags(
         }
     }
 
-    let mut vertex_rules = try_vec(vertex_count, "vertex tags")?;
+    let mut vertex_infinite = try_vec(vertex_count, "vertex tags")?;
+    let mut sharp_edge_counts = try_vec(vertex_count, "vertex tags")?;
     for (v, &[edges, naked, non_manifold_edges, sharp_edges]) in counts.iter().enumerate() {
         let face_count = connectivity.vertex_corners(v).len() as u32;
         let non_manifold = face_count == 0
@@ -73,23 +109,18 @@ pub(crate) fn cage_tags(
         let topological_corner = face_count == 1 && edges == 2;
         let interior_non_manifold_crease =
             non_manifold_edges == 2 && naked == 0 && face_count > edges;
-        let sharp = face_count == 0
-            || (naked_edges == NakedEdges::Fixed && naked > 0)
-            || (naked_edges == NakedEdges::CornerFixed && topological_corner)
-            || (non_manifold && !interior_non_manifold_crease);
-        vertex_rules.push(if sharp {
-            VertexRule::Corner
-        } else {
-            match sharp_edges {
-                0 | 1 => VertexRule::Smooth,
-                2 => VertexRule::Crease,
-                _ => VertexRule::Corner,
-            }
-        });
+        vertex_infinite.push(
+            face_count == 0
+                || (naked_edges == NakedEdges::Fixed && naked > 0)
+                || (naked_edges == NakedEdges::CornerFixed && topological_corner)
+                || (non_manifold && !interior_non_manifold_crease),
+        );
+        sharp_edge_counts.push(sharp_edges);
     }
-    Ok(Tags {
-        edge_sharp,
-        vertex_rules,
+    Ok(ForcedSharpness {
+        edge_infinite: edge_sharp,
+        vertex_infinite,
+        sharp_edge_counts,
     })
 }
 
@@ -265,14 +296,11 @@ pub(crate) fn plan(
         }
     }
 
-    let (face_offsets, face_indices) = match scheme {
-        Scheme::CatmullClark => (faces.offsets.clone(), faces.indices.clone()),
-        Scheme::Loop => (Vec::new(), Vec::new()),
-    };
+    // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
     Ok(Plan {
         vertex_count,
-        face_offsets,
-        face_indices,
+        face_offsets: Vec::new(),
+        face_indices: Vec::new(),
         edges,
         vertex_rules: tags.vertex_rules.clone(),
         vertex_ring_offsets: ring_offsets,

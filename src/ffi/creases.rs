@@ -1,0 +1,475 @@
+//! Subdivision with creases, corners, carried data, face-varying values and
+//! the limit surface: OpenSubdiv's `TopologyDescriptor` crease and corner
+//! arrays beside the mesh, in a `WeftSubdivisionOptions`.
+
+use glam::DVec3;
+
+use crate::ffi::boundary::{
+    check_room, enum_arg, guard, input_slice, out_param, output_slice, required, Failure,
+    WeftStatus,
+};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::ffi::refiner::WeftRefiner;
+use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
+use crate::mesh::Mesh;
+use crate::subdivide::{
+    self, Creasing, FaceVaryingLinear, Refiner, Scheme, Subdivider, SubdivisionOptions,
+};
+
+/// Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).
+pub const WEFT_CREASING_UNIFORM: u32 = 0;
+/// Semi-sharp creases are averaged with their neighbours first (OpenSubdiv CREASE_CHAIKIN).
+pub const WEFT_CREASING_CHAIKIN: u32 = 1;
+/// Face-varying values are smooth everywhere (OpenSubdiv FVAR_LINEAR_NONE).
+pub const WEFT_FACE_VARYING_SMOOTH: u32 = 0;
+/// Face-varying values are linear at their corners only (FVAR_LINEAR_CORNERS_ONLY).
+pub const WEFT_FACE_VARYING_CORNERS_ONLY: u32 = 1;
+/// As corners only, and sharper at junctions of three or more regions (FVAR_LINEAR_CORNERS_PLUS1).
+pub const WEFT_FACE_VARYING_CORNERS_PLUS1: u32 = 2;
+/// As corners plus one, and sharper where boundaries meet (FVAR_LINEAR_CORNERS_PLUS2).
+pub const WEFT_FACE_VARYING_CORNERS_PLUS2: u32 = 3;
+/// Face-varying values are linear along every seam and boundary (FVAR_LINEAR_BOUNDARIES).
+pub const WEFT_FACE_VARYING_BOUNDARIES: u32 = 4;
+/// Face-varying values are linear everywhere (FVAR_LINEAR_ALL, OpenSubdiv's default).
+pub const WEFT_FACE_VARYING_ALL: u32 = 5;
+/// The sharpness at and above which a crease or corner never softens.
+pub const WEFT_SHARPNESS_INFINITE: f64 = 10.0;
+
+/// What besides the mesh shapes a subdivision: the scheme, the naked-edge
+/// mode, the creasing method, and OpenSubdiv-style crease and corner arrays.
+/// Zero-initialise it, then fill what you need: all zeros is Catmull-Clark
+/// with fixed naked edges and nothing creased.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct WeftSubdivisionOptions {
+    /// A WEFT_SCHEME_* value.
+    pub scheme: u32,
+    /// A WEFT_NAKED_EDGES_* value.
+    pub naked_edges: u32,
+    /// A WEFT_CREASING_* value.
+    pub creasing: u32,
+    /// Number of creased edges.
+    pub crease_count: usize,
+    /// `2 * crease_count` vertex indices: the ends of each creased edge, which must be an edge of the mesh; NULL when `crease_count` is 0.
+    pub crease_vertex_pairs: *const u32,
+    /// `crease_count` sharpness values: 0 or more, WEFT_SHARPNESS_INFINITE or more (or INFINITY) for a hard crease.
+    pub crease_sharpness: *const f64,
+    /// Number of sharp vertices.
+    pub corner_count: usize,
+    /// `corner_count` vertex indices; NULL when `corner_count` is 0.
+    pub corner_vertices: *const u32,
+    /// `corner_count` sharpness values, as for creases.
+    pub corner_sharpness: *const f64,
+}
+
+/// Reads the options: enumerations checked, arrays copied.
+unsafe fn options_arg(
+    options: *const WeftSubdivisionOptions,
+) -> Result<(Scheme, SubdivisionOptions), Failure> {
+    let options = required(options, "options")?;
+    let scheme = scheme_arg(options.scheme)?;
+    let naked_edges = naked_edges_arg(options.naked_edges)?;
+    let creasing = enum_arg(
+        options.creasing,
+        "creasing",
+        Creasing::from_u32,
+        "WEFT_CREASING_UNIFORM (0) or WEFT_CREASING_CHAIKIN (1)",
+    )?;
+    let pair_count = options.crease_count.checked_mul(2).ok_or_else(|| {
+        Failure::new(
+            WeftStatus::InputTooLarge,
+            format!("crease_count {} is too large", options.crease_count),
+        )
+    })?;
+    let pairs = input_slice(
+        options.crease_vertex_pairs,
+        pair_count,
+        "crease_vertex_pairs",
+    )?;
+    let crease_sharpness = input_slice(
+        options.crease_sharpness,
+        options.crease_count,
+        "crease_sharpness",
+    )?;
+    let corners = input_slice(
+        options.corner_vertices,
+        options.corner_count,
+        "corner_vertices",
+    )?;
+    let corner_sharpness = input_slice(
+        options.corner_sharpness,
+        options.corner_count,
+        "corner_sharpness",
+    )?;
+    Ok((
+        scheme,
+        SubdivisionOptions {
+            naked_edges,
+            creasing,
+            creases: pairs
+                .chunks_exact(2)
+                .zip(crease_sharpness)
+                .map(|(pair, &s)| ([pair[0], pair[1]], s))
+                .collect(),
+            corners: corners
+                .iter()
+                .copied()
+                .zip(corner_sharpness.iter().copied())
+                .collect(),
+        },
+    ))
+}
+
+fn face_varying_arg(value: u32) -> Result<FaceVaryingLinear, Failure> {
+    enum_arg(
+        value,
+        "face_varying_linear",
+        FaceVaryingLinear::from_u32,
+        "one of the WEFT_FACE_VARYING_* values (0 to 5)",
+    )
+}
+
+unsafe fn subdivider_arg(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+) -> Result<(&'static Mesh, Subdivider), Failure> {
+    let mesh = mesh_ref(mesh, "mesh")?;
+    let (scheme, options) = options_arg(options)?;
+    let subdivider = Subdivider::new(mesh, scheme, levels, &options)?;
+    Ok((mesh, subdivider))
+}
+
+/// Subdivides a mesh `levels` times with the scheme, naked-edge mode,
+/// creases and corners of `options`, as OpenSubdiv does with the same
+/// `Sdc::Options` and `TopologyDescriptor` arrays. Output order as
+/// `weft_catmull_clark` and `weft_loop`.
+///
+/// `mesh` must not be NULL. `options` must not be NULL; see
+/// `WeftSubdivisionOptions`. `levels` is the number of steps; 0 returns a copy.
+/// `out_mesh` receives the new mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
+/// unknown enumeration value, a crease pair that is not an edge of the mesh,
+/// a corner past the vertex count, a negative or NaN sharpness — the
+/// message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
+/// WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `options` is NULL or readable with
+/// arrays of the lengths it states; `out_mesh` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivide_ex(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+        WeftMesh::write(out, subdivider.mesh()?);
+        Ok(())
+    })
+}
+
+/// Gives the vertex, face and face-index counts of the mesh `levels` steps
+/// of `scheme` make from `mesh` (creases do not change them), without
+/// subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
+/// `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
+///
+/// `mesh` must not be NULL. `scheme` is a WEFT_SCHEME_* value. Each
+/// `out_*` receives its count on success; none may be NULL.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+/// WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; the `out_*` are NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivision_counts(
+    mesh: *const WeftMesh,
+    scheme: u32,
+    levels: u32,
+    out_vertex_count: *mut usize,
+    out_face_count: *mut usize,
+    out_index_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let vertices = out_param(out_vertex_count, "out_vertex_count")?;
+        let faces = out_param(out_face_count, "out_face_count")?;
+        let indices = out_param(out_index_count, "out_index_count")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let scheme = scheme_arg(scheme)?;
+        let counts = subdivide::refined_counts(mesh, scheme, levels)?;
+        *vertices = counts.vertex_count;
+        *faces = counts.face_count;
+        *indices = counts.index_count;
+        Ok(())
+    })
+}
+
+/// Carries per-vertex data of any width (colours, weights) through the
+/// subdivision of `weft_subdivide_ex`: every refined vertex gets the same
+/// weighted sum of cage values as its position (OpenSubdiv's
+/// `PrimvarRefiner::Interpolate`).
+///
+/// `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+/// `data` holds `width` doubles per cage vertex (`width` ≥ 1), `data_len` in all.
+/// `out_data` has room for `capacity` doubles; it needs `width` times the
+/// refined vertex count (`weft_subdivision_counts`), else the call fails with
+/// WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
+/// `data_len` is not `width` times the cage's vertex count, and
+/// WEFT_STATUS_INVALID_ARGUMENT when `width` is 0.
+///
+/// # Safety
+/// As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
+/// `capacity` writable doubles (either may be NULL when its length is 0).
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivide_vertex_data(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    data: *const f64,
+    data_len: usize,
+    width: usize,
+    out_data: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = output_slice(out_data, capacity, "out_data")?;
+        let data = input_slice(data, data_len, "data")?;
+        let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
+        if width == 0 {
+            return Err(Failure::invalid_argument(
+                "width is 0; it must be at least 1",
+            ));
+        }
+        if Some(data_len) != mesh.vertex_count().checked_mul(width) {
+            return Err(Failure::new(
+                WeftStatus::CountMismatch,
+                format!(
+                    "data holds {data_len} doubles but {} vertices of width {width} need {}",
+                    mesh.vertex_count(),
+                    mesh.vertex_count().saturating_mul(width)
+                ),
+            ));
+        }
+        let needed = subdivider.vertex_count().saturating_mul(width);
+        check_room("out_data", capacity, needed)?;
+        subdivider.vertex_data_into(data, width, &mut out[..needed])?;
+        Ok(())
+    })
+}
+
+/// Carries per-face-corner values (UVs) through the subdivision of
+/// `weft_subdivide_ex`, face-varying as OpenSubdiv's
+/// `PrimvarRefiner::InterpolateFaceVarying`: corners of one vertex that use
+/// different values are a seam, and `face_varying_linear` says where values
+/// are interpolated linearly.
+///
+/// `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+/// `face_varying_linear` is a WEFT_FACE_VARYING_* value.
+/// `values` holds `width` doubles for each of `value_count` values (`width` ≥ 1).
+/// `value_indices` holds the value of every face corner of `mesh`, face
+/// after face: `index_count` must equal the mesh's face-index count.
+/// `out_values` has room for `capacity` doubles; it receives `width` doubles
+/// per face corner of the refined mesh, face after face, and needs `width`
+/// times the refined face-index count (`weft_subdivision_counts`), else the
+/// call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
+/// WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
+/// WEFT_STATUS_INVALID_ARGUMENT.
+///
+/// # Safety
+/// As `weft_subdivide_ex`; the buffers hold the elements stated.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivide_face_varying(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    face_varying_linear: u32,
+    values: *const f64,
+    value_count: usize,
+    width: usize,
+    value_indices: *const u32,
+    index_count: usize,
+    out_values: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = output_slice(out_values, capacity, "out_values")?;
+        let linear = face_varying_arg(face_varying_linear)?;
+        if width == 0 {
+            return Err(Failure::invalid_argument(
+                "width is 0; it must be at least 1",
+            ));
+        }
+        let value_len = value_count.checked_mul(width).ok_or_else(|| {
+            Failure::new(
+                WeftStatus::InputTooLarge,
+                "value_count * width is too large",
+            )
+        })?;
+        let values = input_slice(values, value_len, "values")?;
+        let indices = input_slice(value_indices, index_count, "value_indices")?;
+        let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
+        if index_count != mesh.index_count() {
+            return Err(Failure::new(
+                WeftStatus::CountMismatch,
+                format!(
+                    "value_indices holds {index_count} indices but the mesh has {} face corners",
+                    mesh.index_count()
+                ),
+            ));
+        }
+        if let Some(c) = indices.iter().position(|&i| i as usize >= value_count) {
+            return Err(Failure::new(
+                WeftStatus::IndexOutOfRange,
+                format!(
+                    "face corner {c} uses value {}, but there are {value_count} values",
+                    indices[c]
+                ),
+            ));
+        }
+        let needed = subdivider.face_indices().len().saturating_mul(width);
+        check_room("out_values", capacity, needed)?;
+        let refined = subdivider.face_varying(values, width, indices, linear)?;
+        out[..needed].copy_from_slice(&refined);
+        Ok(())
+    })
+}
+
+/// Projects the vertices of the subdivision of `weft_subdivide_ex` onto the
+/// limit surface, and gives the surface's unit normals there (OpenSubdiv's
+/// `PrimvarRefiner::Limit`; normal = du × dv normalised, outward for
+/// counter-clockwise faces, zero where undefined).
+///
+/// `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`
+/// (Catmull-Clark needs at least 1 unless every face is a quad).
+/// `out_positions` and `out_normals` each have room for `capacity` doubles
+/// and need 3 per refined vertex (`weft_subdivision_counts`), else the call
+/// fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing;
+/// `out_normals` may be NULL when the normals are not wanted.
+///
+/// Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
+/// Catmull-Clark at level 0 on a mesh with faces that are not quads.
+///
+/// # Safety
+/// As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivide_limit(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_positions: *mut f64,
+    out_normals: *mut f64,
+    capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        let positions = out_param(out_positions, "out_positions")?;
+        let positions = output_slice(positions, capacity, "out_positions")?;
+        let normals = if out_normals.is_null() {
+            None
+        } else {
+            Some(output_slice(out_normals, capacity, "out_normals")?)
+        };
+        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+        let needed = subdivider.vertex_count().saturating_mul(3);
+        check_room("out_positions", capacity, needed)?;
+        let limit = subdivider.limit()?;
+        write_points(&limit.positions, positions);
+        if let Some(normals) = normals {
+            write_points(&limit.normals, normals);
+        }
+        Ok(())
+    })
+}
+
+fn write_points(points: &[DVec3], out: &mut [f64]) {
+    for (p, xyz) in points.iter().zip(out.chunks_exact_mut(3)) {
+        xyz.copy_from_slice(&p.to_array());
+    }
+}
+
+/// Plans a subdivision with the scheme, naked-edge mode, creases and corners
+/// of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
+/// other `weft_refiner_*` functions work on it as on one from
+/// `weft_refiner_new`).
+///
+/// `cage` and `options` must not be NULL; the cage's positions are kept for
+/// `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
+/// it with `weft_refiner_free`) and is left untouched on failure; it must
+/// not be NULL.
+///
+/// Fails as `weft_subdivide_ex`.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
+/// `out_refiner` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_new_ex(
+    cage: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_refiner: *mut *mut WeftRefiner,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_refiner, "out_refiner")?;
+        let cage = mesh_ref(cage, "cage")?;
+        let (scheme, options) = options_arg(options)?;
+        let refiner = Refiner::with_options(cage, scheme, levels, &options)?;
+        *out = WeftRefiner::boxed(refiner);
+        Ok(())
+    })
+}
+
+/// Prepares a mesh whose creases are unwelded seams or sharp folds for
+/// creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
+/// same position, and lists as creases every edge that was naked before
+/// welding and has two faces after, and every edge whose faces' normals
+/// differ by more than `angle_degrees` (180 or more: no fold test). Pass the
+/// pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+///
+/// `mesh` must not be NULL. `angle_degrees` must be 0 or more.
+/// `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
+/// must not be NULL. `out_pairs` has room for `capacity` indices and receives
+/// two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
+/// always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
+/// `out_crease_count` receives the number of creases; it must not be NULL.
+/// Nothing is written on failure.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
+/// or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
+/// writable indices; the other outputs are NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_crease_edges_from_mesh(
+    mesh: *const WeftMesh,
+    angle_degrees: f64,
+    out_welded: *mut *mut WeftMesh,
+    out_pairs: *mut u32,
+    capacity: usize,
+    out_crease_count: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let welded_out = out_param(out_welded, "out_welded")?;
+        let count_out = out_param(out_crease_count, "out_crease_count")?;
+        let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (welded, creases) = subdivide::creases_from_mesh(mesh, angle_degrees)?;
+        check_room("out_pairs", capacity, 2 * creases.len())?;
+        for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
+            slot.copy_from_slice(pair);
+        }
+        *count_out = creases.len();
+        WeftMesh::write(welded_out, welded);
+        Ok(())
+    })
+}

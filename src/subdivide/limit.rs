@@ -1,0 +1,365 @@
+//! The limit surface at the vertices of the last level: where each vertex
+//! would end after infinitely many levels, and the surface's tangents and
+//! normal there, with OpenSubdiv's limit masks (`Sdc::Scheme::
+//! ComputeVertexLimitMask`: `assignSmoothLimitMask`, `assignCreaseLimitMask`,
+//! `assignCornerLimitMask` and their tangent masks, applied as
+//! `Far::PrimvarRefiner::Limit` applies them).
+//!
+//! Smooth vertices use the eigen-analysis masks of the scheme (Halstead,
+//! Kass and DeRose 1993 for Catmull-Clark; Loop 1987); crease and boundary
+//! vertices the cubic B-spline along the crease and Biermann, Levin and
+//! Zorin's (2000) cross tangent; corners stay, with their two first edges
+//! as tangents.
+
+use glam::DVec3;
+
+use super::creases::{is_sharp, Rule};
+use super::stencils::{walk_around, Subdivider};
+use super::Scheme;
+use crate::error::{Error, Result};
+
+/// Limit positions, tangents and unit normals, one per vertex of the last
+/// level, in its vertex order.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Limit {
+    /// Limit positions.
+    pub positions: Vec<DVec3>,
+    /// First tangent (along a crease, in the direction of its first edge).
+    pub du: Vec<DVec3>,
+    /// Second tangent (across a crease, into the surface).
+    pub dv: Vec<DVec3>,
+    /// `du × dv` normalised: pointing outward from counter-clockwise faces;
+    /// zero where the tangents are parallel.
+    pub normals: Vec<DVec3>,
+}
+
+/// One vertex's limit masks: a weight for the vertex, one per edge around it
+/// (on the edge's far end) and one per face (on the face's vertex opposite
+/// the vertex; Catmull-Clark quads only).
+#[derive(Default)]
+struct LimitMask {
+    vertex: f64,
+    edges: Vec<f64>,
+    faces: Vec<f64>,
+}
+
+impl LimitMask {
+    fn zero(edges: usize, faces: usize) -> LimitMask {
+        LimitMask {
+            vertex: 0.0,
+            edges: vec![0.0; edges],
+            faces: vec![0.0; faces],
+        }
+    }
+}
+
+impl Subdivider {
+    /// The limit surface at the last level's vertices, for the cage
+    /// positions the subdivider was built from.
+    ///
+    /// # Errors
+    /// As [`Subdivider::limit_of`].
+    pub fn limit(&self) -> Result<Limit> {
+        self.limit_of(&self.cage_positions)
+    }
+
+    /// The limit surface at the last level's vertices for new cage
+    /// positions. Isolated vertices keep their place with zero tangents;
+    /// around a non-manifold vertex the tangents follow the edges' index
+    /// order (OpenSubdiv leaves them unordered there too).
+    ///
+    /// # Errors
+    /// [`Error::InvalidArgument`] for Catmull-Clark at level 0 on a cage with
+    /// faces that are not quads (refine once first), or positions as
+    /// [`Subdivider::evaluate`] refuses them; [`Error::OutOfMemory`].
+    pub fn limit_of(&self, cage: &[DVec3]) -> Result<Limit> {
+        let last = self.last();
+        let faces = &last.faces;
+        let connectivity = &last.connectivity;
+        if self.scheme == Scheme::CatmullClark {
+            if let Some(f) =
+                (0..faces.face_count()).find(|&f| faces.offsets[f + 1] - faces.offsets[f] != 4)
+            {
+                return Err(Error::InvalidArgument(format!(
+                    "the Catmull-Clark limit needs quads but face {f} is not one; \
+                     subdivide at least one level"
+                )));
+            }
+        }
+        let mut points = vec![DVec3::ZERO; self.vertex_count()];
+        self.evaluate(cage, &mut points)?;
+        let sharpness = &last.sharpness;
+        let n = points.len();
+        let mut limit = Limit {
+            positions: Vec::with_capacity(n),
+            du: Vec::with_capacity(n),
+            dv: Vec::with_capacity(n),
+            normals: Vec::with_capacity(n),
+        };
+        let (mut edges, mut corners) = (Vec::new(), Vec::new());
+        for v in 0..n {
+            let p = points[v];
+            let edge_count = sharpness.edges_at(v).len();
+            if edge_count == 0 {
+                limit.positions.push(p);
+                limit.du.push(DVec3::ZERO);
+                limit.dv.push(DVec3::ZERO);
+                limit.normals.push(DVec3::ZERO);
+                continue;
+            }
+            let ordered = walk_around(
+                faces,
+                connectivity,
+                v,
+                self.first_corners[v],
+                edge_count,
+                &mut edges,
+                &mut corners,
+            );
+            if !ordered {
+                edges.clear();
+                edges.extend_from_slice(sharpness.edges_at(v));
+                corners.clear();
+            }
+            let far: Vec<DVec3> = edges
+                .iter()
+                .map(|&e| {
+                    let [a, b] = connectivity.edges[e as usize];
+                    points[if a as usize == v { b } else { a } as usize]
+                })
+                .collect();
+            let quads = if self.scheme == Scheme::CatmullClark {
+                &corners[..]
+            } else {
+                &[]
+            };
+            let opposite: Vec<DVec3> = quads
+                .iter()
+                .map(|&c| {
+                    let f = connectivity.corner_faces[c as usize] as usize;
+                    let start = faces.offsets[f] as usize;
+                    let local = (c as usize - start + 2) % 4;
+                    points[faces.indices[start + local] as usize]
+                })
+                .collect();
+            let sharp: Vec<bool> = edges
+                .iter()
+                .map(|&e| is_sharp(sharpness.edges[e as usize]))
+                .collect();
+            let mut rule = sharpness.rules[v];
+            if rule.is_smooth() && (corners.len() == 2 || !ordered) {
+                rule = Rule::Corner;
+            }
+            let [position, du, dv] = match rule {
+                Rule::Smooth | Rule::Dart => smooth_masks(self.scheme, edges.len(), corners.len()),
+                Rule::Crease => {
+                    let first = sharp.iter().position(|&s| s).unwrap_or(0);
+                    let last = sharp.iter().rposition(|&s| s).unwrap_or(0);
+                    crease_masks(self.scheme, edges.len(), corners.len(), first, last)
+                }
+                Rule::Corner => corner_masks(self.scheme, edges.len()),
+            };
+            let apply = |mask: &LimitMask| {
+                let mut sum = p * mask.vertex;
+                for (w, q) in mask.edges.iter().zip(&far) {
+                    sum += *q * *w;
+                }
+                for (w, q) in mask.faces.iter().zip(&opposite) {
+                    sum += *q * *w;
+                }
+                sum
+            };
+            let (du, dv) = (apply(&du), apply(&dv));
+            limit.positions.push(apply(&position));
+            limit.du.push(du);
+            limit.dv.push(dv);
+            limit.normals.push(du.cross(dv).normalize_or_zero());
+        }
+        Ok(limit)
+    }
+}
+
+/// Position, first and second tangent masks of a smooth vertex.
+fn smooth_masks(scheme: Scheme, edges: usize, faces: usize) -> [LimitMask; 3] {
+    let n = faces;
+    let valence = n as f64;
+    let mut position = LimitMask::zero(edges, faces);
+    let mut du = LimitMask::zero(edges, faces);
+    match scheme {
+        Scheme::CatmullClark => {
+            let (f, e, v) = if n == 4 {
+                (1.0 / 36.0, 1.0 / 9.0, 4.0 / 9.0)
+            } else {
+                let f = 1.0 / (valence * (valence + 5.0));
+                let e = 4.0 * f;
+                (f, e, 1.0 - valence * (e + f))
+            };
+            position.vertex = v;
+            position.edges.fill(e);
+            position.faces.fill(f);
+            if n == 4 {
+                du.edges.copy_from_slice(&[4.0, 0.0, -4.0, 0.0]);
+                du.faces.copy_from_slice(&[1.0, -1.0, -1.0, 1.0]);
+            } else {
+                let theta = 2.0 * std::f64::consts::PI / valence;
+                let cos_theta = theta.cos();
+                let cos_half = (theta * 0.5).cos();
+                let lambda = 5.0 / 16.0
+                    + 1.0 / 16.0 * (cos_theta + cos_half * (2.0 * (9.0 + cos_theta)).sqrt());
+                let face_scale = 1.0 / (4.0 * lambda - 1.0);
+                for i in 0..n {
+                    let c0 = (i as f64 * theta).cos();
+                    let c1 = ((i + 1) as f64 * theta).cos();
+                    du.edges[i] = 4.0 * c0;
+                    du.faces[i] = face_scale * (c0 + c1);
+                }
+            }
+        }
+        Scheme::Loop => {
+            if n == 6 {
+                position.vertex = 0.5;
+                position.edges.fill(1.0 / 12.0);
+            } else {
+                let inverse = 1.0 / valence;
+                let cos_theta = (std::f64::consts::PI * 2.0 * inverse).cos();
+                let beta = 0.25 * cos_theta + 0.375;
+                let gamma = (0.625 - beta * beta) * inverse;
+                let e = 1.0 / (valence + 3.0 / (8.0 * gamma));
+                position.vertex = 1.0 - e * valence;
+                position.edges.fill(e);
+            }
+            let alpha = 2.0 * std::f64::consts::PI / valence;
+            let mut dv = LimitMask::zero(edges, faces);
+            for i in 0..n.min(edges) {
+                du.edges[i] = (alpha * i as f64).cos();
+                dv.edges[i] = (alpha * i as f64).sin();
+            }
+            return [position, du, dv];
+        }
+    }
+    // Catmull-Clark's second tangent is the first turned by one edge.
+    let mut dv = LimitMask::zero(edges, faces);
+    for i in 0..n {
+        dv.edges[(i + 1) % n] = du.edges[i];
+        dv.faces[(i + 1) % n] = du.faces[i];
+    }
+    [position, du, dv]
+}
+
+/// Masks of a crease vertex whose sharp edges are `first` and `last` in the
+/// counter-clockwise order; the cross tangent spans the faces between them.
+fn crease_masks(
+    scheme: Scheme,
+    edges: usize,
+    faces: usize,
+    first: usize,
+    last: usize,
+) -> [LimitMask; 3] {
+    let mut position = LimitMask::zero(edges, faces);
+    position.vertex = 2.0 / 3.0;
+    position.edges[first] = 1.0 / 6.0;
+    position.edges[last] = 1.0 / 6.0;
+    let mut du = LimitMask::zero(edges, faces);
+    let along = match scheme {
+        Scheme::CatmullClark => 0.5,
+        Scheme::Loop => 1.5,
+    };
+    du.edges[first] = along;
+    du.edges[last] = -along;
+    let mut dv = LimitMask::zero(edges, faces);
+    let interior = last.saturating_sub(first + 1);
+    let has_faces = faces > 0;
+    match scheme {
+        Scheme::CatmullClark => match interior {
+            0 => {
+                dv.vertex = -6.0;
+                dv.edges[first] = 3.0;
+                dv.edges[last] = 3.0;
+            }
+            1 => {
+                dv.vertex = -4.0 / 6.0;
+                dv.edges[first] = -1.0 / 6.0;
+                dv.edges[first + 1] = 4.0 / 6.0;
+                dv.edges[last] = -1.0 / 6.0;
+                if has_faces {
+                    dv.faces[first] = 1.0 / 6.0;
+                    dv.faces[first + 1] = 1.0 / 6.0;
+                }
+            }
+            _ => {
+                // Biermann, Levin and Zorin (2000), as OpenSubdiv weighs it.
+                let k = (interior + 1) as f64;
+                let theta = std::f64::consts::PI / k;
+                let (sin_theta, cos_theta) = theta.sin_cos();
+                let denominator = 1.0 / (k * (3.0 + cos_theta));
+                let r = (cos_theta + 1.0) / sin_theta;
+                dv.vertex = 4.0 * r * (cos_theta - 1.0) * denominator;
+                let crease = -r * (1.0 + 2.0 * cos_theta) * denominator;
+                dv.edges[first] = crease;
+                dv.edges[last] = crease;
+                if has_faces {
+                    dv.faces[first] = sin_theta * denominator;
+                }
+                let mut sin_next = sin_theta;
+                for i in 1..=interior {
+                    let sin_i = sin_next;
+                    sin_next = ((i + 1) as f64 * theta).sin();
+                    dv.edges[first + i] = 4.0 * sin_i * denominator;
+                    if has_faces {
+                        dv.faces[first + i] = (sin_i + sin_next) * denominator;
+                    }
+                }
+            }
+        },
+        Scheme::Loop => match interior {
+            0 => {
+                dv.vertex = -6.0;
+                dv.edges[first] = 3.0;
+                dv.edges[last] = 3.0;
+            }
+            1 => {
+                dv.vertex = -3.0;
+                dv.edges[first + 1] = 3.0;
+            }
+            2 => {
+                let root3 = f64::from(1.732_050_8_f32);
+                let half_root3 = root3 * 0.5;
+                dv.vertex = -root3;
+                dv.edges[first] = -half_root3;
+                dv.edges[last] = -half_root3;
+                dv.edges[first + 1] = root3;
+                dv.edges[first + 2] = root3;
+            }
+            _ => {
+                let theta = std::f64::consts::PI / (interior + 1) as f64;
+                let crease = -3.0 * theta.sin();
+                let coefficient = -3.0 * (2.0 * theta.cos() - 2.0);
+                dv.edges[first] = crease;
+                dv.edges[last] = crease;
+                for i in 1..=interior {
+                    dv.edges[first + i] = coefficient * (i as f64 * theta).sin();
+                }
+            }
+        },
+    }
+    [position, du, dv]
+}
+
+/// Masks of a corner: it stays; the tangents run along its first two edges.
+fn corner_masks(scheme: Scheme, edges: usize) -> [LimitMask; 3] {
+    let scale = match scheme {
+        Scheme::CatmullClark => 1.0,
+        Scheme::Loop => 3.0,
+    };
+    let mut position = LimitMask::zero(edges, 0);
+    position.vertex = 1.0;
+    let mut du = LimitMask::zero(edges, 0);
+    let mut dv = LimitMask::zero(edges, 0);
+    du.vertex = -scale;
+    dv.vertex = -scale;
+    if edges >= 2 {
+        du.edges[0] = scale;
+        dv.edges[1] = scale;
+    }
+    [position, du, dv]
+}

@@ -1,0 +1,293 @@
+/* Creases, corners, carried data, face-varying values, the limit surface and
+ * the refiner with options through the C ABI, and every bad argument with
+ * its own status and message. */
+#include <math.h>
+#include <string.h>
+
+#include "check.h"
+
+static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
+                                        0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
+static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
+static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+/* The twelve edges of the cube. */
+static const uint32_t cube_edges[] = {0, 1, 0, 2, 0, 4, 1, 3, 1, 5, 2, 3,
+                                      2, 6, 3, 7, 4, 5, 4, 6, 5, 7, 6, 7};
+
+static WeftMesh *cube(void) {
+  WeftMesh *mesh = NULL;
+  CHECK_STATUS(weft_mesh_new(cube_positions, 8, cube_sizes, 6, cube_indices, 24, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static WeftSubdivisionOptions catmull_clark(void) {
+  WeftSubdivisionOptions options;
+  memset(&options, 0, sizeof options);
+  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
+  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
+  options.creasing = WEFT_CREASING_UNIFORM;
+  return options;
+}
+
+static int near(double a, double b) { return fabs(a - b) < 1e-12; }
+
+static void test_creases_and_corners(void) {
+  WeftMesh *mesh = cube(), *out = NULL, *plain = NULL;
+  WeftSubdivisionOptions options = catmull_clark();
+  /* The four edges of face 0 infinitely sharp, vertex 7 a corner. */
+  const uint32_t pairs[] = {0, 2, 2, 3, 3, 1, 1, 0};
+  const double sharpness[] = {INFINITY, 10.0, 12.0, INFINITY};
+  const uint32_t corners[] = {7};
+  const double corner_sharpness[] = {INFINITY};
+  const double *p;
+  options.crease_count = 4;
+  options.crease_vertex_pairs = pairs;
+  options.crease_sharpness = sharpness;
+  options.corner_count = 1;
+  options.corner_vertices = corners;
+  options.corner_sharpness = corner_sharpness;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(out) == 26 && weft_mesh_face_count(out) == 24);
+  p = weft_mesh_positions(out);
+  /* Vertex 0 follows its crease: 3/4 itself + 1/8 each of vertices 1 and 2. */
+  CHECK(near(p[0], 0.125) && near(p[1], 0.125) && near(p[2], 0.0));
+  /* The corner stays. */
+  CHECK(near(p[21], 1.0) && near(p[22], 1.0) && near(p[23], 1.0));
+  weft_mesh_free(out);
+
+  /* Sharpness 0 everywhere is the plain scheme. */
+  {
+    const double zeros[] = {0, 0, 0, 0};
+    options.crease_sharpness = zeros;
+    options.corner_count = 0;
+    options.corner_vertices = NULL;
+    options.corner_sharpness = NULL;
+    CHECK_STATUS(weft_subdivide_ex(mesh, &options, 2, &out), WEFT_STATUS_OK);
+    CHECK_STATUS(weft_catmull_clark(mesh, 2, WEFT_NAKED_EDGES_SMOOTH, &plain), WEFT_STATUS_OK);
+    {
+      size_t i, n = 3 * weft_mesh_vertex_count(out);
+      int same = n == 3 * weft_mesh_vertex_count(plain);
+      for (i = 0; same && i < n; ++i) same = near(weft_mesh_positions(out)[i], weft_mesh_positions(plain)[i]);
+      CHECK(same);
+    }
+    weft_mesh_free(out);
+    weft_mesh_free(plain);
+  }
+  weft_mesh_free(mesh);
+}
+
+static void test_counts_and_vertex_data(void) {
+  WeftMesh *mesh = cube(), *out = NULL;
+  WeftSubdivisionOptions options = catmull_clark();
+  const uint32_t pairs[] = {0, 1};
+  const double sharpness[] = {1.5};
+  double data[16], refined[2 * 98];
+  size_t vertices = 0, faces = 0, indices = 0, v;
+  int ok = 1;
+  for (v = 0; v < 8; ++v) {
+    data[2 * v] = cube_positions[3 * v];
+    data[2 * v + 1] = 1.0;
+  }
+  options.crease_count = 1;
+  options.crease_vertex_pairs = pairs;
+  options.crease_sharpness = sharpness;
+  CHECK_STATUS(weft_subdivision_counts(mesh, WEFT_SCHEME_CATMULL_CLARK, 2, &vertices, &faces, &indices), WEFT_STATUS_OK);
+  CHECK(vertices == 98 && faces == 96 && indices == 384);
+  CHECK_STATUS(weft_subdivide_vertex_data(mesh, &options, 2, data, 16, 2, refined, 2 * 98), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 2, &out), WEFT_STATUS_OK);
+  /* Column 0 is x, refined like the positions; column 1 stays 1. */
+  for (v = 0; v < 98; ++v) {
+    ok &= near(refined[2 * v], weft_mesh_positions(out)[3 * v]);
+    ok &= near(refined[2 * v + 1], 1.0);
+  }
+  CHECK(ok);
+  weft_mesh_free(out);
+
+  /* Too small: an error, and nothing written. */
+  refined[0] = -7.0;
+  CHECK_STATUS(weft_subdivide_vertex_data(mesh, &options, 2, data, 16, 2, refined, 2 * 98 - 1), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_data has room for 195 elements but 196 are needed");
+  CHECK(refined[0] == -7.0);
+  CHECK_STATUS(weft_subdivide_vertex_data(mesh, &options, 2, data, 15, 2, refined, 2 * 98), WEFT_STATUS_COUNT_MISMATCH);
+  CHECK_STATUS(weft_subdivide_vertex_data(mesh, &options, 2, data, 16, 0, refined, 2 * 98), WEFT_STATUS_INVALID_ARGUMENT);
+  weft_mesh_free(mesh);
+}
+
+static void test_face_varying(void) {
+  WeftMesh *mesh = cube();
+  WeftSubdivisionOptions options = catmull_clark();
+  double uvs[16], out[2 * 96];
+  uint32_t bad[24];
+  size_t v;
+  for (v = 0; v < 8; ++v) {
+    uvs[2 * v] = cube_positions[3 * v] + 0.5 * cube_positions[3 * v + 2];
+    uvs[2 * v + 1] = cube_positions[3 * v + 1];
+  }
+  /* One value per vertex, linear everywhere: level 1 keeps the cage's values
+   * at its vertices and averages them at face points. */
+  CHECK_STATUS(weft_subdivide_face_varying(mesh, &options, 1, WEFT_FACE_VARYING_ALL, uvs, 8, 2, cube_indices, 24, out, 2 * 96),
+               WEFT_STATUS_OK);
+  /* Child 0 of face 0 is [vertex 0, edge point, face point, edge point]. */
+  CHECK(near(out[0], uvs[0]) && near(out[1], uvs[1]));
+  CHECK(near(out[4], 0.5) && near(out[5], 0.5));
+  CHECK_STATUS(weft_subdivide_face_varying(mesh, &options, 1, WEFT_FACE_VARYING_ALL, uvs, 8, 2, cube_indices, 24, out, 10),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  memcpy(bad, cube_indices, sizeof bad);
+  bad[5] = 8;
+  CHECK_STATUS(weft_subdivide_face_varying(mesh, &options, 1, WEFT_FACE_VARYING_ALL, uvs, 8, 2, bad, 24, out, 2 * 96),
+               WEFT_STATUS_INDEX_OUT_OF_RANGE);
+  CHECK_MESSAGE("face corner 5 uses value 8");
+  CHECK_STATUS(weft_subdivide_face_varying(mesh, &options, 1, WEFT_FACE_VARYING_ALL, uvs, 8, 2, cube_indices, 23, out, 2 * 96),
+               WEFT_STATUS_COUNT_MISMATCH);
+  CHECK_STATUS(weft_subdivide_face_varying(mesh, &options, 1, 6, uvs, 8, 2, cube_indices, 24, out, 2 * 96),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  weft_mesh_free(mesh);
+}
+
+static void test_limit(void) {
+  WeftMesh *mesh = cube();
+  WeftSubdivisionOptions options = catmull_clark();
+  double sharpness[12], positions[3 * 26], normals[3 * 26];
+  size_t i;
+  /* Every edge infinitely sharp: the limit is the cube itself, its faces flat. */
+  for (i = 0; i < 12; ++i) sharpness[i] = WEFT_SHARPNESS_INFINITE;
+  options.crease_count = 12;
+  options.crease_vertex_pairs = cube_edges;
+  options.crease_sharpness = sharpness;
+  CHECK_STATUS(weft_subdivide_limit(mesh, &options, 1, positions, normals, 3 * 26), WEFT_STATUS_OK);
+  /* The point of face 0 (z = 0, index 8 + 12) stays in its plane; its normal points out (-z). */
+  CHECK(near(positions[3 * 20], 0.5) && near(positions[3 * 20 + 1], 0.5) && near(positions[3 * 20 + 2], 0.0));
+  CHECK(near(normals[3 * 20], 0.0) && near(normals[3 * 20 + 1], 0.0) && near(normals[3 * 20 + 2], -1.0));
+  /* Normals are optional. */
+  CHECK_STATUS(weft_subdivide_limit(mesh, &options, 1, positions, NULL, 3 * 26), WEFT_STATUS_OK);
+  positions[0] = -7.0;
+  CHECK_STATUS(weft_subdivide_limit(mesh, &options, 1, positions, normals, 3 * 26 - 1), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK(positions[0] == -7.0);
+  CHECK_STATUS(weft_subdivide_limit(mesh, &options, 1, NULL, normals, 3 * 26), WEFT_STATUS_NULL_POINTER);
+  weft_mesh_free(mesh);
+}
+
+static void test_refiner(void) {
+  WeftMesh *mesh = cube(), *moved_mesh = NULL, *expected = NULL;
+  WeftRefiner *refiner = NULL;
+  WeftSubdivisionOptions options = catmull_clark();
+  const uint32_t pairs[] = {0, 2, 2, 3};
+  const double sharpness[] = {2.5, 0.5};
+  double moved[24], out[3 * 98];
+  size_t i;
+  int same = 1;
+  options.creasing = WEFT_CREASING_CHAIKIN;
+  options.crease_count = 2;
+  options.crease_vertex_pairs = pairs;
+  options.crease_sharpness = sharpness;
+  CHECK_STATUS(weft_refiner_new_ex(mesh, &options, 2, &refiner), WEFT_STATUS_OK);
+  CHECK(weft_refiner_vertex_count(refiner) == 98);
+  for (i = 0; i < 24; ++i) moved[i] = cube_positions[i] * (1.0 + 0.1 * (double)(i % 3));
+  CHECK_STATUS(weft_refiner_evaluate(refiner, moved, 8, out, 3 * 98), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_new(moved, 8, cube_sizes, 6, cube_indices, 24, &moved_mesh), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_subdivide_ex(moved_mesh, &options, 2, &expected), WEFT_STATUS_OK);
+  for (i = 0; i < 3 * 98; ++i) same &= near(out[i], weft_mesh_positions(expected)[i]);
+  CHECK(same);
+  weft_mesh_free(expected);
+  weft_mesh_free(moved_mesh);
+  weft_refiner_free(refiner);
+  weft_mesh_free(mesh);
+}
+
+static void test_errors(void) {
+  WeftMesh *mesh = cube(), *out = NULL;
+  WeftRefiner *refiner = NULL;
+  WeftSubdivisionOptions options = catmull_clark();
+  const uint32_t unknown[] = {0, 7};
+  const uint32_t pairs[] = {0, 1};
+  const double negative[] = {-1.0};
+  double nan_value[1];
+  const uint32_t far_corner[] = {8};
+  const double one[] = {1.0};
+  nan_value[0] = NAN;
+
+  options.crease_count = 1;
+  options.crease_vertex_pairs = unknown;
+  options.crease_sharpness = one;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("crease 0 joins vertices 0 and 7, which are not an edge of the mesh");
+  CHECK(out == NULL);
+  CHECK_STATUS(weft_refiner_new_ex(mesh, &options, 1, &refiner), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK(refiner == NULL);
+
+  options.crease_vertex_pairs = pairs;
+  options.crease_sharpness = negative;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("crease 0 (0, 1) has sharpness -1");
+  options.crease_sharpness = nan_value;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("sharpness NaN");
+
+  options.crease_sharpness = NULL;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("crease_sharpness is NULL");
+
+  options = catmull_clark();
+  options.corner_count = 1;
+  options.corner_vertices = far_corner;
+  options.corner_sharpness = one;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("corner 0 is vertex 8, but the mesh has 8 vertices");
+
+  options = catmull_clark();
+  options.creasing = 7;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("creasing is 7");
+  options = catmull_clark();
+  options.scheme = WEFT_SCHEME_LOOP;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_NOT_TRIANGLES);
+  CHECK_STATUS(weft_subdivide_ex(mesh, NULL, 1, &out), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("options is NULL");
+  options = catmull_clark();
+  CHECK_STATUS(weft_subdivide_ex(NULL, &options, 1, &out), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK(out == NULL);
+  weft_mesh_free(mesh);
+}
+
+static void test_crease_edges_from_mesh(void) {
+  /* Two quads sharing an unwelded edge (vertices 1, 4 and 2, 5 coincide). */
+  static const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 2, 1, 0, 2, 0, 0};
+  static const uint32_t sizes[] = {4, 4};
+  static const uint32_t faces[] = {0, 1, 2, 3, 4, 7, 6, 5};
+  WeftMesh *mesh = NULL, *welded = NULL, *cube_mesh = cube();
+  uint32_t pairs[16];
+  size_t count = 99;
+  CHECK_STATUS(weft_mesh_new(p, 8, sizes, 2, faces, 8, &mesh), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_crease_edges_from_mesh(mesh, 180.0, &welded, pairs, 16, &count), WEFT_STATUS_OK);
+  CHECK(count == 1 && weft_mesh_vertex_count(welded) == 6);
+  CHECK((pairs[0] == 1 && pairs[1] == 2) || (pairs[0] == 2 && pairs[1] == 1));
+  weft_mesh_free(welded);
+  welded = NULL;
+  /* Every edge of a cube folds by 90 degrees. */
+  {
+    uint32_t cube_pairs[48];
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, 45.0, &welded, cube_pairs, 48, &count), WEFT_STATUS_OK);
+    CHECK(count == 12);
+    weft_mesh_free(welded);
+    welded = NULL;
+    count = 99;
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, 45.0, &welded, cube_pairs, 23, &count), WEFT_STATUS_BUFFER_TOO_SMALL);
+    CHECK(count == 99 && welded == NULL);
+    CHECK_STATUS(weft_crease_edges_from_mesh(cube_mesh, NAN, &welded, cube_pairs, 48, &count), WEFT_STATUS_INVALID_ARGUMENT);
+  }
+  weft_mesh_free(cube_mesh);
+  weft_mesh_free(mesh);
+}
+
+int main(void) {
+  test_crease_edges_from_mesh();
+  test_creases_and_corners();
+  test_counts_and_vertex_data();
+  test_face_varying();
+  test_limit();
+  test_refiner();
+  test_errors();
+  return check_summary("test_creases");
+}
