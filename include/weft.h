@@ -545,7 +545,11 @@ extern "C" {
  * unknown enumeration value, a crease pair that is not an edge of the mesh,
  * a corner past the vertex count, a negative or NaN sharpness — the
  * message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
- * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+ * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY. Coordinates
+ * near the largest double are subdivided at an exactly scaled size, so the
+ * rules never overflow; a refined point beyond the largest double (only
+ * when the input spans nearly the whole range) is
+ * WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
  *
  * # Safety
  * `mesh` is NULL or a live handle; `options` is NULL or readable with
@@ -584,7 +588,8 @@ WeftStatus weft_subdivision_counts(const struct WeftMesh *mesh, uint32_t scheme,
  *
  * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
  * `data_len` is not `width` times the cage's vertex count, and
- * WEFT_STATUS_INVALID_ARGUMENT when `width` is 0.
+ * WEFT_STATUS_INVALID_ARGUMENT when `width` is 0 or a value is NaN or
+ * infinite (the message names the vertex and component).
  *
  * # Safety
  * As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
@@ -633,6 +638,9 @@ WeftStatus weft_subdivide_face_varying(const struct WeftMesh *mesh, const struct
  *
  * Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
  * Catmull-Clark at level 0 on a mesh with faces that are not quads.
+ * Coordinates near the largest double are evaluated at an exactly scaled
+ * size; a limit position beyond it is WEFT_STATUS_DEGENERATE_INPUT naming
+ * the vertex.
  *
  * # Safety
  * As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
@@ -1333,7 +1341,12 @@ WeftStatus weft_refiner_new(const struct WeftMesh *cage, uint32_t scheme, uint32
  * WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
  *
  * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
- * WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE.
+ * WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE, with
+ * nothing written. Coordinates near the largest double are refined at an
+ * exactly scaled size, so the rules never overflow; a refined point beyond
+ * the largest double (only when the cage spans nearly the whole range) is
+ * WEFT_STATUS_DEGENERATE_INPUT naming the vertex, and the contents of
+ * `out_positions` are then unspecified.
  *
  * # Safety
  * `refiner` is NULL or live; the buffers hold the elements stated.
@@ -1347,8 +1360,8 @@ WeftStatus weft_refiner_evaluate(const struct WeftRefiner *refiner, const double
  * it with `weft_mesh_free`); it must not be NULL.
  *
  * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
- * with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when coordinates near
- * the largest double overflow the rules.
+ * with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when a refined point
+ * lies beyond the largest double (see `weft_refiner_evaluate`).
  *
  * # Safety
  * `refiner` is NULL or live; `out_mesh` is NULL or writable.
@@ -1399,8 +1412,10 @@ void weft_refiner_free(struct WeftRefiner *refiner);
  * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
  * unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
  * pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
- * WEFT_STATUS_OUT_OF_MEMORY; with WEFT_STATUS_DEGENERATE_INPUT naming the
- * vertex when coordinates near the largest double overflow the rules.
+ * WEFT_STATUS_OUT_OF_MEMORY. Coordinates near the largest double are
+ * subdivided at an exactly scaled size, so the rules never overflow; a
+ * refined point beyond the largest double (only when the input spans
+ * nearly the whole range) is WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
  *
  * # Safety
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.

@@ -191,20 +191,29 @@ fn weld_keeps_its_meaning_at_extreme_scales() {
     }
 }
 
-/// Found by fuzzing, in `src/subdivide/` (being reworked on other branches,
-/// so not fixed here): two levels of Catmull-Clark on three faces whose
-/// coordinates are near 1.6e307 return a vertex at -inf. The rules sum
+/// Found by fuzzing: two levels of Catmull-Clark on three faces whose
+/// coordinates are near 1.6e307 returned a vertex at -inf. The rules sum
 /// several positions before dividing (face points: Σ corners / n; the
-/// vertex rule: (Q + 2R + (n − 3)S) / n), and the sum passes `f64::MAX`
-/// although the average would not. Fix: average relative to one of the
-/// points (S + ((Q − S) + 2(R − S)) / n), or check the result's finiteness
-/// and return `DegenerateInput` naming the vertex. Meanwhile the C ABI
-/// refuses such a result (see `weft_catmull_clark`).
+/// vertex rule: (Q + 2R + (n − 3)S) / n), and the sum passed `f64::MAX`
+/// although the average would not. Positions past 2^960 are now subdivided
+/// at an exactly scaled-down size (a power of two) and scaled back.
 #[test]
-#[ignore = "overflow in src/subdivide, reported to its owners"]
 fn catmull_clark_near_f64_max_stays_finite() {
     use weft::subdivide::{catmull_clark, NakedEdges};
-    let m = mesh(
+    let m = near_max_cage(|c| c * 1e306);
+    let smooth = catmull_clark(&m, 2, NakedEdges::Fixed).unwrap();
+    assert_valid(&smooth);
+    assert_eq!(smooth.face_count(), 4 * (4 + 3 + 6));
+    // Every rule is a convex combination here: the result stays in the cage's box.
+    let (low, high) = m.bounding_box().unwrap();
+    for p in smooth.positions() {
+        assert!(p.cmpge(low).all() && p.cmple(high).all(), "{p}");
+    }
+}
+
+/// The cage of the test above, its coordinates mapped by `scale`.
+fn near_max_cage(scale: impl Fn(f64) -> f64) -> Mesh {
+    mesh(
         &[
             [-15.5, -15.873046875, -15.62109375],
             [-15.369140625, -15.1171875, -14.4892578125],
@@ -213,12 +222,137 @@ fn catmull_clark_near_f64_max_stays_finite() {
             [-11.7490234375, -15.6171875, -15.494140625],
             [15.263671875, -15.1162109375, -14.7470703125],
         ]
-        .map(|p| p.map(|c| c * 1e306)),
+        .map(|p| p.map(&scale)),
         &[&[2, 5, 4, 3], &[2, 3, 4], &[2, 1, 0, 3, 4, 5]],
+    )
+}
+
+/// 2^1019: the cage's coordinates (up to 16 = 2^4) times this reach 2^1023,
+/// the top binade of `f64`.
+const HUGE: f64 = 5.617791046444737e306;
+
+fn scaled_points(points: &[DVec3], factor: f64) -> Vec<DVec3> {
+    points.iter().map(|p| *p * factor).collect()
+}
+
+/// Subdivision commutes exactly with scaling by a power of two, so the huge
+/// cage's result is the ordinary cage's result times 2^1019, bit for bit —
+/// for both schemes, the refiner, creases, carried data, face-varying
+/// values and the limit.
+#[test]
+fn subdivision_at_the_top_of_the_f64_range_is_exactly_the_scaled_result() {
+    use weft::subdivide::{
+        catmull_clark, loop_subdivision, FaceVaryingLinear, NakedEdges, Refiner, Scheme,
+        Subdivider, SubdivisionOptions, SHARPNESS_INFINITE,
+    };
+    assert_eq!(HUGE, 2f64.powi(1019));
+    let ordinary = near_max_cage(|c| c);
+    let huge = near_max_cage(|c| c * HUGE);
+    for mode in [
+        NakedEdges::Fixed,
+        NakedEdges::Smooth,
+        NakedEdges::CornerFixed,
+    ] {
+        let expected = catmull_clark(&ordinary, 3, mode).unwrap();
+        let got = catmull_clark(&huge, 3, mode).unwrap();
+        assert_eq!(got.positions(), scaled_points(expected.positions(), HUGE));
+        assert_eq!(got.face_indices(), expected.face_indices());
+    }
+    let triangles = weft::triangulate::triangulate(&ordinary).unwrap().mesh;
+    let huge_triangles = triangles
+        .with_positions(scaled_points(triangles.positions(), HUGE))
+        .unwrap();
+    let expected = loop_subdivision(&triangles, 3, NakedEdges::Smooth).unwrap();
+    let got = loop_subdivision(&huge_triangles, 3, NakedEdges::Smooth).unwrap();
+    assert_eq!(got.positions(), scaled_points(expected.positions(), HUGE));
+
+    // The refiner, built on the ordinary cage, evaluated at the huge one.
+    let refiner = Refiner::new(&ordinary, Scheme::CatmullClark, 2, NakedEdges::Smooth).unwrap();
+    let mut at_ordinary = vec![DVec3::ZERO; refiner.vertex_count()];
+    refiner
+        .evaluate(ordinary.positions(), &mut at_ordinary)
+        .unwrap();
+    let mut at_huge = vec![DVec3::ZERO; refiner.vertex_count()];
+    refiner.evaluate(huge.positions(), &mut at_huge).unwrap();
+    assert_eq!(at_huge, scaled_points(&at_ordinary, HUGE));
+    assert_eq!(
+        Refiner::new(&huge, Scheme::CatmullClark, 2, NakedEdges::Smooth)
+            .unwrap()
+            .mesh()
+            .unwrap()
+            .positions(),
+        &at_huge[..]
     );
-    match catmull_clark(&m, 2, NakedEdges::Fixed) {
-        Ok(smooth) => assert_valid(&smooth),
-        Err(e) => assert!(matches!(e, weft::Error::DegenerateInput(_)), "{e}"),
+
+    // Creases, carried data, face-varying values and the limit.
+    let mut options = SubdivisionOptions::new(NakedEdges::Smooth);
+    options.creases = vec![([2, 3], 1.5), ([3, 4], SHARPNESS_INFINITE)];
+    options.corners = vec![(5, 2.0)];
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        let (small, big) = match scheme {
+            Scheme::CatmullClark => (&ordinary, &huge),
+            Scheme::Loop => (&triangles, &huge_triangles),
+        };
+        let subdivider = Subdivider::new(small, scheme, 2, &options).unwrap();
+        let expected = subdivider.mesh().unwrap();
+        let mut got = vec![DVec3::ZERO; subdivider.vertex_count()];
+        subdivider.evaluate(big.positions(), &mut got).unwrap();
+        assert_eq!(got, scaled_points(expected.positions(), HUGE), "{scheme:?}");
+        let refiner = Refiner::with_options(small, scheme, 2, &options).unwrap();
+        refiner.evaluate(big.positions(), &mut got).unwrap();
+        assert_eq!(got, scaled_points(expected.positions(), HUGE), "{scheme:?}");
+
+        let data: Vec<f64> = (0..small.vertex_count() * 2)
+            .map(|i| (i as f64 - 5.5) * 1.25)
+            .collect();
+        let huge_data: Vec<f64> = data.iter().map(|x| x * HUGE).collect();
+        let expected = subdivider.vertex_data(&data, 2).unwrap();
+        let got = subdivider.vertex_data(&huge_data, 2).unwrap();
+        assert_eq!(got, expected.iter().map(|x| x * HUGE).collect::<Vec<_>>());
+
+        // One UV per face corner: every edge a seam.
+        let indices: Vec<u32> = (0..small.index_count() as u32).collect();
+        let uvs: Vec<f64> = (0..2 * indices.len())
+            .map(|i| (i % 7) as f64 * 2.5)
+            .collect();
+        let huge_uvs: Vec<f64> = uvs.iter().map(|x| x * HUGE).collect();
+        let expected = subdivider
+            .face_varying(&uvs, 2, &indices, FaceVaryingLinear::Smooth)
+            .unwrap();
+        let got = subdivider
+            .face_varying(&huge_uvs, 2, &indices, FaceVaryingLinear::Smooth)
+            .unwrap();
+        assert_eq!(got, expected.iter().map(|x| x * HUGE).collect::<Vec<_>>());
+
+        // Some Catmull-Clark limit tangents are differences of points
+        // 31 × 2^1019 apart: beyond the largest double, so refused, naming
+        // the vertex (Loop's fit) ...
+        match subdivider.limit_of(big.positions()) {
+            Err(weft::Error::DegenerateInput(m)) if scheme == Scheme::CatmullClark => {
+                assert!(m.contains("tangent of refined vertex"), "{m}")
+            }
+            Ok(huge_limit) if scheme == Scheme::Loop => {
+                let expected = subdivider.limit_of(small.positions()).unwrap();
+                assert_eq!(huge_limit.dv, scaled_points(&expected.dv, HUGE));
+                assert_eq!(huge_limit.normals, expected.normals);
+            }
+            other => panic!("{scheme:?}: {other:?}"),
+        }
+        // ... but at 2^1017 they fit, and everything scales exactly.
+        let limit = subdivider.limit_of(small.positions()).unwrap();
+        let quarter = HUGE / 4.0;
+        let big_limit = subdivider
+            .limit_of(&scaled_points(small.positions(), quarter))
+            .unwrap();
+        assert_eq!(
+            big_limit.positions,
+            scaled_points(&limit.positions, quarter)
+        );
+        assert_eq!(big_limit.du, scaled_points(&limit.du, quarter));
+        assert_eq!(big_limit.dv, scaled_points(&limit.dv, quarter));
+        assert_eq!(big_limit.normals, limit.normals);
+        let unit = |n: &&DVec3| (n.length() - 1.0).abs() < 1e-12;
+        assert!(limit.normals.iter().filter(unit).count() > limit.normals.len() / 2);
     }
 }
 

@@ -154,7 +154,11 @@ unsafe fn subdivider_arg(
 /// unknown enumeration value, a crease pair that is not an edge of the mesh,
 /// a corner past the vertex count, a negative or NaN sharpness — the
 /// message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
-/// WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+/// WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY. Coordinates
+/// near the largest double are subdivided at an exactly scaled size, so the
+/// rules never overflow; a refined point beyond the largest double (only
+/// when the input spans nearly the whole range) is
+/// WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
 ///
 /// # Safety
 /// `mesh` is NULL or a live handle; `options` is NULL or readable with
@@ -223,7 +227,8 @@ pub unsafe extern "C" fn weft_subdivision_counts(
 ///
 /// Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
 /// `data_len` is not `width` times the cage's vertex count, and
-/// WEFT_STATUS_INVALID_ARGUMENT when `width` is 0.
+/// WEFT_STATUS_INVALID_ARGUMENT when `width` is 0 or a value is NaN or
+/// infinite (the message names the vertex and component).
 ///
 /// # Safety
 /// As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
@@ -358,6 +363,9 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
 ///
 /// Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
 /// Catmull-Clark at level 0 on a mesh with faces that are not quads.
+/// Coordinates near the largest double are evaluated at an exactly scaled
+/// size; a limit position beyond it is WEFT_STATUS_DEGENERATE_INPUT naming
+/// the vertex.
 ///
 /// # Safety
 /// As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
@@ -381,10 +389,10 @@ pub unsafe extern "C" fn weft_subdivide_limit(
         let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
         let needed = subdivider.vertex_count().saturating_mul(3);
         check_room("out_positions", capacity, needed)?;
-        let limit = subdivider.limit()?;
-        write_points(&limit.positions, positions);
+        let (limit_positions, limit_normals) = subdivider.limit_positions_and_normals()?;
+        write_points(&limit_positions, positions);
         if let Some(normals) = normals {
-            write_points(&limit.normals, normals);
+            write_points(&limit_normals, normals);
         }
         Ok(())
     })

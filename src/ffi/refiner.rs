@@ -69,7 +69,12 @@ pub unsafe extern "C" fn weft_refiner_new(
 /// WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
 ///
 /// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
-/// WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE.
+/// WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE, with
+/// nothing written. Coordinates near the largest double are refined at an
+/// exactly scaled size, so the rules never overflow; a refined point beyond
+/// the largest double (only when the cage spans nearly the whole range) is
+/// WEFT_STATUS_DEGENERATE_INPUT naming the vertex, and the contents of
+/// `out_positions` are then unspecified.
 ///
 /// # Safety
 /// `refiner` is NULL or live; the buffers hold the elements stated.
@@ -119,8 +124,8 @@ pub unsafe extern "C" fn weft_refiner_evaluate(
 /// it with `weft_mesh_free`); it must not be NULL.
 ///
 /// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
-/// with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when coordinates near
-/// the largest double overflow the rules.
+/// with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when a refined point
+/// lies beyond the largest double (see `weft_refiner_evaluate`).
 ///
 /// # Safety
 /// `refiner` is NULL or live; `out_mesh` is NULL or writable.

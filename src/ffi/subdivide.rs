@@ -55,8 +55,10 @@ pub(crate) fn scheme_arg(value: u32) -> Result<Scheme, Failure> {
 /// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
 /// unknown naked-edge value), WEFT_STATUS_RESULT_TOO_LARGE (the result would
 /// pass 2^31 - 1 vertices, faces or indices; checked before allocating) or
-/// WEFT_STATUS_OUT_OF_MEMORY; with WEFT_STATUS_DEGENERATE_INPUT naming the
-/// vertex when coordinates near the largest double overflow the rules.
+/// WEFT_STATUS_OUT_OF_MEMORY. Coordinates near the largest double are
+/// subdivided at an exactly scaled size, so the rules never overflow; a
+/// refined point beyond the largest double (only when the input spans
+/// nearly the whole range) is WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
 ///
 /// # Safety
 /// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.

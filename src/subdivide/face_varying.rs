@@ -18,7 +18,7 @@
 use super::creases::{fractional_weight, Sharpness, SHARPNESS_INFINITE};
 use super::level::{Connectivity, Faces};
 use super::stencils::{edge_weights, vertex_mask, KeptLevel, Subdivider};
-use super::Scheme;
+use super::{scale, Scheme};
 use crate::error::{Error, Result};
 
 /// Where face-varying values are interpolated linearly (OpenSubdiv's
@@ -68,7 +68,10 @@ impl Subdivider {
     /// # Errors
     /// [`Error::InvalidArgument`] when `width` is 0, `values` is not a whole
     /// number of values, `value_indices` does not have one index per cage
-    /// corner, or an index is past the values.
+    /// corner, an index is past the values, or a value is NaN or infinite;
+    /// [`Error::DegenerateInput`] naming the refined face corner when a
+    /// value lies beyond the largest `f64` (values near `f64::MAX` are
+    /// refined at an exactly scaled-down size, so the sums never overflow).
     pub fn face_varying(
         &self,
         values: &[f64],
@@ -96,7 +99,21 @@ impl Subdivider {
                 value_indices[c]
             )));
         }
-        let mut values = values.to_vec();
+        if let Some(i) = values.iter().position(|x| !x.is_finite()) {
+            return Err(Error::InvalidArgument(format!(
+                "face-varying value {} has a non-finite number {} at component {}",
+                i / width,
+                values[i],
+                i % width
+            )));
+        }
+        // Values near the top of the f64 range are refined at an exactly
+        // scaled-down size (see `scale.rs`); ordinary values as they are.
+        let scale = scale::for_values(values);
+        let mut values = match scale {
+            Some(scale) => values.iter().map(|x| x * scale.down).collect(),
+            None => values.to_vec(),
+        };
         let mut indices = value_indices.to_vec();
         for pair in self.levels.windows(2) {
             (values, indices) =
@@ -105,6 +122,9 @@ impl Subdivider {
         let mut out = Vec::with_capacity(indices.len() * width);
         for &i in &indices {
             out.extend_from_slice(&values[i as usize * width..(i as usize + 1) * width]);
+        }
+        if let Some(scale) = scale {
+            scale::restore_values(&mut out, width, scale, "the value", "refined face corner")?;
         }
         Ok(out)
     }

@@ -15,7 +15,7 @@ use glam::DVec3;
 
 use super::creases::{is_sharp, Rule};
 use super::stencils::{walk_around, Subdivider};
-use super::Scheme;
+use super::{scale, Scheme};
 use crate::error::{Error, Result};
 
 /// Limit positions, tangents and unit normals, one per vertex of the last
@@ -71,8 +71,41 @@ impl Subdivider {
     /// # Errors
     /// [`Error::InvalidArgument`] for Catmull-Clark at level 0 on a cage with
     /// faces that are not quads (refine once first), or positions as
-    /// [`Subdivider::evaluate`] refuses them; [`Error::OutOfMemory`].
+    /// [`Subdivider::evaluate`] refuses them; [`Error::OutOfMemory`];
+    /// [`Error::DegenerateInput`] naming the vertex when a limit position or
+    /// tangent lies beyond the largest `f64` (positions near `f64::MAX` are
+    /// evaluated at an exactly scaled-down size, so the sums never overflow).
     pub fn limit_of(&self, cage: &[DVec3]) -> Result<Limit> {
+        let Some(scale) = scale::for_points(cage) else {
+            return self.limit_at(cage);
+        };
+        // Positions and tangents are linear in the cage and the normals
+        // unchanged by a uniform scale.
+        let mut limit = self.limit_at(&scale::scaled_points(cage, scale))?;
+        scale::restore_points(&mut limit.positions, scale, "the limit position")?;
+        scale::restore_points(&mut limit.du, scale, "the first limit tangent")?;
+        scale::restore_points(&mut limit.dv, scale, "the second limit tangent")?;
+        Ok(limit)
+    }
+
+    /// Limit positions and unit normals at the cage positions it was built
+    /// from, without the tangents: these succeed where only a tangent would
+    /// lie beyond the largest `f64`.
+    ///
+    /// # Errors
+    /// As [`Subdivider::limit_of`], for the positions only.
+    pub(crate) fn limit_positions_and_normals(&self) -> Result<(Vec<DVec3>, Vec<DVec3>)> {
+        let cage = &self.cage_positions;
+        let Some(scale) = scale::for_points(cage) else {
+            let limit = self.limit_at(cage)?;
+            return Ok((limit.positions, limit.normals));
+        };
+        let mut limit = self.limit_at(&scale::scaled_points(cage, scale))?;
+        scale::restore_points(&mut limit.positions, scale, "the limit position")?;
+        Ok((limit.positions, limit.normals))
+    }
+
+    fn limit_at(&self, cage: &[DVec3]) -> Result<Limit> {
         let last = self.last();
         let faces = &last.faces;
         let connectivity = &last.connectivity;
@@ -173,10 +206,29 @@ impl Subdivider {
             limit.positions.push(apply(&position));
             limit.du.push(du);
             limit.dv.push(dv);
-            limit.normals.push(du.cross(dv).normalize_or_zero());
+            limit.normals.push(unit_normal(du, dv));
         }
         Ok(limit)
     }
+}
+
+/// `du × dv` normalised, or zero where the tangents are parallel. Each
+/// tangent is first scaled by a power of two to a magnitude near 1, which
+/// changes no bit of the result but keeps the cross product from
+/// overflowing (tangents beyond about 1e154) or underflowing (below 1e-154).
+fn unit_normal(du: DVec3, dv: DVec3) -> DVec3 {
+    fn near_one(t: DVec3) -> DVec3 {
+        let largest = t.abs().max_element();
+        if largest == 0.0 || !largest.is_finite() {
+            return t;
+        }
+        let exponent = ((largest.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+        // Subnormal tangents: two exact steps keep the factor a normal number.
+        let k = exponent.max(-1022);
+        let t = t * f64::from_bits(((1023 - k / 2) as u64) << 52);
+        t * f64::from_bits(((1023 - (k - k / 2)) as u64) << 52)
+    }
+    near_one(du).cross(near_one(dv)).normalize_or_zero()
 }
 
 /// Position, first and second tangent masks of a smooth vertex.

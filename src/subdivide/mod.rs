@@ -40,6 +40,7 @@ mod limit;
 mod loop_subdivision;
 mod refiner;
 pub(crate) mod rules;
+mod scale;
 mod stencils;
 
 use glam::DVec3;
@@ -117,7 +118,10 @@ pub struct RefinedCounts {
 /// # Errors
 /// [`Error::ResultTooLarge`] when a level would make more than
 /// [`MAX_ELEMENTS`] vertices, faces or indices (checked before allocating);
-/// [`Error::OutOfMemory`].
+/// [`Error::OutOfMemory`]; [`Error::DegenerateInput`] naming the vertex when
+/// a refined point lies beyond the largest `f64` (coordinates near
+/// `f64::MAX` are subdivided at an exactly scaled-down size, so sums inside
+/// the rules never overflow).
 pub fn catmull_clark(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
     subdivide(mesh, Scheme::CatmullClark, levels, naked_edges)
 }
@@ -128,7 +132,8 @@ pub fn catmull_clark(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Resul
 /// # Errors
 /// [`Error::NotTriangles`] naming the first face that is not a triangle
 /// (triangulate first with [`crate::triangulate::triangulate`]);
-/// [`Error::ResultTooLarge`]; [`Error::OutOfMemory`].
+/// [`Error::ResultTooLarge`]; [`Error::OutOfMemory`];
+/// [`Error::DegenerateInput`] as [`catmull_clark`].
 pub fn loop_subdivision(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
     subdivide(mesh, Scheme::Loop, levels, naked_edges)
 }
@@ -144,8 +149,14 @@ pub fn subdivide(
     levels: u32,
     naked_edges: NakedEdges,
 ) -> Result<Mesh> {
-    // The first level reads the cage's positions in place.
-    let mut positions: Option<Vec<DVec3>> = None;
+    // The first level reads the cage's positions in place, unless they are
+    // near the top of the f64 range (see `scale.rs`).
+    let scale = match levels == 0 || mesh.face_count() == 0 {
+        true => None,
+        false => scale::for_points(mesh.positions()),
+    };
+    let mut positions: Option<Vec<DVec3>> =
+        scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
     let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, false, |plan, _| {
         let source = positions.as_deref().unwrap_or(mesh.positions());
         let next = refiner::points(scheme, &plan, source)?;
@@ -153,9 +164,13 @@ pub fn subdivide(
         positions = Some(next);
         Ok(())
     })?;
-    let positions = match positions {
-        Some(positions) => positions,
-        None => mesh.positions().to_vec(),
+    let positions = match (positions, scale) {
+        (Some(mut positions), Some(scale)) => {
+            scale::restore_points(&mut positions, scale, "the position")?;
+            positions
+        }
+        (Some(positions), None) => positions,
+        (None, _) => mesh.positions().to_vec(),
     };
     let sizes = if faces.offsets.is_empty() {
         // A refined level: all quads (Catmull-Clark) or all triangles (Loop).

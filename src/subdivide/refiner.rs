@@ -10,7 +10,7 @@ use glam::DVec3;
 use super::level::{Connectivity, Faces, Plan};
 use super::rules::{cage_tags, child_tags, plan, Tags};
 use super::{
-    catmull_clark, check_counts, loop_subdivision, NakedEdges, Scheme, Subdivider,
+    catmull_clark, check_counts, loop_subdivision, scale, NakedEdges, Scheme, Subdivider,
     SubdivisionOptions,
 };
 use crate::error::{try_vec, Error, Result};
@@ -153,7 +153,9 @@ impl Refiner {
     /// # Errors
     /// [`Error::InvalidArgument`] when `cage` does not have
     /// [`Refiner::cage_vertex_count`] positions, `out` not
-    /// [`Refiner::vertex_count`], or a cage coordinate is not finite.
+    /// [`Refiner::vertex_count`], or a cage coordinate is not finite;
+    /// [`Error::DegenerateInput`] naming the vertex when a refined point lies
+    /// beyond the largest `f64` (`out` is then left partly written).
     pub fn evaluate(&self, cage: &[DVec3], out: &mut [DVec3]) -> Result<()> {
         if cage.len() != self.cage_vertex_count {
             return Err(Error::InvalidArgument(format!(
@@ -181,6 +183,19 @@ impl Refiner {
             out.copy_from_slice(cage);
             return Ok(());
         };
+        // Near the top of the f64 range: an exactly scaled-down copy (the
+        // only allocation, and only for such positions; see `scale.rs`).
+        if let Some(scale) = scale::for_points(cage) {
+            let scaled = scale::scaled_points(cage, scale);
+            self.apply_plans(last, intermediate, &scaled, out);
+            return scale::restore_points(out, scale, "the position");
+        }
+        self.apply_plans(last, intermediate, cage, out);
+        Ok(())
+    }
+
+    /// Applies every level's plan to `cage`, the last into `out`.
+    fn apply_plans(&self, last: &Plan, intermediate: &[Plan], cage: &[DVec3], out: &mut [DVec3]) {
         let mut scratch = self
             .scratch
             .lock()
@@ -203,7 +218,6 @@ impl Refiner {
             _ => &b[..source_len],
         };
         apply(self.scheme, last, source, out);
-        Ok(())
     }
 
     /// The refined mesh at the cage positions the refiner was built from.

@@ -18,7 +18,7 @@ use super::creases::{
 };
 use super::level::{zeroed, Connectivity, Faces};
 use super::rules::loop_smooth_weights;
-use super::{catmull_clark, check_counts, loop_subdivision, Scheme};
+use super::{catmull_clark, check_counts, loop_subdivision, scale, Scheme};
 use crate::error::{try_vec, Error, Result};
 use crate::mesh::Mesh;
 
@@ -552,15 +552,23 @@ impl Subdivider {
     /// same weights as the positions (OpenSubdiv's `PrimvarRefiner::Interpolate`).
     ///
     /// # Errors
-    /// [`Error::InvalidArgument`] when `width` is 0 or `data` does not hold
-    /// `width` numbers per cage vertex; [`Error::OutOfMemory`].
+    /// [`Error::InvalidArgument`] when `width` is 0, `data` does not hold
+    /// `width` numbers per cage vertex or one of them is NaN or infinite;
+    /// [`Error::OutOfMemory`]; [`Error::DegenerateInput`] naming the vertex
+    /// when a refined value lies beyond the largest `f64` (values near
+    /// `f64::MAX` are refined at an exactly scaled-down size, so the sums
+    /// never overflow).
     pub fn vertex_data(&self, data: &[f64], width: usize) -> Result<Vec<f64>> {
+        self.refine_values(data, width, "the vertex data")
+    }
+
+    fn refine_values(&self, data: &[f64], width: usize, what: &str) -> Result<Vec<f64>> {
         let n = self.vertex_count().checked_mul(width).ok_or_else(|| {
             Error::ResultTooLarge(format!("{width} numbers per vertex are too many"))
         })?;
         let mut out = try_vec(n, "refined vertex data")?;
         out.resize(n, 0.0);
-        self.vertex_data_into(data, width, &mut out)?;
+        self.refine_values_into(data, width, &mut out, what)?;
         Ok(out)
     }
 
@@ -569,6 +577,16 @@ impl Subdivider {
     /// # Errors
     /// As [`Subdivider::vertex_data`], and when `out` has another length.
     pub fn vertex_data_into(&self, data: &[f64], width: usize, out: &mut [f64]) -> Result<()> {
+        self.refine_values_into(data, width, out, "the vertex data")
+    }
+
+    fn refine_values_into(
+        &self,
+        data: &[f64],
+        width: usize,
+        out: &mut [f64],
+        what: &str,
+    ) -> Result<()> {
         if width == 0 {
             return Err(Error::InvalidArgument(
                 "the data width must be at least 1".to_owned(),
@@ -590,25 +608,43 @@ impl Subdivider {
                 self.vertex_count() * width
             )));
         }
+        if let Some(i) = data.iter().position(|x| !x.is_finite()) {
+            return Err(Error::InvalidArgument(format!(
+                "{what} of cage vertex {} has a non-finite value {} at component {}",
+                i / width,
+                data[i],
+                i % width
+            )));
+        }
         let Some((last, intermediate)) = self.stencils.split_last() else {
             out.copy_from_slice(data);
             return Ok(());
         };
-        let mut current = data.to_vec();
+        // Values near the top of the f64 range are refined at an exactly
+        // scaled-down size (see `scale.rs`); ordinary values as they are.
+        let scale = scale::for_values(data);
+        let mut current = match scale {
+            Some(scale) => data.iter().map(|x| x * scale.down).collect(),
+            None => data.to_vec(),
+        };
         for level in intermediate {
             let mut next = zeroed(level.child_count() * width, "refined vertex data")?;
             level.apply(&current, width, &mut next);
             current = next;
         }
         last.apply(&current, width, out);
-        Ok(())
+        match scale {
+            Some(scale) => scale::restore_values(out, width, scale, what, "refined vertex"),
+            None => Ok(()),
+        }
     }
 
     /// Refined positions of new cage positions into `out`.
     ///
     /// # Errors
     /// [`Error::InvalidArgument`] when `cage` does not hold one position per
-    /// cage vertex, `out` one per refined vertex, or a coordinate is not finite.
+    /// cage vertex, `out` one per refined vertex, or a coordinate is not finite;
+    /// [`Error::DegenerateInput`] as [`Subdivider::vertex_data`].
     pub fn evaluate(&self, cage: &[DVec3], out: &mut [DVec3]) -> Result<()> {
         if let Some(v) = cage.iter().position(|p| !p.is_finite()) {
             return Err(Error::InvalidArgument(format!(
@@ -625,7 +661,7 @@ impl Subdivider {
             )));
         }
         let flat: Vec<f64> = cage.iter().flat_map(|p| p.to_array()).collect();
-        let refined = self.vertex_data(&flat, 3)?;
+        let refined = self.refine_values(&flat, 3, "the position")?;
         for (p, xyz) in out.iter_mut().zip(refined.chunks_exact(3)) {
             *p = DVec3::new(xyz[0], xyz[1], xyz[2]);
         }

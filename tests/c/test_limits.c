@@ -2,7 +2,9 @@
  * 2^31 - 1 elements fails with WEFT_STATUS_RESULT_TOO_LARGE (or, for an
  * input count past the cap, WEFT_STATUS_INPUT_TOO_LARGE) and a sentence,
  * before anything is allocated or a buffer is read; the output stays NULL. */
+#include <math.h>
 #include <stdint.h>
+#include <string.h>
 #include <time.h>
 
 #include "check.h"
@@ -68,34 +70,75 @@ static void test_levels(void) {
   weft_mesh_free(cube);
 }
 
-static void test_huge_coordinates(void) {
-  /* Three faces with coordinates near 1.6e307: Catmull-Clark's sums pass
-   * the largest double. The result is refused, naming the vertex, rather
-   * than handed out with infinite coordinates. */
-  const double corners[] = {-15.5, -15.873046875, -15.62109375, -15.369140625, -15.1171875, -14.4892578125,
-                            -14.865234375, -14.298828125, -14.109375, -13.857421875, -13.4482421875, -15.5,
-                            -11.7490234375, -15.6171875, -15.494140625, 15.263671875, -15.1162109375,
-                            -14.7470703125};
+/* Refines the cage `corners` scaled by `scale` through every subdivision
+ * export, into the four outputs (3 * 59 doubles each): Catmull-Clark at
+ * level 2, the refiner's evaluate, the creased refiner's evaluate, and the
+ * creased limit positions (normals into `normals`). */
+static void refine_all(const double *corners, double scale, double *plain, double *refined, double *creased,
+                       double *limit, double *normals) {
   const uint32_t sizes[] = {4, 3, 6};
   const uint32_t indices[] = {2, 5, 4, 3, 2, 3, 4, 2, 1, 0, 3, 4, 5};
+  const uint32_t pairs[] = {2, 3, 3, 4};
+  const double sharpness[] = {1.5, WEFT_SHARPNESS_INFINITE};
   double positions[18];
+  WeftSubdivisionOptions options = {0};
   WeftMesh *cage = NULL, *mesh = NULL;
   WeftRefiner *refiner = NULL;
-  size_t i;
-  for (i = 0; i < 18; ++i) positions[i] = corners[i] * 1e306;
+  size_t i, vertices = 0, faces = 0, corner_count = 0;
+  for (i = 0; i < 18; ++i) positions[i] = corners[i] * scale;
   CHECK_STATUS(weft_mesh_new(positions, 6, sizes, 3, indices, 13, &cage), WEFT_STATUS_OK);
-  CHECK_STATUS(weft_catmull_clark(cage, 2, WEFT_NAKED_EDGES_FIXED, &mesh), WEFT_STATUS_DEGENERATE_INPUT);
-  CHECK(mesh == NULL);
-  CHECK_MESSAGE("vertex");
-  CHECK_STATUS(weft_refiner_new(cage, WEFT_SCHEME_CATMULL_CLARK, 2, WEFT_NAKED_EDGES_FIXED, &refiner), WEFT_STATUS_OK);
-  weft_refiner_free(refiner);
-  /* At an ordinary scale the same cage subdivides. */
-  weft_mesh_free(cage);
-  CHECK_STATUS(weft_mesh_new(corners, 6, sizes, 3, indices, 13, &cage), WEFT_STATUS_OK);
-  CHECK_STATUS(weft_catmull_clark(cage, 2, WEFT_NAKED_EDGES_FIXED, &mesh), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_catmull_clark(cage, 2, WEFT_NAKED_EDGES_SMOOTH, &mesh), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(mesh) == 59);
   CHECK(weft_mesh_face_count(mesh) == 52);
+  CHECK_STATUS(weft_mesh_copy_positions(mesh, plain, 3 * 59), WEFT_STATUS_OK);
   weft_mesh_free(mesh);
+
+  CHECK_STATUS(weft_refiner_new(cage, WEFT_SCHEME_CATMULL_CLARK, 2, WEFT_NAKED_EDGES_SMOOTH, &refiner),
+               WEFT_STATUS_OK);
+  CHECK(weft_refiner_vertex_count(refiner) == 59);
+  CHECK_STATUS(weft_refiner_evaluate(refiner, positions, 6, refined, 3 * 59), WEFT_STATUS_OK);
+  weft_refiner_free(refiner);
+
+  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
+  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
+  options.crease_count = 2;
+  options.crease_vertex_pairs = pairs;
+  options.crease_sharpness = sharpness;
+  CHECK_STATUS(weft_refiner_new_ex(cage, &options, 2, &refiner), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_refiner_evaluate(refiner, positions, 6, creased, 3 * 59), WEFT_STATUS_OK);
+  weft_refiner_free(refiner);
+  CHECK_STATUS(weft_subdivision_counts(cage, WEFT_SCHEME_CATMULL_CLARK, 2, &vertices, &faces, &corner_count),
+               WEFT_STATUS_OK);
+  CHECK(vertices == 59);
+  CHECK_STATUS(weft_subdivide_limit(cage, &options, 2, limit, normals, 3 * 59), WEFT_STATUS_OK);
   weft_mesh_free(cage);
+}
+
+static void test_huge_coordinates(void) {
+  /* Three faces with coordinates up to 2^1023: Catmull-Clark's sums would
+   * pass the largest double. Subdivision runs at an exactly scaled-down
+   * size, so every result is the ordinary cage's result times 2^1019, bit
+   * for bit, and the limit normals are the same. */
+  static const double corners[] = {-15.5, -15.873046875, -15.62109375, -15.369140625, -15.1171875, -14.4892578125,
+                                   -14.865234375, -14.298828125, -14.109375, -13.857421875, -13.4482421875, -15.5,
+                                   -11.7490234375, -15.6171875, -15.494140625, 15.263671875, -15.1162109375,
+                                   -14.7470703125};
+  static double small[5][3 * 59], huge[5][3 * 59];
+  const double scale = ldexp(1.0, 1019);
+  size_t i, k, exact = 0, unit = 0;
+  refine_all(corners, 1.0, small[0], small[1], small[2], small[3], small[4]);
+  refine_all(corners, scale, huge[0], huge[1], huge[2], huge[3], huge[4]);
+  for (k = 0; k < 4; ++k) {
+    for (i = 0; i < 3 * 59; ++i) exact += huge[k][i] == small[k][i] * scale;
+  }
+  CHECK(exact == 4 * 3 * 59);
+  CHECK(memcmp(small[1], small[0], sizeof small[0]) == 0);
+  CHECK(memcmp(huge[4], small[4], sizeof small[4]) == 0);
+  for (i = 0; i < 59; ++i) {
+    const double *n = &huge[4][3 * i];
+    unit += fabs(n[0] * n[0] + n[1] * n[1] + n[2] * n[2] - 1.0) < 1e-12;
+  }
+  CHECK(unit > 30);
 }
 
 int main(void) {
