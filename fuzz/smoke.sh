@@ -1,27 +1,51 @@
 #!/usr/bin/env bash
-# A short bounded run of every fuzz target (FUZZ_SECONDS each, default 5),
-# starting from the committed corpus; new inputs go to a scratch folder so
-# the repository's corpus stays small. Needs cargo-fuzz (installed when
-# missing) and builds with AddressSanitizer.
-# A longer run: FUZZ_SECONDS=600 fuzz/smoke.sh
+# A short, reproducible run of every fuzz target, starting from the committed
+# corpus: a fixed number of inputs (FUZZ_RUNS each, default 3000) from a fixed
+# random seed per target, so two runs of one commit try the same inputs.
+# New inputs go to a scratch folder, so the repository's corpus stays small.
+# Needs cargo-fuzz (installed when missing) and builds with AddressSanitizer.
+#
+# A longer run, for minutes per target and from another seed:
+#   FUZZ_SECONDS=600 fuzz/smoke.sh
+#   FUZZ_SECONDS=600 FUZZ_SEED=7 fuzz/smoke.sh
+# Keep what a long run found worth keeping, then shrink the corpus again:
+#   cargo fuzz cmin operations   (named regression inputs are kept; see README)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${FUZZ_SECONDS:-5}
+runs=${FUZZ_RUNS:-3000}
+seconds=${FUZZ_SECONDS:-}
 command -v cargo-fuzz >/dev/null 2>&1 || cargo install cargo-fuzz --locked --quiet
 # cargo-fuzz passes the sanitizer flags that are unstable in rustc.
 export RUSTC_BOOTSTRAP=1
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
+# One fixed seed per target (libFuzzer's -seed; 0 would mean "from the clock").
+seed_of() {
+  case "$1" in
+    mesh_new) echo 1101 ;;
+    operations) echo 1102 ;;
+    readers) echo 1103 ;;
+    *) echo 1199 ;;
+  esac
+}
 passed=0 failed=0
 for target in $(cargo fuzz list); do
   mkdir -p "$scratch/$target" "fuzz/corpus/$target"
+  seed=${FUZZ_SEED:-$(seed_of "$target")}
+  if [ -n "$seconds" ]; then
+    budget=(-max_total_time="$seconds")
+  else
+    # The time limit only guards against a hang; the run count ends the run.
+    budget=(-runs="$runs" -max_total_time=300)
+  fi
+  start=$SECONDS
   if cargo fuzz run "$target" "$scratch/$target" "fuzz/corpus/$target" -- \
-      -max_total_time="$seconds" -print_final_stats=1 >"$scratch/$target.log" 2>&1; then
-    runs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$scratch/$target.log" | grep -o '[0-9]*$' || echo "?")
-    echo "fuzz $target: $runs runs in ${seconds}s, no crash"
+      -seed="$seed" "${budget[@]}" -print_final_stats=1 >"$scratch/$target.log" 2>&1; then
+    execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$scratch/$target.log" | grep -o '[0-9]*$' || echo "?")
+    echo "fuzz $target: $execs runs in $((SECONDS - start))s (seed $seed), no crash"
     passed=$((passed + 1))
   else
-    echo "fuzz $target: FAILED"; tail -n 40 "$scratch/$target.log"
+    echo "fuzz $target: FAILED (seed $seed)"; tail -n 40 "$scratch/$target.log"
     failed=$((failed + 1))
   fi
 done

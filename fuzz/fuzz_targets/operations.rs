@@ -4,12 +4,15 @@
 //! status; a success must hand back a valid mesh (the checking constructor
 //! accepts its buffers: distinct in-range corners, finite coordinates).
 //! Primitives get counts that are either small or past the size cap, so a
-//! refusal must come before any allocation.
+//! refusal must come before any allocation. Exports that fill caller
+//! buffers get capacities that are sometimes one short, and must then write
+//! nothing; on success every number they write must be finite.
 #![no_main]
 
 use std::ptr::{null, null_mut};
 
 use libfuzzer_sys::fuzz_target;
+use weft::ffi::creases::*;
 use weft::ffi::make::*;
 use weft::ffi::mend::*;
 use weft::ffi::mesh::*;
@@ -238,7 +241,7 @@ unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (We
                 status
             }
         }
-        _ => {
+        12 => {
             // Voronoi with a boundary polygon of hostile numbers.
             let boundary: Vec<f64> = (0..3 * bytes.small(7)).map(|_| bytes.number()).collect();
             let plane = WeftPlane { origin: [0.0; 3], x_axis: [1.0, 0.0, 0.0], y_axis: [0.0, 1.0, 0.0] };
@@ -254,8 +257,388 @@ unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (We
                 status
             }
         }
+        _ => extended_operation(bytes.small(EXTENDED_OPERATIONS), mesh, bytes, &mut out),
     };
     (status, out)
+}
+
+/// Number of operations [`extended_operation`] chooses from.
+const EXTENDED_OPERATIONS: u32 = 10;
+
+/// A capacity for a buffer that needs `needed` elements: mostly exact,
+/// sometimes one short (the call must then fail and write nothing), or 0.
+fn capacity(bytes: &mut Bytes, needed: usize) -> usize {
+    match bytes.byte() % 8 {
+        0 => needed.saturating_sub(1),
+        1 => 0,
+        2 => needed + 3,
+        _ => needed,
+    }
+}
+
+/// A buffer of `len` elements filled with a marker, to see what a call wrote.
+fn marked(len: usize) -> Vec<f64> {
+    vec![-7.5; len]
+}
+
+/// Asserts that a call that failed wrote nothing, and one that succeeded
+/// wrote only finite numbers into its first `written` elements.
+fn check_written(status: WeftStatus, buffer: &[f64], written: usize, what: &str) {
+    settle_status(status);
+    if status == WeftStatus::Ok {
+        if let Some(i) = buffer[..written].iter().position(|x| !x.is_finite()) {
+            panic!("{what} wrote {} at {i}", buffer[i]);
+        }
+    } else {
+        assert!(buffer.iter().all(|&x| x == -7.5), "{what} wrote on failure ({status:?})");
+    }
+}
+
+/// A vertex index: mostly one of the mesh's, sometimes past them.
+fn vertex_index(bytes: &mut Bytes, count: usize) -> u32 {
+    match bytes.byte() % 16 {
+        0 => u32::MAX,
+        1 => count as u32 + bytes.small(3),
+        _ => bytes.small(count as u32),
+    }
+}
+
+/// A sharpness: the hostile numbers, infinitely sharp, or semi-sharp.
+fn sharpness(bytes: &mut Bytes) -> f64 {
+    match bytes.byte() % 4 {
+        0 => WEFT_SHARPNESS_INFINITE,
+        1 => bytes.small(40) as f64 / 8.0,
+        _ => bytes.number(),
+    }
+}
+
+/// Subdivision options from the bytes: arbitrary enumeration values, creases
+/// on edges of the mesh or on arbitrary vertex pairs, corners, any sharpness.
+struct Options {
+    pairs: Vec<u32>,
+    crease_sharpness: Vec<f64>,
+    corners: Vec<u32>,
+    corner_sharpness: Vec<f64>,
+    raw: WeftSubdivisionOptions,
+}
+
+unsafe fn options(mesh: *mut WeftMesh, bytes: &mut Bytes) -> Options {
+    let count = weft_mesh_vertex_count(mesh);
+    let sizes = std::slice::from_raw_parts(weft_mesh_face_sizes(mesh), weft_mesh_face_count(mesh));
+    let indices = std::slice::from_raw_parts(weft_mesh_face_indices(mesh), weft_mesh_index_count(mesh));
+    let mut pairs = Vec::new();
+    let mut crease_sharpness = Vec::new();
+    for _ in 0..bytes.small(6) {
+        if bytes.byte() % 4 == 0 {
+            pairs.push(vertex_index(bytes, count));
+            pairs.push(vertex_index(bytes, count));
+        } else {
+            // An edge of the mesh: corner c and the next corner of its face.
+            let f = bytes.small(sizes.len() as u32) as usize;
+            let start: usize = sizes[..f].iter().map(|&n| n as usize).sum();
+            let n = sizes[f] as usize;
+            let c = bytes.small(n as u32) as usize;
+            pairs.push(indices[start + c]);
+            pairs.push(indices[start + (c + 1) % n]);
+        }
+        crease_sharpness.push(sharpness(bytes));
+    }
+    let mut corners = Vec::new();
+    let mut corner_sharpness = Vec::new();
+    for _ in 0..bytes.small(4) {
+        corners.push(vertex_index(bytes, count));
+        corner_sharpness.push(sharpness(bytes));
+    }
+    let raw = WeftSubdivisionOptions {
+        scheme: match bytes.byte() % 8 {
+            0 => 2 + bytes.small(4),
+            n => u32::from(n % 2),
+        },
+        naked_edges: bytes.small(4),
+        creasing: bytes.small(3),
+        crease_count: 0,
+        crease_vertex_pairs: null(),
+        crease_sharpness: null(),
+        corner_count: 0,
+        corner_vertices: null(),
+        corner_sharpness: null(),
+    };
+    let mut options = Options { pairs, crease_sharpness, corners, corner_sharpness, raw };
+    options.raw.crease_count = options.crease_sharpness.len();
+    options.raw.corner_count = options.corners.len();
+    // Sometimes a count with a NULL array: refused, never read.
+    if bytes.byte() % 16 != 0 {
+        options.raw.crease_vertex_pairs = options.pairs.as_ptr();
+        options.raw.crease_sharpness = options.crease_sharpness.as_ptr();
+    }
+    options.raw.corner_vertices = options.corners.as_ptr();
+    options.raw.corner_sharpness = options.corner_sharpness.as_ptr();
+    options
+}
+
+/// The refined vertex, face and face-index counts, when small enough to
+/// allocate buffers for.
+unsafe fn counts(mesh: *mut WeftMesh, scheme: u32, levels: u32) -> Option<(usize, usize, usize)> {
+    let (mut v, mut f, mut i) = (0, 0, 0);
+    let status = weft_subdivision_counts(mesh, scheme, levels, &mut v, &mut f, &mut i);
+    settle_status(status);
+    (status == WeftStatus::Ok && i < 1 << 16).then_some((v, f, i))
+}
+
+/// Levels for the creased exports: mostly 0 to 2, sometimes far past the cap.
+fn levels(bytes: &mut Bytes) -> u32 {
+    match bytes.byte() % 16 {
+        0 => 14 + bytes.small(30),
+        _ => bytes.small(3),
+    }
+}
+
+/// The exports added with creases, carried data, the limit, the toolbar's
+/// Tile and LaplacianHC inputs, and the read-only accessors. Returns the
+/// status; a mesh made goes to `out`.
+unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, out: &mut *mut WeftMesh) -> WeftStatus {
+    let count = weft_mesh_vertex_count(mesh);
+    match op {
+        0 => weft_tile(mesh, bytes.small(5), bytes.small(5), out),
+        1 => {
+            let activation: Vec<f64> = (0..count + bytes.small(3) as usize - 1)
+                .map(|_| match bytes.byte() % 4 {
+                    0 => bytes.number(),
+                    _ => bytes.small(5) as f64 / 4.0,
+                })
+                .collect();
+            let (pointer, len) = match bytes.byte() % 8 {
+                0 => (null(), 0),
+                _ => (activation.as_ptr(), activation.len()),
+            };
+            weft_laplacian_hc_smooth_ex(
+                mesh,
+                bytes.small(20),
+                bytes.number(),
+                bytes.number(),
+                bytes.small(5),
+                bytes.small(4),
+                pointer,
+                len,
+                out,
+            )
+        }
+        2 => {
+            let options = options(mesh, bytes);
+            weft_subdivide_ex(mesh, &options.raw, levels(bytes), out)
+        }
+        3 => {
+            // Per-vertex data of any width, any numbers, any capacity.
+            let options = options(mesh, bytes);
+            let levels = levels(bytes);
+            let width = bytes.small(5) as usize;
+            let data_len = (count * width + bytes.small(3) as usize).saturating_sub(1);
+            let data: Vec<f64> = (0..data_len).map(|_| bytes.number() * 1e-3 + bytes.finite()).collect();
+            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| c.0 * width);
+            let mut result = marked(capacity(bytes, needed));
+            let status = weft_subdivide_vertex_data(
+                mesh,
+                &options.raw,
+                levels,
+                data.as_ptr(),
+                data.len(),
+                width,
+                result.as_mut_ptr(),
+                result.len(),
+            );
+            check_written(status, &result, needed, "weft_subdivide_vertex_data");
+            status
+        }
+        4 => {
+            // Face-varying values: indices sometimes past the values, lengths off by one.
+            let options = options(mesh, bytes);
+            let levels = levels(bytes);
+            let width = 1 + bytes.small(3) as usize;
+            let value_count = bytes.small(12) as usize;
+            let values: Vec<f64> = (0..value_count * width).map(|_| bytes.finite()).collect();
+            let index_count = (weft_mesh_index_count(mesh) + bytes.small(3) as usize).saturating_sub(1);
+            let indices: Vec<u32> = (0..index_count).map(|_| bytes.small(value_count as u32 + 1)).collect();
+            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| c.2 * width);
+            let mut result = marked(capacity(bytes, needed));
+            let status = weft_subdivide_face_varying(
+                mesh,
+                &options.raw,
+                levels,
+                bytes.small(8),
+                values.as_ptr(),
+                value_count,
+                width,
+                indices.as_ptr(),
+                indices.len(),
+                result.as_mut_ptr(),
+                result.len(),
+            );
+            check_written(status, &result, needed, "weft_subdivide_face_varying");
+            status
+        }
+        5 => {
+            // The limit, with or without normals.
+            let options = options(mesh, bytes);
+            let levels = levels(bytes);
+            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| 3 * c.0);
+            let room = capacity(bytes, needed);
+            let mut positions = marked(room);
+            let mut normals = marked(room);
+            let normals_pointer = if bytes.byte() % 4 == 0 { null_mut() } else { normals.as_mut_ptr() };
+            let status =
+                weft_subdivide_limit(mesh, &options.raw, levels, positions.as_mut_ptr(), normals_pointer, room);
+            check_written(status, &positions, needed, "weft_subdivide_limit positions");
+            if !normals_pointer.is_null() {
+                check_written(status, &normals, needed, "weft_subdivide_limit normals");
+            }
+            status
+        }
+        6 => {
+            // The creased refiner: evaluate at hostile cage positions, then its mesh.
+            let options = options(mesh, bytes);
+            let mut refiner = null_mut();
+            let status = weft_refiner_new_ex(mesh, &options.raw, levels(bytes), &mut refiner);
+            if status != WeftStatus::Ok {
+                assert!(refiner.is_null());
+                return status;
+            }
+            evaluate_hostile(refiner, mesh, bytes);
+            let faces = weft_refiner_face_count(refiner);
+            let status = weft_refiner_mesh(refiner, out);
+            if status == WeftStatus::Ok {
+                assert_eq!(weft_mesh_face_count(*out), faces);
+            }
+            weft_refiner_free(refiner);
+            status
+        }
+        7 => {
+            // Creases from seams and folds, then subdivided with them.
+            let index_count = weft_mesh_index_count(mesh);
+            let room = capacity(bytes, 2 * index_count);
+            let mut pairs = vec![u32::MAX; room];
+            let mut welded = null_mut();
+            let mut found = usize::MAX;
+            let angle = match bytes.byte() % 2 {
+                0 => bytes.number(),
+                _ => bytes.small(200) as f64,
+            };
+            let status = weft_crease_edges_from_mesh(mesh, angle, &mut welded, pairs.as_mut_ptr(), room, &mut found);
+            settle_status(status);
+            if status != WeftStatus::Ok {
+                assert!(welded.is_null() && found == usize::MAX);
+                assert!(pairs.iter().all(|&p| p == u32::MAX), "written on failure");
+                return status;
+            }
+            let sharp = vec![WEFT_SHARPNESS_INFINITE; found];
+            let raw = WeftSubdivisionOptions {
+                scheme: 0,
+                naked_edges: bytes.small(3),
+                creasing: 0,
+                crease_count: found,
+                crease_vertex_pairs: pairs.as_ptr(),
+                crease_sharpness: sharp.as_ptr(),
+                corner_count: 0,
+                corner_vertices: null(),
+                corner_sharpness: null(),
+            };
+            let status = weft_subdivide_ex(welded, &raw, bytes.small(3), out);
+            assert_eq!(status, WeftStatus::Ok, "creases from the mesh refused: {}", message());
+            weft_mesh_free(welded);
+            status
+        }
+        8 => {
+            // Voronoi cells through every accessor, copied into buffers of any room.
+            let points = std::slice::from_raw_parts(weft_mesh_positions(mesh), count * 3).to_vec();
+            let plane = WeftPlane { origin: [0.0; 3], x_axis: [1.0, 0.0, 0.0], y_axis: [0.0, 1.0, 0.0] };
+            let mut cells = null_mut();
+            let status = weft_voronoi(points.as_ptr(), count, &plane, null(), 0, bytes.number(), &mut cells);
+            if status != WeftStatus::Ok {
+                assert!(cells.is_null());
+                return status;
+            }
+            let (n, corners) = (weft_cells_count(cells), weft_cells_corner_count(cells));
+            let sizes = weft_cells_sizes(cells);
+            if !sizes.is_null() {
+                let sizes = std::slice::from_raw_parts(sizes, n);
+                assert_eq!(sizes.iter().map(|&s| s as usize).sum::<usize>(), corners);
+            }
+            let points = weft_cells_corners(cells);
+            if !points.is_null() {
+                let points = std::slice::from_raw_parts(points, 3 * corners);
+                assert!(points.iter().all(|x| x.is_finite()), "a cell corner is not finite");
+            }
+            let mut out_sizes = vec![u32::MAX; capacity(bytes, n)];
+            let mut out_corners = marked(capacity(bytes, 3 * corners));
+            let status = weft_cells_copy(
+                cells,
+                out_sizes.as_mut_ptr(),
+                out_sizes.len(),
+                out_corners.as_mut_ptr(),
+                out_corners.len(),
+            );
+            check_written(status, &out_corners, 3 * corners, "weft_cells_copy");
+            if status != WeftStatus::Ok {
+                assert!(out_sizes.iter().all(|&s| s == u32::MAX));
+            }
+            weft_cells_free(cells);
+            status
+        }
+        _ => {
+            // The read-only accessors agree with the copies.
+            assert!(!weft_version().is_null());
+            let faces = weft_mesh_face_count(mesh);
+            let sizes = std::slice::from_raw_parts(weft_mesh_face_sizes(mesh), faces);
+            let indices = std::slice::from_raw_parts(weft_mesh_face_indices(mesh), weft_mesh_index_count(mesh));
+            assert_eq!(sizes.iter().map(|&s| s as usize).sum::<usize>(), indices.len());
+            assert!(indices.iter().all(|&i| (i as usize) < count));
+            assert!(weft_mesh_face_sizes(null()).is_null());
+            let (scheme, levels) = (bytes.small(3), levels(bytes));
+            let mut refiner = null_mut();
+            let status = weft_refiner_new(mesh, scheme, levels, bytes.small(4), &mut refiner);
+            if status == WeftStatus::Ok {
+                let mut faces = 0;
+                assert_eq!(weft_subdivision_face_count(mesh, scheme, levels, &mut faces), WeftStatus::Ok);
+                assert_eq!(weft_refiner_face_count(refiner), faces);
+                evaluate_hostile(refiner, mesh, bytes);
+                weft_refiner_free(refiner);
+            } else {
+                assert!(refiner.is_null());
+            }
+            assert_eq!(weft_refiner_face_count(null()), 0);
+            status
+        }
+    }
+}
+
+/// `weft_refiner_evaluate` with cage positions scaled toward `f64::MAX`,
+/// sometimes with a NaN, a wrong vertex count or an output one short.
+unsafe fn evaluate_hostile(refiner: *mut WeftRefiner, mesh: *mut WeftMesh, bytes: &mut Bytes) {
+    let count = weft_mesh_vertex_count(mesh);
+    let factor = match bytes.byte() % 4 {
+        0 => 1e300,
+        1 => 1e-300,
+        _ => 1.0,
+    };
+    let mut cage: Vec<f64> =
+        std::slice::from_raw_parts(weft_mesh_positions(mesh), count * 3).iter().map(|p| p * factor).collect();
+    if bytes.byte() % 8 == 0 {
+        let i = bytes.small(cage.len() as u32) as usize;
+        cage[i] = bytes.number();
+    }
+    let given = match bytes.byte() % 8 {
+        0 => count.saturating_sub(1),
+        _ => count,
+    };
+    let needed = 3 * weft_refiner_vertex_count(refiner);
+    let mut result = marked(capacity(bytes, needed));
+    let status = weft_refiner_evaluate(refiner, cage.as_ptr(), given, result.as_mut_ptr(), result.len());
+    // A refined point beyond the largest double leaves the buffer unspecified.
+    if status != WeftStatus::DegenerateInput {
+        check_written(status, &result, needed, "weft_refiner_evaluate");
+    }
+    if given == count && result.len() >= needed && cage.iter().all(|c| c.is_finite()) {
+        assert_eq!(status, WeftStatus::Ok, "weft_refiner_evaluate refused: {}", message());
+    }
 }
 
 fuzz_target!(|data: &[u8]| {
