@@ -376,3 +376,50 @@ fn binary_stl_refuses_coordinates_beyond_f32() {
     let again = parse_mesh(Format::Stl, &text).unwrap();
     assert_eq!(again.positions()[2].y, 1.9e89);
 }
+
+/// The operations fuzz target: Loop on three triangles over the same three
+/// vertices (each edge with three faces). Their middle children share the
+/// same three edge points, so the level has fewer edges than 2E + 3F, and
+/// `weft_subdivision_counts` announced 21 vertices at level 2 where the
+/// subdivision makes 15: a host sizing its buffers by it read unwritten
+/// values. The counts now follow groups of triangles on one vertex set.
+#[test]
+fn loop_counts_of_triangles_on_the_same_vertices_match_the_subdivision() {
+    use weft::subdivide::{
+        catmull_clark, loop_subdivision, refined_counts, NakedEdges, Scheme, Subdivider,
+        SubdivisionOptions,
+    };
+    let m = mesh(
+        &[[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        &[&[2, 0, 1], &[2, 1, 0], &[0, 2, 1]],
+    );
+    // A closed tetrahedron with one face doubled, reversed.
+    let doubled = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ],
+        &[&[0, 2, 1], &[0, 1, 3], &[0, 3, 2], &[1, 2, 3], &[1, 2, 0]],
+    );
+    for cage in [&m, &doubled] {
+        for levels in 0..=3 {
+            let counts = refined_counts(cage, Scheme::Loop, levels).unwrap();
+            let plain = loop_subdivision(cage, levels, NakedEdges::Smooth).unwrap();
+            assert_eq!(counts.vertex_count, plain.vertex_count(), "level {levels}");
+            assert_eq!(counts.face_count, plain.face_count());
+            assert_eq!(counts.index_count, plain.index_count());
+            let options = SubdivisionOptions::new(NakedEdges::Smooth);
+            let creased = Subdivider::new(cage, Scheme::Loop, levels, &options).unwrap();
+            assert_eq!(counts.vertex_count, creased.vertex_count());
+            let counts = refined_counts(cage, Scheme::CatmullClark, levels).unwrap();
+            let plain = catmull_clark(cage, levels, NakedEdges::Smooth).unwrap();
+            assert_eq!(counts.vertex_count, plain.vertex_count());
+        }
+    }
+    assert_eq!(
+        refined_counts(&m, Scheme::Loop, 2).unwrap().vertex_count,
+        15
+    );
+}

@@ -242,10 +242,11 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
 }
 
 /// Vertex, face and index counts after `levels` levels, found from the
-/// cage's edges; nothing of the result is allocated.
+/// cage's edges (and for Loop its distinct vertex triples); nothing of the
+/// result is allocated.
 ///
 /// # Errors
-/// As [`refined_face_count`].
+/// As [`refined_face_count`]; [`Error::OutOfMemory`].
 pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<RefinedCounts> {
     let face_count = refined_face_count(cage, scheme, levels)?;
     let edges = crate::topology::Topology::new(cage).edge_count() as u64;
@@ -258,6 +259,10 @@ pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Refine
         if cage.face_count() == 0 { 0 } else { levels },
     )?;
     debug_assert_eq!(faces as usize, face_count);
+    let vertices = match scheme {
+        Scheme::Loop if levels > 0 => loop_vertex_count(cage, edges, levels)?,
+        _ => vertices,
+    };
     Ok(RefinedCounts {
         vertex_count: vertices as usize,
         face_count: faces as usize,
@@ -265,8 +270,33 @@ pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Refine
     })
 }
 
-/// Checks every level's exact size against [`MAX_ELEMENTS`] and returns the
-/// last level's vertex, face and index counts.
+/// The exact vertex count after `levels` levels of Loop. Triangles on the
+/// same three vertices (in any order) share the edges inside them: their
+/// middle children have the same three edge points, and so do their corner
+/// children at each vertex, so a group of such triangles stays a group at
+/// every level. With U distinct vertex sets among F triangles, a level makes
+/// E' = 2E + 3U edges (not 2E + 3F), V' = V + E and U' = 4U.
+fn loop_vertex_count(cage: &Mesh, edges: u64, levels: u32) -> Result<u64> {
+    let mut sets = try_vec(cage.face_count(), "triangle vertex sets")?;
+    sets.extend(cage.faces().map(|f| {
+        let mut set = [f[0], f[1], f[2]];
+        set.sort_unstable();
+        set
+    }));
+    sets.sort_unstable();
+    sets.dedup();
+    let (mut v, mut e, mut u) = (cage.vertex_count() as u64, edges, sets.len() as u64);
+    // Bounded by `check_counts`, which counted 2E + 3F edges per level.
+    for _ in 0..levels {
+        (v, e, u) = (v + e, 2 * e + 3 * u, 4 * u);
+    }
+    Ok(v)
+}
+
+/// Checks every level's size against [`MAX_ELEMENTS`] and returns the last
+/// level's vertex, face and index counts. The vertex and edge counts are
+/// exact for Catmull-Clark, and for Loop unless two triangles have the same
+/// three vertices (then an upper bound; see [`loop_vertex_count`]).
 /// Catmull-Clark: V' = V + E + F, F' = Σ sizes, E' = 2E + Σ sizes.
 /// Loop: V' = V + E, F' = 4F, E' = 2E + 3F.
 pub(crate) fn check_counts(
