@@ -351,6 +351,14 @@ fn subdivision_at_the_top_of_the_f64_range_is_exactly_the_scaled_result() {
         assert_eq!(big_limit.du, scaled_points(&limit.du, quarter));
         assert_eq!(big_limit.dv, scaled_points(&limit.dv, quarter));
         assert_eq!(big_limit.normals, limit.normals);
+        // Tangents near 2^524 or 2^-536, whose cross product overflows or
+        // underflows, still give the same unit normals.
+        for factor in [2f64.powi(520), 2f64.powi(-540)] {
+            let far = subdivider
+                .limit_of(&scaled_points(small.positions(), factor))
+                .unwrap();
+            assert_eq!(far.normals, limit.normals, "{scheme:?} at {factor:e}");
+        }
         let unit = |n: &&DVec3| (n.length() - 1.0).abs() < 1e-12;
         assert!(limit.normals.iter().filter(unit).count() > limit.normals.len() / 2);
     }

@@ -288,7 +288,7 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
 ///
 /// Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
 /// WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
-/// WEFT_STATUS_INVALID_ARGUMENT.
+/// WEFT_STATUS_INVALID_ARGUMENT (also for a NaN or infinite value, naming it).
 ///
 /// # Safety
 /// As `weft_subdivide_ex`; the buffers hold the elements stated.
