@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # A short, reproducible run of every fuzz target, starting from the committed
-# corpus: a fixed number of inputs (FUZZ_RUNS each, default 3000) from a fixed
-# random seed per target, so two runs of one commit try the same inputs.
+# corpus: a fixed number of inputs (FUZZ_RUNS each, default 20000) from a fixed
+# random seed per target, so two runs of one commit try (nearly) the same
+# inputs; see fuzz/README.md for what still varies.
 # New inputs go to a scratch folder, so the repository's corpus stays small.
 # Needs cargo-fuzz (installed when missing) and builds with AddressSanitizer.
 #
@@ -12,11 +13,13 @@
 #   cargo fuzz cmin operations   (named regression inputs are kept; see README)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs=${FUZZ_RUNS:-3000}
+runs=${FUZZ_RUNS:-20000}
 seconds=${FUZZ_SECONDS:-}
 command -v cargo-fuzz >/dev/null 2>&1 || cargo install cargo-fuzz --locked --quiet
 # cargo-fuzz passes the sanitizer flags that are unstable in rustc.
 export RUSTC_BOOTSTRAP=1
+# One thread: the coverage a run sees does not depend on how work is split.
+export RAYON_NUM_THREADS=${RAYON_NUM_THREADS:-1}
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 # One fixed seed per target (libFuzzer's -seed; 0 would mean "from the clock").
