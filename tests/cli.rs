@@ -581,6 +581,10 @@ fn demo_writes_every_workflow_with_an_index() {
         "fading-smooth",
         "boxes-culled",
         "boxes-smooth",
+        "creases-cage",
+        "creases-none",
+        "creases-sharp",
+        "creases-colours",
     ] {
         assert!(
             index.contains(&format!("src=\"{name}.png\"")),
@@ -599,7 +603,26 @@ fn demo_writes_every_workflow_with_an_index() {
         assert_eq!((info.info().width, info.info().height), (800, 600));
         pictures += 1;
     }
-    assert_eq!(pictures, 14);
+    assert_eq!(pictures, 18);
+    // The cage's OBJ carries its creases: subdividing it again gives the creased block.
+    let o = weft(
+        &out,
+        &[
+            "subdivide",
+            "creases-cage.obj",
+            "again.obj",
+            "--levels",
+            "3",
+        ],
+    );
+    assert_exit(&o, 0);
+    let again = io::read_mesh(out.join("again.obj")).unwrap();
+    assert_eq!(again, io::read_mesh(out.join("creases-sharp.obj")).unwrap());
+    assert_ne!(again, io::read_mesh(out.join("creases-none.obj")).unwrap());
+    let coloured =
+        io::read_mesh_file(out.join("creases-colours.obj"), &Default::default()).unwrap();
+    assert_eq!(coloured.colours.unwrap().rgba.len(), again.vertex_count());
+    assert_eq!(coloured.uvs.unwrap().indices.len(), again.index_count());
     // The culled boxes are one closed shell; the repaired surfaces one piece.
     let o = weft(&out, &["info", "boxes-culled.obj", "--json"]);
     assert!(stdout(&o).contains("\"closed\": true"), "{}", stdout(&o));

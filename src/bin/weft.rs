@@ -55,8 +55,9 @@ enum Command {
         #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         planarity_tolerance: f64,
     },
-    /// A shaded picture: front faces blue-grey, back faces orange, edges
-    /// drawn on coarse meshes, camera fitted in a three-quarter view.
+    /// A shaded picture: front faces blue-grey (or in the file's vertex
+    /// colours), back faces orange, edges drawn on coarse meshes, camera
+    /// fitted in a three-quarter view.
     #[command(after_help = "Example:\n  weft render part.obj part.png --size 1024x768")]
     Render {
         /// The mesh file (.obj, .ply, .stl, .off).
@@ -368,7 +369,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             size,
             edges,
         } => {
-            let mesh = read_file(cli, input)?.mesh;
+            let file = read_file(cli, input)?;
+            let mesh = &file.mesh;
             let options = RenderOptions {
                 width: size.0,
                 height: size.1,
@@ -378,8 +380,11 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                     _ => None,
                 },
             };
-            let image = with_progress("rendering", || render::render(&mesh, &options))
-                .map_err(|e| Failure::Failed(format!("{}: cannot render: {e}", input.display())))?;
+            let image = with_progress("rendering", || match &file.colours {
+                Some(colours) => render::render_coloured(mesh, &options, &colours.rgba),
+                None => render::render(mesh, &options),
+            })
+            .map_err(|e| Failure::Failed(format!("{}: cannot render: {e}", input.display())))?;
             image.save_png(output)?;
             eprintln!(
                 "{}: {} × {} picture of {} faces",
