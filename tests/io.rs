@@ -289,6 +289,15 @@ fn arbitrary_bytes_never_panic() {
     ]
     .into_iter()
     .map(|(f, o)| (f, encode(f, &shapes::mixed_polygons(), &o)))
+    .chain([Format::Obj, Format::Ply].map(|f| {
+        let mut bytes = Vec::new();
+        let options = WriteOptions {
+            ply: PlyEncoding::Ascii,
+            ..Default::default()
+        };
+        io::write_file_to(f, &mut bytes, &decorated_cube(), &options).unwrap();
+        (f, bytes)
+    }))
     .collect();
     for round in 0..3000 {
         let (format, base) = &valid[round % valid.len()];
@@ -310,6 +319,16 @@ fn arbitrary_bytes_never_panic() {
         }
         for f in [Format::Obj, Format::Off, Format::Stl, Format::Ply] {
             let _ = io::parse_mesh(f, &data);
+        }
+        // What reads with its attributes writes and reads back alike.
+        for f in [Format::Obj, Format::Ply] {
+            if let Ok(file) = io::parse_mesh_file(f, &data) {
+                let mut out = Vec::new();
+                io::write_file_to(f, &mut out, &file, &WriteOptions::default()).unwrap();
+                let again = io::parse_mesh_file(f, &out).unwrap();
+                assert_eq!(again.mesh.vertex_count(), file.mesh.vertex_count());
+                assert_eq!(again.colours.is_some(), file.colours.is_some());
+            }
         }
         let _ = format;
     }
@@ -552,6 +571,13 @@ fn malformed_attributes_name_their_line() {
         "{msg}"
     );
 
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 3 inf\n",
+    );
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(msg.contains("vertex 3 is past the last vertex"), "{msg}");
+
     let (at, msg) = attribute_error(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1\n");
     assert_eq!(at, Location::Line(5), "{msg}");
     assert!(msg.contains("at least 2 vertex indices"), "{msg}");
@@ -668,4 +694,23 @@ fn crease_side_files_parse_and_name_bad_lines() {
         assert_eq!(err.location(), Some(Location::Line(line)), "{err}");
         assert!(err.to_string().contains(expected), "{err}");
     }
+}
+
+#[test]
+fn render_coloured_paints_faces_in_their_vertices_colours() {
+    use weft::io::render::{render, render_coloured, RenderOptions};
+    let cube = shapes::cube();
+    let options = RenderOptions {
+        width: 80,
+        height: 60,
+        edges: Some(false),
+    };
+    let red = vec![[1.0, 0.0, 0.0, 1.0]; 8];
+    let image = render_coloured(&cube, &options, &red).unwrap();
+    let [r, g, b] = image.pixel(40, 30);
+    assert!(r > 100 && g < 20 && b < 20, "{:?}", [r, g, b]);
+    let plain = render(&cube, &options).unwrap();
+    let [r, g, b] = plain.pixel(40, 30);
+    assert!(b > r && b > g, "{:?}", [r, g, b]);
+    assert!(render_coloured(&cube, &options, &red[..7]).is_err());
 }

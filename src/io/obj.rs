@@ -259,6 +259,23 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
             _ => {}
         }
     }
+    let tagged = creases
+        .iter()
+        .flat_map(|c| c.edge.map(|v| (v, c.line)))
+        .chain(corners.iter().map(|c| (c.vertex, c.line)));
+    if let Some((v, line)) = tagged
+        .filter(|(v, _)| *v as usize >= positions.len())
+        .min_by_key(|&(_, line)| line)
+    {
+        note(IoError::parse(
+            Location::Line(line),
+            format!(
+                "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
+                positions.len(),
+                positions.len().max(1) - 1
+            ),
+        ));
+    }
     if let Some(&(v, line)) = line_vertices
         .iter()
         .find(|(v, _)| *v as usize >= positions.len())
