@@ -1131,6 +1131,19 @@ fn colours_and_uvs_are_carried_through() {
         }
     }
 
+    let o = weft(&dir, &["info", "grey.obj"]);
+    assert!(
+        stdout(&o).contains("carried data          vertex colours\n"),
+        "{}",
+        stdout(&o)
+    );
+    let o = weft(&dir, &["info", "grey.obj", "--json"]);
+    assert!(
+        stdout(&o).contains("\"carried\": [\"vertex colours\"]}"),
+        "{}",
+        stdout(&o)
+    );
+
     // A PLY with colours: every output vertex has one, between its cage's.
     let mut coloured = io::MeshFile::new(shapes::cube());
     coloured.colours = Some(io::Colours {

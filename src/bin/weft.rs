@@ -90,7 +90,8 @@ i j sharpness         the edge from vertex i to vertex j\n  \
 crease i j sharpness  the same\n  \
 corner v sharpness    vertex v\n\
 A sharpness is a number of 0 or more (levels during which the crease stays sharp, then \
-softens) or inf (10 or more): a hard crease, a corner that does not move.\n\n\
+softens) or inf (10 or more): a hard crease, a corner that does not move. \
+More in docs/creases.md.\n\n\
 Examples:\n  weft subdivide cage.obj smooth.obj --scheme catmull-clark --levels 2 --naked-edges fixed\n  \
 weft subdivide tri.ply tri3.ply --scheme loop --levels 3 --naked-edges corner-fixed\n  \
 weft subdivide block.ply block3.obj --levels 3 --creases block-creases.txt --limit\n  \
@@ -835,7 +836,8 @@ impl Report {
              \"ngons\": {}, \"edges\": {}, \"naked_edges\": {}, \"non_manifold_edges\": {}, \
              \"non_manifold_vertices\": {}, \"components\": {}, \"closed\": {}, \
              \"orientable\": {}, \"oriented\": {}, \"planarity\": {{\"tolerance\": {}, \
-             \"non_planar_faces\": {}, \"max_deviation\": {}}}, \"bounding_box\": {bounding_box}}}",
+             \"non_planar_faces\": {}, \"max_deviation\": {}}}, \"bounding_box\": {bounding_box}, \
+             \"carried\": [{}]}}",
             json_string(&path.to_string_lossy()),
             self.vertices,
             self.faces,
@@ -853,6 +855,11 @@ impl Report {
             self.planarity_tolerance,
             self.non_planar_faces,
             self.max_planarity_deviation,
+            self.attributes
+                .iter()
+                .map(|name| json_string(name))
+                .collect::<Vec<_>>()
+                .join(", "),
         )
     }
 }
