@@ -1289,3 +1289,45 @@ fn limit_writes_unit_normals() {
     let header = String::from_utf8_lossy(&bytes[..400]);
     assert!(header.contains("property double nx"), "{header}");
 }
+
+/// Mesh-only commands read past malformed UVs, saying where they are;
+/// subdivide, which would carry them, refuses the file at that line.
+#[test]
+fn malformed_uvs_stop_only_the_commands_that_carry_them() {
+    let dir = folder("malformed-uvs");
+    let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n\
+                f 1/1 2/2 3/3\nf 1 3 4\n";
+    std::fs::write(dir.join("mixed.obj"), text).unwrap();
+
+    let o = weft(&dir, &["flip", "mixed.obj", "flipped.obj"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("line 9"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("mesh alone"), "{}", stderr(&o));
+    let flipped = io::read_mesh(dir.join("flipped.obj")).unwrap();
+    assert_same_cycle(flipped.face(0), vec![2, 1, 0], 0);
+    assert_same_cycle(flipped.face(1), vec![3, 2, 0], 1);
+
+    let o = weft(&dir, &["info", "mixed.obj"]);
+    assert_exit(&o, 0);
+    assert!(
+        stdout(&o).contains("faces                 2"),
+        "{}",
+        stdout(&o)
+    );
+
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "mixed.obj",
+            "smooth.obj",
+            "--scheme",
+            "loop",
+            "--levels",
+            "1",
+        ],
+    );
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("mixed.obj: line 9"), "{}", stderr(&o));
+    assert!(!dir.join("smooth.obj").exists());
+}

@@ -353,7 +353,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             json,
             planarity_tolerance,
         } => {
-            let file = read_file(cli, input)?;
+            let file = read_file_or_mesh(cli, input)?;
             let mesh = &file.mesh;
             let mut report = with_progress("analysing", || describe(mesh, *planarity_tolerance));
             report.attributes = file.attribute_names();
@@ -370,7 +370,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             size,
             edges,
         } => {
-            let file = read_file(cli, input)?;
+            let file = read_file_or_mesh(cli, input)?;
             let mesh = &file.mesh;
             let options = RenderOptions {
                 width: size.0,
@@ -615,7 +615,7 @@ fn operation_failed(input: &Path, what: &str, error: weft::Error) -> Failure {
 /// Reads a mesh for a command that does not carry colours, UVs or
 /// creases: says on stderr what the output will lack.
 fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
-    let file = read_file(cli, path)?;
+    let file = read_file_or_mesh(cli, path)?;
     if file.has_attributes() {
         eprintln!(
             "{}: this command keeps only the mesh; its {} are not carried to the output",
@@ -624,6 +624,22 @@ fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
         );
     }
     Ok(file.mesh)
+}
+
+/// As [`read_file`], but for a command that can do without colours, UVs
+/// and creases: when only those are malformed, says so on stderr and goes
+/// on with the mesh alone.
+fn read_file_or_mesh(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
+    match read_file(cli, path) {
+        Ok(file) => Ok(file),
+        Err(Failure::Failed(attribute_problem)) => {
+            let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
+            let mesh = io::read_mesh_with(path, &ReadOptions { weld })
+                .map_err(|_| Failure::Failed(attribute_problem.clone()))?;
+            eprintln!("weft: {attribute_problem}; reading on with the mesh alone");
+            Ok(MeshFile::new(mesh))
+        }
+    }
 }
 
 /// Reads a mesh with its colours, UVs and creases, welding STL corners
