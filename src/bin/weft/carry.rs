@@ -6,9 +6,8 @@ use std::collections::HashMap;
 
 use weft::io::{Colours, FileCorner, FileCrease, MeshFile, Uvs};
 use weft::subdivide::{
-    creases_from_mesh, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions,
+    creases_from_mesh, CreasedMesh, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions,
 };
-use weft::DVec3;
 
 /// Triangulates `file`'s mesh; colours and creases keep their vertices, UVs
 /// follow each triangle's corners back to its polygon's.
@@ -44,21 +43,11 @@ pub fn triangulate(file: &MeshFile) -> weft::Result<MeshFile> {
 /// and corners follow their vertices; UVs stay with their corners. Returns
 /// the file and how many creases were found.
 pub fn crease_by_angle(file: &MeshFile, angle_degrees: f64) -> weft::Result<(MeshFile, usize)> {
-    let (welded, found) = creases_from_mesh(&file.mesh, angle_degrees)?;
-    // The same map as creases_from_mesh's: each position's first vertex,
-    // numbered in order of first appearance.
-    let bits = |p: DVec3| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
-    let mut first = HashMap::new();
-    let remap: Vec<u32> = file
-        .mesh
-        .positions()
-        .iter()
-        .map(|&p| {
-            let next = first.len() as u32;
-            *first.entry(bits(p)).or_insert(next)
-        })
-        .collect();
-    debug_assert_eq!(first.len(), welded.vertex_count());
+    let CreasedMesh {
+        mesh: welded,
+        creases: found,
+        vertex_map: remap,
+    } = creases_from_mesh(&file.mesh, angle_degrees)?;
     let colours = file.colours.as_ref().map(|colours| {
         let mut rgba = vec![[0.0; 4]; welded.vertex_count()];
         for (v, &to) in remap.iter().enumerate().rev() {
