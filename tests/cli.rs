@@ -581,6 +581,10 @@ fn demo_writes_every_workflow_with_an_index() {
         "fading-smooth",
         "boxes-culled",
         "boxes-smooth",
+        "creases-cage",
+        "creases-none",
+        "creases-sharp",
+        "creases-colours",
     ] {
         assert!(
             index.contains(&format!("src=\"{name}.png\"")),
@@ -599,7 +603,26 @@ fn demo_writes_every_workflow_with_an_index() {
         assert_eq!((info.info().width, info.info().height), (800, 600));
         pictures += 1;
     }
-    assert_eq!(pictures, 14);
+    assert_eq!(pictures, 18);
+    // The cage's OBJ carries its creases: subdividing it again gives the creased block.
+    let o = weft(
+        &out,
+        &[
+            "subdivide",
+            "creases-cage.obj",
+            "again.obj",
+            "--levels",
+            "3",
+        ],
+    );
+    assert_exit(&o, 0);
+    let again = io::read_mesh(out.join("again.obj")).unwrap();
+    assert_eq!(again, io::read_mesh(out.join("creases-sharp.obj")).unwrap());
+    assert_ne!(again, io::read_mesh(out.join("creases-none.obj")).unwrap());
+    let coloured =
+        io::read_mesh_file(out.join("creases-colours.obj"), &Default::default()).unwrap();
+    assert_eq!(coloured.colours.unwrap().rgba.len(), again.vertex_count());
+    assert_eq!(coloured.uvs.unwrap().indices.len(), again.index_count());
     // The culled boxes are one closed shell; the repaired surfaces one piece.
     let o = weft(&out, &["info", "boxes-culled.obj", "--json"]);
     assert!(stdout(&o).contains("\"closed\": true"), "{}", stdout(&o));
@@ -933,4 +956,378 @@ fn primitive_builds_the_define_panel() {
     assert!(stderr(&o).contains("sides is 2"), "{}", stderr(&o));
     let o = weft(&dir, &["primitive", "torus", "x.obj"]);
     assert_exit(&o, 2);
+}
+
+/// The cube of `shapes::cube` as OBJ text with `extra` lines after it and,
+/// when given, one colour for every vertex.
+fn cube_obj(colour: Option<[f64; 3]>, extra: &str) -> String {
+    let cube = shapes::cube();
+    let mut text = String::new();
+    for p in cube.positions() {
+        text.push_str(&format!("v {} {} {}", p.x, p.y, p.z));
+        if let Some([r, g, b]) = colour {
+            text.push_str(&format!(" {r} {g} {b}"));
+        }
+        text.push('\n');
+    }
+    for face in cube.faces() {
+        let corners: Vec<String> = face.iter().map(|v| (v + 1).to_string()).collect();
+        text.push_str(&format!("f {}\n", corners.join(" ")));
+    }
+    text + extra
+}
+
+#[test]
+fn subdivide_uses_a_crease_side_file() {
+    let dir = folder("creases");
+    io::write_mesh(dir.join("cube.ply"), &shapes::cube()).unwrap();
+    // The edge from (0,0,0) to (1,0,0), hard, with both ends pinned.
+    std::fs::write(
+        dir.join("edge.txt"),
+        "# one hard edge\n0 1 inf\ncorner 0 inf\ncorner 1 inf   # both ends stay\n",
+    )
+    .unwrap();
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.ply",
+            "creased.ply",
+            "--levels",
+            "3",
+            "--creases",
+            "edge.txt",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert!(
+        stderr(&o).contains("edge.txt: 1 creases and 2 corners"),
+        "{}",
+        stderr(&o)
+    );
+    let creased = io::read_mesh(dir.join("creased.ply")).unwrap();
+    // The corners stay put (the cage's vertices keep their indices).
+    assert_eq!(creased.positions()[0], weft::DVec3::ZERO);
+    assert_eq!(creased.positions()[1], weft::DVec3::X);
+    // The crease stays on the cage edge: 2³ + 1 vertices on the segment.
+    let on_edge = |m: &weft::Mesh| {
+        m.positions()
+            .iter()
+            .filter(|p| p.y.abs() < 1e-12 && p.z.abs() < 1e-12 && (0.0..=1.0).contains(&p.x))
+            .count()
+    };
+    assert_eq!(on_edge(&creased), 9);
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.ply", "smooth.ply", "--levels", "3"],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(on_edge(&io::read_mesh(dir.join("smooth.ply")).unwrap()), 0);
+
+    // Bad lines: exit 1, the file, the line and what was expected.
+    for (text, expected) in [
+        ("0 1 inf\n3 2\n", "bad.txt: line 2: expected \"i j sharpness\""),
+        ("# fine\n0 1 soft\n", "bad.txt: line 2: expected a sharpness"),
+        ("\n0 7 inf\n", "bad.txt: line 2: the crease from vertex 0 to vertex 7 cannot be used: they are not joined by an edge"),
+        ("corner 8 inf\n", "bad.txt: line 1: corner vertex 8 is past the last vertex"),
+    ] {
+        std::fs::write(dir.join("bad.txt"), text).unwrap();
+        let o = weft(&dir, &["subdivide", "cube.ply", "x.ply", "--creases", "bad.txt"]);
+        assert_exit(&o, 1);
+        assert!(stderr(&o).contains(expected), "{text:?}: {}", stderr(&o));
+        assert!(!dir.join("x.ply").exists());
+    }
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.ply", "x.ply", "--creases", "missing.txt"],
+    );
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("missing.txt: cannot read"),
+        "{}",
+        stderr(&o)
+    );
+    for bad in [
+        ["--crease-angle", "-3"],
+        ["--creasing", "sharp"],
+        ["--uv-linear", "some"],
+    ] {
+        let o = weft(&dir, &["subdivide", "cube.ply", "x.ply", bad[0], bad[1]]);
+        assert_exit(&o, 2);
+    }
+}
+
+#[test]
+fn obj_polylines_crease_and_the_angle_finds_folds() {
+    let dir = folder("obj-creases");
+    // The bottom face's four edges creased: the bottom stays flat at z = 0.
+    std::fs::write(dir.join("cube.obj"), cube_obj(None, "l 1 3 4 2 1\n")).unwrap();
+    std::fs::write(dir.join("plain.obj"), cube_obj(None, "")).unwrap();
+    let flat = |name: &str| {
+        let mesh = io::read_mesh(dir.join(name)).unwrap();
+        mesh.positions().iter().filter(|p| p.z == 0.0).count()
+    };
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.obj", "creased.obj", "--levels", "2"],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(flat("creased.obj"), 25);
+    let o = weft(
+        &dir,
+        &["subdivide", "plain.obj", "smooth.obj", "--levels", "2"],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(flat("smooth.obj"), 0);
+
+    // Every cube edge folds 90°: with a 60° crease angle the cube stays a cube.
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "plain.obj",
+            "angle.obj",
+            "--levels",
+            "2",
+            "--crease-angle",
+            "60",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("12 edges creased"), "{}", stderr(&o));
+    let boxy = io::read_mesh(dir.join("angle.obj")).unwrap();
+    for p in boxy.positions() {
+        let on_face = p.to_array().iter().any(|&c| c == 0.0 || c == 1.0);
+        assert!(on_face, "{p} left the cube's faces");
+    }
+
+    // A polyline off the mesh's edges is an error naming the OBJ line.
+    std::fs::write(dir.join("diagonal.obj"), cube_obj(None, "l 1 4\n")).unwrap();
+    let o = weft(&dir, &["subdivide", "diagonal.obj", "x.obj"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("diagonal.obj: line 15: the crease from vertex 0 to vertex 3"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+#[test]
+fn colours_and_uvs_are_carried_through() {
+    let dir = folder("carried");
+    // A constant colour stays constant.
+    std::fs::write(dir.join("grey.obj"), cube_obj(Some([0.25, 0.5, 0.75]), "")).unwrap();
+    let o = weft(
+        &dir,
+        &["subdivide", "grey.obj", "grey2.obj", "--levels", "2"],
+    );
+    assert_exit(&o, 0);
+    let file = io::read_mesh_file(dir.join("grey2.obj"), &Default::default()).unwrap();
+    let colours = file.colours.expect("colours written");
+    assert_eq!(colours.rgba.len(), 98);
+    for c in &colours.rgba {
+        for (got, want) in c.iter().zip([0.25, 0.5, 0.75, 1.0]) {
+            assert!((got - want).abs() < 1e-12, "{c:?}");
+        }
+    }
+
+    let o = weft(&dir, &["info", "grey.obj"]);
+    assert!(
+        stdout(&o).contains("carried data          vertex colours\n"),
+        "{}",
+        stdout(&o)
+    );
+    let o = weft(&dir, &["info", "grey.obj", "--json"]);
+    assert!(
+        stdout(&o).contains("\"carried\": [\"vertex colours\"]}"),
+        "{}",
+        stdout(&o)
+    );
+
+    // A PLY with colours: every output vertex has one, between its cage's.
+    let mut coloured = io::MeshFile::new(shapes::cube());
+    coloured.colours = Some(io::Colours {
+        rgba: (0..8).map(|i| [(i % 2) as f64, 0.0, 1.0, 1.0]).collect(),
+        alpha: false,
+    });
+    io::write_mesh_file(dir.join("cube.ply"), &coloured, &Default::default()).unwrap();
+    let o = weft(
+        &dir,
+        &["subdivide", "cube.ply", "cube2.ply", "--levels", "2"],
+    );
+    assert_exit(&o, 0);
+    let file = io::read_mesh_file(dir.join("cube2.ply"), &Default::default()).unwrap();
+    let colours = file.colours.expect("colours written");
+    assert_eq!(colours.rgba.len(), file.mesh.vertex_count());
+    assert!(colours.rgba.iter().any(|c| c[0] > 0.1 && c[0] < 0.9));
+    assert!(colours.rgba.iter().all(|c| c[1] == 0.0 && c[2] == 1.0));
+
+    // UVs: a round trip through convert, and through subdivision.
+    let uv_cube = cube_obj(None, "")
+        .lines()
+        .filter(|l| !l.starts_with('f'))
+        .collect::<Vec<_>>()
+        .join("\n")
+        + "\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+        + &shapes::cube()
+            .faces()
+            .map(|f| {
+                let c: Vec<String> = f
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| format!("{}/{}", v + 1, k + 1))
+                    .collect();
+                format!("f {}\n", c.join(" "))
+            })
+            .collect::<String>();
+    std::fs::write(dir.join("uv.obj"), uv_cube).unwrap();
+    let o = weft(&dir, &["convert", "uv.obj", "uv-copy.obj"]);
+    assert_exit(&o, 0);
+    let original = io::read_mesh_file(dir.join("uv.obj"), &Default::default()).unwrap();
+    let copy = io::read_mesh_file(dir.join("uv-copy.obj"), &Default::default()).unwrap();
+    assert_eq!(copy.uvs, original.uvs);
+    assert_eq!(copy.uvs.as_ref().unwrap().indices.len(), 24);
+
+    let o = weft(&dir, &["subdivide", "uv.obj", "uv2.obj", "--levels", "1"]);
+    assert_exit(&o, 0);
+    let refined = io::read_mesh_file(dir.join("uv2.obj"), &Default::default()).unwrap();
+    let uvs = refined.uvs.expect("UVs written");
+    assert_eq!(uvs.indices.len(), refined.mesh.index_count());
+    // Each face is its own UV square: face points at its middle, linear edges.
+    let mut values = uvs.values.clone();
+    values.sort_by(|a, b| a.partial_cmp(b).unwrap());
+    values.dedup();
+    assert_eq!(values.len(), 9, "{values:?}");
+    assert!(values.contains(&[0.5, 0.5]) && values.contains(&[0.5, 0.0]));
+
+    // Loop triangulates and keeps the UVs with their corners.
+    let o = weft(
+        &dir,
+        &["subdivide", "uv.obj", "uv-loop.obj", "--scheme", "loop"],
+    );
+    assert_exit(&o, 0);
+    let looped = io::read_mesh_file(dir.join("uv-loop.obj"), &Default::default()).unwrap();
+    assert_eq!(looped.uvs.unwrap().indices.len(), 48 * 3);
+
+    // Commands that drop them, and formats that cannot hold them, say so.
+    let o = weft(&dir, &["weld", "uv.obj", "-o", "welded.obj"]);
+    assert_exit(&o, 0);
+    assert!(
+        stderr(&o).contains("uv.obj: this command keeps only the mesh; its UVs are not carried"),
+        "{}",
+        stderr(&o)
+    );
+    let o = weft(&dir, &["subdivide", "uv.obj", "uv.off"]);
+    assert_exit(&o, 0);
+    assert!(
+        stderr(&o).contains("uv.off: this format cannot hold the UVs"),
+        "{}",
+        stderr(&o)
+    );
+    let o = weft(&dir, &["triangulate", "grey.obj", "grey-tri.obj"]);
+    assert_exit(&o, 0);
+    let tri = io::read_mesh_file(dir.join("grey-tri.obj"), &Default::default()).unwrap();
+    assert_eq!(tri.colours.unwrap().rgba.len(), 8);
+}
+
+#[test]
+fn limit_writes_unit_normals() {
+    let dir = folder("limit");
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(8, 6)).unwrap();
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "torus.obj",
+            "limit.obj",
+            "--levels",
+            "2",
+            "--limit",
+        ],
+    );
+    assert_exit(&o, 0);
+    let text = std::fs::read_to_string(dir.join("limit.obj")).unwrap();
+    let normals: Vec<[f64; 3]> = text
+        .lines()
+        .filter_map(|l| l.strip_prefix("vn "))
+        .map(|l| {
+            let n: Vec<f64> = l.split_whitespace().map(|w| w.parse().unwrap()).collect();
+            [n[0], n[1], n[2]]
+        })
+        .collect();
+    let mesh = io::read_mesh(dir.join("limit.obj")).unwrap();
+    assert_eq!(normals.len(), mesh.vertex_count());
+    for n in &normals {
+        let length = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+        assert!((length - 1.0).abs() < 1e-12, "{n:?}");
+    }
+    assert!(text
+        .lines()
+        .any(|l| l.starts_with("f ") && l.contains("//")));
+    // The limit differs from the refined points.
+    let o = weft(
+        &dir,
+        &["subdivide", "torus.obj", "refined.obj", "--levels", "2"],
+    );
+    assert_exit(&o, 0);
+    let refined = io::read_mesh(dir.join("refined.obj")).unwrap();
+    assert_ne!(refined.positions(), mesh.positions());
+
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "torus.obj",
+            "limit.ply",
+            "--levels",
+            "1",
+            "--limit",
+        ],
+    );
+    assert_exit(&o, 0);
+    let bytes = std::fs::read(dir.join("limit.ply")).unwrap();
+    let header = String::from_utf8_lossy(&bytes[..400]);
+    assert!(header.contains("property double nx"), "{header}");
+}
+
+/// Mesh-only commands read past malformed UVs, saying where they are;
+/// subdivide, which would carry them, refuses the file at that line.
+#[test]
+fn malformed_uvs_stop_only_the_commands_that_carry_them() {
+    let dir = folder("malformed-uvs");
+    let text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n\
+                f 1/1 2/2 3/3\nf 1 3 4\n";
+    std::fs::write(dir.join("mixed.obj"), text).unwrap();
+
+    let o = weft(&dir, &["flip", "mixed.obj", "flipped.obj"]);
+    assert_exit(&o, 0);
+    assert!(stderr(&o).contains("line 9"), "{}", stderr(&o));
+    assert!(stderr(&o).contains("mesh alone"), "{}", stderr(&o));
+    let flipped = io::read_mesh(dir.join("flipped.obj")).unwrap();
+    assert_same_cycle(flipped.face(0), vec![2, 1, 0], 0);
+    assert_same_cycle(flipped.face(1), vec![3, 2, 0], 1);
+
+    let o = weft(&dir, &["info", "mixed.obj"]);
+    assert_exit(&o, 0);
+    assert!(
+        stdout(&o).contains("faces                 2"),
+        "{}",
+        stdout(&o)
+    );
+
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "mixed.obj",
+            "smooth.obj",
+            "--scheme",
+            "loop",
+            "--levels",
+            "1",
+        ],
+    );
+    assert_exit(&o, 1);
+    assert!(stderr(&o).contains("mixed.obj: line 9"), "{}", stderr(&o));
+    assert!(!dir.join("smooth.obj").exists());
 }

@@ -673,14 +673,20 @@ fn unwelded_seams_and_folds_become_creases() {
         DVec3::new(1.0, 0.0, 0.0),
         DVec3::new(1.0, 1.0, 0.0),
         DVec3::new(0.0, 1.0, 0.0),
-        DVec3::new(1.0, 0.0, 0.0),
+        // -0.0 is the same number as 0.0, so it welds.
+        DVec3::new(1.0, -0.0, 0.0),
         DVec3::new(1.0, 1.0, 0.0),
         DVec3::new(1.0, 1.0, 1.0),
         DVec3::new(1.0, 0.0, 1.0),
     ];
     let mesh = Mesh::from_polygons(positions, vec![vec![0, 1, 2, 3], vec![4, 7, 6, 5]]).unwrap();
-    let (welded, creases) = weft::subdivide::creases_from_mesh(&mesh, 180.0).unwrap();
+    let weft::subdivide::CreasedMesh {
+        mesh: welded,
+        creases,
+        vertex_map,
+    } = weft::subdivide::creases_from_mesh(&mesh, 180.0).unwrap();
     assert_eq!(welded.vertex_count(), 6);
+    assert_eq!(vertex_map, [0, 1, 2, 3, 1, 2, 4, 5]);
     assert_eq!(creases.len(), 1);
     let [a, b] = creases[0].0;
     let ends = [
@@ -690,9 +696,13 @@ fn unwelded_seams_and_folds_become_creases() {
     assert!(ends.contains(&DVec3::new(1.0, 0.0, 0.0)) && ends.contains(&DVec3::new(1.0, 1.0, 0.0)));
     assert!(creases[0].1.is_infinite() || creases[0].1 >= 10.0);
     // A cube: every edge folds by 90 degrees, sharper than 60, none by more than 120.
-    let (_, folds) = weft::subdivide::creases_from_mesh(&shapes::cube(), 60.0).unwrap();
+    let folds = weft::subdivide::creases_from_mesh(&shapes::cube(), 60.0)
+        .unwrap()
+        .creases;
     assert_eq!(folds.len(), 12);
-    let (_, none) = weft::subdivide::creases_from_mesh(&shapes::cube(), 120.0).unwrap();
+    let none = weft::subdivide::creases_from_mesh(&shapes::cube(), 120.0)
+        .unwrap()
+        .creases;
     assert!(none.is_empty());
     assert!(weft::subdivide::creases_from_mesh(&shapes::cube(), f64::NAN).is_err());
     // The creases subdivide: the fold stays a straight line.

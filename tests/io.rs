@@ -289,6 +289,15 @@ fn arbitrary_bytes_never_panic() {
     ]
     .into_iter()
     .map(|(f, o)| (f, encode(f, &shapes::mixed_polygons(), &o)))
+    .chain([Format::Obj, Format::Ply].map(|f| {
+        let mut bytes = Vec::new();
+        let options = WriteOptions {
+            ply: PlyEncoding::Ascii,
+            ..Default::default()
+        };
+        io::write_file_to(f, &mut bytes, &decorated_cube(), &options).unwrap();
+        (f, bytes)
+    }))
     .collect();
     for round in 0..3000 {
         let (format, base) = &valid[round % valid.len()];
@@ -310,6 +319,16 @@ fn arbitrary_bytes_never_panic() {
         }
         for f in [Format::Obj, Format::Off, Format::Stl, Format::Ply] {
             let _ = io::parse_mesh(f, &data);
+        }
+        // What reads with its attributes writes and reads back alike.
+        for f in [Format::Obj, Format::Ply] {
+            if let Ok(file) = io::parse_mesh_file(f, &data) {
+                let mut out = Vec::new();
+                io::write_file_to(f, &mut out, &file, &WriteOptions::default()).unwrap();
+                let again = io::parse_mesh_file(f, &out).unwrap();
+                assert_eq!(again.mesh.vertex_count(), file.mesh.vertex_count());
+                assert_eq!(again.colours.is_some(), file.colours.is_some());
+            }
         }
         let _ = format;
     }
@@ -355,4 +374,343 @@ fn files_are_chosen_by_extension_and_written_whole() {
     let msg = err.to_string();
     assert!(msg.contains("bad.obj") && msg.contains("line 2"), "{msg}");
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// A cube with a colour per vertex, UVs with a seam, normals, creases and corners.
+fn decorated_cube() -> io::MeshFile {
+    let mesh = shapes::cube();
+    let colours = io::Colours {
+        rgba: (0..8)
+            .map(|i| [i as f64 / 7.0, 1.0 - i as f64 / 7.0, 0.25, 0.5])
+            .collect(),
+        alpha: true,
+    };
+    // Each face maps to the unit square: corners of one vertex differ (seams).
+    let uvs = io::Uvs {
+        values: vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+        indices: (0..24).map(|c| c % 4).collect(),
+    };
+    let normals = mesh
+        .positions()
+        .iter()
+        .map(|p| (*p - DVec3::splat(0.5)).normalize())
+        .collect();
+    io::MeshFile {
+        mesh,
+        colours: Some(colours),
+        uvs: Some(uvs),
+        normals: Some(normals),
+        creases: vec![
+            io::FileCrease {
+                edge: [0, 1],
+                sharpness: 10.0,
+                line: 0,
+            },
+            io::FileCrease {
+                edge: [1, 3],
+                sharpness: 2.5,
+                line: 0,
+            },
+        ],
+        corners: vec![io::FileCorner {
+            vertex: 7,
+            sharpness: 10.0,
+            line: 0,
+        }],
+    }
+}
+
+/// Line numbers are where a reader found things; compare without them.
+fn without_lines(mut file: io::MeshFile) -> io::MeshFile {
+    file.creases.iter_mut().for_each(|c| c.line = 0);
+    file.corners.iter_mut().for_each(|c| c.line = 0);
+    file
+}
+
+#[test]
+fn obj_round_trips_colours_uvs_and_creases() {
+    let file = decorated_cube();
+    let mut bytes = Vec::new();
+    io::write_file_to(Format::Obj, &mut bytes, &file, &WriteOptions::default()).unwrap();
+    let text = String::from_utf8(bytes.clone()).unwrap();
+    assert!(
+        text.contains("\nv 1 0 0 0.14285714285714285 0.8571428571428572 0.25 0.5\n"),
+        "{text}"
+    );
+    assert!(text.contains("\nl 1 2\n"), "{text}");
+    assert!(text.contains("\nt crease 2/1/0 1 3 2.5\n"), "{text}");
+    assert!(text.contains("\nt corner 1/1/0 7 10\n"), "{text}");
+    assert!(text.contains("\nf 1/1/1 3/2/3 4/3/4 2/4/2\n"), "{text}");
+    let read = io::parse_mesh_file(Format::Obj, &bytes).unwrap();
+    // Normals are written, never read.
+    let expected = io::MeshFile {
+        normals: None,
+        ..file
+    };
+    assert_eq!(without_lines(read), expected);
+}
+
+#[test]
+fn ply_round_trips_colours_and_per_vertex_uvs() {
+    let mut file = decorated_cube();
+    file.creases.clear();
+    file.corners.clear();
+    file.normals = None;
+    // uchar colours: values k/255 come back exactly.
+    for (i, c) in file.colours.as_mut().unwrap().rgba.iter_mut().enumerate() {
+        *c = [i as f64 / 255.0, 1.0, 0.0, 128.0 / 255.0];
+    }
+    // Per-vertex UVs: what PLY can hold.
+    let per_vertex: Vec<[f64; 2]> = file
+        .mesh
+        .positions()
+        .iter()
+        .map(|p| [p.x, p.y + 0.5])
+        .collect();
+    file.uvs = Some(io::Uvs::from_per_vertex(&file.mesh, per_vertex.clone()));
+    assert!(file.dropped_by(Format::Ply).is_empty());
+    for encoding in [
+        PlyEncoding::Ascii,
+        PlyEncoding::BinaryLittleEndian,
+        PlyEncoding::BinaryBigEndian,
+    ] {
+        let options = WriteOptions {
+            ply: encoding,
+            ..WriteOptions::default()
+        };
+        let mut bytes = Vec::new();
+        io::write_file_to(Format::Ply, &mut bytes, &file, &options).unwrap();
+        let read = io::parse_mesh_file(Format::Ply, &bytes).unwrap();
+        assert_eq!(read.colours, file.colours, "{encoding:?}");
+        assert_eq!(
+            read.uvs.as_ref().unwrap().per_vertex(&read.mesh).unwrap(),
+            per_vertex
+        );
+        assert_eq!(read.mesh, file.mesh);
+    }
+    // UVs with seams do not fit; the writer leaves them out and says which.
+    let seams = decorated_cube();
+    assert_eq!(seams.dropped_by(Format::Ply), ["UVs", "creases", "corners"]);
+    assert_eq!(
+        seams.dropped_by(Format::Off),
+        ["vertex colours", "UVs", "normals", "creases", "corners"]
+    );
+    assert!(seams.dropped_by(Format::Obj).is_empty());
+}
+
+#[test]
+fn ply_reads_float_and_integer_colours_and_writes_normals() {
+    let text = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+        property float z\nproperty float red\nproperty float green\nproperty float blue\n\
+        element face 1\nproperty list uchar int vertex_indices\nend_header\n\
+        0 0 0 0.5 0.25 1\n1 0 0 0 0 0\n0 1 0 1 1 1\n3 0 1 2\n";
+    let file = io::parse_mesh_file(Format::Ply, text).unwrap();
+    let colours = file.colours.unwrap();
+    assert!(!colours.alpha);
+    assert_eq!(colours.rgba[0], [0.5, 0.25, 1.0, 1.0]);
+    let text = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+        property float z\nproperty ushort red\nproperty ushort green\nproperty ushort blue\n\
+        element face 1\nproperty list uchar int vertex_indices\nend_header\n\
+        0 0 0 65535 0 0\n1 0 0 0 0 0\n0 1 0 0 0 0\n3 0 1 2\n";
+    let file = io::parse_mesh_file(Format::Ply, text).unwrap();
+    assert_eq!(file.colours.unwrap().rgba[0], [1.0, 0.0, 0.0, 1.0]);
+
+    let mut with_normals = io::MeshFile::new(shapes::tetrahedron());
+    with_normals.normals = Some(vec![DVec3::Z; 4]);
+    let mut bytes = Vec::new();
+    let options = WriteOptions {
+        ply: PlyEncoding::Ascii,
+        ..WriteOptions::default()
+    };
+    io::write_file_to(Format::Ply, &mut bytes, &with_normals, &options).unwrap();
+    let text = String::from_utf8(bytes).unwrap();
+    assert!(
+        text.contains("property double nx\nproperty double ny\nproperty double nz\n"),
+        "{text}"
+    );
+    assert!(text.contains("\n1 1 1 0 0 1\n"), "{text}");
+}
+
+fn attribute_error(format: Format, data: &[u8]) -> (Location, String) {
+    // The mesh alone reads; with its attributes the file is refused.
+    io::parse_mesh(format, data).expect("the mesh alone reads");
+    let err = io::parse_mesh_file(format, data).expect_err("malformed attributes must fail");
+    (err.location().expect("a place"), err.to_string())
+}
+
+#[test]
+fn malformed_attributes_name_their_line() {
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
+    );
+    assert_eq!(at, Location::Line(2), "{msg}");
+    assert!(msg.contains("every vertex must have a colour"), "{msg}");
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0 1 0 red\nv 1 0 0 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
+    );
+    assert_eq!(at, Location::Line(1), "{msg}");
+    assert!(msg.contains("expected a number for blue"), "{msg}");
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 2 4 3\n",
+    );
+    assert_eq!(at, Location::Line(7), "{msg}");
+    assert!(msg.contains("every corner must name one"), "{msg}");
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n",
+    );
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(
+        msg.contains("texture coordinate index 2 is past the last \"vt\" (1)"),
+        "{msg}"
+    );
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 3 inf\n",
+    );
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(msg.contains("vertex 3 is past the last vertex"), "{msg}");
+
+    let (at, msg) = attribute_error(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1\n");
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(msg.contains("at least 2 vertex indices"), "{msg}");
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 sharp\n",
+    );
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(msg.contains("expected a sharpness"), "{msg}");
+
+    let (at, msg) = attribute_error(
+        Format::Obj,
+        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 0\n",
+    );
+    assert_eq!(at, Location::Line(5), "{msg}");
+    assert!(msg.contains("t corner 1/1/0 v sharpness"), "{msg}");
+
+    let ply = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+        property float z\nproperty uchar red\nproperty uchar green\n\
+        element face 1\nproperty list uchar int vertex_indices\nend_header\n\
+        0 0 0 1 1\n1 0 0 1 1\n0 1 0 1 1\n3 0 1 2\n";
+    let (at, msg) = attribute_error(Format::Ply, ply);
+    assert_eq!(at, Location::Line(3), "{msg}");
+    assert!(msg.contains("red, green and blue"), "{msg}");
+}
+
+#[test]
+fn obj_polylines_and_tags_become_creases_and_corners() {
+    let text = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n\
+        l 1 2 3   # two hard creases\n\
+        t crease 3/1/0 2 3 0 1.5\n\
+        t crease 3/2/0 0 3 2 2 3\n\
+        t corner 2/1/0 0 2 inf\n\
+        t interpolateboundary 1/0/0 1\n";
+    let file = io::parse_mesh_file(Format::Obj, text).unwrap();
+    let creases: Vec<([u32; 2], f64, usize)> = file
+        .creases
+        .iter()
+        .map(|c| (c.edge, c.sharpness, c.line))
+        .collect();
+    assert_eq!(
+        creases,
+        [
+            ([0, 1], 10.0, 6),
+            ([1, 2], 10.0, 6),
+            ([2, 3], 1.5, 7),
+            ([3, 0], 1.5, 7),
+            ([0, 3], 2.0, 8),
+            ([3, 2], 3.0, 8),
+        ]
+    );
+    let corners: Vec<(u32, f64)> = file
+        .corners
+        .iter()
+        .map(|c| (c.vertex, c.sharpness))
+        .collect();
+    assert_eq!(corners, [(0, 10.0), (2, 10.0)]);
+    file.check_creases().unwrap();
+
+    // A polyline that is not along the mesh's edges is refused where it is used.
+    let text = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nl 1 3\n";
+    let file = io::parse_mesh_file(Format::Obj, text).unwrap();
+    let err = file.check_creases().unwrap_err();
+    assert_eq!(err.location(), Some(Location::Line(6)));
+    assert!(err.to_string().contains("vertex 0 to vertex 2"), "{err}");
+}
+
+#[test]
+fn crease_side_files_parse_and_name_bad_lines() {
+    let text = b"# creases of a cube\n0 1 inf\n\n1 3 2.5   # semi-sharp\ncrease 3 2 Infinity\nCORNER 7 inf\ncorner 6 0.5\n";
+    let file = io::creases::parse(text).unwrap();
+    let creases: Vec<([u32; 2], f64, usize)> = file
+        .creases
+        .iter()
+        .map(|c| (c.edge, c.sharpness, c.line))
+        .collect();
+    assert_eq!(
+        creases,
+        [([0, 1], 10.0, 2), ([1, 3], 2.5, 4), ([3, 2], 10.0, 5)]
+    );
+    let corners: Vec<(u32, f64, usize)> = file
+        .corners
+        .iter()
+        .map(|c| (c.vertex, c.sharpness, c.line))
+        .collect();
+    assert_eq!(corners, [(7, 10.0, 6), (6, 0.5, 7)]);
+
+    // Written and read back, the same.
+    let mut bytes = Vec::new();
+    io::creases::write(&mut bytes, &file).unwrap();
+    let again = io::creases::parse(&bytes).unwrap();
+    assert_eq!(again.creases.len(), 3);
+    assert_eq!(again.corners[1].sharpness, 0.5);
+
+    for (text, line, expected) in [
+        (
+            &b"0 1 inf\n0 1\n"[..],
+            2,
+            "a crease takes two vertices and a sharpness",
+        ),
+        (b"0 1 -2\n", 1, "expected a sharpness"),
+        (b"0 1 nan\n", 1, "expected a sharpness"),
+        (b"\n\nedge 0 1 2\n", 3, "expected \"i j sharpness\""),
+        (
+            b"corner 1\n",
+            1,
+            "a corner takes one vertex and a sharpness",
+        ),
+        (b"0 -1 inf\n", 1, "expected a non-negative integer"),
+        (b"2 2 inf\n", 1, "two different vertices"),
+    ] {
+        let err = io::creases::parse(text).unwrap_err();
+        assert_eq!(err.location(), Some(Location::Line(line)), "{err}");
+        assert!(err.to_string().contains(expected), "{err}");
+    }
+}
+
+#[test]
+fn render_coloured_paints_faces_in_their_vertices_colours() {
+    use weft::io::render::{render, render_coloured, RenderOptions};
+    let cube = shapes::cube();
+    let options = RenderOptions {
+        width: 80,
+        height: 60,
+        edges: Some(false),
+    };
+    let red = vec![[1.0, 0.0, 0.0, 1.0]; 8];
+    let image = render_coloured(&cube, &options, &red).unwrap();
+    let [r, g, b] = image.pixel(40, 30);
+    assert!(r > 100 && g < 20 && b < 20, "{:?}", [r, g, b]);
+    let plain = render(&cube, &options).unwrap();
+    let [r, g, b] = plain.pixel(40, 30);
+    assert!(b > r && b > g, "{:?}", [r, g, b]);
+    assert!(render_coloured(&cube, &options, &red[..7]).is_err());
 }

@@ -20,6 +20,32 @@ namespace Weft
         Loop = 1,
     }
 
+    /// <summary>How semi-sharp creases soften from level to level (WEFT_CREASING_*; OpenSubdiv's crease method).</summary>
+    public enum Creasing : uint
+    {
+        /// <summary>Every crease loses one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).</summary>
+        Uniform = 0,
+        /// <summary>A crease's sharpness is first averaged with its neighbours along the crease (OpenSubdiv CREASE_CHAIKIN).</summary>
+        Chaikin = 1,
+    }
+
+    /// <summary>Where face-varying values (UVs) are interpolated linearly (WEFT_FACE_VARYING_*; OpenSubdiv's FVarLinearInterpolation).</summary>
+    public enum FaceVaryingLinear : uint
+    {
+        /// <summary>Smooth everywhere (FVAR_LINEAR_NONE).</summary>
+        Smooth = 0,
+        /// <summary>Linear at their corners only (FVAR_LINEAR_CORNERS_ONLY).</summary>
+        CornersOnly = 1,
+        /// <summary>As corners only, and sharper at junctions of three or more regions (FVAR_LINEAR_CORNERS_PLUS1).</summary>
+        CornersPlus1 = 2,
+        /// <summary>As corners plus one, and sharper where boundaries meet (FVAR_LINEAR_CORNERS_PLUS2).</summary>
+        CornersPlus2 = 3,
+        /// <summary>Linear along every seam and boundary (FVAR_LINEAR_BOUNDARIES).</summary>
+        Boundaries = 4,
+        /// <summary>Linear everywhere (FVAR_LINEAR_ALL, OpenSubdiv's default).</summary>
+        All = 5,
+    }
+
     /// <summary>How the smoothing operations treat naked edges (WEFT_SMOOTH_NAKED_*).</summary>
     public enum SmoothNakedEdges : uint
     {

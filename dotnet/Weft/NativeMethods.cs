@@ -24,6 +24,26 @@ namespace Weft
     }
 
     /// <summary>
+    /// Laid out as <c>WeftSubdivisionOptions</c>: three <c>uint32_t</c>
+    /// enumerations, then a count and two array pointers for the creases and
+    /// for the corners. The pointers address arrays pinned by
+    /// <see cref="SubdivisionOptions"/> for the length of one call.
+    /// </summary>
+    [StructLayout(LayoutKind.Sequential)]
+    internal struct NativeSubdivisionOptions
+    {
+        public uint Scheme;
+        public uint NakedEdges;
+        public uint Creasing;
+        public UIntPtr CreaseCount;
+        public IntPtr CreaseVertexPairs;
+        public IntPtr CreaseSharpness;
+        public UIntPtr CornerCount;
+        public IntPtr CornerVertices;
+        public IntPtr CornerSharpness;
+    }
+
+    /// <summary>
     /// The exports of <c>include/weft.h</c>, one for one, in the header's
     /// order (a test compares the two). <c>size_t</c> is
     /// <see cref="UIntPtr"/>, <c>WeftStatus</c> is <see cref="uint"/>, C
@@ -38,6 +58,43 @@ namespace Weft
         internal const string Library = "weft";
 
         private const CallingConvention Cdecl = CallingConvention.Cdecl;
+
+        // ---- creases, carried data and the limit surface ----
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_subdivide_ex(
+            WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, out WeftMeshHandle outMesh);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_subdivision_counts(
+            WeftMeshHandle mesh, uint scheme, uint levels,
+            out UIntPtr outVertexCount, out UIntPtr outFaceCount, out UIntPtr outIndexCount);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_subdivide_vertex_data(
+            WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels,
+            double[] data, UIntPtr dataLen, UIntPtr width, [Out] double[] outData, UIntPtr capacity);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_subdivide_face_varying(
+            WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, uint faceVaryingLinear,
+            double[] values, UIntPtr valueCount, UIntPtr width, uint[] valueIndices, UIntPtr indexCount,
+            [Out] double[] outValues, UIntPtr capacity);
+
+        /// <summary>A null <paramref name="outNormals"/> skips the normals.</summary>
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_subdivide_limit(
+            WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels,
+            [Out] double[] outPositions, [Out] double[] outNormals, UIntPtr capacity);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_refiner_new_ex(
+            WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint levels, out WeftRefinerHandle outRefiner);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_crease_edges_from_mesh(
+            WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded,
+            [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount);
 
         // ---- making ----
 

@@ -7,7 +7,7 @@ namespace Weft
     /// triangulation. Each method returns a new <see cref="WeftMesh"/> the
     /// caller disposes; failures raise a <see cref="WeftException"/>.
     /// </summary>
-    public static class Subdivision
+    public static partial class Subdivision
     {
         static Subdivision()
         {
@@ -83,14 +83,41 @@ namespace Weft
             WeftRefinerHandle created;
             uint status = NativeMethods.weft_refiner_new(
                 Arguments.Mesh(cage, "cage"), (uint)scheme, Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out created);
+            handle = Take(status, created);
+            CageVertexCount = cage.VertexCount;
+        }
+
+        /// <summary>
+        /// Plans <paramref name="levels"/> steps of <paramref name="scheme"/> on the faces of
+        /// <paramref name="cage"/> with the naked-edge mode, creases and corners of
+        /// <paramref name="options"/> (null: the defaults of <see cref="SubdivisionOptions"/>).
+        /// The options are copied: changing them later does not change the plan.
+        /// </summary>
+        /// <exception cref="WeftException">As <see cref="Subdivision.Subdivide"/>.</exception>
+        public Refiner(WeftMesh cage, Scheme scheme, int levels, SubdivisionOptions options)
+        {
+            WeftMeshHandle mesh = Arguments.Mesh(cage, "cage");
+            uint steps = Arguments.Unsigned(levels, "levels");
+            WeftRefinerHandle created;
+            uint status;
+            using (SubdivisionOptions.Pinned pinned = SubdivisionOptions.Pin(options, scheme))
+            {
+                NativeSubdivisionOptions native = pinned.Native;
+                status = NativeMethods.weft_refiner_new_ex(mesh, ref native, steps, out created);
+            }
+            handle = Take(status, created);
+            CageVertexCount = cage.VertexCount;
+        }
+
+        private static WeftRefinerHandle Take(uint status, WeftRefinerHandle created)
+        {
             if (status != (uint)WeftStatus.Ok)
             {
                 string message = WeftException.LastErrorMessage();
                 if (created != null) created.Dispose();
                 throw new WeftException((WeftStatus)status, message);
             }
-            handle = created;
-            CageVertexCount = cage.VertexCount;
+            return created;
         }
 
         /// <summary>The number of cage vertices <see cref="Evaluate"/> expects.</summary>

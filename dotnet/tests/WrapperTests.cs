@@ -58,6 +58,7 @@ namespace Weft.Tests
             MakingTests.Register(t);
             MendingTests.Register(t);
             ToolbarTests.Register(t);
+            CreaseTests.Register(t);
             return t.Finish();
         }
 

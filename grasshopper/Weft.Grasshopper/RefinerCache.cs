@@ -17,7 +17,7 @@ namespace Weft.Grasshopper
 
     /// <summary>
     /// Keeps one <see cref="Refiner"/> while the cage's faces, the scheme, the
-    /// levels and the naked-edge mode stay the same, so that a slider moving
+    /// levels, the naked-edge mode and any creases and corners stay the same, so that a slider moving
     /// the cage costs only <c>weft_refiner_evaluate</c>: no planning, no face
     /// conversion, and the output positions buffer is reused. A component owns
     /// one; dispose it with the component's document.
@@ -30,6 +30,7 @@ namespace Weft.Grasshopper
         private Scheme scheme;
         private int levels;
         private NakedEdges nakedEdges;
+        private SubdivisionOptions options;
         private RefinedArrays refined;
 
         /// <summary>True when the last <see cref="Subdivide"/> reused the refiner (only positions were evaluated).</summary>
@@ -44,8 +45,26 @@ namespace Weft.Grasshopper
         /// </summary>
         public RefinedArrays Subdivide(double[] positions, uint[] faceSizes, uint[] faceIndices, Scheme scheme, int levels, NakedEdges nakedEdges)
         {
+            return Subdivide(positions, faceSizes, faceIndices, scheme, levels, nakedEdges, null);
+        }
+
+        /// <summary>
+        /// As <see cref="Subdivide(double[], uint[], uint[], Scheme, int, NakedEdges)"/>, with the
+        /// naked-edge mode, creases and corners of <paramref name="options"/>: the refiner is reused
+        /// while they stay the same too (compared by value).
+        /// </summary>
+        public RefinedArrays Subdivide(double[] positions, uint[] faceSizes, uint[] faceIndices, Scheme scheme, int levels, SubdivisionOptions options)
+        {
+            if (options == null) throw new ArgumentNullException("options");
+            return Subdivide(positions, faceSizes, faceIndices, scheme, levels, options.NakedEdges, options);
+        }
+
+        private RefinedArrays Subdivide(double[] positions, uint[] faceSizes, uint[] faceIndices, Scheme scheme, int levels,
+                                        NakedEdges nakedEdges, SubdivisionOptions options)
+        {
             if (positions == null) throw new ArgumentNullException("positions");
-            if (refiner != null && scheme == this.scheme && levels == this.levels && nakedEdges == this.nakedEdges
+            bool sameOptions = options == null ? this.options == null : options.SameAs(this.options);
+            if (refiner != null && scheme == this.scheme && levels == this.levels && nakedEdges == this.nakedEdges && sameOptions
                 && refiner.CageVertexCount * 3 == positions.Length
                 && SameValues(faceSizes, cageSizes) && SameValues(faceIndices, cageIndices))
             {
@@ -56,7 +75,9 @@ namespace Weft.Grasshopper
             Reset();
             using (WeftMesh cage = WeftMesh.Create(positions, faceSizes, faceIndices))
             {
-                var planned = new Refiner(cage, scheme, levels, nakedEdges);
+                Refiner planned = options == null
+                    ? new Refiner(cage, scheme, levels, nakedEdges)
+                    : new Refiner(cage, scheme, levels, options);
                 try
                 {
                     var result = new RefinedArrays();
@@ -80,6 +101,7 @@ namespace Weft.Grasshopper
             this.scheme = scheme;
             this.levels = levels;
             this.nakedEdges = nakedEdges;
+            this.options = options == null ? null : options.Clone();
             LastReused = false;
             PlanCount++;
             return refined;
@@ -93,6 +115,7 @@ namespace Weft.Grasshopper
             refined = null;
             cageSizes = null;
             cageIndices = null;
+            options = null;
         }
 
         /// <summary>Frees the native refiner.</summary>

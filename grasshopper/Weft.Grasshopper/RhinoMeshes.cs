@@ -1,5 +1,6 @@
 using System;
 using System.Collections.Generic;
+using System.Drawing;
 using Rhino.Geometry;
 
 namespace Weft.Grasshopper
@@ -128,6 +129,41 @@ namespace Weft.Grasshopper
             }
             mesh.Normals.ComputeNormals();
             return mesh;
+        }
+
+        /// <summary>The mesh's vertex colours as packed ARGB, or null when it has no colour per vertex.</summary>
+        public static int[] VertexColours(Mesh mesh)
+        {
+            int count = mesh.Vertices.Count;
+            if (count == 0 || mesh.VertexColors.Count != count) return null;
+            return mesh.VertexColors.ToARGBArray();
+        }
+
+        /// <summary>Sets one colour per vertex from packed ARGB values (in one native call).</summary>
+        public static void SetVertexColours(Mesh mesh, int[] argb)
+        {
+            var colours = new Color[argb.Length];
+            for (int i = 0; i < argb.Length; i++) colours[i] = Color.FromArgb(argb[i]);
+            mesh.VertexColors.SetColors(colours);
+        }
+
+        /// <summary>Replaces the vertex normals with x, y, z triples (in one native call).</summary>
+        public static void SetVertexNormals(Mesh mesh, double[] normals)
+        {
+            var vectors = new Vector3f[normals.Length / 3];
+            for (int i = 0; i < vectors.Length; i++)
+            {
+                vectors[i] = new Vector3f((float)normals[3 * i], (float)normals[3 * i + 1], (float)normals[3 * i + 2]);
+            }
+            mesh.Normals.SetNormals(vectors);
+        }
+
+        /// <summary>Vectors from x, y, z triples.</summary>
+        public static List<Vector3d> ToVectors(double[] xyz)
+        {
+            var vectors = new List<Vector3d>(xyz.Length / 3);
+            for (int i = 0; i + 2 < xyz.Length; i += 3) vectors.Add(new Vector3d(xyz[i], xyz[i + 1], xyz[i + 2]));
+            return vectors;
         }
 
         /// <summary>The corners of a closed polyline as x, y, z triples, or null when the curve is no closed polyline.</summary>

@@ -78,6 +78,18 @@ namespace Weft.Grasshopper
         /// <summary>Reads the items of a mesh input as one polygon mesh's arrays (see <see cref="GetMesh"/>), or null.</summary>
         protected PolygonArrays GetPolygons(IGH_DataAccess DA, int index)
         {
+            int[] colours;
+            return GetPolygons(DA, index, out colours);
+        }
+
+        /// <summary>
+        /// As <see cref="GetPolygons(IGH_DataAccess, int)"/>, with the vertex colours (packed
+        /// ARGB, one per vertex of the result) when every item is a Rhino mesh with a colour
+        /// per vertex; otherwise <paramref name="colours"/> is null.
+        /// </summary>
+        protected PolygonArrays GetPolygons(IGH_DataAccess DA, int index, out int[] colours)
+        {
+            colours = null;
             var items = new List<object>();
             if (!DA.GetDataList(index, items) || items.Count == 0)
             {
@@ -85,6 +97,8 @@ namespace Weft.Grasshopper
             }
             var parts = new List<PolygonArrays>();
             var polylines = new List<double[]>();
+            var partColours = new List<int>();
+            bool allColoured = true;
             int skipped = 0;
             foreach (object item in items)
             {
@@ -99,6 +113,9 @@ namespace Weft.Grasshopper
                 else if (GH_Convert.ToMesh(item, ref mesh, GH_Conversion.Both) && mesh != null)
                 {
                     parts.Add(RhinoMeshes.ToArrays(mesh));
+                    int[] own = RhinoMeshes.VertexColours(mesh);
+                    if (own == null) allColoured = false;
+                    else partColours.AddRange(own);
                 }
                 else
                 {
@@ -118,7 +135,12 @@ namespace Weft.Grasshopper
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "No mesh or closed polyline to work on.");
                 return null;
             }
-            return parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
+            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
+            if (allColoured && polylines.Count == 0 && partColours.Count * 3 == all.Positions.Length)
+            {
+                colours = partColours.ToArray();
+            }
+            return all;
         }
 
         /// <summary>The value of an item input, or <paramref name="fallback"/> when it is empty.</summary>

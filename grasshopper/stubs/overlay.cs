@@ -63,6 +63,7 @@ namespace Grasshopper.Kernel
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddLineParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
+            public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddIntegerParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddNumberParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddBooleanParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }

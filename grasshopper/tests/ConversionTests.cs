@@ -24,6 +24,7 @@ namespace Weft.Tests
             t.Run("face polylines are closed rings of the face corners", FacePolylines);
             t.Run("split polylines: closed ones repeat their first point, empty ones skipped", SplitPolylines);
             t.Run("planarity flags and open rings", PlanarityAndRings);
+            CreaseInputTests.Register(t);
             return t.Finish();
         }
 

@@ -11,14 +11,16 @@ use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
 
+#[path = "weft/carry.rs"]
+mod carry;
 #[path = "weft/demo.rs"]
 mod demo;
 #[path = "weft/toolbar.rs"]
 mod toolbar;
 
 use weft::io::render::{self, RenderOptions};
-use weft::io::{self, Format, IoError, ReadOptions};
-use weft::subdivide::{self, NakedEdges, Scheme};
+use weft::io::{self, Format, IoError, MeshFile, ReadOptions};
+use weft::subdivide::{self, Creasing, FaceVaryingLinear, NakedEdges, Scheme, SubdivisionOptions};
 use weft::{Mesh, Topology};
 
 #[derive(Parser)]
@@ -53,8 +55,9 @@ enum Command {
         #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         planarity_tolerance: f64,
     },
-    /// A shaded picture: front faces blue-grey, back faces orange, edges
-    /// drawn on coarse meshes, camera fitted in a three-quarter view.
+    /// A shaded picture: front faces blue-grey (or in the file's vertex
+    /// colours), back faces orange, edges drawn on coarse meshes, camera
+    /// fitted in a three-quarter view.
     #[command(after_help = "Example:\n  weft render part.obj part.png --size 1024x768")]
     Render {
         /// The mesh file (.obj, .ply, .stl, .off).
@@ -71,9 +74,28 @@ enum Command {
         edges: String,
     },
     /// Subdivides a mesh: Catmull-Clark (any polygons, quads out) or Loop
-    /// (triangles; other polygons are triangulated first).
+    /// (triangles; other polygons are triangulated first), with creases and
+    /// corners, carrying vertex colours and UVs.
+    ///
+    /// Creases come from three places, all used together: an OBJ input's
+    /// `l` polylines (every segment a hard crease) and OpenSubdiv tags
+    /// (`t crease 2/1/0 i j sharpness`, `t corner 1/1/0 v sharpness`, 0-based);
+    /// a side file given with --creases; and --crease-angle. Vertex colours
+    /// (OBJ `v x y z r g b`, PLY red green blue [alpha]) are interpolated like
+    /// positions; UVs (OBJ `vt` with `f v/vt`, PLY per-vertex s t) face-varying.
     #[command(
-        after_help = "Examples:\n  weft subdivide cage.obj smooth.obj --scheme catmull-clark --levels 2 --naked-edges fixed\n  weft subdivide tri.ply tri3.ply --scheme loop --levels 3 --naked-edges corner-fixed"
+        after_help = "Crease side file (--creases): one statement per line, vertex indices from 0 \
+in the mesh file's vertex order, # starts a comment:\n  \
+i j sharpness         the edge from vertex i to vertex j\n  \
+crease i j sharpness  the same\n  \
+corner v sharpness    vertex v\n\
+A sharpness is a number of 0 or more (levels during which the crease stays sharp, then \
+softens) or inf (10 or more): a hard crease, a corner that does not move. \
+More in docs/creases.md.\n\n\
+Examples:\n  weft subdivide cage.obj smooth.obj --scheme catmull-clark --levels 2 --naked-edges fixed\n  \
+weft subdivide tri.ply tri3.ply --scheme loop --levels 3 --naked-edges corner-fixed\n  \
+weft subdivide block.ply block3.obj --levels 3 --creases block-creases.txt --limit\n  \
+weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaikin"
     )]
     Subdivide {
         /// The mesh file to read (.obj, .ply, .stl, .off).
@@ -92,6 +114,26 @@ enum Command {
         /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners.
         #[arg(long, value_enum, default_value = "fixed")]
         naked_edges: NakedEdgesArg,
+        /// A crease side file (format below) with creases and corners to add.
+        #[arg(long, value_name = "FILE")]
+        creases: Option<PathBuf>,
+        /// Weld vertices at identical positions and make hard creases of the
+        /// seams that were unwelded and of edges whose faces fold more than
+        /// this many degrees (180 creases only the seams).
+        #[arg(long, value_name = "DEG", value_parser = angle)]
+        crease_angle: Option<f64>,
+        /// How semi-sharp creases soften: uniform takes one level off each
+        /// edge, chaikin also averages sharpness along a crease.
+        #[arg(long, value_enum, default_value = "uniform")]
+        creasing: CreasingArg,
+        /// Where UVs are interpolated linearly (OpenSubdiv's options; all is
+        /// OpenSubdiv's default and keeps a texture's layout).
+        #[arg(long, value_enum, default_value = "all")]
+        uv_linear: UvLinearArg,
+        /// Move the result onto the limit surface and write its normals
+        /// (OBJ `vn`, PLY nx ny nz).
+        #[arg(long)]
+        limit: bool,
     },
     /// Joins meshes into one and merges vertices closer than the tolerance;
     /// faces that collapse are removed and counted.
@@ -209,6 +251,31 @@ enum SchemeArg {
 }
 
 #[derive(Clone, Copy, ValueEnum)]
+enum CreasingArg {
+    Uniform,
+    Chaikin,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+enum UvLinearArg {
+    None,
+    CornersOnly,
+    #[value(name = "corners-plus1")]
+    CornersPlus1,
+    #[value(name = "corners-plus2")]
+    CornersPlus2,
+    Boundaries,
+    All,
+}
+
+fn angle(text: &str) -> Result<f64, String> {
+    text.parse::<f64>()
+        .ok()
+        .filter(|a| a.is_finite() && *a >= 0.0)
+        .ok_or_else(|| "expected an angle in degrees, 0 or more, such as 60".to_string())
+}
+
+#[derive(Clone, Copy, ValueEnum)]
 enum NakedEdgesArg {
     Fixed,
     Smooth,
@@ -286,8 +353,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             json,
             planarity_tolerance,
         } => {
-            let mesh = read(cli, input)?;
-            let report = with_progress("analysing", || describe(&mesh, *planarity_tolerance));
+            let file = read_file_or_mesh(cli, input)?;
+            let mesh = &file.mesh;
+            let mut report = with_progress("analysing", || describe(mesh, *planarity_tolerance));
+            report.attributes = file.attribute_names();
             if *json {
                 println!("{}", report.json(input));
             } else {
@@ -301,7 +370,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             size,
             edges,
         } => {
-            let mesh = read(cli, input)?;
+            let file = read_file_or_mesh(cli, input)?;
+            let mesh = &file.mesh;
             let options = RenderOptions {
                 width: size.0,
                 height: size.1,
@@ -311,8 +381,11 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                     _ => None,
                 },
             };
-            let image = with_progress("rendering", || render::render(&mesh, &options))
-                .map_err(|e| Failure::Failed(format!("{}: cannot render: {e}", input.display())))?;
+            let image = with_progress("rendering", || match &file.colours {
+                Some(colours) => render::render_coloured(mesh, &options, &colours.rgba),
+                None => render::render(mesh, &options),
+            })
+            .map_err(|e| Failure::Failed(format!("{}: cannot render: {e}", input.display())))?;
             image.save_png(output)?;
             eprintln!(
                 "{}: {} × {} picture of {} faces",
@@ -329,8 +402,27 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             scheme,
             levels,
             naked_edges,
+            creases,
+            crease_angle,
+            creasing,
+            uv_linear,
+            limit,
         } => {
-            let mut mesh = read(cli, input)?;
+            let mut file = read_file(cli, input)?;
+            file.check_creases().map_err(|e| e.in_file(input))?;
+            if let Some(side) = creases {
+                let side_file = io::creases::read(side)?;
+                io::check_creases(&file.mesh, &side_file.creases, &side_file.corners)
+                    .map_err(|e| e.in_file(side))?;
+                eprintln!(
+                    "{}: {} creases and {} corners",
+                    side.display(),
+                    side_file.creases.len(),
+                    side_file.corners.len()
+                );
+                file.creases.extend(side_file.creases);
+                file.corners.extend(side_file.corners);
+            }
             let scheme = match scheme {
                 SchemeArg::CatmullClark => Scheme::CatmullClark,
                 SchemeArg::Loop => Scheme::Loop,
@@ -340,24 +432,60 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 NakedEdgesArg::Smooth => NakedEdges::Smooth,
                 NakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
             };
+            if let Some(angle) = crease_angle {
+                let before = file.mesh.vertex_count();
+                let (welded, found) = carry::crease_by_angle(&file, *angle)
+                    .map_err(|e| operation_failed(input, "find creases", e))?;
+                file = welded;
+                eprintln!(
+                    "{}: welded {} vertices at identical positions; {found} edges creased (unwelded seams and folds over {angle}°)",
+                    input.display(),
+                    before - file.mesh.vertex_count()
+                );
+            }
             if scheme == Scheme::Loop {
-                if let Some((face, size)) = mesh.first_non_triangle() {
-                    let before = mesh.face_count();
-                    mesh = weft::triangulate::triangulate(&mesh)
-                        .map_err(|e| operation_failed(input, "triangulate", e))?
-                        .mesh;
+                if let Some((face, size)) = file.mesh.first_non_triangle() {
+                    let before = file.mesh.face_count();
+                    file = carry::triangulate(&file)
+                        .map_err(|e| operation_failed(input, "triangulate", e))?;
                     eprintln!(
                         "{}: Loop needs triangles (face {face} has {size} corners): triangulated {before} faces into {}",
                         input.display(),
-                        mesh.face_count()
+                        file.mesh.face_count()
                     );
                 }
             }
-            let refined = with_progress("subdividing", || {
-                subdivide::subdivide(&mesh, scheme, *levels, naked_edges)
-            })
+            let carry = carry::Carry {
+                scheme,
+                levels: *levels,
+                options: SubdivisionOptions {
+                    naked_edges,
+                    creasing: match creasing {
+                        CreasingArg::Uniform => Creasing::Uniform,
+                        CreasingArg::Chaikin => Creasing::Chaikin,
+                    },
+                    ..SubdivisionOptions::default()
+                },
+                uv_linear: match uv_linear {
+                    UvLinearArg::None => FaceVaryingLinear::Smooth,
+                    UvLinearArg::CornersOnly => FaceVaryingLinear::CornersOnly,
+                    UvLinearArg::CornersPlus1 => FaceVaryingLinear::CornersPlus1,
+                    UvLinearArg::CornersPlus2 => FaceVaryingLinear::CornersPlus2,
+                    UvLinearArg::Boundaries => FaceVaryingLinear::Boundaries,
+                    UvLinearArg::All => FaceVaryingLinear::All,
+                },
+                limit: *limit,
+            };
+            let refined = if carry::is_plain(&file, &carry) {
+                with_progress("subdividing", || {
+                    subdivide::subdivide(&file.mesh, scheme, *levels, naked_edges)
+                })
+                .map(MeshFile::new)
+            } else {
+                with_progress("subdividing", || carry::subdivide(&file, &carry))
+            }
             .map_err(|e| operation_failed(input, "subdivide", e))?;
-            write(output, &refined, &io::WriteOptions::default())
+            write_file(output, &refined, &io::WriteOptions::default())
         }
         Command::Weld {
             inputs,
@@ -452,11 +580,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         // Each stage prints its own line as it finishes: that is the progress.
         Command::Demo { out, image } => demo::run(out, image.as_deref()).map_err(Failure::Failed),
         Command::Triangulate { input, output } => {
-            let mesh = read(cli, input)?;
-            let triangles =
-                with_progress("triangulating", || weft::triangulate::triangulate(&mesh))
-                    .map_err(|e| operation_failed(input, "triangulate", e))?;
-            write(output, &triangles.mesh, &io::WriteOptions::default())
+            let file = read_file(cli, input)?;
+            let triangles = with_progress("triangulating", || carry::triangulate(&file))
+                .map_err(|e| operation_failed(input, "triangulate", e))?;
+            write_file(output, &triangles, &io::WriteOptions::default())
         }
         Command::Convert {
             input,
@@ -464,7 +591,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             ascii,
             big_endian,
         } => {
-            let mesh = read(cli, input)?;
+            let file = read_file(cli, input)?;
             let options = io::WriteOptions {
                 ply: if *ascii {
                     io::PlyEncoding::Ascii
@@ -475,7 +602,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 },
                 stl_ascii: *ascii,
             };
-            write(output, &mesh, &options)
+            write_file(output, &file, &options)
         }
         Command::Toolbar(command) => toolbar::run(cli, command),
     }
@@ -485,17 +612,71 @@ fn operation_failed(input: &Path, what: &str, error: weft::Error) -> Failure {
     Failure::Failed(format!("{}: cannot {what}: {error}", input.display()))
 }
 
-/// Reads a mesh, welding STL corners when `--weld` was given.
+/// Reads a mesh for a command that does not carry colours, UVs or
+/// creases: says on stderr what the output will lack.
 fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
+    let file = read_file_or_mesh(cli, path)?;
+    if file.has_attributes() {
+        eprintln!(
+            "{}: this command keeps only the mesh; its {} are not carried to the output",
+            path.display(),
+            file.attribute_names().join(", ")
+        );
+    }
+    Ok(file.mesh)
+}
+
+/// As [`read_file`], but for a command that can do without colours, UVs
+/// and creases: when only those are malformed, says so on stderr and goes
+/// on with the mesh alone.
+fn read_file_or_mesh(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
+    match read_file(cli, path) {
+        Ok(file) => Ok(file),
+        Err(Failure::Failed(attribute_problem)) => {
+            let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
+            let mesh = io::read_mesh_with(path, &ReadOptions { weld })
+                .map_err(|_| Failure::Failed(attribute_problem.clone()))?;
+            eprintln!("weft: {attribute_problem}; reading on with the mesh alone");
+            Ok(MeshFile::new(mesh))
+        }
+    }
+}
+
+/// Reads a mesh with its colours, UVs and creases, welding STL corners
+/// when `--weld` was given.
+fn read_file(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
     let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
     let label = format!("reading {}", path.display());
-    let mesh = with_progress(&label, || io::read_mesh_with(path, &ReadOptions { weld }))?;
-    Ok(mesh)
+    let file = with_progress(&label, || io::read_mesh_file(path, &ReadOptions { weld }))?;
+    Ok(file)
+}
+
+/// Writes a mesh with what its format holds of its colours, UVs, normals
+/// and creases, saying on stderr what it cannot hold.
+fn write_file(path: &Path, file: &MeshFile, options: &io::WriteOptions) -> Result<(), Failure> {
+    let format = Format::from_path(path)?;
+    let dropped = file.dropped_by(format);
+    if !dropped.is_empty() {
+        eprintln!(
+            "{}: this format cannot hold the {}; written without them (OBJ keeps them all)",
+            path.display(),
+            dropped.join(", ")
+        );
+    }
+    let label = format!("writing {}", path.display());
+    with_progress(&label, || io::write_mesh_file(path, file, options))?;
+    report_written(path, &file.mesh);
+    Ok(())
 }
 
 fn write(path: &Path, mesh: &Mesh, options: &io::WriteOptions) -> Result<(), Failure> {
     let label = format!("writing {}", path.display());
     with_progress(&label, || io::write_mesh_with(path, mesh, options))?;
+    report_written(path, mesh);
+    Ok(())
+}
+
+fn report_written(path: &Path, mesh: &Mesh) {
     let note = if Format::from_path(path).ok() == Some(Format::Stl) && !mesh.is_triangle_mesh() {
         " (polygons written as triangle fans)"
     } else {
@@ -507,7 +688,6 @@ fn write(path: &Path, mesh: &Mesh, options: &io::WriteOptions) -> Result<(), Fai
         mesh.vertex_count(),
         mesh.face_count()
     );
-    Ok(())
 }
 
 /// Runs `work`; when it takes longer than half a second and stderr is a
@@ -568,6 +748,8 @@ struct Report {
     /// Faces further from planar than the tolerance.
     non_planar_faces: usize,
     planarity_tolerance: f64,
+    /// What the file carries besides the mesh.
+    attributes: Vec<&'static str>,
 }
 
 fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
@@ -598,6 +780,7 @@ fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
             .filter(|&&d| d > planarity_tolerance)
             .count(),
         planarity_tolerance,
+        attributes: Vec::new(),
     }
 }
 
@@ -652,6 +835,9 @@ impl Report {
                 None => "none (no vertices)".to_string(),
             },
         );
+        if !self.attributes.is_empty() {
+            line("carried data", self.attributes.join(", "));
+        }
         s
     }
 
@@ -666,7 +852,8 @@ impl Report {
              \"ngons\": {}, \"edges\": {}, \"naked_edges\": {}, \"non_manifold_edges\": {}, \
              \"non_manifold_vertices\": {}, \"components\": {}, \"closed\": {}, \
              \"orientable\": {}, \"oriented\": {}, \"planarity\": {{\"tolerance\": {}, \
-             \"non_planar_faces\": {}, \"max_deviation\": {}}}, \"bounding_box\": {bounding_box}}}",
+             \"non_planar_faces\": {}, \"max_deviation\": {}}}, \"bounding_box\": {bounding_box}, \
+             \"carried\": [{}]}}",
             json_string(&path.to_string_lossy()),
             self.vertices,
             self.faces,
@@ -684,6 +871,11 @@ impl Report {
             self.planarity_tolerance,
             self.non_planar_faces,
             self.max_planarity_deviation,
+            self.attributes
+                .iter()
+                .map(|name| json_string(name))
+                .collect::<Vec<_>>()
+                .join(", "),
         )
     }
 }

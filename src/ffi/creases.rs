@@ -471,7 +471,11 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh(
         let count_out = out_param(out_crease_count, "out_crease_count")?;
         let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
         let mesh = mesh_ref(mesh, "mesh")?;
-        let (welded, creases) = subdivide::creases_from_mesh(mesh, angle_degrees)?;
+        let subdivide::CreasedMesh {
+            mesh: welded,
+            creases,
+            ..
+        } = subdivide::creases_from_mesh(mesh, angle_degrees)?;
         check_room("out_pairs", capacity, 2 * creases.len())?;
         for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
             slot.copy_from_slice(pair);

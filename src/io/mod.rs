@@ -6,6 +6,12 @@
 //! bytes and a `write` to any [`std::io::Write`]; [`read_mesh`] and
 //! [`write_mesh`] choose the format by the file's extension.
 //!
+//! A file may carry more than a mesh: [`read_mesh_file`] and
+//! [`write_mesh_file`] keep vertex colours, UVs, normals and creases in a
+//! [`MeshFile`] (what each format holds is in its module's doc, and
+//! [`MeshFile::dropped_by`] says what a format would lose). [`creases`]
+//! reads crease side files.
+//!
 //! Readers never panic, whatever the bytes: a malformed file is an
 //! [`IoError::Parse`] naming the line (text) or byte offset (binary) and what
 //! was expected, and every count read from a file is checked against the
@@ -26,6 +32,10 @@ use thiserror::Error;
 use crate::error::MeshError;
 use crate::mesh::Mesh;
 
+pub use mesh_file::{check_creases, Colours, FileCorner, FileCrease, MeshFile, Uvs};
+
+pub mod creases;
+mod mesh_file;
 pub mod obj;
 pub mod off;
 pub mod ply;
@@ -215,6 +225,128 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
     } else {
         mesh
     })
+}
+
+/// Reads a mesh file with its colours, UVs and creases (what its format
+/// holds), choosing the format by its extension. With `options.weld`, the
+/// welded mesh comes without them (STL holds none).
+///
+/// # Errors
+/// As [`read_mesh`], and malformed colours, UVs or creases with their line.
+pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    let bytes = fs::read(path).map_err(|source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    })?;
+    let file = parse_mesh_file(format, &bytes).map_err(|e| e.in_file(path))?;
+    Ok(if options.weld {
+        MeshFile::new(weld_identical(&file.mesh).0)
+    } else {
+        file
+    })
+}
+
+/// Parses the bytes of a mesh file of the given format with its colours,
+/// UVs and creases.
+///
+/// # Errors
+/// As [`parse_mesh`].
+pub fn parse_mesh_file(format: Format, bytes: &[u8]) -> Result<MeshFile, IoError> {
+    match format {
+        Format::Obj => obj::parse_file(bytes),
+        Format::Ply => ply::parse_file(bytes),
+        Format::Stl => stl::parse(bytes).map(MeshFile::new),
+        Format::Off => off::parse(bytes).map(MeshFile::new),
+    }
+}
+
+/// Writes a mesh file with what its format can hold of the colours, UVs,
+/// normals and creases ([`MeshFile::dropped_by`] lists the rest).
+///
+/// # Errors
+/// As [`write_mesh_with`]; [`IoError::File`] also when an attribute does not
+/// have one entry per vertex or corner.
+pub fn write_mesh_file(
+    path: impl AsRef<Path>,
+    file: &MeshFile,
+    options: &WriteOptions,
+) -> Result<(), IoError> {
+    let path = path.as_ref();
+    let format = Format::from_path(path)?;
+    write_atomically(path, |w| write_file_to(format, w, file, options))
+}
+
+/// Writes a mesh file in `format` to any writer (see [`write_mesh_file`]).
+///
+/// # Errors
+/// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when an
+/// attribute does not have one entry per vertex or corner.
+pub fn write_file_to(
+    format: Format,
+    w: &mut dyn Write,
+    file: &MeshFile,
+    options: &WriteOptions,
+) -> std::io::Result<()> {
+    match format {
+        Format::Obj => obj::write_file(w, file),
+        Format::Ply => ply::write_file(w, file, options.ply),
+        Format::Stl | Format::Off => write_to(format, w, &file.mesh, options),
+    }
+}
+
+/// Refuses attributes whose sizes do not match the mesh.
+pub(crate) fn check_attribute_sizes(file: &MeshFile) -> std::io::Result<()> {
+    let mesh = &file.mesh;
+    let refuse = |what: String| Err(std::io::Error::new(std::io::ErrorKind::InvalidInput, what));
+    if let Some(colours) = &file.colours {
+        if colours.rgba.len() != mesh.vertex_count() {
+            return refuse(format!(
+                "{} colours for {} vertices",
+                colours.rgba.len(),
+                mesh.vertex_count()
+            ));
+        }
+    }
+    if let Some(normals) = &file.normals {
+        if normals.len() != mesh.vertex_count() {
+            return refuse(format!(
+                "{} normals for {} vertices",
+                normals.len(),
+                mesh.vertex_count()
+            ));
+        }
+    }
+    if let Some(uvs) = &file.uvs {
+        if uvs.indices.len() != mesh.index_count() {
+            return refuse(format!(
+                "{} UV indices for {} face corners",
+                uvs.indices.len(),
+                mesh.index_count()
+            ));
+        }
+        if let Some(&i) = uvs
+            .indices
+            .iter()
+            .find(|&&i| i as usize >= uvs.values.len())
+        {
+            return refuse(format!("UV index {i} is past the {} UVs", uvs.values.len()));
+        }
+    }
+    let n = mesh.vertex_count();
+    if let Some(c) = file
+        .creases
+        .iter()
+        .find(|c| c.edge.iter().any(|&v| v as usize >= n))
+    {
+        return refuse(format!("crease {:?} is past the {n} vertices", c.edge));
+    }
+    if let Some(c) = file.corners.iter().find(|c| c.vertex as usize >= n) {
+        return refuse(format!("corner {} is past the {n} vertices", c.vertex));
+    }
+    Ok(())
 }
 
 /// Parses the bytes of a mesh file of the given format.

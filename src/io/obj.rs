@@ -1,86 +1,434 @@
-//! Wavefront OBJ: `v` lines and `f` lines; polygons are kept as polygons.
+//! Wavefront OBJ: vertices, faces, vertex colours, UVs, normals and creases;
+//! polygons are kept as polygons.
 //!
-//! Read: `f` corners as `v`, `v/vt`, `v/vt/vn` or `v//vn`, positive (1-based)
-//! or negative (relative to the vertices read so far) indices; a `v` line may
-//! carry a fourth `w` or colour values after x y z, which are ignored, as are
-//! comments, `vt`, `vn`, `o`, `g`, `s`, materials, lines and any other
-//! statement. Write: `v x y z` with round-trip exact numbers, `f` with
-//! 1-based indices.
+//! Read:
+//! - `v x y z`, optionally followed by `w` (ignored) or by a colour `r g b`
+//!   or `r g b a` from 0 to 1 (the common extension of MeshLab and others);
+//!   when one vertex has a colour, every vertex must.
+//! - `vt u v [w]` texture coordinates (w ignored).
+//! - `f` corners as `v`, `v/vt`, `v/vt/vn` or `v//vn`, positive (1-based) or
+//!   negative (relative to the vertices or UVs read so far) indices; when one
+//!   corner names a `vt`, every corner of every face must.
+//! - `l` polylines: every segment is an infinitely sharp crease (the
+//!   polyline's vertices must be joined by edges of the mesh where the
+//!   creases are used).
+//! - OpenSubdiv's tags with 0-based indices: `t crease 2/1/0 i j s` (more
+//!   indices make a chain; one sharpness for all, or one per segment) and
+//!   `t corner 1/1/0 v s` (more vertices, one sharpness or one each).
+//!   Other tags, `vn` (normals are recomputed by whatever needs them),
+//!   comments, groups, materials and any other statement are ignored.
+//!
+//! Write: `v x y z [r g b [a]]` with round-trip exact numbers, `vn` and `vt`
+//! when present, `f` with 1-based `v`, `v/vt`, `v//vn` or `v/vt/vn`
+//! corners, infinitely sharp creases as `l` segments and the others and the
+//! corners as `t` tags.
 
 use std::io::Write;
 
 use glam::DVec3;
 
-use super::text::{lines, parse_f64, parse_i64, show, words};
+use super::mesh_file::{parse_sharpness, Colours, FileCorner, FileCrease, MeshFile, Uvs};
+use super::text::{lines, parse_count, parse_f64, parse_i64, show, words};
 use super::{build_mesh, IoError, Location};
 use crate::mesh::Mesh;
+use crate::subdivide::SHARPNESS_INFINITE;
 
-/// Parses an OBJ file.
+/// Parses an OBJ file into its mesh alone.
+///
+/// # Errors
+/// As [`parse_file`].
+pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    // The mesh alone: problems with colours, UVs or creases do not matter.
+    read(data).map(|(file, _)| file.mesh)
+}
+
+/// Parses an OBJ file with its colours, UVs and creases.
 ///
 /// # Errors
 /// [`IoError::Parse`] for a line that is not what OBJ expects (a missing or
 /// non-numeric coordinate, an index of 0 or one reaching before the first
-/// vertex); [`IoError::InvalidMesh`] for a face the mesh rejects (an index
-/// past the last vertex, fewer than 3 corners, a repeated vertex), each with
-/// its line.
-pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+/// vertex or UV, a vertex without a colour when others have one, a face
+/// without UVs when others have them, a malformed `l` or `t`);
+/// [`IoError::InvalidMesh`] for a face the mesh rejects (an index past the
+/// last vertex, fewer than 3 corners, a repeated vertex), each with its line.
+pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
+    match read(data)? {
+        (_, Some(attribute_error)) => Err(attribute_error),
+        (file, None) => Ok(file),
+    }
+}
+
+/// Reads the mesh and its attributes; returns the first problem with an
+/// attribute beside the file instead of failing on it.
+fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
+    let mut attribute_error: Option<IoError> = None;
+    let mut note = |e: IoError| {
+        if attribute_error.is_none() {
+            attribute_error = Some(e);
+        }
+    };
     let mut positions = Vec::new();
     let mut vertex_lines = Vec::new();
+    // The colour of every vertex, and the line of the first vertex read.
+    let mut colours: Vec<Option<[f64; 4]>> = Vec::new();
+    let mut alpha = false;
+    let mut uv_values: Vec<[f64; 2]> = Vec::new();
+    let mut uv_indices: Vec<u32> = Vec::new();
+    // Whether faces name UVs, and the line of the first face.
+    let mut faces_have_uvs: Option<(bool, usize)> = None;
     let mut face_sizes = Vec::new();
     let mut face_indices = Vec::new();
     let mut face_lines = Vec::new();
+    let mut creases = Vec::new();
+    let mut corners = Vec::new();
+    // Polyline vertices to check against the vertex count at the end.
+    let mut line_vertices: Vec<(u32, usize)> = Vec::new();
     for (line, text) in lines(data) {
         let mut w = words(text);
         match w.next() {
             Some(b"v") => {
-                let mut xyz = [0.0; 3];
-                for (axis, value) in ["x", "y", "z"].iter().zip(&mut xyz) {
-                    let word = w.next().ok_or_else(|| {
-                        IoError::parse(
-                            Location::Line(line),
-                            format!("expected 3 coordinates after \"v\"; {axis} is missing"),
-                        )
-                    })?;
-                    *value = parse_f64(word, line, &format!("coordinate {axis}"))?;
+                let numbers: Vec<&[u8]> = w.collect();
+                let names = ["x", "y", "z", "w or red", "green", "blue", "alpha"];
+                if numbers.len() < 3 {
+                    return Err(IoError::parse(
+                        Location::Line(line),
+                        format!(
+                            "expected 3 coordinates after \"v\"; {} is missing",
+                            names[numbers.len()]
+                        ),
+                    ));
                 }
-                positions.push(DVec3::from_array(xyz));
+                if numbers.len() == 5 || numbers.len() > 7 {
+                    note(IoError::parse(
+                        Location::Line(line),
+                        format!(
+                            "expected \"v x y z\", \"v x y z w\", \"v x y z r g b\" or \
+                             \"v x y z r g b a\"; found {} numbers",
+                            numbers.len()
+                        ),
+                    ));
+                }
+                let mut values = [0.0; 7];
+                for (k, ((word, value), name)) in
+                    numbers.iter().zip(&mut values).zip(names).enumerate()
+                {
+                    match parse_f64(word, line, name) {
+                        Ok(x) => *value = x,
+                        Err(e) if k < 3 => return Err(e),
+                        Err(e) => note(e),
+                    }
+                }
+                positions.push(DVec3::new(values[0], values[1], values[2]));
                 vertex_lines.push(line);
+                let colour = match numbers.len() {
+                    6 => Some([values[3], values[4], values[5], 1.0]),
+                    7 => {
+                        alpha = true;
+                        Some([values[3], values[4], values[5], values[6]])
+                    }
+                    _ => None,
+                };
+                if let Some(c) = colour {
+                    if let Some(k) = c.iter().position(|x| !x.is_finite()) {
+                        note(IoError::parse(
+                            Location::Line(line),
+                            format!("colour channel {} is not a finite number", names[3 + k]),
+                        ));
+                    }
+                }
+                if let Some(first) = colours.first() {
+                    if first.is_some() != colour.is_some() {
+                        let (has, lacks) = if colour.is_some() {
+                            (line, vertex_lines[0])
+                        } else {
+                            (vertex_lines[0], line)
+                        };
+                        note(IoError::parse(
+                            Location::Line(line),
+                            format!(
+                                "vertex {} has {} colour: every vertex must have a colour \
+                                 (\"v x y z r g b\") or none (line {has} has one, line {lacks} \
+                                 has none)",
+                                positions.len(),
+                                if colour.is_some() { "a" } else { "no" }
+                            ),
+                        ));
+                    }
+                }
+                colours.push(colour);
+            }
+            Some(b"vt") => {
+                let mut uv = [0.0; 2];
+                match w.next() {
+                    None => note(IoError::parse(Location::Line(line), "expected \"vt u v\"")),
+                    Some(u) => {
+                        let v = w.next();
+                        let parsed = parse_f64(u, line, "texture coordinate u").and_then(|u| {
+                            let v =
+                                v.map_or(Ok(0.0), |v| parse_f64(v, line, "texture coordinate v"))?;
+                            Ok([u, v])
+                        });
+                        match parsed {
+                            Ok(value) => uv = value,
+                            Err(e) => note(e),
+                        }
+                    }
+                }
+                uv_values.push(uv);
             }
             Some(b"f") => {
                 let mut size = 0u32;
                 for corner in w {
-                    let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
+                    let mut parts = corner.split(|&b| b == b'/');
+                    let index = parts.next().unwrap_or(corner);
                     let value = parse_i64(index, line, "a vertex index")?;
-                    face_indices.push(resolve(value, positions.len(), line, corner)?);
+                    face_indices.push(resolve(value, positions.len(), line, corner, "vertex")?);
+                    let uv = parts.next().filter(|t| !t.is_empty());
+                    let (has_uvs, first_line) = *faces_have_uvs.get_or_insert((uv.is_some(), line));
+                    if has_uvs != uv.is_some() {
+                        note(IoError::parse(
+                            Location::Line(line),
+                            format!(
+                                "corner {} {} a texture coordinate but the face on line \
+                                 {first_line} {}: every corner must name one (\"v/vt\") or none",
+                                show(corner),
+                                if uv.is_some() {
+                                    "names"
+                                } else {
+                                    "does not name"
+                                },
+                                if has_uvs { "does" } else { "does not" }
+                            ),
+                        ));
+                    }
+                    if let Some(uv) = uv {
+                        let index =
+                            parse_i64(uv, line, "a texture coordinate index").and_then(|value| {
+                                resolve(value, uv_values.len(), line, corner, "texture coordinate")
+                            });
+                        match index {
+                            Ok(i) => uv_indices.push(i),
+                            Err(e) => {
+                                note(e);
+                                uv_indices.push(0);
+                            }
+                        }
+                    }
                     size = size.saturating_add(1);
                 }
                 face_sizes.push(size);
                 face_lines.push(line);
             }
+            Some(b"l") => {
+                let mut previous = None;
+                let mut count = 0;
+                for corner in w {
+                    let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
+                    let v = match parse_i64(index, line, "a vertex index")
+                        .and_then(|value| resolve(value, positions.len(), line, corner, "vertex"))
+                    {
+                        Ok(v) => v,
+                        Err(e) => {
+                            note(e);
+                            break;
+                        }
+                    };
+                    line_vertices.push((v, line));
+                    if let Some(p) = previous.filter(|&p| p != v) {
+                        creases.push(FileCrease {
+                            edge: [p, v],
+                            sharpness: SHARPNESS_INFINITE,
+                            line,
+                        });
+                    }
+                    previous = Some(v);
+                    count += 1;
+                }
+                if count < 2 {
+                    note(IoError::parse(
+                        Location::Line(line),
+                        "expected \"l\" and at least 2 vertex indices",
+                    ));
+                }
+            }
+            Some(b"t") => {
+                if let Err(e) = tag(w.collect(), line, &mut creases, &mut corners) {
+                    note(e);
+                }
+            }
             _ => {}
         }
     }
-    build_mesh(
+    let tagged = creases
+        .iter()
+        .flat_map(|c| c.edge.map(|v| (v, c.line)))
+        .chain(corners.iter().map(|c| (c.vertex, c.line)));
+    if let Some((v, line)) = tagged
+        .filter(|(v, _)| *v as usize >= positions.len())
+        .min_by_key(|&(_, line)| line)
+    {
+        note(IoError::parse(
+            Location::Line(line),
+            format!(
+                "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
+                positions.len(),
+                positions.len().max(1) - 1
+            ),
+        ));
+    }
+    if let Some(&(v, line)) = line_vertices
+        .iter()
+        .find(|(v, _)| *v as usize >= positions.len())
+    {
+        note(IoError::parse(
+            Location::Line(line),
+            format!(
+                "polyline vertex {} is past the last vertex ({})",
+                v as u64 + 1,
+                positions.len()
+            ),
+        ));
+    }
+    if let Some(i) = uv_indices
+        .iter()
+        .position(|&i| i as usize >= uv_values.len())
+    {
+        // Find the face of corner i for its line.
+        let face = face_sizes
+            .iter()
+            .scan(0usize, |end, &s| {
+                *end += s as usize;
+                Some(*end)
+            })
+            .position(|end| end > i)
+            .unwrap_or(0);
+        note(IoError::parse(
+            Location::Line(face_lines[face]),
+            format!(
+                "texture coordinate index {} is past the last \"vt\" ({})",
+                uv_indices[i] as u64 + 1,
+                uv_values.len()
+            ),
+        ));
+    }
+    let has_uvs = faces_have_uvs.is_some_and(|(uvs, _)| uvs);
+    let mesh = build_mesh(
         positions,
         face_sizes,
         face_indices,
         |v| Location::Line(vertex_lines[v]),
         |f| Location::Line(face_lines[f]),
-    )
+    )?;
+    let colours = match colours.first() {
+        Some(Some(_)) => Some(Colours {
+            rgba: colours.into_iter().flatten().collect(),
+            alpha,
+        }),
+        _ => None,
+    };
+    let file = MeshFile {
+        mesh,
+        colours,
+        uvs: has_uvs.then_some(Uvs {
+            values: uv_values,
+            indices: uv_indices,
+        }),
+        normals: None,
+        creases,
+        corners,
+    };
+    Ok((file, attribute_error))
+}
+
+/// Reads an OpenSubdiv tag: `t NAME ints/floats/strings INTS FLOATS STRINGS`.
+fn tag(
+    w: Vec<&[u8]>,
+    line: usize,
+    creases: &mut Vec<FileCrease>,
+    corners: &mut Vec<FileCorner>,
+) -> Result<(), IoError> {
+    let bad = |what: &str| IoError::parse(Location::Line(line), what.to_owned());
+    let Some(&name) = w.first() else {
+        return Err(bad("expected a tag name after \"t\""));
+    };
+    let is_crease = name == b"crease";
+    if !is_crease && name != b"corner" {
+        return Ok(());
+    }
+    let form = if is_crease {
+        "expected \"t crease 2/1/0 i j sharpness\" (0-based vertex indices)"
+    } else {
+        "expected \"t corner 1/1/0 v sharpness\" (0-based vertex indices)"
+    };
+    let counts: Vec<&[u8]> = w
+        .get(1)
+        .map(|c| c.split(|&b| b == b'/').collect())
+        .unwrap_or_default();
+    if counts.len() < 2 || counts.len() > 3 {
+        return Err(bad(form));
+    }
+    let ints = parse_count(counts[0], line, "the number of integer arguments")?;
+    let floats = parse_count(counts[1], line, "the number of float arguments")?;
+    let args = &w[2..];
+    if args.len() < ints.saturating_add(floats) {
+        return Err(bad(&format!("{form}; the tag announces {ints} indices and {floats} sharpness values but has {} arguments", args.len())));
+    }
+    let mut vertices = Vec::with_capacity(ints);
+    for word in &args[..ints] {
+        let v = parse_count(word, line, "a vertex index")?;
+        vertices.push(u32::try_from(v).map_err(|_| bad("a vertex index is too large"))?);
+    }
+    let sharpness = args[ints..ints + floats]
+        .iter()
+        .map(|word| parse_sharpness(word, line))
+        .collect::<Result<Vec<f64>, IoError>>()?;
+    let segments = if is_crease {
+        ints.saturating_sub(1)
+    } else {
+        ints
+    };
+    if segments == 0 || !(sharpness.len() == 1 || sharpness.len() == segments) {
+        return Err(bad(&format!(
+            "{form}; one sharpness for all or one per {}",
+            if is_crease { "segment" } else { "vertex" }
+        )));
+    }
+    let s = |i: usize| sharpness[if sharpness.len() == 1 { 0 } else { i }];
+    if is_crease {
+        for (i, pair) in vertices.windows(2).enumerate() {
+            if pair[0] == pair[1] {
+                return Err(bad("a crease joins two different vertices"));
+            }
+            creases.push(FileCrease {
+                edge: [pair[0], pair[1]],
+                sharpness: s(i),
+                line,
+            });
+        }
+    } else {
+        for (i, &vertex) in vertices.iter().enumerate() {
+            corners.push(FileCorner {
+                vertex,
+                sharpness: s(i),
+                line,
+            });
+        }
+    }
+    Ok(())
 }
 
 /// Turns an OBJ index (1-based, or negative from the end) into a 0-based one.
-fn resolve(value: i64, vertex_count: usize, line: usize, word: &[u8]) -> Result<u32, IoError> {
+fn resolve(value: i64, count: usize, line: usize, word: &[u8], what: &str) -> Result<u32, IoError> {
     let index = match value {
         0 => None,
         v if v > 0 => Some(v - 1),
-        v => (vertex_count as i64).checked_add(v).filter(|&i| i >= 0),
+        v => (count as i64).checked_add(v).filter(|&i| i >= 0),
     };
     index.and_then(|i| u32::try_from(i).ok()).ok_or_else(|| {
         IoError::parse(
             Location::Line(line),
             format!(
-                "vertex index {} is invalid: expected 1 to {vertex_count} or -1 to -{vertex_count}",
+                "{what} index {} is invalid: expected 1 to {count} or -1 to -{count}",
                 show(word)
             ),
         )
@@ -92,6 +440,17 @@ fn resolve(value: i64, vertex_count: usize, line: usize, word: &[u8]) -> Result<
 /// # Errors
 /// Whatever the writer returns.
 pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
+    write_file(w, &MeshFile::new(mesh.clone()))
+}
+
+/// Writes a mesh with its colours, normals, UVs, creases and corners as OBJ.
+///
+/// # Errors
+/// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when an
+/// attribute does not have one entry per vertex (or corner).
+pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
+    let mesh = &file.mesh;
+    super::check_attribute_sizes(file)?;
     writeln!(
         w,
         "# weft {}: {} vertices, {} faces",
@@ -99,15 +458,52 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
         mesh.vertex_count(),
         mesh.face_count()
     )?;
-    for p in mesh.positions() {
-        writeln!(w, "v {} {} {}", p.x, p.y, p.z)?;
+    for (i, p) in mesh.positions().iter().enumerate() {
+        write!(w, "v {} {} {}", p.x, p.y, p.z)?;
+        if let Some(colours) = &file.colours {
+            let [r, g, b, a] = colours.rgba[i];
+            write!(w, " {r} {g} {b}")?;
+            if colours.alpha {
+                write!(w, " {a}")?;
+            }
+        }
+        w.write_all(b"\n")?;
     }
+    if let Some(normals) = &file.normals {
+        for n in normals {
+            writeln!(w, "vn {} {} {}", n.x, n.y, n.z)?;
+        }
+    }
+    if let Some(uvs) = &file.uvs {
+        for [u, v] in &uvs.values {
+            writeln!(w, "vt {u} {v}")?;
+        }
+    }
+    let mut corner = 0;
     for face in mesh.faces() {
         w.write_all(b"f")?;
         for &v in face {
-            write!(w, " {}", v as u64 + 1)?;
+            let v = v as u64 + 1;
+            match (&file.uvs, &file.normals) {
+                (None, None) => write!(w, " {v}")?,
+                (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
+                (None, Some(_)) => write!(w, " {v}//{v}")?,
+                (Some(uvs), Some(_)) => write!(w, " {v}/{}/{v}", uvs.indices[corner] as u64 + 1)?,
+            }
+            corner += 1;
         }
         w.write_all(b"\n")?;
+    }
+    for c in &file.creases {
+        let [a, b] = c.edge;
+        if c.sharpness >= SHARPNESS_INFINITE {
+            writeln!(w, "l {} {}", a as u64 + 1, b as u64 + 1)?;
+        } else {
+            writeln!(w, "t crease 2/1/0 {a} {b} {}", c.sharpness)?;
+        }
+    }
+    for c in &file.corners {
+        writeln!(w, "t corner 1/1/0 {} {}", c.vertex, c.sharpness)?;
     }
     Ok(())
 }

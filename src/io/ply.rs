@@ -1,16 +1,24 @@
 //! Stanford PLY, ASCII and binary (little and big endian).
 //!
 //! Read: the `vertex` element's `x`, `y`, `z` (any numeric type, float and
-//! double usual) and the `face` element's `vertex_indices` (or
+//! double usual), its colour `red`, `green`, `blue` and optional `alpha`
+//! (integer types scaled from 0 to the type's maximum, float types taken
+//! as 0 to 1; `diffuse_red`… also accepted), its texture coordinates `s t`,
+//! `u v` or `texture_u texture_v` (one per vertex, as face-varying UVs
+//! without seams), and the `face` element's `vertex_indices` (or
 //! `vertex_index`) list with any integer count and index types; every other
 //! property and element is skipped by its declared type. Write: `double`
-//! coordinates, so positions round-trip exactly, and a `uchar` corner count
-//! (`int` when a face has more than 255 corners) with `int` indices.
+//! coordinates, so positions round-trip exactly; `uchar` colours, `double`
+//! normals `nx ny nz` and texture coordinates `s t` when present (UVs only
+//! when no vertex has two, see [`super::MeshFile::dropped_by`]); a `uchar`
+//! corner count (`int` when a face has more than 255 corners) with `int`
+//! indices.
 
 use std::io::Write;
 
 use glam::DVec3;
 
+use super::mesh_file::{Colours, MeshFile, Uvs};
 use super::text::{show, words, Tokens};
 use super::{build_mesh, IoError, Location, PlyEncoding};
 use crate::mesh::Mesh;
@@ -54,6 +62,19 @@ impl Scalar {
 
     fn is_integer(self) -> bool {
         !matches!(self, Scalar::F32 | Scalar::F64)
+    }
+
+    /// What a colour channel of this type is divided by to fall in 0 to 1.
+    fn colour_scale(self) -> f64 {
+        match self {
+            Scalar::I8 => i8::MAX as f64,
+            Scalar::U8 => u8::MAX as f64,
+            Scalar::I16 => i16::MAX as f64,
+            Scalar::U16 => u16::MAX as f64,
+            Scalar::I32 => i32::MAX as f64,
+            Scalar::U32 => u32::MAX as f64,
+            Scalar::F32 | Scalar::F64 => 1.0,
+        }
     }
 }
 
@@ -177,9 +198,26 @@ impl Values for Binary<'_> {
 /// byte offset (binary) where the file stops following its header;
 /// [`IoError::InvalidMesh`] with the place of a face the mesh rejects.
 pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    // The mesh alone: incomplete colours or UVs do not matter.
+    read(data, false).map(|file| file.mesh)
+}
+
+/// Parses a PLY file, ASCII or binary, with its vertex colours and texture
+/// coordinates.
+///
+/// # Errors
+/// As [`parse`]; also a vertex element with some colour channels but not
+/// red, green and blue, or one texture coordinate without the other.
+pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
+    read(data, true)
+}
+
+/// Reads a PLY file; `strict` refuses incomplete colours or UVs instead of
+/// ignoring them.
+fn read(data: &[u8], strict: bool) -> Result<MeshFile, IoError> {
     let (encoding, elements, body, body_line) = parse_header(data)?;
     match encoding {
-        Encoding::Ascii => read_body(&mut Text(Tokens::new(body, body_line)), &elements),
+        Encoding::Ascii => read_body(&mut Text(Tokens::new(body, body_line)), &elements, strict),
         Encoding::Binary { big_endian } => {
             let offset = data.len() - body.len();
             let mut source = Binary {
@@ -187,7 +225,7 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
                 pos: offset,
                 big_endian,
             };
-            read_body(&mut source, &elements)
+            read_body(&mut source, &elements, strict)
         }
     }
 }
@@ -291,22 +329,43 @@ fn parse_header(data: &[u8]) -> Result<Header<'_>, IoError> {
     Ok((encoding, elements, &data[pos..], line + 1))
 }
 
-fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoError> {
+fn read_body(
+    source: &mut dyn Values,
+    elements: &[Element],
+    strict: bool,
+) -> Result<MeshFile, IoError> {
     let mut positions = Vec::new();
     let mut vertex_locations = Vec::new();
     let mut face_sizes = Vec::new();
     let mut face_indices = Vec::new();
     let mut face_locations = Vec::new();
+    let mut colours: Vec<[f64; 4]> = Vec::new();
+    let mut has_colours = false;
+    let mut has_alpha = false;
+    let mut uvs: Vec<[f64; 2]> = Vec::new();
+    let mut has_uvs = false;
     for element in elements {
         let is_vertex = element.name == b"vertex";
         let is_face = element.name == b"face";
         let mut axes = [None; 3];
+        // red, green, blue, alpha with their scale; s and t.
+        let mut channels: [Option<(usize, f64)>; 4] = [None; 4];
+        let mut uv_axes: [Option<usize>; 2] = [None; 2];
         let mut index_list = None;
         for (p, (name, property)) in element.properties.iter().enumerate() {
             match (property, name.as_slice()) {
                 (Property::Scalar(_), b"x") if is_vertex => axes[0] = Some(p),
                 (Property::Scalar(_), b"y") if is_vertex => axes[1] = Some(p),
                 (Property::Scalar(_), b"z") if is_vertex => axes[2] = Some(p),
+                (Property::Scalar(ty), name) if is_vertex && colour_channel(name).is_some() => {
+                    channels[colour_channel(name).unwrap_or(0)] = Some((p, ty.colour_scale()));
+                }
+                (Property::Scalar(_), b"s" | b"u" | b"texture_u" | b"texture_s") if is_vertex => {
+                    uv_axes[0] = Some(p)
+                }
+                (Property::Scalar(_), b"t" | b"v" | b"texture_v" | b"texture_t") if is_vertex => {
+                    uv_axes[1] = Some(p)
+                }
                 (Property::List { item, .. }, b"vertex_indices" | b"vertex_index") if is_face => {
                     if !item.is_integer() {
                         return Err(header_error(
@@ -324,6 +383,26 @@ fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoEr
                 element.line,
                 "the vertex element needs properties x, y and z",
             ));
+        }
+        if is_vertex {
+            let rgb = channels[..3].iter().filter(|c| c.is_some()).count();
+            let incomplete = rgb != 0 && rgb != 3 || rgb == 0 && channels[3].is_some();
+            if incomplete && strict {
+                return Err(header_error(
+                    element.line,
+                    "a vertex colour needs the properties red, green and blue (alpha is optional)",
+                ));
+            }
+            let half_uv = uv_axes[0].is_some() != uv_axes[1].is_some();
+            if half_uv && strict {
+                return Err(header_error(
+                    element.line,
+                    "texture coordinates need two properties: s and t (or u and v)",
+                ));
+            }
+            has_colours = rgb == 3;
+            has_alpha = has_colours && channels[3].is_some();
+            has_uvs = !half_uv && uv_axes[0].is_some();
         }
         let min_size: usize = element
             .properties
@@ -361,6 +440,8 @@ fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoEr
         for i in 0..element.count {
             let start = source.location();
             let mut xyz = [0.0; 3];
+            let mut rgba = [0.0, 0.0, 0.0, 1.0];
+            let mut st = [0.0; 2];
             for (p, (property_name, property)) in element.properties.iter().enumerate() {
                 let what = || {
                     format!(
@@ -373,6 +454,13 @@ fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoEr
                         let value = source.read(ty, &what)?;
                         if let Some(axis) = axes.iter().position(|&a| a == Some(p)) {
                             xyz[axis] = value;
+                        } else if let Some(k) =
+                            channels.iter().position(|c| c.is_some_and(|(q, _)| q == p))
+                        {
+                            let scale = channels[k].map_or(1.0, |(_, s)| s);
+                            rgba[k] = value / scale;
+                        } else if let Some(k) = uv_axes.iter().position(|&a| a == Some(p)) {
+                            st[k] = value;
                         }
                     }
                     Property::List { count, item } => {
@@ -408,18 +496,50 @@ fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoEr
                 }
             }
             if is_vertex {
+                if strict && has_colours && rgba.iter().any(|c| !c.is_finite()) {
+                    return Err(IoError::parse(
+                        start,
+                        format!("the colour of vertex {i} is not finite"),
+                    ));
+                }
                 positions.push(DVec3::from_array(xyz));
                 vertex_locations.push(start);
+                if has_colours {
+                    colours.push(rgba);
+                }
+                if has_uvs {
+                    uvs.push(st);
+                }
             }
         }
     }
-    build_mesh(
+    let mesh = build_mesh(
         positions,
         face_sizes,
         face_indices,
         |v| vertex_locations[v],
         |f| face_locations[f],
-    )
+    )?;
+    let uvs = has_uvs.then(|| Uvs::from_per_vertex(&mesh, uvs));
+    let mut file = MeshFile::new(mesh);
+    file.colours = has_colours.then_some(Colours {
+        rgba: colours,
+        alpha: has_alpha,
+    });
+    file.uvs = uvs;
+    Ok(file)
+}
+
+/// Which colour channel (red 0, green 1, blue 2, alpha 3) a property names.
+fn colour_channel(name: &[u8]) -> Option<usize> {
+    let name = name.strip_prefix(b"diffuse_").unwrap_or(name);
+    match name {
+        b"red" => Some(0),
+        b"green" => Some(1),
+        b"blue" => Some(2),
+        b"alpha" => Some(3),
+        _ => None,
+    }
 }
 
 /// Writes a mesh as PLY in the given encoding.
@@ -427,26 +547,86 @@ fn read_body(source: &mut dyn Values, elements: &[Element]) -> Result<Mesh, IoEr
 /// # Errors
 /// Whatever the writer returns.
 pub fn write(w: &mut dyn Write, mesh: &Mesh, encoding: PlyEncoding) -> std::io::Result<()> {
+    write_file(w, &MeshFile::new(mesh.clone()), encoding)
+}
+
+/// Writes a mesh with its vertex colours (`uchar`), normals and per-vertex
+/// texture coordinates as PLY; UVs with seams and creases are left out (see
+/// [`MeshFile::dropped_by`]).
+///
+/// # Errors
+/// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when an
+/// attribute does not have one entry per vertex (or corner).
+pub fn write_file(
+    w: &mut dyn Write,
+    file: &MeshFile,
+    encoding: PlyEncoding,
+) -> std::io::Result<()> {
+    super::check_attribute_sizes(file)?;
+    let mesh = &file.mesh;
     let format = match encoding {
         PlyEncoding::Ascii => "ascii",
         PlyEncoding::BinaryLittleEndian => "binary_little_endian",
         PlyEncoding::BinaryBigEndian => "binary_big_endian",
     };
     let wide = mesh.face_sizes().iter().any(|&s| s > 255);
-    write!(
-        w,
+    let uvs = file.uvs.as_ref().and_then(|uvs| uvs.per_vertex(mesh));
+    let mut header = format!(
         "ply\nformat {format} 1.0\ncomment weft {}\nelement vertex {}\n\
-         property double x\nproperty double y\nproperty double z\n\
-         element face {}\nproperty list {} int vertex_indices\nend_header\n",
+         property double x\nproperty double y\nproperty double z\n",
         crate::VERSION,
         mesh.vertex_count(),
+    );
+    if file.normals.is_some() {
+        header.push_str("property double nx\nproperty double ny\nproperty double nz\n");
+    }
+    if let Some(colours) = &file.colours {
+        header.push_str("property uchar red\nproperty uchar green\nproperty uchar blue\n");
+        if colours.alpha {
+            header.push_str("property uchar alpha\n");
+        }
+    }
+    if uvs.is_some() {
+        header.push_str("property double s\nproperty double t\n");
+    }
+    header.push_str(&format!(
+        "element face {}\nproperty list {} int vertex_indices\nend_header\n",
         mesh.face_count(),
         if wide { "int" } else { "uchar" },
-    )?;
+    ));
+    w.write_all(header.as_bytes())?;
+    // Every number of vertex i after x y z, as doubles and bytes.
+    let extras = |i: usize| -> (Vec<f64>, Vec<u8>, Option<[f64; 2]>) {
+        let mut doubles = Vec::new();
+        let mut bytes = Vec::new();
+        if let Some(normals) = &file.normals {
+            doubles.extend(normals[i].to_array());
+        }
+        if let Some(colours) = &file.colours {
+            let channels = if colours.alpha { 4 } else { 3 };
+            bytes.extend(
+                colours.rgba[i][..channels]
+                    .iter()
+                    .map(|&c| (c.clamp(0.0, 1.0) * 255.0).round() as u8),
+            );
+        }
+        (doubles, bytes, uvs.as_ref().map(|uvs| uvs[i]))
+    };
     match encoding {
         PlyEncoding::Ascii => {
-            for p in mesh.positions() {
-                writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
+            for (i, p) in mesh.positions().iter().enumerate() {
+                write!(w, "{} {} {}", p.x, p.y, p.z)?;
+                let (doubles, bytes, uv) = extras(i);
+                for d in doubles {
+                    write!(w, " {d}")?;
+                }
+                for b in bytes {
+                    write!(w, " {b}")?;
+                }
+                if let Some([s, t]) = uv {
+                    write!(w, " {s} {t}")?;
+                }
+                w.write_all(b"\n")?;
             }
             for face in mesh.faces() {
                 write!(w, "{}", face.len())?;
@@ -472,8 +652,16 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh, encoding: PlyEncoding) -> std::io::
                     x.to_le_bytes()
                 }
             };
-            for p in mesh.positions() {
+            for (i, p) in mesh.positions().iter().enumerate() {
                 for c in p.to_array() {
+                    w.write_all(&f64_bytes(c))?;
+                }
+                let (doubles, bytes, uv) = extras(i);
+                for d in doubles {
+                    w.write_all(&f64_bytes(d))?;
+                }
+                w.write_all(&bytes)?;
+                for c in uv.into_iter().flatten() {
                     w.write_all(&f64_bytes(c))?;
                 }
             }

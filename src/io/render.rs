@@ -178,6 +178,35 @@ impl Camera {
 /// [`Error::InvalidArgument`] for a width or height outside 1 to
 /// [`MAX_SIDE`]; [`Error::OutOfMemory`] when the picture cannot be allocated.
 pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
+    render_with(mesh, options, None)
+}
+
+/// Draws a mesh whose front faces take the average of their vertices'
+/// colours (RGBA from 0 to 1, alpha ignored), one per vertex; back faces
+/// stay orange.
+///
+/// # Errors
+/// As [`render`]; [`Error::InvalidArgument`] when there is not one colour per vertex.
+pub fn render_coloured(
+    mesh: &Mesh,
+    options: &RenderOptions,
+    colours: &[[f64; 4]],
+) -> Result<Image, Error> {
+    if colours.len() != mesh.vertex_count() {
+        return Err(Error::InvalidArgument(format!(
+            "{} colours for {} vertices",
+            colours.len(),
+            mesh.vertex_count()
+        )));
+    }
+    render_with(mesh, options, Some(colours))
+}
+
+fn render_with(
+    mesh: &Mesh,
+    options: &RenderOptions,
+    colours: Option<&[[f64; 4]]>,
+) -> Result<Image, Error> {
     for (name, side) in [("width", options.width), ("height", options.height)] {
         if side == 0 || side > MAX_SIDE {
             return Err(Error::InvalidArgument(format!(
@@ -219,8 +248,18 @@ pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
         let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
         let front = normal.dot(camera.eye - centroid) >= 0.0;
+        let face_colour = colours.map(|colours| {
+            let face = mesh.face(f);
+            let mut sum = [0.0f64; 3];
+            for &v in face {
+                for (k, total) in sum.iter_mut().enumerate() {
+                    *total += colours[v as usize][k].clamp(0.0, 1.0);
+                }
+            }
+            sum.map(|c| (c / face.len() as f64) as f32)
+        });
         let (base, facing) = if front {
-            (FRONT, normal)
+            (face_colour.unwrap_or(FRONT), normal)
         } else {
             (BACK, -normal)
         };

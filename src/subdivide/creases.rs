@@ -450,17 +450,26 @@ pub(crate) fn fractional_weight(
 /// faces meet at a dihedral angle of more than `angle_degrees` (the angle
 /// between their normals; pass 180 or more to skip this test).
 ///
+/// Positions equal as numbers weld (`-0.0` with `0.0`).
+///
 /// # Errors
 /// [`Error::InvalidArgument`] when `angle_degrees` is NaN or negative;
 /// [`Error::OutOfMemory`].
-pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<(Mesh, Vec<Crease>)> {
+pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh> {
     if angle_degrees.is_nan() || angle_degrees < 0.0 {
         return Err(Error::InvalidArgument(format!(
             "the crease angle is {angle_degrees} degrees; it must be 0 or more"
         )));
     }
     let topology = crate::topology::Topology::new(mesh);
-    let bits = |p: glam::DVec3| [p.x.to_bits(), p.y.to_bits(), p.z.to_bits()];
+    // Adding 0.0 turns -0.0 into 0.0, so equal numbers have equal bits.
+    let bits = |p: glam::DVec3| {
+        [
+            (p.x + 0.0).to_bits(),
+            (p.y + 0.0).to_bits(),
+            (p.z + 0.0).to_bits(),
+        ]
+    };
     let mut was_naked = std::collections::HashSet::new();
     for e in 0..topology.edge_count() {
         if topology.is_naked_edge(e) {
@@ -469,7 +478,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<(Mesh, Vec<C
             was_naked.insert((bits(p), bits(q)));
         }
     }
-    // Weld vertices at identical positions (bit for bit), keeping the first index.
+    // Weld vertices at identical positions, keeping the first index.
     let mut first = std::collections::HashMap::new();
     let mut remap = try_vec(mesh.vertex_count(), "weld map")?;
     let mut positions = Vec::new();
@@ -512,5 +521,21 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<(Mesh, Vec<C
             creases.push(([a, b], SHARPNESS_INFINITE));
         }
     }
-    Ok((welded, creases))
+    Ok(CreasedMesh {
+        mesh: welded,
+        creases,
+        vertex_map: remap,
+    })
+}
+
+/// What [`creases_from_mesh`] makes.
+#[derive(Debug, Clone)]
+pub struct CreasedMesh {
+    /// The welded mesh.
+    pub mesh: Mesh,
+    /// Its infinitely sharp creases, as vertex pairs of `mesh`.
+    pub creases: Vec<Crease>,
+    /// For each vertex of the input, its vertex in `mesh`: so colours,
+    /// creases and corners given on the input can follow.
+    pub vertex_map: Vec<u32>,
 }

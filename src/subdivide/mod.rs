@@ -45,7 +45,9 @@ mod stencils;
 
 use glam::DVec3;
 
-pub use creases::{creases_from_mesh, Crease, Creasing, SubdivisionOptions, SHARPNESS_INFINITE};
+pub use creases::{
+    creases_from_mesh, Crease, CreasedMesh, Creasing, SubdivisionOptions, SHARPNESS_INFINITE,
+};
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;

@@ -9,7 +9,10 @@ use weft::io::render::{self, RenderOptions};
 use weft::io::{self, IoError};
 use weft::plane::Plane;
 use weft::stellate::{stellate, Heights};
-use weft::subdivide::{catmull_clark, loop_subdivision, NakedEdges};
+use weft::subdivide::{
+    catmull_clark, loop_subdivision, subdivide_with, FaceVaryingLinear, NakedEdges, Scheme,
+    Subdivider, SubdivisionOptions, SHARPNESS_INFINITE,
+};
 use weft::{DVec3, Error, Mesh};
 
 /// A grayscale picture sampled by the fading pattern, values 0 (black) to 1.
@@ -122,10 +125,24 @@ impl Demo {
     }
 
     fn save(&mut self, name: &str, caption: &str, mesh: &Mesh) -> Step<()> {
-        file(io::write_mesh(self.dir.join(format!("{name}.obj")), mesh))?;
+        self.save_file(name, caption, &io::MeshFile::new(mesh.clone()))
+    }
+
+    /// As [`Demo::save`], with the colours, UVs and creases the OBJ carries.
+    fn save_file(&mut self, name: &str, caption: &str, carried: &io::MeshFile) -> Step<()> {
+        let mesh = &carried.mesh;
+        file(io::write_mesh_file(
+            self.dir.join(format!("{name}.obj")),
+            carried,
+            &io::WriteOptions::default(),
+        ))?;
+        let options = RenderOptions::default();
         let image = op(
             &format!("render {name}"),
-            render::render(mesh, &RenderOptions::default()),
+            match &carried.colours {
+                Some(colours) => render::render_coloured(mesh, &options, &colours.rgba),
+                None => render::render(mesh, &options),
+            },
         )?;
         file(image.save_png(self.dir.join(format!("{name}.png"))))?;
         println!(
@@ -266,6 +283,7 @@ pub fn run(dir: &Path, image: Option<&Path>) -> Step<()> {
     voronoi_skin(&mut demo)?;
     fading_pattern(&mut demo, &gray)?;
     boxes(&mut demo)?;
+    creases(&mut demo)?;
     demo.write_index()?;
     println!("index: {}", dir.join("index.html").display());
     Ok(())
@@ -562,5 +580,124 @@ fn boxes(demo: &mut Demo) -> Step<()> {
         catmull_clark(&culled, 3, NakedEdges::Fixed),
     )?;
     demo.save("boxes-smooth", "Catmull-Clark level 3", &smooth)?;
+    Ok(())
+}
+
+/// An L-shaped block of three cubes (joined, welded, inner faces culled),
+/// `height` tall.
+fn l_block(height: f64) -> Step<Mesh> {
+    let cubes: Vec<Mesh> = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]
+        .iter()
+        .map(|&(x, y)| {
+            let mut cube = weft::shapes::cube();
+            for p in cube.positions_mut() {
+                *p = DVec3::new(p.x + x, p.y + y, p.z * height);
+            }
+            cube
+        })
+        .collect();
+    let refs: Vec<&Mesh> = cubes.iter().collect();
+    let joined = op("join", weft::weld::join(&refs))?;
+    let (welded, _) = op(
+        "weld",
+        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    let (culled, _) = weft::cull::cull_adjacent(&welded);
+    Ok(weft::weld::remove_unused_vertices(&culled).0)
+}
+
+fn creases(demo: &mut Demo) -> Step<()> {
+    demo.section("Creases: the same block, Catmull-Clark level 3, without and with creases");
+    let height = 0.8;
+    let cage = l_block(height)?;
+    // The edges of the cage: (vertex, vertex) for each.
+    let topology = weft::Topology::new(&cage);
+    let at = |v: u32| cage.positions()[v as usize];
+    let is_top = |f: u32| cage.face(f as usize).iter().all(|&v| at(v).z == height);
+    let mut options = SubdivisionOptions::new(NakedEdges::Fixed);
+    for (e, &[a, b]) in topology.edges().iter().enumerate() {
+        let (p, q) = (at(a), at(b));
+        let top_faces = topology.edge_faces(e).filter(|&f| is_top(f)).count();
+        let vertical = p.x == q.x && p.y == q.y;
+        if top_faces == 1 {
+            // The top's outline.
+            options.creases.push(([a, b], SHARPNESS_INFINITE));
+        } else if vertical && p.y == 0.0 {
+            // The upright edges of the front wall: semi-sharp.
+            options.creases.push(([a, b], 2.0));
+        }
+    }
+    let mut carried = io::MeshFile::new(cage.clone());
+    carried.creases = options
+        .creases
+        .iter()
+        .map(|&(edge, sharpness)| io::FileCrease {
+            edge,
+            sharpness,
+            line: 0,
+        })
+        .collect();
+    let hard = options
+        .creases
+        .iter()
+        .filter(|c| c.1 >= SHARPNESS_INFINITE)
+        .count();
+    demo.save_file(
+        "creases-cage",
+        &format!(
+            "the cage: an L-shaped block of three boxes; its OBJ marks {hard} hard creases (l) and {} semi-sharp ones (t crease)",
+            options.creases.len() - hard
+        ),
+        &carried,
+    )?;
+    let smooth = op("Catmull-Clark", catmull_clark(&cage, 3, NakedEdges::Fixed))?;
+    demo.save("creases-none", "no creases: everything rounds off", &smooth)?;
+    let creased = op(
+        "Catmull-Clark with creases",
+        subdivide_with(&cage, Scheme::CatmullClark, 3, &options),
+    )?;
+    demo.save(
+        "creases-sharp",
+        "the top's outline infinitely sharp (a hard rim), the front wall's upright edges \
+         semi-sharp (sharpness 2: rounded a little)",
+        &creased,
+    )?;
+
+    // Carried data: a colour per cage vertex (its position as RGB) and a UV
+    // square per face, through the same creased subdivision.
+    let subdivider = op(
+        "Catmull-Clark with creases",
+        Subdivider::new(&cage, Scheme::CatmullClark, 3, &options),
+    )?;
+    let rgba: Vec<f64> = cage
+        .positions()
+        .iter()
+        .flat_map(|p| [p.x / 2.0, p.y / 2.0, 0.25 + 0.75 * p.z / height, 1.0])
+        .collect();
+    let refined_rgba = op("carry colours", subdivider.vertex_data(&rgba, 4))?;
+    let square = [0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0];
+    let uv_indices: Vec<u32> = cage.face_sizes().iter().flat_map(|&n| 0..n).collect();
+    let refined_uvs = op(
+        "carry UVs",
+        subdivider.face_varying(&square, 2, &uv_indices, FaceVaryingLinear::All),
+    )?;
+    let mut coloured = io::MeshFile::new(creased);
+    coloured.colours = Some(io::Colours {
+        rgba: refined_rgba
+            .chunks_exact(4)
+            .map(|c| [c[0], c[1], c[2], c[3]])
+            .collect(),
+        alpha: false,
+    });
+    coloured.uvs = Some(io::Uvs {
+        values: refined_uvs.chunks_exact(2).map(|c| [c[0], c[1]]).collect(),
+        indices: (0..refined_uvs.len() as u32 / 2).collect(),
+    });
+    demo.save_file(
+        "creases-colours",
+        "vertex colours (each cage vertex's position as RGB) and a UV square per cage face \
+         carried through the creased subdivision; the OBJ holds both",
+        &coloured,
+    )?;
     Ok(())
 }

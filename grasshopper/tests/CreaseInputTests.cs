@@ -1,0 +1,179 @@
+using System;
+using System.Collections.Generic;
+using Weft.Grasshopper;
+
+namespace Weft.Tests
+{
+    /// <summary>The creased components' conversions, run without Rhino: lines and edge indices to vertex pairs, points to corners, sharpness lists, colours, and the refiner cache with creases.</summary>
+    public static class CreaseInputTests
+    {
+        private static Runner t;
+
+        // The unit cube, faces wound outwards (face 0 is the bottom).
+        private static readonly double[] Cube = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1 };
+        private static readonly uint[] CubeSizes = { 4, 4, 4, 4, 4, 4 };
+        private static readonly uint[] CubeIndices = { 0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5 };
+
+        public static void Register(Runner runner)
+        {
+            t = runner;
+            t.Run("crease lines match cage edges within the tolerance, either direction", LinesMatchEdges);
+            t.Run("a crease line matching no edge is refused, naming its index", LineMatchesNothing);
+            t.Run("edge indices count as Mesh Edges lists them; out of range refused", EdgeIndices);
+            t.Run("corner points match the nearest vertex within the tolerance", CornerPoints);
+            t.Run("sharpness lists: empty, one for all, one each; negative, NaN and wrong lengths refused", SharpnessLists);
+            t.Run("colours to doubles and back, rounded and clamped", Colours);
+            t.Run("colours carried through a creased subdivision stay where they were", ColoursThroughSubdivision);
+            t.Run("refiner cache with creases: same creases reuse, other creases re-plan", CacheWithCreases);
+            t.Run("crease segments are the pairs' end points", Segments);
+        }
+
+        private static uint[] Edges()
+        {
+            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            {
+                return Toolbar.Edges(cube);
+            }
+        }
+
+        private static void LinesMatchEdges()
+        {
+            var items = new List<CreaseItem>
+            {
+                CreaseItem.FromLine(0, 0, 0, 1, 0, 0),            // edge 0-1
+                CreaseItem.FromLine(1, 1, 1.004, 1, 1, 0),        // edge 7-3, reversed and off by 0.004
+                CreaseItem.FromEdge(2),
+            };
+            uint[] edges = Edges();
+            uint[] pairs = CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, items, 0.01);
+            t.Sequence(new uint[] { 0, 1, 7, 3, edges[4], edges[5] }, pairs, "vertex pairs");
+            // The pairs are accepted by the library as edges.
+            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            {
+                var options = new SubdivisionOptions(NakedEdges.Smooth).AddCreases(pairs, 10);
+                using (WeftMesh refined = Subdivision.Subdivide(cube, Scheme.CatmullClark, 1, options))
+                {
+                    t.Equal(26, refined.VertexCount, "subdivided with the matched creases");
+                }
+            }
+        }
+
+        private static void LineMatchesNothing()
+        {
+            uint[] edges = Edges();
+            var diagonal = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0), CreaseItem.FromLine(0, 0, 0, 1, 1, 0) };
+            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, diagonal, 0.01), WeftStatus.InvalidArgument,
+                "C[1], the line from (0, 0, 0) to (1, 1, 0), matches no edge of the mesh within 0.01: its ends are vertices but not the ends of one edge");
+            var far = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0.02) };
+            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, far, 0.01), WeftStatus.InvalidArgument,
+                "C[0], the line from (0, 0, 0) to (1, 0, 0.02), matches no edge of the mesh within 0.01: its end is no vertex of the mesh");
+            // Tolerance 0 matches exact end points only.
+            var exact = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0) };
+            t.Sequence(new uint[] { 0, 1 }, CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, exact, 0), "exact match");
+        }
+
+        private static void EdgeIndices()
+        {
+            uint[] edges = Edges();
+            t.Equal(24, edges.Length, "12 edges");
+            var items = new List<CreaseItem> { CreaseItem.FromEdge(11), CreaseItem.FromEdge(0) };
+            t.Sequence(new[] { edges[22], edges[23], edges[0], edges[1] },
+                CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, items, 0.01), "pairs of edges 11 and 0");
+            var bad = new List<CreaseItem> { CreaseItem.FromEdge(0), CreaseItem.FromEdge(12) };
+            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, bad, 0.01), WeftStatus.IndexOutOfRange,
+                "C[1] is edge 12, but the mesh has 12 edges (numbered 0 to 11");
+            var negative = new List<CreaseItem> { CreaseItem.FromEdge(-1) };
+            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, negative, 0.01), WeftStatus.IndexOutOfRange, "C[0] is edge -1");
+        }
+
+        private static void CornerPoints()
+        {
+            // Two vertices 0.004 apart: the nearer one wins.
+            double[] positions = { 0, 0, 0, 0.004, 0, 0, 1, 0, 0 };
+            t.Sequence(new uint[] { 1, 2, 0 },
+                CreaseInputs.CornerVertices(positions, new[] { 0.003, 0, 0, 1, 0.005, 0, -0.001, 0, 0 }, 0.01), "nearest vertices");
+            Fails(() => CreaseInputs.CornerVertices(positions, new[] { 0.0, 0, 0, 0.5, 0, 0 }, 0.01), WeftStatus.InvalidArgument,
+                "P[1] at (0.5, 0, 0) is no vertex of the mesh within 0.01");
+        }
+
+        private static void SharpnessLists()
+        {
+            t.Sequence(new[] { 10.0, 10.0, 10.0 }, CreaseInputs.Sharpness(new double[0], 3, "CS", "creases"), "empty: hard");
+            t.Sequence(new[] { 2.5, 2.5 }, CreaseInputs.Sharpness(new[] { 2.5 }, 2, "CS", "creases"), "one for all");
+            t.Sequence(new[] { 0.0, 1, double.PositiveInfinity }, CreaseInputs.Sharpness(new[] { 0.0, 1, double.PositiveInfinity }, 3, "CS", "creases"), "one each");
+            Fails(() => CreaseInputs.Sharpness(new[] { 1.0, -1, 2 }, 3, "CS", "creases"), WeftStatus.InvalidArgument,
+                "CS[1] is -1; sharpness must be 0 or more");
+            Fails(() => CreaseInputs.Sharpness(new[] { double.NaN }, 3, "PS", "corners"), WeftStatus.InvalidArgument, "PS[0] is NaN");
+            Fails(() => CreaseInputs.Sharpness(new[] { 1.0, 2 }, 3, "CS", "creases"), WeftStatus.CountMismatch,
+                "CS has 2 values for 3 creases; give one value for all or one per item");
+        }
+
+        private static void Colours()
+        {
+            int red = unchecked((int)0xFFFF0000), translucentBlue = 0x400000FF, grey = unchecked((int)0xFF808080);
+            double[] values = CreaseInputs.ColoursToValues(new[] { red, translucentBlue, grey });
+            t.Sequence(new double[] { 255, 0, 0, 255, 0, 0, 255, 64, 128, 128, 128, 255 }, values, "r, g, b, a per vertex");
+            t.Sequence(new[] { red, translucentBlue, grey }, CreaseInputs.ValuesToColours(values), "round trip");
+            t.Sequence(new[] { unchecked((int)0xFF7F0000) }, CreaseInputs.ValuesToColours(new[] { 127.4, -3, double.NaN, 300 }), "rounded and clamped");
+        }
+
+        private static void ColoursThroughSubdivision()
+        {
+            // Vertex 7 white, the rest black; vertex 7 a hard corner: it stays white, its neighbours turn grey.
+            var argb = new int[8];
+            for (int v = 0; v < 8; v++) argb[v] = unchecked((int)0xFF000000);
+            argb[7] = -1;
+            var options = new SubdivisionOptions(NakedEdges.Smooth).AddCorner(7, 10);
+            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            {
+                double[] values = Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, options, CreaseInputs.ColoursToValues(argb), 4);
+                int[] refined = CreaseInputs.ValuesToColours(values);
+                t.Equal(26, refined.Length, "a colour per refined vertex");
+                t.Equal(-1, refined[7], "the corner stays white");
+                t.Equal(unchecked((int)0xFF000000), refined[0], "the far corner stays black");
+                int r = (refined[20 + 5] >> 16) & 0xFF; // the face point of face 5 (x = 1), a quarter white
+                t.Equal(64, r, "face 5's face point is a quarter white");
+            }
+        }
+
+        private static void CacheWithCreases()
+        {
+            using (var cache = new RefinerCache())
+            {
+                var options = new SubdivisionOptions(NakedEdges.Smooth).AddCrease(0, 1, 10).AddCorner(7, 10);
+                RefinedArrays a = cache.Subdivide(Cube, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, options);
+                t.Sequence(new[] { 1.0, 1.0, 1.0 }, new[] { a.Positions[21], a.Positions[22], a.Positions[23] }, "corner kept");
+                var moved = (double[])Cube.Clone();
+                moved[23] = 2;
+                // The same creases built anew: reused.
+                var same = new SubdivisionOptions(NakedEdges.Smooth).AddCrease(0, 1, 10).AddCorner(7, 10);
+                RefinedArrays b = cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, same);
+                t.True(cache.LastReused, "same creases reuse the refiner");
+                t.Equal(2.0, b.Positions[23], "the moved corner follows");
+                // Changing the caller's options after the call does not fool the cache.
+                same.AddCrease(1, 3, 10);
+                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, same);
+                t.False(cache.LastReused, "another crease re-plans");
+                t.Equal(2, cache.PlanCount, "two plans");
+                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                t.False(cache.LastReused, "the plain call re-plans");
+                var bad = new SubdivisionOptions().AddCrease(0, 7, 10);
+                Fails(() => cache.Subdivide(Cube, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, bad), WeftStatus.InvalidArgument,
+                    "crease 0 joins vertices 0 and 7");
+            }
+        }
+
+        private static void Segments()
+        {
+            t.Sequence(new double[] { 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 1, 0 }, CreaseInputs.Segments(Cube, new uint[] { 0, 7, 1, 2 }), "segments");
+        }
+
+        private static void Fails(Action action, WeftStatus status, string message)
+        {
+            WeftException e = t.Throws<WeftException>(action, status.ToString());
+            if (e == null) return;
+            t.Equal(status, e.Status, "status");
+            t.True(e.Message.Contains(message), "message containing \"" + message + "\", got \"" + e.Message + "\"");
+        }
+    }
+}
