@@ -211,43 +211,73 @@ fn bad_usage_exits_with_2() {
     assert!(stderr(&o).contains("WIDTHxHEIGHT"), "{}", stderr(&o));
 }
 
+/// Every subcommand of `weft`, as `weft --help` lists them.
+const COMMANDS: [&str; 29] = [
+    "info",
+    "render",
+    "subdivide",
+    "weld",
+    "cull-adjacent",
+    "flip",
+    "t-nodes",
+    "demo",
+    "triangulate",
+    "convert",
+    "split-polygons",
+    "split-triangles",
+    "quad-split",
+    "midedge",
+    "inner-polygons",
+    "sierpinski",
+    "carpet",
+    "smooth",
+    "offset",
+    "thicken",
+    "window",
+    "frame",
+    "bevel-edges",
+    "bevel-vertices",
+    "dual",
+    "reroute",
+    "stellate",
+    "tile",
+    "primitive",
+];
+
 #[test]
 fn help_on_every_command_has_an_example() {
     let dir = folder("help");
-    for command in [
-        "info",
-        "render",
-        "convert",
-        "subdivide",
-        "triangulate",
-        "weld",
-        "cull-adjacent",
-        "flip",
-        "t-nodes",
-    ] {
+    let o = weft(&dir, &["--help"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    // The commands `weft --help` lists, in its order, are exactly these.
+    let listed: Vec<&str> = text
+        .split("Commands:\n")
+        .nth(1)
+        .expect("a command list")
+        .lines()
+        .take_while(|l| l.starts_with("  "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|&c| c != "help")
+        .collect();
+    assert_eq!(listed, COMMANDS, "{text}");
+
+    for command in COMMANDS {
         let o = weft(&dir, &[command, "--help"]);
         assert_exit(&o, 0);
         let text = stdout(&o);
+        let examples = text
+            .split_once("\nExample")
+            .map(|(_, rest)| rest)
+            .unwrap_or_else(|| panic!("{command}: no example in\n{text}"));
         assert!(
-            text.contains(&format!("weft {command} ")),
-            "{command}: {text}"
+            examples.contains(&format!("\n  weft {command} ")),
+            "{command}: the example does not run weft {command}:\n{text}"
         );
-        assert!(text.contains("Example"), "{command}: {text}");
-    }
-    let o = weft(&dir, &["--help"]);
-    assert_exit(&o, 0);
-    for command in [
-        "info",
-        "render",
-        "convert",
-        "subdivide",
-        "triangulate",
-        "weld",
-        "cull-adjacent",
-        "flip",
-        "t-nodes",
-    ] {
-        assert!(stdout(&o).contains(command));
+        // `weft help COMMAND` shows the same.
+        let o = weft(&dir, &["help", command]);
+        assert_exit(&o, 0);
+        assert_eq!(stdout(&o), text, "{command}");
     }
 }
 
@@ -298,6 +328,367 @@ fn failed_operations_exit_with_1_and_name_the_file() {
     assert_exit(&o, 1);
     assert!(stderr(&o).contains("folder.obj"), "{}", stderr(&o));
     assert!(!dir.join("x.png").exists());
+}
+
+/// A command that reads a mesh file: its arguments, with `IN` for the input
+/// and `OUT` for the output (named with `out`'s extension), and a bad use of
+/// one of its options with the option the message must name.
+struct Reader {
+    args: &'static [&'static str],
+    out: Option<&'static str>,
+    bad: &'static [&'static str],
+    named: &'static str,
+}
+
+const fn reader(
+    args: &'static [&'static str],
+    out: Option<&'static str>,
+    bad: &'static [&'static str],
+    named: &'static str,
+) -> Reader {
+    Reader {
+        args,
+        out,
+        bad,
+        named,
+    }
+}
+
+/// Every command that reads a mesh file.
+const READERS: [Reader; 27] = [
+    reader(
+        &["info", "IN"],
+        None,
+        &["--planarity-tolerance", "flat"],
+        "--planarity-tolerance",
+    ),
+    reader(
+        &["render", "IN", "OUT", "--size", "40x30"],
+        Some("png"),
+        &["--edges", "some"],
+        "--edges",
+    ),
+    reader(
+        &["convert", "IN", "OUT"],
+        Some("ply"),
+        &["--ascii", "--big-endian"],
+        "--ascii",
+    ),
+    reader(
+        &["subdivide", "IN", "OUT", "--levels", "1"],
+        Some("obj"),
+        &["--scheme", "butterfly"],
+        "--scheme",
+    ),
+    reader(
+        &["weld", "IN", "-o", "OUT"],
+        Some("obj"),
+        &["--tolerance", "wide"],
+        "--tolerance",
+    ),
+    reader(
+        &["cull-adjacent", "IN", "OUT"],
+        Some("obj"),
+        &["--tolerance", "1"],
+        "--tolerance",
+    ),
+    reader(
+        &["triangulate", "IN", "OUT"],
+        Some("off"),
+        &["--scheme", "loop"],
+        "--scheme",
+    ),
+    reader(
+        &["flip", "IN", "OUT"],
+        Some("obj"),
+        &["--unify=yes"],
+        "--unify",
+    ),
+    reader(
+        &["t-nodes", "IN", "--repair", "OUT"],
+        Some("obj"),
+        &["--tolerance", "nan"],
+        "--tolerance",
+    ),
+    reader(
+        &["split-polygons", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["split-triangles", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["quad-split", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["midedge", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["inner-polygons", "IN", "OUT"],
+        Some("obj"),
+        &["--pull", "half"],
+        "--pull",
+    ),
+    reader(
+        &["sierpinski", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["carpet", "IN", "OUT"],
+        Some("obj"),
+        &["--levels", "many"],
+        "--levels",
+    ),
+    reader(
+        &["smooth", "IN", "OUT"],
+        Some("obj"),
+        &["--method", "taubin"],
+        "--method",
+    ),
+    reader(
+        &["offset", "IN", "OUT", "--distance", "0.1"],
+        Some("obj"),
+        &["--type", "round"],
+        "--type",
+    ),
+    reader(
+        &["thicken", "IN", "OUT", "--distance", "0.1"],
+        Some("obj"),
+        &["--type", "round"],
+        "--type",
+    ),
+    reader(
+        &["window", "IN", "OUT", "--distance", "0.2"],
+        Some("obj"),
+        &["--mode", "round"],
+        "--mode",
+    ),
+    reader(
+        &["frame", "IN", "OUT", "--distance", "0.2"],
+        Some("obj"),
+        &["--mode", "round"],
+        "--mode",
+    ),
+    reader(
+        &["bevel-edges", "IN", "OUT"],
+        Some("obj"),
+        &["--fraction", "some"],
+        "--fraction",
+    ),
+    reader(
+        &["bevel-vertices", "IN", "OUT"],
+        Some("obj"),
+        &["--fraction", "some"],
+        "--fraction",
+    ),
+    reader(
+        &["dual", "IN", "OUT"],
+        Some("obj"),
+        &["--keep-size=1"],
+        "--keep-size",
+    ),
+    reader(
+        &["reroute", "IN", "OUT", "--shift", "1"],
+        Some("obj"),
+        &["--shift", "half"],
+        "--shift",
+    ),
+    reader(
+        &["stellate", "IN", "OUT", "--height", "0.2"],
+        Some("obj"),
+        &["--apex", "1"],
+        "--apex",
+    ),
+    reader(
+        &["tile", "IN", "OUT"],
+        Some("obj"),
+        &["--fill", "hexagon"],
+        "--fill",
+    ),
+];
+
+/// The names in a folder, sorted.
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// Each command that reads a mesh file, on a good file, then on a malformed
+/// text file and a malformed binary one, a missing file, an unreadable one,
+/// with its output in a missing folder or in place of a folder, and with a
+/// bad option: exit 0, 1 or 2, a message that names the file or option and
+/// the problem, and no file left behind by a failure.
+#[test]
+fn every_reading_command_fails_cleanly() {
+    let dir = folder("readers");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    std::fs::write(
+        dir.join("bad.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 zero\nf 1 2 3\n",
+    )
+    .unwrap();
+    std::fs::write(dir.join("short.stl"), [0u8; 50]).unwrap();
+    // A folder cannot be read as a file: it stands in for an unreadable file,
+    // since permissions do not stop a test run as root.
+    std::fs::create_dir(dir.join("folder.obj")).unwrap();
+    for ext in ["obj", "ply", "off", "png"] {
+        std::fs::create_dir(dir.join(format!("taken.{ext}"))).unwrap();
+    }
+    let before = listing(&dir);
+    let covered: Vec<&str> = READERS.iter().map(|r| r.args[0]).collect();
+    for command in COMMANDS {
+        assert!(
+            covered.contains(&command) || ["demo", "primitive"].contains(&command),
+            "{command} reads a mesh file and is not in READERS"
+        );
+    }
+
+    for reader in &READERS {
+        let command = reader.args[0];
+        let run = |input: &str, output: &str, extra: &[&str]| {
+            let mut args: Vec<&str> = reader
+                .args
+                .iter()
+                .map(|&a| match a {
+                    "IN" => input,
+                    "OUT" => output,
+                    a => a,
+                })
+                .collect();
+            args.extend_from_slice(extra);
+            weft(&dir, &args)
+        };
+        let out_name = |stem: &str| reader.out.map(|ext| format!("{stem}.{ext}"));
+        let out = out_name("out").unwrap_or_default();
+
+        // Success, so that each failure below is the one it names.
+        let o = run("cube.obj", &out, &[]);
+        assert_exit(&o, 0);
+        if reader.out.is_some() {
+            assert!(dir.join(&out).is_file(), "{command}: no {out}");
+            std::fs::remove_file(dir.join(&out)).unwrap();
+        }
+        assert_eq!(listing(&dir), before, "{command}");
+
+        let failures = [
+            ("bad.obj", out.clone(), "bad.obj: line 3: ".to_string()),
+            ("short.stl", out.clone(), "short.stl: byte 50: ".to_string()),
+            (
+                "missing.obj",
+                out.clone(),
+                "missing.obj: cannot read: ".to_string(),
+            ),
+            (
+                "folder.obj",
+                out.clone(),
+                "folder.obj: cannot read: ".to_string(),
+            ),
+        ];
+        let mut failures = failures.to_vec();
+        if let (Some(nowhere), Some(taken)) = (out_name("nowhere/out"), out_name("taken")) {
+            failures.push((
+                "cube.obj",
+                nowhere.clone(),
+                format!("{nowhere}: the folder nowhere does not exist"),
+            ));
+            failures.push((
+                "cube.obj",
+                taken.clone(),
+                format!("{taken}: cannot replace: "),
+            ));
+        }
+        for (input, output, expected) in &failures {
+            let o = run(input, output, &[]);
+            assert_exit(&o, 1);
+            let message = stderr(&o);
+            assert!(
+                message.contains(&format!("weft: error: {expected}")),
+                "{command} {input} {output}: expected {expected:?} in\n{message}"
+            );
+            assert_eq!(
+                listing(&dir),
+                before,
+                "{command} {input} {output} left a file"
+            );
+        }
+        // A missing folder is found before any work: nothing is printed first.
+        if let Some(nowhere) = out_name("nowhere/out") {
+            let o = run("cube.obj", &nowhere, &[]);
+            assert_eq!(stdout(&o), "", "{command}");
+            assert_eq!(stderr(&o).lines().count(), 1, "{command}: {}", stderr(&o));
+        }
+
+        let o = run("cube.obj", &out, reader.bad);
+        assert_exit(&o, 2);
+        let message = stderr(&o);
+        assert!(
+            message.starts_with("error: ") && message.contains(reader.named),
+            "{command} {:?}: {message}",
+            reader.bad
+        );
+        assert_eq!(listing(&dir), before, "{command} {:?}", reader.bad);
+    }
+}
+
+#[test]
+fn primitive_and_demo_outputs_fail_cleanly() {
+    let dir = folder("writers");
+    std::fs::create_dir(dir.join("taken.obj")).unwrap();
+    let before = listing(&dir);
+    for (args, expected) in [
+        (
+            &["primitive", "cube", "nowhere/cube.obj"][..],
+            "nowhere/cube.obj: the folder nowhere does not exist",
+        ),
+        (
+            &["primitive", "cube", "taken.obj"],
+            "taken.obj: cannot replace: ",
+        ),
+        (
+            &["demo", "--out", "nowhere/demo", "--only", "boxes"],
+            "nowhere/demo: cannot create the folder: ",
+        ),
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 1);
+        assert!(
+            stderr(&o).contains(&format!("weft: error: {expected}")),
+            "{args:?}: {}",
+            stderr(&o)
+        );
+        assert_eq!(listing(&dir), before, "{args:?}");
+    }
+    for (args, named) in [
+        (
+            &["primitive", "cube", "c.obj", "--radius", "big"][..],
+            "--radius",
+        ),
+        (&["primitive", "cube", "c.png"], "<OUTPUT>"),
+        (&["demo", "--only", "everything"], "--only"),
+        (&["demo", "--out"], "--out"),
+    ] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 2);
+        assert!(stderr(&o).contains(named), "{args:?}: {}", stderr(&o));
+        assert_eq!(listing(&dir), before, "{args:?}");
+    }
 }
 
 #[test]
@@ -579,6 +970,7 @@ fn demo_writes_every_workflow_with_an_index() {
         "t-nodes-repaired-smooth",
         "voronoi-skin",
         "fading-smooth",
+        "boxes-inner",
         "boxes-culled",
         "boxes-smooth",
         "creases-cage",
@@ -603,7 +995,9 @@ fn demo_writes_every_workflow_with_an_index() {
         assert_eq!((info.info().width, info.info().height), (800, 600));
         pictures += 1;
     }
-    assert_eq!(pictures, 18);
+    assert_eq!(pictures, 19);
+    // Nothing but the summary lines: stderr is not a terminal here.
+    assert_eq!(stderr(&o), "");
     // The cage's OBJ carries its creases: subdividing it again gives the creased block.
     let o = weft(
         &out,
@@ -626,6 +1020,14 @@ fn demo_writes_every_workflow_with_an_index() {
     // The culled boxes are one closed shell; the repaired surfaces one piece.
     let o = weft(&out, &["info", "boxes-culled.obj", "--json"]);
     assert!(stdout(&o).contains("\"closed\": true"), "{}", stdout(&o));
+    // The inner walls shown are one of each twin pair the culling removed.
+    let walls = io::read_mesh(out.join("boxes-inner.obj")).unwrap();
+    let welded = io::read_mesh(out.join("boxes-welded.obj")).unwrap();
+    let culled = io::read_mesh(out.join("boxes-culled.obj")).unwrap();
+    assert_eq!(
+        2 * walls.face_count(),
+        welded.face_count() - culled.face_count()
+    );
     let o = weft(&out, &["info", "t-nodes-repaired-smooth.obj", "--json"]);
     assert!(stdout(&o).contains("\"components\": 1"), "{}", stdout(&o));
 }
@@ -1330,4 +1732,456 @@ fn malformed_uvs_stop_only_the_commands_that_carry_them() {
     assert_exit(&o, 1);
     assert!(stderr(&o).contains("mixed.obj: line 9"), "{}", stderr(&o));
     assert!(!dir.join("smooth.obj").exists());
+}
+
+/// The value after `"key": ` in one-line JSON.
+fn json_number(json: &str, key: &str) -> f64 {
+    let start = json
+        .find(&format!("\"{key}\": "))
+        .unwrap_or_else(|| panic!("no {key} in {json}"))
+        + key.len()
+        + 4;
+    let rest = &json[start..];
+    let end = rest.find([',', '}']).unwrap();
+    rest[..end].parse().unwrap()
+}
+
+#[test]
+fn info_reports_non_manifold_fins_and_vertices() {
+    let dir = folder("info-non-manifold");
+    // A fin: three quads on the edge from (0,0,0) to (0,1,0), whose two
+    // vertices are therefore non-manifold too.
+    std::fs::write(
+        dir.join("fin.obj"),
+        "v 0 0 0\nv 0 1 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 1 0\nv 0 0 1\nv 0 1 1\n\
+         f 1 3 4 2\nf 1 2 6 5\nf 2 1 7 8\n",
+    )
+    .unwrap();
+    // A bow tie: two triangles that share only a vertex.
+    std::fs::write(
+        dir.join("bowtie.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nf 1 2 3\nf 1 4 5\n",
+    )
+    .unwrap();
+
+    let o = weft(&dir, &["info", "fin.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    for expected in [
+        "fin.obj\n",
+        "  faces                 3 (0 triangles, 3 quads, 0 n-gons)\n",
+        "  edges                 10\n",
+        "  naked edges           9\n",
+        "  non-manifold edges    1\n",
+        "  non-manifold vertices 2\n",
+        "  closed                no\n",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+    let o = weft(&dir, &["info", "fin.obj", "--json"]);
+    assert_exit(&o, 0);
+    let json = stdout(&o);
+    assert_eq!(json_number(&json, "non_manifold_edges"), 1.0, "{json}");
+    assert_eq!(json_number(&json, "non_manifold_vertices"), 2.0, "{json}");
+    assert_eq!(json_number(&json, "naked_edges"), 9.0, "{json}");
+    assert!(json.contains("\"closed\": false"), "{json}");
+
+    let o = weft(&dir, &["info", "bowtie.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    assert!(
+        text.contains("  non-manifold edges    0\n  non-manifold vertices 1\n"),
+        "{text}"
+    );
+    let o = weft(&dir, &["info", "bowtie.obj", "--json"]);
+    let json = stdout(&o);
+    assert_eq!(json_number(&json, "non_manifold_edges"), 0.0, "{json}");
+    assert_eq!(json_number(&json, "non_manifold_vertices"), 1.0, "{json}");
+
+    // A closed, manifold mesh has none.
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    let json = stdout(&weft(&dir, &["info", "cube.obj", "--json"]));
+    assert_eq!(json_number(&json, "non_manifold_edges"), 0.0, "{json}");
+    assert_eq!(json_number(&json, "non_manifold_vertices"), 0.0, "{json}");
+}
+
+#[test]
+fn info_reports_planarity() {
+    let dir = folder("info-planarity");
+    // Two unit quads side by side; the first has its corner (0, 1) raised by
+    // 0.2, which puts each of its corners 0.05 from its best-fit plane.
+    std::fs::write(
+        dir.join("bent.obj"),
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.2\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n",
+    )
+    .unwrap();
+    let o = weft(&dir, &["info", "bent.obj"]);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    let line = text
+        .lines()
+        .find(|l| l.trim_start().starts_with("planarity"))
+        .unwrap_or_else(|| panic!("no planarity line in\n{text}"));
+    assert!(
+        line.contains("1 of 2 faces beyond 0.001 of their best-fit plane (largest deviation 5."),
+        "{line}"
+    );
+    let o = weft(&dir, &["info", "bent.obj", "--json"]);
+    assert_exit(&o, 0);
+    let json = stdout(&o);
+    assert!(
+        json.contains("\"planarity\": {\"tolerance\": 0.001, \"non_planar_faces\": 1, "),
+        "{json}"
+    );
+    let deviation = json_number(&json, "max_deviation");
+    assert!((deviation - 0.05).abs() < 1e-3, "{deviation}");
+
+    // Under a looser tolerance the face counts as planar.
+    let o = weft(
+        &dir,
+        &["info", "bent.obj", "--planarity-tolerance", "0.1", "--json"],
+    );
+    assert_exit(&o, 0);
+    let json = stdout(&o);
+    assert_eq!(json_number(&json, "non_planar_faces"), 0.0, "{json}");
+    assert_eq!(json_number(&json, "tolerance"), 0.1, "{json}");
+    let text = stdout(&weft(
+        &dir,
+        &["info", "bent.obj", "--planarity-tolerance", "0.1"],
+    ));
+    assert!(
+        text.contains("0 of 2 faces beyond 0.1 of their best-fit plane"),
+        "{text}"
+    );
+
+    // A flat mesh: no face beyond, and a deviation of 0.
+    io::write_mesh(dir.join("flat.obj"), &shapes::quad_grid(2, 2)).unwrap();
+    let json = stdout(&weft(&dir, &["info", "flat.obj", "--json"]));
+    assert_eq!(json_number(&json, "non_planar_faces"), 0.0, "{json}");
+    assert_eq!(json_number(&json, "max_deviation"), 0.0, "{json}");
+}
+
+#[test]
+fn reroute_rotates_where_each_face_starts() {
+    let dir = folder("reroute");
+    std::fs::write(
+        dir.join("mixed.obj"),
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\nf 1 2 3 4\nf 2 5 3\n",
+    )
+    .unwrap();
+    let input = io::read_mesh(dir.join("mixed.obj")).unwrap();
+    for (shift, quad, triangle) in [
+        ("1", [1, 2, 3, 0], [4, 2, 1]),
+        ("-1", [3, 0, 1, 2], [2, 1, 4]),
+        ("5", [1, 2, 3, 0], [2, 1, 4]),
+        ("0", [0, 1, 2, 3], [1, 4, 2]),
+    ] {
+        let out = format!("shift{shift}.obj");
+        let rerouted = run_and_read(
+            &dir,
+            &["reroute", "mixed.obj", &out, "--shift", shift],
+            &out,
+        );
+        assert_eq!(rerouted.face(0), &quad, "--shift {shift}");
+        assert_eq!(rerouted.face(1), &triangle, "--shift {shift}");
+        // Only the first corner moves: the vertices and the winding stay.
+        assert_eq!(rerouted.positions(), input.positions());
+        assert_same_cycle(rerouted.face(0), input.face(0).to_vec(), 0);
+        assert_same_cycle(rerouted.face(1), input.face(1).to_vec(), 1);
+    }
+    // The default shift is 1.
+    let default = run_and_read(&dir, &["reroute", "mixed.obj", "d.obj"], "d.obj");
+    assert_eq!(default.face(0), &[1, 2, 3, 0]);
+
+    let o = weft(&dir, &["reroute", "mixed.obj", "x.obj", "--shift", "1.5"]);
+    assert_exit(&o, 2);
+    assert!(stderr(&o).contains("'1.5' for '--shift"), "{}", stderr(&o));
+    let o = weft(&dir, &["reroute", "gone.obj", "x.obj"]);
+    assert_exit(&o, 1);
+    assert!(
+        stderr(&o).contains("weft: error: gone.obj: cannot read"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(!dir.join("x.obj").exists());
+}
+
+/// Writes a PNG of `width` × `height` pixels of `colour` type and `depth`
+/// from its samples, row by row from the top.
+fn write_png(
+    path: &Path,
+    (width, height): (u32, u32),
+    colour: png::ColorType,
+    depth: png::BitDepth,
+    samples: &[u8],
+) {
+    let file = std::io::BufWriter::new(std::fs::File::create(path).unwrap());
+    let mut encoder = png::Encoder::new(file, width, height);
+    encoder.set_color(colour);
+    encoder.set_depth(depth);
+    let mut writer = encoder.write_header().unwrap();
+    writer.write_image_data(samples).unwrap();
+}
+
+/// Runs the fading pattern alone into `out`, with `image` when given, and
+/// reads its pyramids.
+fn fading_pyramids(dir: &Path, out: &str, image: Option<&str>) -> weft::Mesh {
+    let mut args = vec!["demo", "--only", "fading", "--out", out];
+    if let Some(image) = image {
+        args.extend(["--image", image]);
+    }
+    let o = weft(dir, &args);
+    assert_exit(&o, 0);
+    let text = stdout(&o);
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines.len(), 4, "three stages and the index: {lines:?}");
+    assert!(lines[1].starts_with("fading-pyramids: "), "{lines:?}");
+    io::read_mesh(dir.join(out).join("fading-pyramids.obj")).unwrap()
+}
+
+/// How far each vertex of `mesh` is from the same vertex of `base`.
+fn moved(mesh: &weft::Mesh, base: &weft::Mesh) -> Vec<f64> {
+    assert_eq!(counts(mesh), counts(base));
+    assert_eq!(mesh.face_sizes(), base.face_sizes());
+    mesh.positions()
+        .iter()
+        .zip(base.positions())
+        .map(|(p, q)| (*p - *q).length())
+        .collect()
+}
+
+/// The fading pattern's pyramids are 0.05 + 0.6 × the picture's value
+/// high (0 black, 1 white), so against an all-black picture every apex
+/// moves by 0.6 × its value along its panel's normal, and nothing else moves.
+#[test]
+fn demo_image_sets_the_fading_heights() {
+    let dir = folder("demo-image");
+    use png::{BitDepth, ColorType};
+    write_png(
+        &dir.join("black.png"),
+        (4, 4),
+        ColorType::Grayscale,
+        BitDepth::Eight,
+        &[0; 16],
+    );
+    // Left half white, right half black.
+    let half: Vec<u8> = (0..2)
+        .flat_map(|_| [255, 255, 255, 255, 0, 0, 0, 0])
+        .collect();
+    write_png(
+        &dir.join("half.png"),
+        (8, 2),
+        ColorType::Grayscale,
+        BitDepth::Eight,
+        &half,
+    );
+
+    let black = fading_pyramids(&dir, "black", Some("black.png"));
+    let built_in = fading_pyramids(&dir, "built-in", None);
+    let halves = fading_pyramids(&dir, "half", Some("half.png"));
+    // The panels do not depend on the picture.
+    for out in ["built-in", "half"] {
+        assert_eq!(
+            io::read_mesh(dir.join(out).join("fading-panels.obj")).unwrap(),
+            io::read_mesh(dir.join("black").join("fading-panels.obj")).unwrap()
+        );
+    }
+    let apexes = 82; // one per diamond panel
+
+    // The built-in gradient rises from left to right: every apex but the
+    // darkest moves, the ones on the right most.
+    let from_black = moved(&built_in, &black);
+    assert_eq!(from_black.iter().filter(|&&d| d > 1e-9).count(), apexes);
+    assert!(from_black.iter().all(|&d| d <= 0.6 + 1e-9));
+
+    // The halves: apexes on the left (x < 4) rise by 0.6, the others stay.
+    let from_black = moved(&halves, &black);
+    let (mut left, mut right) = (0, 0);
+    for (d, p) in from_black.iter().zip(black.positions()) {
+        if *d > 1e-9 {
+            assert!((d - 0.6).abs() < 1e-9 && p.x < 4.0, "{p} moved by {d}");
+            left += 1;
+        } else if p.x > 4.0 {
+            right += 1;
+        }
+    }
+    assert!(left > 30, "{left} apexes on the left rose");
+    assert!(right > 30, "{right} vertices on the right stayed");
+    assert!(moved(&halves, &built_in).iter().any(|&d| d > 0.1));
+
+    // Any PNG is read as luminance (0.2126 R + 0.7152 G + 0.0722 B), alpha
+    // ignored, 16-bit samples rounded to 8; a single pixel covers everything.
+    let green_rgba: Vec<u8> = (0..4).flat_map(|_| [0, 255, 0, 0]).collect();
+    write_png(
+        &dir.join("green.png"),
+        (2, 2),
+        ColorType::Rgba,
+        BitDepth::Eight,
+        &green_rgba,
+    );
+    write_png(
+        &dir.join("white16.png"),
+        (1, 1),
+        ColorType::Grayscale,
+        BitDepth::Sixteen,
+        &[255, 255],
+    );
+    for (image, value) in [("green.png", 0.7152), ("white16.png", 1.0)] {
+        let mesh = fading_pyramids(&dir, image.trim_end_matches(".png"), Some(image));
+        let from_black = moved(&mesh, &black);
+        let risen: Vec<f64> = from_black.iter().copied().filter(|&d| d > 1e-9).collect();
+        assert_eq!(risen.len(), apexes, "{image}");
+        for d in risen {
+            assert!((d - 0.6 * value).abs() < 1e-9, "{image}: {d}");
+        }
+    }
+
+    // A file that is not a whole PNG: exit 1, its name and the problem, and
+    // no folder made.
+    let mut truncated = std::fs::read(dir.join("half.png")).unwrap();
+    truncated.truncate(40);
+    std::fs::write(dir.join("truncated.png"), &truncated).unwrap();
+    std::fs::write(dir.join("text.png"), "P2 2 2 255\n0 0 0 0\n").unwrap();
+    std::fs::create_dir(dir.join("folder.png")).unwrap();
+    for (image, expected) in [
+        ("truncated.png", "truncated.png: "),
+        ("text.png", "text.png: not a PNG picture"),
+        ("missing.png", "missing.png: cannot read"),
+        ("folder.png", "folder.png: "),
+    ] {
+        let o = weft(
+            &dir,
+            &[
+                "demo", "--only", "fading", "--image", image, "--out", "never",
+            ],
+        );
+        assert_exit(&o, 1);
+        assert!(
+            stderr(&o).contains(&format!("weft: error: {expected}")),
+            "{image}: {}",
+            stderr(&o)
+        );
+        assert!(!dir.join("never").exists(), "{image}");
+    }
+}
+
+/// With stderr a pipe, as here, no progress is drawn: stderr holds only the
+/// commands' own messages, however long the work takes.
+#[test]
+fn progress_stays_off_stderr_when_it_is_not_a_terminal() {
+    let dir = folder("progress-pipe");
+    let start = std::time::Instant::now();
+    let o = weft(&dir, &["demo", "--only", "loop,boxes", "--out", "demo"]);
+    assert_exit(&o, 0);
+    assert_eq!(stderr(&o), "", "took {:?}", start.elapsed());
+    assert!(stdout(&o).contains("\nboxes-smooth: "), "{}", stdout(&o));
+
+    io::write_mesh(dir.join("torus.obj"), &shapes::torus(8, 6)).unwrap();
+    let o = weft(
+        &dir,
+        &["subdivide", "torus.obj", "fine.ply", "--levels", "5"],
+    );
+    assert_exit(&o, 0);
+    assert_eq!(stderr(&o), "fine.ply: 49152 vertices, 49152 faces\n");
+}
+
+/// On a terminal (util-linux's `script` gives the command one), work that
+/// takes over half a second shows a bar of k/N workflows and the stage.
+#[test]
+fn progress_shows_a_bar_on_a_terminal() {
+    let dir = folder("progress-terminal");
+    let command = format!(
+        "'{}' demo --only loop,boxes --out demo",
+        env!("CARGO_BIN_EXE_weft")
+    );
+    let start = std::time::Instant::now();
+    let o = Command::new("script")
+        .current_dir(&dir)
+        .args(["-q", "-e", "-c", &command, "/dev/null"])
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("this test needs util-linux's script to run weft on a terminal");
+    let elapsed = start.elapsed();
+    assert_exit(&o, 0);
+    let screen = stdout(&o);
+    // The summary lines are whole, between the bar's redraws.
+    assert!(
+        screen.contains("boxes-smooth: Catmull-Clark level 3 (3200 vertices, 3200 faces)\r\n"),
+        "{screen}"
+    );
+    // A run this long shows the bar; a shorter one (an optimised build on
+    // a fast machine) need not.
+    if elapsed > std::time::Duration::from_secs(1) {
+        assert!(
+            screen.contains("[1/2] ") && screen.contains(" Loop subdivision: loop-"),
+            "{screen}"
+        );
+        assert!(
+            screen.contains("[2/2] ") && screen.contains(" aggregation of boxes: boxes-"),
+            "{screen}"
+        );
+    }
+}
+
+/// `convert` through every format and encoding and back: polygons and f64
+/// coordinates far from the origin survive OBJ, OFF and PLY exactly; STL
+/// (f32 triangles) gives back the triangulated mesh once welded.
+#[test]
+fn convert_round_trips_through_every_format() {
+    let dir = folder("round-trip");
+    let mut mesh = shapes::mixed_polygons();
+    for p in mesh.positions_mut() {
+        *p += weft::DVec3::new(2_500_000.0, -1_000_000.0, 0.1);
+    }
+    io::write_mesh(dir.join("part.obj"), &mesh).unwrap();
+    for (file, options, header) in [
+        ("a.off", &[][..], &b"OFF"[..]),
+        ("b.ply", &[], b"ply\nformat binary_little_endian 1.0"),
+        (
+            "c.ply",
+            &["--big-endian"],
+            b"ply\nformat binary_big_endian 1.0",
+        ),
+        ("d.ply", &["--ascii"], b"ply\nformat ascii 1.0"),
+        ("e.obj", &[], b"#"),
+    ] {
+        let mut args = vec!["convert", "part.obj", file];
+        args.extend_from_slice(options);
+        let o = weft(&dir, &args);
+        assert_exit(&o, 0);
+        let bytes = std::fs::read(dir.join(file)).unwrap();
+        assert!(bytes.starts_with(header), "{file}: {:?}", &bytes[..20]);
+        let back = format!("{file}.obj");
+        let o = weft(&dir, &["convert", file, &back]);
+        assert_exit(&o, 0);
+        assert_eq!(io::read_mesh(dir.join(&back)).unwrap(), mesh, "{file}");
+    }
+
+    let mut cube = shapes::cube();
+    for p in cube.positions_mut() {
+        *p = *p * 4.0 - weft::DVec3::splat(1024.0);
+    }
+    io::write_mesh(dir.join("cube.obj"), &cube).unwrap();
+    for (file, options, header) in [
+        ("f.stl", &[][..], &b""[..]),
+        ("g.stl", &["--ascii"], b"solid"),
+    ] {
+        let mut args = vec!["convert", "cube.obj", file];
+        args.extend_from_slice(options);
+        assert_exit(&weft(&dir, &args), 0);
+        let bytes = std::fs::read(dir.join(file)).unwrap();
+        assert!(bytes.starts_with(header), "{file}");
+        assert_eq!(bytes.starts_with(b"solid"), file == "g.stl", "{file}");
+        let back = format!("{file}.obj");
+        assert_exit(&weft(&dir, &["convert", "--weld", file, &back]), 0);
+        let welded = io::read_mesh(dir.join(&back)).unwrap();
+        assert_eq!(counts(&welded), (8, 12), "{file}");
+        let mut got: Vec<[f64; 3]> = welded.positions().iter().map(|p| p.to_array()).collect();
+        let mut want: Vec<[f64; 3]> = cube.positions().iter().map(|p| p.to_array()).collect();
+        got.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        want.sort_by(|a, b| a.partial_cmp(b).unwrap());
+        assert_eq!(got, want, "{file}");
+        let info = weft::Topology::new(&welded).info(&welded);
+        assert!(info.is_closed && info.is_oriented, "{file}");
+    }
 }

@@ -3,11 +3,8 @@
 //! Exit codes: 0 success, 1 a failed operation (unreadable or malformed
 //! input, an output that cannot be written), 2 bad usage (clap's own code).
 
-use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::mpsc;
-use std::time::{Duration, Instant};
 
 use clap::{Parser, Subcommand, ValueEnum};
 
@@ -15,6 +12,8 @@ use clap::{Parser, Subcommand, ValueEnum};
 mod carry;
 #[path = "weft/demo.rs"]
 mod demo;
+#[path = "weft/progress.rs"]
+mod progress;
 #[path = "weft/toolbar.rs"]
 mod toolbar;
 
@@ -200,16 +199,26 @@ weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaik
     },
     /// Runs the design workflows on built-in inputs: each stage as a mesh
     /// file and a picture, a summary line each, and an index.html.
+    ///
+    /// When stderr is a terminal and the run takes more than half a second,
+    /// a bar there shows which workflow of how many is running, and its stage.
     #[command(
-        after_help = "Example:\n  weft demo --out weft-demo\n  weft demo --image heights.png"
+        after_help = "Examples:\n  weft demo --out weft-demo\n  weft demo --only fading --image heights.png --out fading"
     )]
     Demo {
         /// The folder to write into (created when missing).
         #[arg(long, default_value = "weft-demo")]
         out: PathBuf,
-        /// A grayscale picture for the fading pattern's heights (default: a built-in gradient).
+        /// A picture for the fading pattern's pyramid heights: black low,
+        /// white high, stretched over the panels. Any PNG: colour is read as
+        /// its luminance (0.2126 R + 0.7152 G + 0.0722 B), transparency is
+        /// ignored, 16-bit samples are rounded to 8 (default: a built-in
+        /// gradient).
         #[arg(long, value_parser = png_path)]
         image: Option<PathBuf>,
+        /// Run only these workflows (comma-separated; default: all).
+        #[arg(long, value_enum, value_delimiter = ',')]
+        only: Vec<demo::Workflow>,
     },
     /// Splits every face into triangles (quads along the shorter diagonal,
     /// n-gons by ear clipping); vertices stay as they are.
@@ -346,7 +355,46 @@ fn main() -> ExitCode {
     }
 }
 
+impl Command {
+    /// The files the command writes.
+    fn outputs(&self) -> Vec<&Path> {
+        match self {
+            Command::Render { output, .. }
+            | Command::Subdivide { output, .. }
+            | Command::Weld { output, .. }
+            | Command::CullAdjacent { output, .. }
+            | Command::Flip { output, .. }
+            | Command::Triangulate { output, .. }
+            | Command::Convert { output, .. } => vec![output.as_path()],
+            Command::TNodes { repair, .. } => repair.iter().map(PathBuf::as_path).collect(),
+            // The demo creates its folder, and says so when it cannot.
+            Command::Info { .. } | Command::Demo { .. } => Vec::new(),
+            Command::Toolbar(command) => command.outputs(),
+        }
+    }
+}
+
+/// Fails before any work is done when an output's folder does not exist,
+/// with the message writing it would give.
+fn check_output_folders(command: &Command) -> Result<(), Failure> {
+    for path in command.outputs() {
+        let folder = match path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        if !folder.is_dir() {
+            return Err(IoError::MissingFolder {
+                path: path.to_path_buf(),
+                folder: folder.to_path_buf(),
+            }
+            .into());
+        }
+    }
+    Ok(())
+}
+
 fn run(cli: &Cli) -> Result<(), Failure> {
+    check_output_folders(&cli.command)?;
     match &cli.command {
         Command::Info {
             input,
@@ -577,8 +625,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             }
             Ok(())
         }
-        // Each stage prints its own line as it finishes: that is the progress.
-        Command::Demo { out, image } => demo::run(out, image.as_deref()).map_err(Failure::Failed),
+        Command::Demo { out, image, only } => {
+            demo::run(out, image.as_deref(), only).map_err(Failure::Failed)
+        }
         Command::Triangulate { input, output } => {
             let file = read_file(cli, input)?;
             let triangles = with_progress("triangulating", || carry::triangulate(&file))
@@ -693,38 +742,7 @@ fn report_written(path: &Path, mesh: &Mesh) {
 /// Runs `work`; when it takes longer than half a second and stderr is a
 /// terminal, shows `label` and the time spent until it ends.
 fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {
-    if !std::io::stderr().is_terminal() {
-        return work();
-    }
-    let (done, finished) = mpsc::channel::<()>();
-    std::thread::scope(|scope| {
-        scope.spawn(move || {
-            let start = Instant::now();
-            let frames = ['⠋', '⠙', '⠹', '⠸', '⠼', '⠴', '⠦', '⠧', '⠇', '⠏'];
-            let mut shown = false;
-            let mut frame = 0;
-            while let Err(mpsc::RecvTimeoutError::Timeout) =
-                finished.recv_timeout(Duration::from_millis(100))
-            {
-                let elapsed = start.elapsed();
-                if elapsed >= Duration::from_millis(500) {
-                    eprint!(
-                        "\r{} {label}… {:.1} s ",
-                        frames[frame % frames.len()],
-                        elapsed.as_secs_f64()
-                    );
-                    frame += 1;
-                    shown = true;
-                }
-            }
-            if shown {
-                eprint!("\r\x1b[2K");
-            }
-        });
-        let result = work();
-        let _ = done.send(());
-        result
-    })
+    progress::with_spinner(label, work)
 }
 
 /// What `weft info` reports.

@@ -2,8 +2,11 @@
 //! operations on built-in inputs, written as mesh files and pictures with an
 //! `index.html` that shows them all.
 
+use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
+
+use clap::ValueEnum;
 
 use weft::io::render::{self, RenderOptions};
 use weft::io::{self, IoError};
@@ -14,6 +17,41 @@ use weft::subdivide::{
     Subdivider, SubdivisionOptions, SHARPNESS_INFINITE,
 };
 use weft::{DVec3, Error, Mesh};
+
+use super::progress::{self, Steps};
+
+/// The workflows of the demo, in the order they run.
+#[derive(Clone, Copy, PartialEq, Eq, ValueEnum)]
+pub enum Workflow {
+    /// Loop levels 1-3 in each naked-edge mode, and a mesh with a hole.
+    Loop,
+    /// Three surface meshes, one flipped: join, weld, Catmull-Clark.
+    Surfaces,
+    /// Mismatched U/V counts: T-nodes found and repaired.
+    TNodes,
+    /// Voronoi cells, a pyramid per cell, Catmull-Clark.
+    Voronoi,
+    /// Diamond panels with pyramids whose heights come from a picture.
+    Fading,
+    /// An aggregation of boxes: join, weld, cull the inner faces.
+    Boxes,
+    /// A block without and with creases, colours and UVs carried.
+    Creases,
+}
+
+impl Workflow {
+    fn title(self) -> &'static str {
+        match self {
+            Workflow::Loop => "Loop subdivision",
+            Workflow::Surfaces => "surfaces joined and welded",
+            Workflow::TNodes => "T-nodes",
+            Workflow::Voronoi => "Voronoi skin",
+            Workflow::Fading => "fading pattern",
+            Workflow::Boxes => "aggregation of boxes",
+            Workflow::Creases => "creases",
+        }
+    }
+}
 
 /// A grayscale picture sampled by the fading pattern, values 0 (black) to 1.
 pub struct Gray {
@@ -100,9 +138,10 @@ struct Section {
 }
 
 /// Writes each stage's mesh and picture and remembers them for the index.
-struct Demo {
+struct Demo<'a> {
     dir: PathBuf,
     sections: Vec<Section>,
+    progress: &'a mut Steps,
 }
 
 /// A failure of the demo, as the message to show.
@@ -116,7 +155,7 @@ fn file<T>(result: Result<T, IoError>) -> Step<T> {
     result.map_err(|e| e.to_string())
 }
 
-impl Demo {
+impl Demo<'_> {
     fn section(&mut self, title: &'static str) {
         self.sections.push(Section {
             title,
@@ -131,6 +170,7 @@ impl Demo {
     /// As [`Demo::save`], with the colours, UVs and creases the OBJ carries.
     fn save_file(&mut self, name: &str, caption: &str, carried: &io::MeshFile) -> Step<()> {
         let mesh = &carried.mesh;
+        self.progress.stage(name);
         file(io::write_mesh_file(
             self.dir.join(format!("{name}.obj")),
             carried,
@@ -145,11 +185,11 @@ impl Demo {
             },
         )?;
         file(image.save_png(self.dir.join(format!("{name}.png"))))?;
-        println!(
+        self.progress.println(&format!(
             "{name}: {caption} ({} vertices, {} faces)",
             mesh.vertex_count(),
             mesh.face_count()
-        );
+        ));
         self.sections
             .last_mut()
             .expect("a section is open")
@@ -163,7 +203,8 @@ impl Demo {
 
     /// Shows a stage already saved once more, in the current section.
     fn reuse(&mut self, name: &str, caption: &str) {
-        println!("{name}: {caption} (shown above)");
+        self.progress
+            .println(&format!("{name}: {caption} (shown above)"));
         self.sections
             .last_mut()
             .expect("a section is open")
@@ -186,7 +227,7 @@ impl Demo {
              code { font-size: 0.85em; color: #666; }\n\
              </style>\n</head>\n<body>\n<h1>Weft demo</h1>\n\
              <p>Each picture is a mesh written beside it (<code>.obj</code>). Front faces are \
-             blue-grey, back faces orange.</p>\n",
+             blue-grey, back faces orange, naked edges red.</p>\n",
         );
         for section in &self.sections {
             let _ = writeln!(
@@ -263,30 +304,47 @@ impl Random {
     }
 }
 
-/// Runs every workflow into `dir` (created when missing, its parent must exist).
-pub fn run(dir: &Path, image: Option<&Path>) -> Step<()> {
-    if !dir.is_dir() {
-        std::fs::create_dir(dir)
-            .map_err(|e| format!("{}: cannot create the folder: {e}", dir.display()))?;
-    }
+/// Runs the workflows `only` names (all when empty) into `dir` (created when
+/// missing, its parent must exist), with a bar of the workflows on stderr
+/// when it is a terminal.
+pub fn run(dir: &Path, image: Option<&Path>, only: &[Workflow]) -> Step<()> {
     let gray = match image {
         Some(path) => Gray::read(path)?,
         None => Gray::built_in(),
     };
-    let mut demo = Demo {
-        dir: dir.to_path_buf(),
-        sections: Vec::new(),
-    };
-    loop_levels(&mut demo)?;
-    surfaces(&mut demo)?;
-    t_nodes(&mut demo)?;
-    voronoi_skin(&mut demo)?;
-    fading_pattern(&mut demo, &gray)?;
-    boxes(&mut demo)?;
-    creases(&mut demo)?;
-    demo.write_index()?;
-    println!("index: {}", dir.join("index.html").display());
-    Ok(())
+    if !dir.is_dir() {
+        std::fs::create_dir(dir)
+            .map_err(|e| format!("{}: cannot create the folder: {e}", dir.display()))?;
+    }
+    let chosen: Vec<Workflow> = Workflow::value_variants()
+        .iter()
+        .copied()
+        .filter(|w| only.is_empty() || only.contains(w))
+        .collect();
+    progress::with_steps(chosen.len(), |steps| {
+        let mut demo = Demo {
+            dir: dir.to_path_buf(),
+            sections: Vec::new(),
+            progress: steps,
+        };
+        for &workflow in &chosen {
+            demo.progress.start(workflow.title());
+            match workflow {
+                Workflow::Loop => loop_levels(&mut demo)?,
+                Workflow::Surfaces => surfaces(&mut demo)?,
+                Workflow::TNodes => t_nodes(&mut demo)?,
+                Workflow::Voronoi => voronoi_skin(&mut demo)?,
+                Workflow::Fading => fading_pattern(&mut demo, &gray)?,
+                Workflow::Boxes => boxes(&mut demo)?,
+                Workflow::Creases => creases(&mut demo)?,
+            }
+        }
+        demo.progress.note("writing index.html");
+        demo.write_index()?;
+        demo.progress
+            .println(&format!("index: {}", dir.join("index.html").display()));
+        Ok(())
+    })
 }
 
 fn loop_levels(demo: &mut Demo) -> Step<()> {
@@ -412,7 +470,8 @@ fn t_nodes(demo: &mut Demo) -> Step<()> {
     )?;
     demo.save(
         "t-nodes-unrepaired-smooth",
-        "Catmull-Clark level 2 without repair: the seams are boundaries and open",
+        "Catmull-Clark level 2 without repair: the seams stay naked edges (red), three \
+         surfaces smoothed side by side, not one",
         &cracked,
     )?;
     let (repaired, inserted) = op(
@@ -426,7 +485,8 @@ fn t_nodes(demo: &mut Demo) -> Step<()> {
     demo.save(
         "t-nodes-repaired-smooth",
         &format!(
-            "{inserted} T-nodes inserted into their edges, then Catmull-Clark level 2: one surface"
+            "{inserted} T-nodes inserted into their edges, then Catmull-Clark level 2: one \
+             surface, no seams left"
         ),
         &smooth,
     )?;
@@ -568,11 +628,25 @@ fn boxes(demo: &mut Demo) -> Step<()> {
         &format!("{} boxes joined and welded", cells.len()),
         &welded,
     )?;
+    // The walls inside, hidden from outside: one face of each twin pair.
+    let walls = inner_walls(&welded)?;
     let (culled, removed) = weft::cull::cull_adjacent(&welded);
     let (culled, _) = weft::weld::remove_unused_vertices(&culled);
     demo.save(
+        "boxes-inner",
+        &format!(
+            "inside them, {} walls between touching boxes, each two twin faces: the {removed} \
+             faces that culling removes",
+            walls.face_count()
+        ),
+        &walls,
+    )?;
+    demo.save(
         "boxes-culled",
-        &format!("{removed} inner faces culled: one closed shell"),
+        &format!(
+            "culled: only the outside is left, one closed shell of {} faces",
+            culled.face_count()
+        ),
         &culled,
     )?;
     let smooth = op(
@@ -581,6 +655,40 @@ fn boxes(demo: &mut Demo) -> Step<()> {
     )?;
     demo.save("boxes-smooth", "Catmull-Clark level 3", &smooth)?;
     Ok(())
+}
+
+/// One face of every set of faces on the same vertices: the walls between
+/// joined boxes, shown once each, by the copy that faces the pictures'
+/// three-quarter view from the front, right and above.
+fn inner_walls(mesh: &Mesh) -> Step<Mesh> {
+    let toward_viewer = DVec3::new(0.95, -1.45, 1.05);
+    let mut copies: HashMap<Vec<u32>, Vec<usize>> = HashMap::new();
+    for (f, face) in mesh.faces().enumerate() {
+        let mut key = face.to_vec();
+        key.sort_unstable();
+        copies.entry(key).or_default().push(f);
+    }
+    let mut shown: Vec<usize> = copies
+        .values()
+        .filter(|faces| faces.len() > 1)
+        .map(|faces| {
+            faces
+                .iter()
+                .copied()
+                .find(|&f| weft::analysis::face_normal(mesh, f).dot(toward_viewer) > 0.0)
+                .unwrap_or(faces[0])
+        })
+        .collect();
+    shown.sort_unstable();
+    let walls = op(
+        "inner walls",
+        Mesh::from_polygons(
+            mesh.positions().to_vec(),
+            shown.iter().map(|&f| mesh.face(f)),
+        )
+        .map_err(Error::from),
+    )?;
+    Ok(weft::weld::remove_unused_vertices(&walls).0)
 }
 
 /// An L-shaped block of three cubes (joined, welded, inner faces culled),

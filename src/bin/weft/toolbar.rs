@@ -1,5 +1,5 @@
 //! The `weft` commands of Weaverbird's toolbar: linear subdivisions,
-//! smoothing, offsets and insets, bevels, dual, stellate, tile, and the
+//! smoothing, offsets and insets, bevels, dual, reroute, stellate, tile, and the
 //! Define panel's primitives. Each reads a mesh file (or, for `primitive`,
 //! builds one), runs one library operation and writes the result.
 
@@ -253,6 +253,24 @@ pub(crate) enum ToolbarCommand {
         #[arg(long)]
         keep_size: bool,
     },
+    /// Makes each face start --shift corners later (Weaverbird's Reroute
+    /// Faces).
+    ///
+    /// [a, b, c, d] shifted by 1 is [b, c, d, a]. The winding, the vertices
+    /// and the order of the faces stay; only which corner comes first
+    /// changes, which is what a definition reading each face's first vertex
+    /// sees.
+    #[command(
+        after_help = "Examples:\n  weft reroute panels.obj rerouted.obj --shift 1\n  weft reroute panels.obj back.obj --shift -1"
+    )]
+    Reroute {
+        #[command(flatten)]
+        files: InOut,
+        /// How many corners later each face starts (negative: earlier); it
+        /// wraps around each face.
+        #[arg(long, default_value_t = 1, allow_negative_numbers = true)]
+        shift: i64,
+    },
     /// Raises a pyramid on every face: an apex above its centroid along its
     /// normal and a fan of triangles (Weaverbird's Stellate/Cumulation).
     #[command(after_help = "Example:\n  weft stellate cells.obj spikes.obj --height -0.3")]
@@ -425,6 +443,34 @@ fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Option<Mesh>> {
     Ok(Some(triangulated))
 }
 
+impl ToolbarCommand {
+    /// The file the command writes.
+    pub(crate) fn outputs(&self) -> Vec<&Path> {
+        use ToolbarCommand::*;
+        match self {
+            SplitPolygons { files, .. }
+            | SplitTriangles { files, .. }
+            | QuadSplit { files, .. }
+            | Midedge { files, .. }
+            | InnerPolygons { files, .. }
+            | Sierpinski { files, .. }
+            | Carpet { files, .. }
+            | Smooth { files, .. }
+            | Offset { files, .. }
+            | Thicken { files, .. }
+            | Window { files, .. }
+            | Frame { files, .. }
+            | BevelEdges { files, .. }
+            | BevelVertices { files, .. }
+            | Dual { files, .. }
+            | Reroute { files, .. }
+            | Stellate { files, .. }
+            | Tile { files, .. } => vec![files.output.as_path()],
+            Primitive { output, .. } => vec![output.as_path()],
+        }
+    }
+}
+
 pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
     use weft::{extract, split, transform};
     match command {
@@ -531,6 +577,9 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                 DualMode::VertexAverage
             };
             extract::dual(m, mode)
+        }),
+        ToolbarCommand::Reroute { files, shift } => apply(cli, files, "reroute", |m| {
+            Ok(extract::reroute_faces(m, *shift))
         }),
         ToolbarCommand::Stellate { files, height } => apply(cli, files, "stellate", |m| {
             weft::stellate::stellate(m, Heights::One(*height))
