@@ -853,6 +853,8 @@ void weft_cells_free(struct WeftCells *cells);
  *
  * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
  * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+ * The counts are checked before `points` is read; more than 2^31 − 1
+ * points fail with WEFT_STATUS_INPUT_TOO_LARGE.
  *
  * # Safety
  * `points` holds the doubles stated; `out_mesh` is writable.
@@ -1198,7 +1200,8 @@ const char *weft_last_error_message(void);
  * Fails with WEFT_STATUS_INDEX_OUT_OF_RANGE, WEFT_STATUS_FACE_TOO_SMALL,
  * WEFT_STATUS_REPEATED_INDEX, WEFT_STATUS_NON_FINITE_COORDINATE,
  * WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
- * that names the face, corner or vertex.
+ * that names the face, corner or vertex. A vertex, face or index count past
+ * 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
  *
  * # Safety
  * Each non-NULL buffer must hold the number of elements stated.

@@ -245,8 +245,7 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
     capacity: usize,
 ) -> WeftStatus {
     guard(|| {
-        let out = output_slice(out_data, capacity, "out_data")?;
-        let data = input_slice(data, data_len, "data")?;
+        // The lengths are checked against the mesh before either buffer is viewed.
         let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
         if width == 0 {
             return Err(Failure::invalid_argument(
@@ -265,6 +264,8 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
         }
         let needed = subdivider.vertex_count().saturating_mul(width);
         check_room("out_data", capacity, needed)?;
+        let data = input_slice(data, data_len, "data")?;
+        let out = output_slice(out_data, capacity, "out_data")?;
         subdivider.vertex_data_into(data, width, &mut out[..needed])?;
         Ok(())
     })
@@ -307,7 +308,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
     capacity: usize,
 ) -> WeftStatus {
     guard(|| {
-        let out = output_slice(out_values, capacity, "out_values")?;
         let linear = face_varying_arg(face_varying_linear)?;
         if width == 0 {
             return Err(Failure::invalid_argument(
@@ -320,8 +320,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 "value_count * width is too large",
             )
         })?;
-        let values = input_slice(values, value_len, "values")?;
-        let indices = input_slice(value_indices, index_count, "value_indices")?;
         let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
         if index_count != mesh.index_count() {
             return Err(Failure::new(
@@ -332,6 +330,12 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 ),
             ));
         }
+        let needed = subdivider.face_indices().len().saturating_mul(width);
+        check_room("out_values", capacity, needed)?;
+        // Only now, with every length checked, are the buffers viewed.
+        let values = input_slice(values, value_len, "values")?;
+        let indices = input_slice(value_indices, index_count, "value_indices")?;
+        let out = output_slice(out_values, capacity, "out_values")?;
         if let Some(c) = indices.iter().position(|&i| i as usize >= value_count) {
             return Err(Failure::new(
                 WeftStatus::IndexOutOfRange,
@@ -341,8 +345,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 ),
             ));
         }
-        let needed = subdivider.face_indices().len().saturating_mul(width);
-        check_room("out_values", capacity, needed)?;
         let refined = subdivider.face_varying(values, width, indices, linear)?;
         out[..needed].copy_from_slice(&refined);
         Ok(())
@@ -380,15 +382,15 @@ pub unsafe extern "C" fn weft_subdivide_limit(
 ) -> WeftStatus {
     guard(|| {
         let positions = out_param(out_positions, "out_positions")?;
+        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+        let needed = subdivider.vertex_count().saturating_mul(3);
+        check_room("out_positions", capacity, needed)?;
         let positions = output_slice(positions, capacity, "out_positions")?;
         let normals = if out_normals.is_null() {
             None
         } else {
             Some(output_slice(out_normals, capacity, "out_normals")?)
         };
-        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
-        let needed = subdivider.vertex_count().saturating_mul(3);
-        check_room("out_positions", capacity, needed)?;
         let (limit_positions, limit_normals) = subdivider.limit_positions_and_normals()?;
         write_points(&limit_positions, positions);
         if let Some(normals) = normals {
