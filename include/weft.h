@@ -673,6 +673,8 @@ WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSub
  * welding and has two faces after, and every edge whose faces' normals
  * differ by more than `angle_degrees` (180 or more: no fold test). Pass the
  * pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+ * `weft_crease_edges_from_mesh_ex` also gives which welded vertex each
+ * input vertex became.
  *
  * `mesh` must not be NULL. `angle_degrees` must be 0 or more.
  * `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
@@ -690,6 +692,30 @@ WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSub
  * writable indices; the other outputs are NULL or writable.
  */
 WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count);
+
+/**
+ * As `weft_crease_edges_from_mesh`, and gives the vertex map of the weld:
+ * for each vertex of `mesh`, the index of the vertex of the welded mesh it
+ * became (the first of the vertices at its position). With it a host
+ * carries per-vertex data given on the input (colours, weights, its own
+ * creases and corners) onto the welded mesh: welded vertex
+ * `out_vertex_map[v]` takes vertex `v`'s value.
+ *
+ * `mesh`, `angle_degrees`, `out_welded`, `out_pairs`, `capacity` and
+ * `out_crease_count` as `weft_crease_edges_from_mesh`.
+ * `out_vertex_map` has room for `vertex_map_capacity` indices and receives
+ * one per vertex of `mesh`: it needs `weft_mesh_vertex_count(mesh)`, else
+ * the call fails with WEFT_STATUS_BUFFER_TOO_SMALL (checked before any
+ * work is done). It may be NULL only when `vertex_map_capacity` is 0.
+ * Nothing is written on failure.
+ *
+ * Fails as `weft_crease_edges_from_mesh`.
+ *
+ * # Safety
+ * As `weft_crease_edges_from_mesh`; `out_vertex_map` is NULL or holds
+ * `vertex_map_capacity` writable indices.
+ */
+WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
 
 /**
  * Triangulates points by the Delaunay criterion of their projections onto
@@ -853,6 +879,8 @@ void weft_cells_free(struct WeftCells *cells);
  *
  * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
  * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+ * The counts are checked before `points` is read; more than 2^31 − 1
+ * points fail with WEFT_STATUS_INPUT_TOO_LARGE.
  *
  * # Safety
  * `points` holds the doubles stated; `out_mesh` is writable.
@@ -1198,7 +1226,8 @@ const char *weft_last_error_message(void);
  * Fails with WEFT_STATUS_INDEX_OUT_OF_RANGE, WEFT_STATUS_FACE_TOO_SMALL,
  * WEFT_STATUS_REPEATED_INDEX, WEFT_STATUS_NON_FINITE_COORDINATE,
  * WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
- * that names the face, corner or vertex.
+ * that names the face, corner or vertex. A vertex, face or index count past
+ * 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
  *
  * # Safety
  * Each non-NULL buffer must hold the number of elements stated.

@@ -259,6 +259,71 @@ mod tests {
     }
 
     #[test]
+    fn newell_normal_of_a_skew_quad_is_along_its_area_vector() {
+        // A quad whose corner D lies well off the plane of A, B, C.
+        let corners = [
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(3.0, 0.0, 1.0),
+            DVec3::new(4.0, 2.0, -1.0),
+            DVec3::new(1.0, 3.0, 2.0),
+        ];
+        let [a, b, c, d] = corners;
+        let plane = (b - a).cross(c - a).normalize();
+        assert!((d - a).dot(plane).abs() > 1.0, "the quad is not planar");
+        let mesh = Mesh::from_polygons(corners.to_vec(), [[0u32, 1, 2, 3]]).unwrap();
+        let normal = face_normals(&mesh)[0];
+        // A quad's area vector is half the cross product of its diagonals,
+        // whichever way it is bent.
+        let expected = (c - a).cross(d - b).normalize();
+        assert!(normal.distance(expected) < 1e-15, "{normal} {expected}");
+        assert!((normal.length() - 1.0).abs() < 1e-15);
+        // The normal of a corner's triangle is not the face's: at A and at C
+        // the two halves of the quad tilt apart by a wide angle.
+        let at_a = (b - a).cross(d - a).normalize();
+        let at_c = (d - c).cross(b - c).normalize();
+        assert!(at_a.dot(at_c) < 0.9);
+        assert!(normal.dot(at_a) < 0.99 && normal.dot(at_c) < 0.99);
+    }
+
+    #[test]
+    fn newell_normal_of_a_concave_non_planar_hexagon() {
+        // An L-shaped hexagon over the XY plane (area 3, reflex corner at
+        // (1, 1)) whose heights alternate 0, 1: it is not planar, yet its
+        // shadows on the YZ and ZX planes enclose no area, so its area
+        // vector is exactly (0, 0, 3).
+        let l_shape = [
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.0, 1.0),
+            DVec3::new(2.0, 1.0, 0.0),
+            DVec3::new(1.0, 1.0, 1.0),
+            DVec3::new(1.0, 2.0, 0.0),
+            DVec3::new(0.0, 2.0, 1.0),
+        ];
+        let polygon = [[0u32, 1, 2, 3, 4, 5]];
+        let mesh = Mesh::from_polygons(l_shape.to_vec(), polygon).unwrap();
+        assert!(
+            planarity_deviations(&mesh)[0] > 0.1,
+            "the hexagon is not planar"
+        );
+        assert_eq!(area_vector(&mesh, 0), DVec3::new(0.0, 0.0, 3.0));
+        assert_eq!(face_normals(&mesh)[0], DVec3::Z);
+        // The cross product at the reflex corner points the other way.
+        let [_, _, p2, p3, p4, _] = l_shape;
+        assert!((p3 - p2).cross(p4 - p3).z < 0.0);
+
+        // Turned and moved far from the origin, the normal turns with it.
+        let turn = glam::DQuat::from_axis_angle(DVec3::new(1.0, -2.0, 0.5).normalize(), 1.1);
+        let far = DVec3::new(3.0e5, -2.0e5, 1.0e5);
+        let moved: Vec<DVec3> = l_shape.iter().map(|&p| turn * p + far).collect();
+        let mesh = Mesh::from_polygons(moved, polygon).unwrap();
+        let normal = face_normals(&mesh)[0];
+        let expected = turn * DVec3::Z;
+        assert!(normal.distance(expected) < 1e-9, "{normal} {expected}");
+        assert!((normal.length() - 1.0).abs() < 1e-15);
+        assert!((area_vector(&mesh, 0).length() - 3.0).abs() < 1e-9);
+    }
+
+    #[test]
     fn vertex_normal_of_a_cube_corner_is_the_diagonal() {
         let normals = vertex_normals(&shapes::cube());
         let expected = DVec3::splat(-1.0).normalize();

@@ -7,6 +7,37 @@ use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 use crate::plane::check_points;
 
+/// The checks of [`mesh_from_grid`] on the counts alone (the C ABI makes
+/// them before it views the caller's buffer of points).
+pub(crate) fn check_grid_counts(
+    point_count: usize,
+    u_count: usize,
+    v_count: usize,
+    closed_u: bool,
+    closed_v: bool,
+) -> Result<()> {
+    if u_count < 2 || v_count < 2 {
+        return Err(Error::InvalidArgument(format!(
+            "a grid needs at least 2 points in each direction; u_count is {u_count} and v_count is {v_count}"
+        )));
+    }
+    let expected = u_count.checked_mul(v_count);
+    if expected != Some(point_count) {
+        return Err(Error::InvalidArgument(format!(
+            "{point_count} points were given but a grid of u_count × v_count = {u_count} × {v_count} needs {}",
+            expected.map_or("more than memory can hold".to_string(), |n| n.to_string())
+        )));
+    }
+    for (closed, name, count) in [(closed_u, "u", u_count), (closed_v, "v", v_count)] {
+        if closed && count < 3 {
+            return Err(Error::InvalidArgument(format!(
+                "a grid closed in {name} needs at least 3 points in {name}; {name}_count is {count}"
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// Connects a `u_count × v_count` grid of points into quads, or triangles.
 ///
 /// Point `(u, v)` is `points[v * u_count + u]`: u runs fastest, one row of
@@ -36,26 +67,7 @@ pub fn mesh_from_grid(
     closed_v: bool,
     triangulate: bool,
 ) -> Result<Mesh> {
-    if u_count < 2 || v_count < 2 {
-        return Err(Error::InvalidArgument(format!(
-            "a grid needs at least 2 points in each direction; u_count is {u_count} and v_count is {v_count}"
-        )));
-    }
-    let expected = u_count.checked_mul(v_count);
-    if expected != Some(points.len()) {
-        return Err(Error::InvalidArgument(format!(
-            "{} points were given but a grid of u_count × v_count = {u_count} × {v_count} needs {}",
-            points.len(),
-            expected.map_or("more than memory can hold".to_string(), |n| n.to_string())
-        )));
-    }
-    for (closed, name, count) in [(closed_u, "u", u_count), (closed_v, "v", v_count)] {
-        if closed && count < 3 {
-            return Err(Error::InvalidArgument(format!(
-                "a grid closed in {name} needs at least 3 points in {name}; {name}_count is {count}"
-            )));
-        }
-    }
+    check_grid_counts(points.len(), u_count, v_count, closed_u, closed_v)?;
     check_points(points, "point")?;
     let quads_u = if closed_u { u_count } else { u_count - 1 };
     let quads_v = if closed_v { v_count } else { v_count - 1 };

@@ -293,25 +293,36 @@ fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
         .min_by_key(|&(_, second)| second)
 }
 
+/// Checks the vertex, face and index counts of a mesh to be built against
+/// [`MAX_ELEMENTS`], from the counts alone: the C ABI calls it before it
+/// views a caller's buffers, so a count past the cap never becomes a slice.
+pub(crate) fn check_element_counts(
+    vertex_count: usize,
+    face_count: usize,
+    index_count: usize,
+) -> Result<(), MeshError> {
+    for (what, count) in [
+        ("vertex", vertex_count),
+        ("index", index_count),
+        ("face", face_count),
+    ] {
+        if count as u64 > MAX_ELEMENTS {
+            return Err(MeshError::TooLarge {
+                what,
+                count: count as u64,
+                limit: MAX_ELEMENTS,
+            });
+        }
+    }
+    Ok(())
+}
+
 fn check_counts(
     vertex_count: usize,
     face_sizes: &[u32],
     index_count: usize,
 ) -> Result<(), MeshError> {
-    if vertex_count as u64 > MAX_ELEMENTS {
-        return Err(MeshError::TooLarge {
-            what: "vertex",
-            count: vertex_count as u64,
-            limit: MAX_ELEMENTS,
-        });
-    }
-    if index_count as u64 > MAX_ELEMENTS {
-        return Err(MeshError::TooLarge {
-            what: "index",
-            count: index_count as u64,
-            limit: MAX_ELEMENTS,
-        });
-    }
+    check_element_counts(vertex_count, face_sizes.len(), index_count)?;
     let sum: u64 = face_sizes.iter().map(|&s| s as u64).sum();
     if sum != index_count as u64 {
         return Err(MeshError::CountMismatch { sum, index_count });

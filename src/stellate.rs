@@ -23,6 +23,18 @@ pub(crate) fn newell_normal_and_centroid(corners: &[DVec3]) -> (DVec3, DVec3) {
     (newell_vector(corners).normalize_or_zero(), centroid)
 }
 
+/// Checks that a per-face height list of `count` values suits a mesh of
+/// `face_count` faces, from its length alone (the C ABI checks it before it
+/// views the caller's buffer).
+pub(crate) fn check_height_count(count: usize, face_count: usize) -> Result<()> {
+    if count != face_count {
+        return Err(Error::InvalidArgument(format!(
+            "{count} heights were given for a mesh of {face_count} faces; give one per face"
+        )));
+    }
+    Ok(())
+}
+
 /// Raises a pyramid on every face: a new vertex at the face's centroid (the
 /// average of its corners) moved along its Newell normal by the face's
 /// height (negative heights go behind the face), and a fan of triangles
@@ -42,12 +54,7 @@ pub(crate) fn newell_normal_and_centroid(corners: &[DVec3]) -> (DVec3, DVec3) {
 pub fn stellate(mesh: &Mesh, heights: Heights) -> Result<Mesh> {
     let face_count = mesh.face_count();
     if let Heights::PerFace(list) = heights {
-        if list.len() != face_count {
-            return Err(Error::InvalidArgument(format!(
-                "{} heights were given for a mesh of {face_count} faces; give one per face",
-                list.len()
-            )));
-        }
+        check_height_count(list.len(), face_count)?;
     }
     let height = |f: usize| match heights {
         Heights::One(h) => h,

@@ -341,6 +341,23 @@ impl Topology {
         (component, count as usize)
     }
 
+    /// Whether each connected component (numbered as by
+    /// [`Topology::face_components`]) is closed: none of its edges is naked
+    /// or non-manifold. [`MeshInfo::is_closed`] is true exactly when every
+    /// component is closed and there is at least one.
+    pub fn component_closed(&self) -> Vec<bool> {
+        let (face_component, component_count) = self.face_components();
+        let mut closed = vec![true; component_count];
+        for e in 0..self.edge_count() {
+            if self.edge_face_count(e) != 2 {
+                // All faces on an edge are in one component: its first face's.
+                let face = self.corner_faces[self.edge_corners(e)[0] as usize];
+                closed[face_component[face as usize] as usize] = false;
+            }
+        }
+        closed
+    }
+
     /// Number of faces.
     pub fn face_count(&self) -> usize {
         self.corner_faces.last().map_or(0, |&f| f as usize + 1)
@@ -539,6 +556,41 @@ mod tests {
         let info = Topology::new(&strip).info(&strip);
         assert!(!info.is_orientable);
         assert_eq!(info.naked_edge_count, 16);
+    }
+
+    #[test]
+    fn closed_is_told_per_component() {
+        let cube = shapes::cube();
+        let grid = shapes::quad_grid(3, 2);
+        let fin = shapes::fin();
+        // Components are numbered by their first face: the order of the parts.
+        for (parts, expected) in [
+            (vec![&cube, &grid], vec![true, false]),
+            (vec![&grid, &cube], vec![false, true]),
+            (vec![&cube, &fin, &cube], vec![true, false, true]),
+        ] {
+            let mesh = crate::weld::join(&parts).unwrap();
+            let topology = Topology::new(&mesh);
+            assert_eq!(topology.component_closed(), expected);
+            let (faces, count) = topology.face_components();
+            assert_eq!(count, expected.len());
+            // The cube's faces all lie in one closed component.
+            let first_cube = if std::ptr::eq(parts[0], &cube) {
+                0
+            } else {
+                grid.face_count()
+            };
+            assert!(expected[faces[first_cube] as usize]);
+            // The whole mesh is not closed, though one piece is.
+            assert!(!topology.info(&mesh).is_closed);
+        }
+        // A mesh of closed pieces only is closed, piece by piece and as a whole.
+        let two_cubes = crate::weld::join(&[&cube, &cube]).unwrap();
+        let topology = Topology::new(&two_cubes);
+        assert_eq!(topology.component_closed(), vec![true, true]);
+        assert!(topology.info(&two_cubes).is_closed);
+        // No faces, no components.
+        assert!(Topology::new(&Mesh::empty()).component_closed().is_empty());
     }
 
     #[test]

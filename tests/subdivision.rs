@@ -286,9 +286,24 @@ fn too_many_levels_is_an_error_not_an_abort() {
     let start = std::time::Instant::now();
     let err = catmull_clark(&shapes::cube(), 16, NakedEdges::Smooth).unwrap_err();
     assert!(matches!(err, Error::ResultTooLarge(_)));
-    assert!(err.to_string().contains("level 14"), "{err}");
+    // The sentence says how many levels were asked for, which one passes
+    // the cap, and how many would fit.
+    let message = err.to_string();
+    assert!(
+        message.contains("16 levels of subdivision: level 14 would make 1610612736 faces"),
+        "{message}"
+    );
+    assert!(message.contains("use at most 13 levels"), "{message}");
+    // Level 13 is indeed within the cap (counted, not built).
+    let counts = refined_counts(&shapes::cube(), Scheme::CatmullClark, 13).unwrap();
+    assert_eq!(counts.face_count, 6 * 4usize.pow(13));
     let err = loop_subdivision(&shapes::icosahedron(), u32::MAX, NakedEdges::Smooth).unwrap_err();
     assert!(matches!(err, Error::ResultTooLarge(_)));
+    assert!(
+        err.to_string()
+            .contains("4294967295 levels of subdivision: level 13 would make 1342177280 faces"),
+        "{err}"
+    );
     assert!(start.elapsed().as_secs() < 2);
 }
 

@@ -207,12 +207,39 @@ namespace Weft
         /// <exception cref="WeftException"><see cref="WeftStatus.InvalidArgument"/> for a NaN or negative angle.</exception>
         public static WeftMesh CreaseEdgesFromMesh(WeftMesh mesh, double angleDegrees, out uint[] creaseVertexPairs)
         {
+            return CreaseEdges(mesh, angleDegrees, out creaseVertexPairs, null);
+        }
+
+        /// <summary>
+        /// As <see cref="CreaseEdgesFromMesh(WeftMesh, double, out uint[])"/>, and gives the
+        /// weld's vertex map: <paramref name="vertexMap"/> holds, for each vertex of
+        /// <paramref name="mesh"/>, the vertex of the welded mesh it became (the first of
+        /// the vertices at its position). Per-vertex data given on the input (colours,
+        /// weights) follows the weld through it: welded vertex <c>vertexMap[v]</c> takes
+        /// vertex <c>v</c>'s value.
+        /// </summary>
+        /// <exception cref="WeftException"><see cref="WeftStatus.InvalidArgument"/> for a NaN or negative angle.</exception>
+        public static WeftMesh CreaseEdgesFromMesh(WeftMesh mesh, double angleDegrees, out uint[] creaseVertexPairs, out uint[] vertexMap)
+        {
+            Arguments.Mesh(mesh, "mesh");
+            var map = new uint[mesh.VertexCount];
+            WeftMesh result = CreaseEdges(mesh, angleDegrees, out creaseVertexPairs, map);
+            vertexMap = map;
+            return result;
+        }
+
+        /// <summary>Both overloads: <paramref name="map"/> null leaves the vertex map out.</summary>
+        private static WeftMesh CreaseEdges(WeftMesh mesh, double angleDegrees, out uint[] creaseVertexPairs, uint[] map)
+        {
             WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
             // Two per face corner always suffices: no mesh has more edges than corners.
             var pairs = new uint[checked(2 * mesh.IndexCount)];
             WeftMeshHandle welded;
             UIntPtr count;
-            uint status = NativeMethods.weft_crease_edges_from_mesh(handle, angleDegrees, out welded, pairs, (UIntPtr)pairs.Length, out count);
+            uint status = map == null
+                ? NativeMethods.weft_crease_edges_from_mesh(handle, angleDegrees, out welded, pairs, (UIntPtr)pairs.Length, out count)
+                : NativeMethods.weft_crease_edges_from_mesh_ex(handle, angleDegrees, out welded, pairs, (UIntPtr)pairs.Length, out count,
+                    map, (UIntPtr)map.Length);
             WeftMesh result = WeftMesh.FromCall(status, welded);
             var trimmed = new uint[checked(2 * Arguments.ToInt(count))];
             Array.Copy(pairs, trimmed, trimmed.Length);

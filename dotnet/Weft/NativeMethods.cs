@@ -96,6 +96,12 @@ namespace Weft
             WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded,
             [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount);
 
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_crease_edges_from_mesh_ex(
+            WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded,
+            [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount,
+            [Out] uint[] outVertexMap, UIntPtr vertexMapCapacity);
+
         // ---- making ----
 
         [DllImport(Library, CallingConvention = Cdecl)]

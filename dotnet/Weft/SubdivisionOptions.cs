@@ -71,7 +71,7 @@ namespace Weft
 
         /// <summary>
         /// Creases every edge of <paramref name="vertexPairs"/> (two vertex
-        /// indices per edge, as <see cref="Subdivision.CreaseEdgesFromMesh"/>
+        /// indices per edge, as <see cref="Subdivision.CreaseEdgesFromMesh(WeftMesh, double, out uint[])"/>
         /// gives them) with one sharpness; returns this for chaining.
         /// </summary>
         /// <exception cref="WeftException"><see cref="WeftStatus.CountMismatch"/> when the length is odd.</exception>

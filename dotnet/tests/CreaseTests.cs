@@ -24,6 +24,7 @@ namespace Weft.Tests
             t.Run("refiner with creases re-evaluated equals a fresh creased subdivision", RefinerWithOptions);
             t.Run("crease edges from an unwelded cube: welded, 12 creases, stays a cube", CreaseEdgesFromUnweldedCube);
             t.Run("crease edges from folds by angle", CreaseEdgesByAngle);
+            t.Run("crease edges' vertex map takes each input vertex to the welded one at its place", CreaseEdgesVertexMap);
             t.Run("options: copies, comparison and chaining", OptionsValue);
             t.Run("crease and corner errors name the crease or corner", CreaseErrors);
             t.Run("carried data errors: lengths, widths, small buffers, unknown values", DataErrors);
@@ -339,6 +340,66 @@ namespace Weft.Tests
                     "the crease angle is -1 degrees; it must be 0 or more");
                 Shapes.Fails(() => Subdivision.CreaseEdgesFromMesh(cube, double.NaN, out pairs), WeftStatus.InvalidArgument, "NaN");
             }
+        }
+
+        private static void CreaseEdgesVertexMap()
+        {
+            using (var pieces = UnweldedCube())
+            {
+                uint[] pairs, plainPairs, map;
+                using (var welded = Subdivision.CreaseEdgesFromMesh(pieces, 180, out pairs, out map))
+                using (var plain = Subdivision.CreaseEdgesFromMesh(pieces, 180, out plainPairs))
+                {
+                    t.Equal(24, map.Length, "one entry per input vertex");
+                    t.Sequence(plainPairs, pairs, "the same creases as without the map");
+                    t.Sequence(plain.GetPositions(), welded.GetPositions(), "the same weld as without the map");
+                    double[] input = pieces.GetPositions(), output = welded.GetPositions();
+                    // A value per input vertex from its position (a colour, say) follows the map onto the welded mesh.
+                    var carried = new double[welded.VertexCount];
+                    var seen = new bool[welded.VertexCount];
+                    int misplaced = 0, next = 0, outOfOrder = 0;
+                    for (int v = 0; v < map.Length; v++)
+                    {
+                        int w = (int)map[v];
+                        t.True(w >= 0 && w < welded.VertexCount, "map[" + v + "] is a welded vertex");
+                        if (w < 0 || w >= welded.VertexCount) return;
+                        for (int k = 0; k < 3; k++)
+                        {
+                            if (output[3 * w + k] != input[3 * v + k]) misplaced++;
+                        }
+                        // Welded vertices are numbered in the order their position first appears.
+                        if (!seen[w])
+                        {
+                            if (w != next) outOfOrder++;
+                            next++;
+                            seen[w] = true;
+                        }
+                        carried[w] = input[3 * v] + 2 * input[3 * v + 1] + 4 * input[3 * v + 2];
+                    }
+                    t.Equal(0, misplaced, "coordinates of input vertices away from their welded vertex");
+                    t.Equal(0, outOfOrder, "welded vertices numbered out of first-use order");
+                    t.Equal(8, next, "every welded vertex is some input vertex's");
+                    for (int v = 0; v < map.Length; v++)
+                    {
+                        t.Equal(input[3 * v] + 2 * input[3 * v + 1] + 4 * input[3 * v + 2], carried[map[v]], "value carried to vertex " + v);
+                    }
+                }
+            }
+            using (var cube = Shapes.Cube())
+            {
+                uint[] pairs, map;
+                using (var welded = Subdivision.CreaseEdgesFromMesh(cube, 45, out pairs, out map))
+                {
+                    t.Sequence(new uint[] { 0, 1, 2, 3, 4, 5, 6, 7 }, map, "a welded mesh maps to itself");
+                    t.Equal(24, pairs.Length, "12 folds");
+                }
+                Shapes.Fails(() => Subdivision.CreaseEdgesFromMesh(cube, double.NaN, out pairs, out map), WeftStatus.InvalidArgument, "NaN");
+                t.Throws<ArgumentNullException>(() => Subdivision.CreaseEdgesFromMesh(null, 30, out pairs, out map), "null mesh");
+            }
+            var disposed = Shapes.Cube();
+            disposed.Dispose();
+            uint[] none, noMap;
+            t.Throws<ObjectDisposedException>(() => Subdivision.CreaseEdgesFromMesh(disposed, 30, out none, out noMap), "disposed mesh");
         }
 
         private static void OptionsValue()

@@ -525,12 +525,45 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
                 0 => bytes.number(),
                 _ => bytes.small(200) as f64,
             };
-            let status = weft_crease_edges_from_mesh(mesh, angle, &mut welded, pairs.as_mut_ptr(), room, &mut found);
+            // With the weld's vertex map (weft_crease_edges_from_mesh_ex) or without.
+            let mut map = match bytes.byte() % 3 {
+                0 => None,
+                _ => Some(vec![u32::MAX; capacity(bytes, count)]),
+            };
+            let status = match map.as_mut() {
+                None => weft_crease_edges_from_mesh(mesh, angle, &mut welded, pairs.as_mut_ptr(), room, &mut found),
+                Some(map) => weft_crease_edges_from_mesh_ex(
+                    mesh,
+                    angle,
+                    &mut welded,
+                    pairs.as_mut_ptr(),
+                    room,
+                    &mut found,
+                    map.as_mut_ptr(),
+                    map.len(),
+                ),
+            };
             settle_status(status);
             if status != WeftStatus::Ok {
                 assert!(welded.is_null() && found == usize::MAX);
                 assert!(pairs.iter().all(|&p| p == u32::MAX), "written on failure");
+                assert!(map.iter().flatten().all(|&v| v == u32::MAX), "map written on failure");
                 return status;
+            }
+            if let Some(map) = &map {
+                // Every input vertex maps to a welded vertex at exactly its position, and every welded vertex is someone's.
+                let welded_count = weft_mesh_vertex_count(welded);
+                let input = std::slice::from_raw_parts(weft_mesh_positions(mesh), 3 * count);
+                let output = std::slice::from_raw_parts(weft_mesh_positions(welded), 3 * welded_count);
+                let mut used = vec![false; welded_count];
+                for (v, &w) in map[..count].iter().enumerate() {
+                    let w = w as usize;
+                    assert!(w < welded_count, "vertex {v} maps to {w} of {welded_count}");
+                    assert!(input[3 * v..3 * v + 3] == output[3 * w..3 * w + 3], "vertex {v} moved to {w}");
+                    used[w] = true;
+                }
+                assert!(used.iter().all(|&u| u), "a welded vertex no input vertex maps to");
+                assert!(map[count..].iter().all(|&v| v == u32::MAX), "map written past the vertex count");
             }
             let sharp = vec![WEFT_SHARPNESS_INFINITE; found];
             let raw = WeftSubdivisionOptions {

@@ -206,6 +206,37 @@ namespace Weft.Grasshopper
             return argb;
         }
 
+        /// <summary>
+        /// Vertex colours (packed ARGB, one per input vertex) carried through a weld whose
+        /// <paramref name="vertexMap"/> gives, for each input vertex, its vertex of the
+        /// welded mesh (<c>Subdivision.CreaseEdgesFromMesh</c>'s map): each welded vertex
+        /// takes the colour of the first input vertex that became it.
+        /// </summary>
+        /// <exception cref="WeftException">A colour list and map of different lengths, or a map entry past <paramref name="weldedCount"/>.</exception>
+        public static int[] ColoursThroughWeld(int[] colours, uint[] vertexMap, int weldedCount)
+        {
+            if (colours.Length != vertexMap.Length)
+            {
+                throw new WeftException(WeftStatus.CountMismatch, colours.Length + " vertex colours were given for a weld of "
+                    + vertexMap.Length + " vertices; give one per vertex");
+            }
+            var welded = new int[weldedCount];
+            var taken = new bool[weldedCount];
+            for (int v = 0; v < vertexMap.Length; v++)
+            {
+                uint w = vertexMap[v];
+                if (w >= (uint)weldedCount)
+                {
+                    throw new WeftException(WeftStatus.IndexOutOfRange, "vertex " + v + " maps to welded vertex " + w
+                        + ", but the welded mesh has " + weldedCount + " vertices");
+                }
+                if (taken[w]) continue;
+                welded[w] = colours[v];
+                taken[w] = true;
+            }
+            return welded;
+        }
+
         private static uint Channel(double value)
         {
             if (double.IsNaN(value) || value <= 0) return 0;

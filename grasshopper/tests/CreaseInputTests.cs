@@ -24,6 +24,7 @@ namespace Weft.Tests
             t.Run("sharpness lists: empty, one for all, one each; negative, NaN and wrong lengths refused", SharpnessLists);
             t.Run("colours to doubles and back, rounded and clamped", Colours);
             t.Run("colours carried through a creased subdivision stay where they were", ColoursThroughSubdivision);
+            t.Run("colours carried through Crease Edges From Mesh's weld: the first of coincident vertices wins", ColoursThroughCreaseWeld);
             t.Run("refiner cache with creases: same creases reuse, other creases re-plan", CacheWithCreases);
             t.Run("crease segments are the pairs' end points", Segments);
         }
@@ -134,6 +135,40 @@ namespace Weft.Tests
                 int r = (refined[20 + 5] >> 16) & 0xFF; // the face point of face 5 (x = 1), a quarter white
                 t.Equal(64, r, "face 5's face point is a quarter white");
             }
+        }
+
+        private static void ColoursThroughCreaseWeld()
+        {
+            // Two quads side by side, not welded: vertices 1 and 4, 2 and 5 coincide on their shared edge.
+            double[] positions = { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 2, 1, 0, 2, 0, 0 };
+            uint[] sizes = { 4, 4 };
+            uint[] indices = { 0, 1, 2, 3, 4, 7, 6, 5 };
+            int red = unchecked((int)0xFFFF0000), green = unchecked((int)0xFF00FF00), blue = unchecked((int)0xFF0000FF);
+            // The left quad red, the right quad blue, its corner 6 green.
+            int[] colours = { red, red, red, red, blue, blue, green, blue };
+            using (WeftMesh mesh = WeftMesh.Create(positions, sizes, indices))
+            {
+                uint[] pairs, map;
+                using (WeftMesh welded = Subdivision.CreaseEdgesFromMesh(mesh, 180, out pairs, out map))
+                {
+                    t.Equal(6, welded.VertexCount, "two pairs welded");
+                    t.Sequence(new uint[] { 0, 1, 2, 3, 1, 2, 4, 5 }, map, "the vertex map");
+                    t.Equal(2, pairs.Length, "one crease");
+                    t.True(pairs.Length == 2 && Math.Min(pairs[0], pairs[1]) == 1 && Math.Max(pairs[0], pairs[1]) == 2, "the seam is the crease");
+                    int[] carried = CreaseInputs.ColoursThroughWeld(colours, map, welded.VertexCount);
+                    // The shared edge keeps the left quad's red (its vertices come first); the right quad's own corners keep theirs.
+                    t.Sequence(new[] { red, red, red, red, green, blue }, carried, "colours of the welded vertices");
+                    double[] p = welded.GetPositions();
+                    for (int v = 0; v < map.Length; v++)
+                    {
+                        for (int k = 0; k < 3; k++) t.Equal(positions[3 * v + k], p[3 * (int)map[v] + k], "vertex " + v + " welded in place");
+                    }
+                }
+            }
+            Fails(() => CreaseInputs.ColoursThroughWeld(new[] { red, red }, new uint[] { 0, 1, 1 }, 2), WeftStatus.CountMismatch,
+                "2 vertex colours were given for a weld of 3 vertices");
+            Fails(() => CreaseInputs.ColoursThroughWeld(new[] { red, red }, new uint[] { 0, 2 }, 2), WeftStatus.IndexOutOfRange,
+                "vertex 1 maps to welded vertex 2, but the welded mesh has 2 vertices");
         }
 
         private static void CacheWithCreases()

@@ -245,8 +245,7 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
     capacity: usize,
 ) -> WeftStatus {
     guard(|| {
-        let out = output_slice(out_data, capacity, "out_data")?;
-        let data = input_slice(data, data_len, "data")?;
+        // The lengths are checked against the mesh before either buffer is viewed.
         let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
         if width == 0 {
             return Err(Failure::invalid_argument(
@@ -265,6 +264,8 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
         }
         let needed = subdivider.vertex_count().saturating_mul(width);
         check_room("out_data", capacity, needed)?;
+        let data = input_slice(data, data_len, "data")?;
+        let out = output_slice(out_data, capacity, "out_data")?;
         subdivider.vertex_data_into(data, width, &mut out[..needed])?;
         Ok(())
     })
@@ -307,7 +308,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
     capacity: usize,
 ) -> WeftStatus {
     guard(|| {
-        let out = output_slice(out_values, capacity, "out_values")?;
         let linear = face_varying_arg(face_varying_linear)?;
         if width == 0 {
             return Err(Failure::invalid_argument(
@@ -320,8 +320,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 "value_count * width is too large",
             )
         })?;
-        let values = input_slice(values, value_len, "values")?;
-        let indices = input_slice(value_indices, index_count, "value_indices")?;
         let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
         if index_count != mesh.index_count() {
             return Err(Failure::new(
@@ -332,6 +330,12 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 ),
             ));
         }
+        let needed = subdivider.face_indices().len().saturating_mul(width);
+        check_room("out_values", capacity, needed)?;
+        // Only now, with every length checked, are the buffers viewed.
+        let values = input_slice(values, value_len, "values")?;
+        let indices = input_slice(value_indices, index_count, "value_indices")?;
+        let out = output_slice(out_values, capacity, "out_values")?;
         if let Some(c) = indices.iter().position(|&i| i as usize >= value_count) {
             return Err(Failure::new(
                 WeftStatus::IndexOutOfRange,
@@ -341,8 +345,6 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
                 ),
             ));
         }
-        let needed = subdivider.face_indices().len().saturating_mul(width);
-        check_room("out_values", capacity, needed)?;
         let refined = subdivider.face_varying(values, width, indices, linear)?;
         out[..needed].copy_from_slice(&refined);
         Ok(())
@@ -380,15 +382,15 @@ pub unsafe extern "C" fn weft_subdivide_limit(
 ) -> WeftStatus {
     guard(|| {
         let positions = out_param(out_positions, "out_positions")?;
+        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+        let needed = subdivider.vertex_count().saturating_mul(3);
+        check_room("out_positions", capacity, needed)?;
         let positions = output_slice(positions, capacity, "out_positions")?;
         let normals = if out_normals.is_null() {
             None
         } else {
             Some(output_slice(out_normals, capacity, "out_normals")?)
         };
-        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
-        let needed = subdivider.vertex_count().saturating_mul(3);
-        check_room("out_positions", capacity, needed)?;
         let (limit_positions, limit_normals) = subdivider.limit_positions_and_normals()?;
         write_points(&limit_positions, positions);
         if let Some(normals) = normals {
@@ -442,6 +444,8 @@ pub unsafe extern "C" fn weft_refiner_new_ex(
 /// welding and has two faces after, and every edge whose faces' normals
 /// differ by more than `angle_degrees` (180 or more: no fold test). Pass the
 /// pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+/// `weft_crease_edges_from_mesh_ex` also gives which welded vertex each
+/// input vertex became.
 ///
 /// `mesh` must not be NULL. `angle_degrees` must be 0 or more.
 /// `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
@@ -467,21 +471,100 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh(
     out_crease_count: *mut usize,
 ) -> WeftStatus {
     guard(|| {
-        let welded_out = out_param(out_welded, "out_welded")?;
-        let count_out = out_param(out_crease_count, "out_crease_count")?;
-        let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let subdivide::CreasedMesh {
-            mesh: welded,
-            creases,
-            ..
-        } = subdivide::creases_from_mesh(mesh, angle_degrees)?;
-        check_room("out_pairs", capacity, 2 * creases.len())?;
-        for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
-            slot.copy_from_slice(pair);
-        }
-        *count_out = creases.len();
-        WeftMesh::write(welded_out, welded);
-        Ok(())
+        crease_edges(
+            mesh,
+            angle_degrees,
+            out_welded,
+            (out_pairs, capacity),
+            out_crease_count,
+            None,
+        )
     })
+}
+
+/// As `weft_crease_edges_from_mesh`, and gives the vertex map of the weld:
+/// for each vertex of `mesh`, the index of the vertex of the welded mesh it
+/// became (the first of the vertices at its position). With it a host
+/// carries per-vertex data given on the input (colours, weights, its own
+/// creases and corners) onto the welded mesh: welded vertex
+/// `out_vertex_map[v]` takes vertex `v`'s value.
+///
+/// `mesh`, `angle_degrees`, `out_welded`, `out_pairs`, `capacity` and
+/// `out_crease_count` as `weft_crease_edges_from_mesh`.
+/// `out_vertex_map` has room for `vertex_map_capacity` indices and receives
+/// one per vertex of `mesh`: it needs `weft_mesh_vertex_count(mesh)`, else
+/// the call fails with WEFT_STATUS_BUFFER_TOO_SMALL (checked before any
+/// work is done). It may be NULL only when `vertex_map_capacity` is 0.
+/// Nothing is written on failure.
+///
+/// Fails as `weft_crease_edges_from_mesh`.
+///
+/// # Safety
+/// As `weft_crease_edges_from_mesh`; `out_vertex_map` is NULL or holds
+/// `vertex_map_capacity` writable indices.
+#[no_mangle]
+pub unsafe extern "C" fn weft_crease_edges_from_mesh_ex(
+    mesh: *const WeftMesh,
+    angle_degrees: f64,
+    out_welded: *mut *mut WeftMesh,
+    out_pairs: *mut u32,
+    capacity: usize,
+    out_crease_count: *mut usize,
+    out_vertex_map: *mut u32,
+    vertex_map_capacity: usize,
+) -> WeftStatus {
+    guard(|| {
+        crease_edges(
+            mesh,
+            angle_degrees,
+            out_welded,
+            (out_pairs, capacity),
+            out_crease_count,
+            Some((out_vertex_map, vertex_map_capacity)),
+        )
+    })
+}
+
+/// The body of both crease exports; `vertex_map` is the optional map buffer
+/// and its capacity.
+///
+/// # Safety
+/// As `weft_crease_edges_from_mesh_ex`.
+unsafe fn crease_edges(
+    mesh: *const WeftMesh,
+    angle_degrees: f64,
+    out_welded: *mut *mut WeftMesh,
+    (out_pairs, capacity): (*mut u32, usize),
+    out_crease_count: *mut usize,
+    vertex_map: Option<(*mut u32, usize)>,
+) -> Result<(), Failure> {
+    let welded_out = out_param(out_welded, "out_welded")?;
+    let count_out = out_param(out_crease_count, "out_crease_count")?;
+    let mesh = mesh_ref(mesh, "mesh")?;
+    if let Some((_, map_capacity)) = vertex_map {
+        check_room("out_vertex_map", map_capacity, mesh.vertex_count())?;
+    }
+    let subdivide::CreasedMesh {
+        mesh: welded,
+        creases,
+        vertex_map: map,
+    } = subdivide::creases_from_mesh(mesh, angle_degrees)?;
+    check_room("out_pairs", capacity, 2 * creases.len())?;
+    // Every length is checked: the buffers are viewed only now.
+    let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
+    let map_out = match vertex_map {
+        Some((pointer, map_capacity)) => {
+            Some(output_slice(pointer, map_capacity, "out_vertex_map")?)
+        }
+        None => None,
+    };
+    for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
+        slot.copy_from_slice(pair);
+    }
+    if let Some(out) = map_out {
+        out[..map.len()].copy_from_slice(&map);
+    }
+    *count_out = creases.len();
+    WeftMesh::write(welded_out, welded);
+    Ok(())
 }

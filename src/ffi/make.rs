@@ -15,10 +15,10 @@ use crate::ffi::boundary::{
     WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::grid::mesh_from_grid;
+use crate::grid::{check_grid_counts, mesh_from_grid};
 use crate::plane::Plane;
 use crate::primitives::{box_grid, plane_grid, platonic, sided, uv_sphere, Platonic, Sided};
-use crate::stellate::{stellate, Heights};
+use crate::stellate::{check_height_count, stellate, Heights};
 use crate::voronoi::{cells_to_mesh, voronoi};
 
 /// A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
@@ -66,24 +66,30 @@ pub struct WeftCells {
     cells: Vec<Vec<DVec3>>,
 }
 
-/// Reads `count` points of three doubles, naming the first non-finite one.
-///
-/// # Safety
-/// `points` is NULL or holds `3 * count` doubles.
-unsafe fn points_arg(points: *const f64, count: usize, name: &str) -> Result<Vec<DVec3>, Failure> {
-    // Before the buffer is read, so a count past the cap never touches memory.
+/// Checks a count of points against the cap and returns the number of
+/// doubles they take, before any buffer is viewed: a count past the cap
+/// never becomes a slice.
+fn point_count_arg(count: usize, name: &str) -> Result<usize, Failure> {
     if count as u64 > MAX_ELEMENTS {
         return Err(Failure::new(
             WeftStatus::InputTooLarge,
             format!("{name}: a count of {count} points exceeds the limit of {MAX_ELEMENTS}"),
         ));
     }
-    let length = count.checked_mul(3).ok_or_else(|| {
+    count.checked_mul(3).ok_or_else(|| {
         Failure::new(
             WeftStatus::InputTooLarge,
             format!("{name}: a count of {count} points is larger than memory can hold"),
         )
-    })?;
+    })
+}
+
+/// Reads `count` points of three doubles, naming the first non-finite one.
+///
+/// # Safety
+/// `points` is NULL or holds `3 * count` doubles.
+unsafe fn points_arg(points: *const f64, count: usize, name: &str) -> Result<Vec<DVec3>, Failure> {
+    let length = point_count_arg(count, name)?;
     let flat = input_slice(points, length, name)?;
     let mut out = Vec::new();
     out.try_reserve_exact(count).map_err(|_| {
@@ -366,6 +372,8 @@ pub unsafe extern "C" fn weft_cells_free(cells: *mut WeftCells) {
 ///
 /// Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
 /// not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+/// The counts are checked before `points` is read; more than 2^31 − 1
+/// points fail with WEFT_STATUS_INPUT_TOO_LARGE.
 ///
 /// # Safety
 /// `points` holds the doubles stated; `out_mesh` is writable.
@@ -382,6 +390,9 @@ pub unsafe extern "C" fn weft_mesh_from_grid(
 ) -> WeftStatus {
     guard(|| {
         let out = out_param(out_mesh, "out_mesh")?;
+        // The counts are checked, against the cap and each other, before the buffer is viewed.
+        point_count_arg(point_count, "points")?;
+        check_grid_counts(point_count, u_count, v_count, closed_u, closed_v)?;
         let points = points_arg(points, point_count, "points")?;
         let mesh = mesh_from_grid(&points, u_count, v_count, closed_u, closed_v, triangulate)?;
         WeftMesh::write(out, mesh);
@@ -417,6 +428,10 @@ pub unsafe extern "C" fn weft_stellate(
     guard(|| {
         let out = out_param(out_mesh, "out_mesh")?;
         let mesh = mesh_ref(mesh, "mesh")?;
+        // The count is checked before the buffer is viewed.
+        if height_count != 1 {
+            check_height_count(height_count, mesh.face_count())?;
+        }
         let heights = input_slice(heights, height_count, "heights")?;
         let heights = match heights {
             [one] => Heights::One(*one),

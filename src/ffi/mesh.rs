@@ -7,7 +7,7 @@ use crate::ffi::boundary::{
     check_room, guard, input_slice, last_error_ptr, out_param, output_slice, required, Failure,
     WeftStatus,
 };
-use crate::mesh::Mesh;
+use crate::mesh::{check_element_counts, Mesh};
 use crate::topology::Topology;
 
 /// Major version of the library this header belongs to.
@@ -127,7 +127,8 @@ pub extern "C" fn weft_last_error_message() -> *const c_char {
 /// Fails with WEFT_STATUS_INDEX_OUT_OF_RANGE, WEFT_STATUS_FACE_TOO_SMALL,
 /// WEFT_STATUS_REPEATED_INDEX, WEFT_STATUS_NON_FINITE_COORDINATE,
 /// WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
-/// that names the face, corner or vertex.
+/// that names the face, corner or vertex. A vertex, face or index count past
+/// 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
 ///
 /// # Safety
 /// Each non-NULL buffer must hold the number of elements stated.
@@ -143,6 +144,9 @@ pub unsafe extern "C" fn weft_mesh_new(
 ) -> WeftStatus {
     guard(|| {
         let out = out_param(out_mesh, "out_mesh")?;
+        // Every count is checked before any buffer is viewed: a slice longer
+        // than the caller's buffer is undefined behaviour even if never read.
+        check_element_counts(vertex_count, face_count, index_count)?;
         let coordinate_count = vertex_count.checked_mul(3).ok_or_else(|| {
             Failure::new(
                 WeftStatus::InputTooLarge,

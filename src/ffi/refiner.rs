@@ -97,10 +97,10 @@ pub unsafe extern "C" fn weft_refiner_evaluate(
                 ),
             ));
         }
-        let cage = input_slice(cage_positions, 3 * vertex_count, "cage_positions")?;
-        let out = output_slice(out_positions, out_len, "out_positions")?;
         let needed = 3 * refiner.vertex_count();
         check_room("out_positions", out_len, needed)?;
+        let cage = input_slice(cage_positions, 3 * vertex_count, "cage_positions")?;
+        let out = output_slice(out_positions, out_len, "out_positions")?;
         if let Some(i) = cage.iter().position(|c| !c.is_finite()) {
             return Err(Failure::new(
                 WeftStatus::NonFiniteCoordinate,

@@ -165,11 +165,11 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces(
     capacity: usize,
 ) -> WeftStatus {
     guard(|| {
-        let out = output_slice(out_parents, capacity, "out_parents")?;
         let cage = mesh_ref(cage, "cage")?;
         let scheme = scheme_arg(scheme)?;
         let needed = subdivide::refined_face_count(cage, scheme, levels)?;
         check_room("out_parents", capacity, needed)?;
+        let out = output_slice(out_parents, capacity, "out_parents")?;
         let parents = subdivide::parent_faces(cage, scheme, levels)?;
         out[..needed].copy_from_slice(&parents);
         Ok(())

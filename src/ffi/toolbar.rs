@@ -379,10 +379,15 @@ pub unsafe extern "C" fn weft_laplacian_hc_smooth_ex(
             },
             "WEFT_SMOOTH_DIRECTION_FREE (0), WEFT_SMOOTH_DIRECTION_ALONG_NORMAL (1) or WEFT_SMOOTH_DIRECTION_TANGENTIAL (2)",
         )?;
-        let activation = if activation.is_null() && activation_count == 0 {
-            None
-        } else {
-            Some(input_slice(activation, activation_count, "activation")?)
+        let activation_count = match activation.is_null() && activation_count == 0 {
+            true => None,
+            false => Some(activation_count),
+        };
+        // Every count is checked before the buffer is viewed.
+        smooth::check_hc_arguments(m, iterations, alpha, beta, activation_count)?;
+        let activation = match activation_count {
+            None => None,
+            Some(count) => Some(input_slice(activation, count, "activation")?),
         };
         let options = HcOptions {
             alpha,
@@ -435,6 +440,8 @@ pub unsafe extern "C" fn weft_blur_values(
         let mesh = mesh_ref(mesh, "mesh")?;
         let naked = self::naked_edges(naked_edges)?;
         let blurred = {
+            // Every count is checked before the buffer is viewed.
+            smooth::check_blur_arguments(mesh, value_count, components, iterations, blend)?;
             let values = input_slice(values, value_count, "values")?;
             smooth::blur(mesh, values, components, iterations, blend, naked)?
         };
@@ -530,6 +537,8 @@ pub unsafe extern "C" fn weft_mesh_window(
 ) -> WeftStatus {
     mesh_op(mesh, out_mesh, |m| {
         let mode = self::inset_mode(inset_mode)?;
+        // The count is checked before the buffer is viewed.
+        transform::check_distance_count(distance_count, m.face_count())?;
         let distances = input_slice(distances, distance_count, "distances")?;
         Ok(transform::window(m, distances, mode)?)
     })
@@ -562,6 +571,8 @@ pub unsafe extern "C" fn weft_picture_frame(
 ) -> WeftStatus {
     mesh_op(mesh, out_mesh, |m| {
         let mode = self::inset_mode(inset_mode)?;
+        // The count is checked before the buffer is viewed.
+        transform::check_distance_count(distance_count, m.face_count())?;
         let distances = input_slice(distances, distance_count, "distances")?;
         Ok(transform::picture_frame(m, distances, mode)?)
     })

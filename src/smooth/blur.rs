@@ -5,6 +5,33 @@ use crate::mesh::Mesh;
 
 use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 
+/// The checks of [`blur`] that need no value, with the values' count alone
+/// (the C ABI makes them before it views the caller's buffer).
+pub(crate) fn check_blur_arguments(
+    mesh: &Mesh,
+    value_count: usize,
+    components: usize,
+    iterations: u32,
+    blend: f64,
+) -> Result<()> {
+    check_iterations(iterations)?;
+    check_unit("blend", blend)?;
+    if components == 0 {
+        return Err(Error::InvalidArgument(
+            "components is 0; each vertex needs at least one value".into(),
+        ));
+    }
+    let expected = mesh.vertex_count().checked_mul(components);
+    if expected != Some(value_count) {
+        return Err(Error::InvalidArgument(format!(
+            "{value_count} values were given but the mesh's {} vertices with {components} components need {}",
+            mesh.vertex_count(),
+            mesh.vertex_count() as u128 * components as u128
+        )));
+    }
+    Ok(())
+}
+
 /// Blurs a per-vertex value over the mesh, as Weaverbird's Blur does with
 /// vertex colours: each iteration moves every vertex's value `blend` of the
 /// way towards the average of its neighbours' values. The positions do not
@@ -28,22 +55,7 @@ pub fn blur(
     blend: f64,
     naked: NakedEdges,
 ) -> Result<Vec<f64>> {
-    check_iterations(iterations)?;
-    check_unit("blend", blend)?;
-    if components == 0 {
-        return Err(Error::InvalidArgument(
-            "components is 0; each vertex needs at least one value".into(),
-        ));
-    }
-    let expected = mesh.vertex_count().checked_mul(components);
-    if expected != Some(values.len()) {
-        return Err(Error::InvalidArgument(format!(
-            "{} values were given but the mesh's {} vertices with {components} components need {}",
-            values.len(),
-            mesh.vertex_count(),
-            mesh.vertex_count() as u128 * components as u128
-        )));
-    }
+    check_blur_arguments(mesh, values.len(), components, iterations, blend)?;
     if let Some(i) = values.iter().position(|x| !x.is_finite()) {
         return Err(Error::InvalidArgument(format!(
             "value {i} (vertex {}) is not finite",

@@ -99,11 +99,15 @@ pub fn laplacian_hc(
 /// list's length is not the vertex count (naming both) or a weight is not
 /// in [0, 1] (naming the vertex).
 pub fn laplacian_hc_with(mesh: &Mesh, iterations: u32, options: &HcOptions) -> Result<Mesh> {
-    check_iterations(iterations)?;
-    check_unit("alpha", options.alpha)?;
-    check_unit("beta", options.beta)?;
+    check_hc_arguments(
+        mesh,
+        iterations,
+        options.alpha,
+        options.beta,
+        options.activation.map(<[f64]>::len),
+    )?;
     let (alpha, beta) = (options.alpha, options.beta);
-    let weights = activation_weights(mesh, options.activation)?;
+    let weights = activation_weights(options.activation)?;
     let weight = |v: usize| weights.as_ref().map_or(1.0, |w| w[v]);
     let normals = match options.direction {
         SmoothDirection::Free => Vec::new(),
@@ -147,18 +151,36 @@ pub fn laplacian_hc_with(mesh: &Mesh, iterations: u32, options: &HcOptions) -> R
     moved(mesh, p, "HC smoothing")
 }
 
-/// Checks the activation list: one weight in [0, 1] per vertex.
-fn activation_weights<'a>(mesh: &Mesh, activation: Option<&'a [f64]>) -> Result<Option<&'a [f64]>> {
+/// The checks of [`laplacian_hc_with`] that need no weight, with the
+/// activation list's length alone (the C ABI makes them before it views the
+/// caller's buffer).
+pub(crate) fn check_hc_arguments(
+    mesh: &Mesh,
+    iterations: u32,
+    alpha: f64,
+    beta: f64,
+    activation_count: Option<usize>,
+) -> Result<()> {
+    check_iterations(iterations)?;
+    check_unit("alpha", alpha)?;
+    check_unit("beta", beta)?;
+    if let Some(count) = activation_count {
+        if count != mesh.vertex_count() {
+            return Err(Error::InvalidArgument(format!(
+                "activation has {count} values but the mesh has {} vertices; give one per vertex",
+                mesh.vertex_count()
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Checks the activation weights, one per vertex (counted by
+/// [`check_hc_arguments`]): each in [0, 1].
+fn activation_weights(activation: Option<&[f64]>) -> Result<Option<&[f64]>> {
     let Some(weights) = activation else {
         return Ok(None);
     };
-    if weights.len() != mesh.vertex_count() {
-        return Err(Error::InvalidArgument(format!(
-            "activation has {} values but the mesh has {} vertices; give one per vertex",
-            weights.len(),
-            mesh.vertex_count()
-        )));
-    }
     if let Some(v) = weights.iter().position(|w| !(0.0..=1.0).contains(w)) {
         return Err(Error::InvalidArgument(format!(
             "activation of vertex {v} is {}; it must be between 0 and 1",

@@ -12,6 +12,8 @@ mod hc;
 mod laplacian;
 
 pub use blur::blur;
+pub(crate) use blur::check_blur_arguments;
+pub(crate) use hc::check_hc_arguments;
 pub use hc::{laplacian_hc, laplacian_hc_with, HcOptions, SmoothDirection};
 pub use laplacian::laplacian;
 

@@ -237,7 +237,7 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
         };
         corners = faces * if scheme == Scheme::Loop { 3 } else { 4 };
         if faces > MAX_ELEMENTS || corners > MAX_ELEMENTS {
-            return Err(too_large(level, faces, corners));
+            return Err(too_large(levels, level, faces, corners));
         }
     }
     Ok(faces as usize)
@@ -316,16 +316,20 @@ pub(crate) fn check_counts(
             Scheme::Loop => (v + e, 2 * e + 3 * f, 4 * f, 12 * f),
         };
         if f > MAX_ELEMENTS || c > MAX_ELEMENTS || v > MAX_ELEMENTS || e > MAX_ELEMENTS {
-            return Err(too_large(level, f, c));
+            return Err(too_large(levels, level, f, c));
         }
     }
     Ok((v, f, c))
 }
 
-fn too_large(level: u32, faces: u64, indices: u64) -> Error {
+/// The refusal of `requested` levels whose `level` is the first past the cap.
+fn too_large(requested: u32, level: u32, faces: u64, indices: u64) -> Error {
+    let plural = if requested == 1 { "" } else { "s" };
     Error::ResultTooLarge(format!(
-        "subdivision level {level} would make {faces} faces ({indices} face indices), \
-         past the limit of {MAX_ELEMENTS} vertices, faces or indices; use fewer levels"
+        "{requested} level{plural} of subdivision: level {level} would make {faces} faces \
+         ({indices} face indices), past the limit of {MAX_ELEMENTS} vertices, faces or indices; \
+         use at most {} levels",
+        level - 1
     ))
 }
 
@@ -361,10 +365,11 @@ mod tests {
         let cube = shapes::cube();
         let err = catmull_clark(&cube, 16, NakedEdges::Smooth).unwrap_err();
         assert!(matches!(err, Error::ResultTooLarge(_)));
-        assert!(
-            err.to_string()
-                .contains("level 14 would make 1610612736 faces"),
-            "{err}"
+        assert_eq!(
+            err.to_string(),
+            "result too large: 16 levels of subdivision: level 14 would make 1610612736 faces \
+             (6442450944 face indices), past the limit of 2147483647 vertices, faces or \
+             indices; use at most 13 levels"
         );
     }
 }

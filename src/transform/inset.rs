@@ -48,14 +48,21 @@ pub fn picture_frame(mesh: &Mesh, distances: &[f64], mode: InsetMode) -> Result<
     inset(mesh, distances, mode, false)
 }
 
-fn inset(mesh: &Mesh, distances: &[f64], mode: InsetMode, keep_inner: bool) -> Result<Mesh> {
-    let faces = mesh.face_count();
-    if distances.len() != 1 && distances.len() != faces {
+/// Checks that `count` distances suit a mesh of `face_count` faces (one for
+/// every face, or one per face), from the count alone (the C ABI checks it
+/// before it views the caller's buffer).
+pub(crate) fn check_distance_count(count: usize, face_count: usize) -> Result<()> {
+    if count != 1 && count != face_count {
         return Err(Error::InvalidArgument(format!(
-            "{} distances were given for a mesh of {faces} faces; give one distance, or one per face",
-            distances.len()
+            "{count} distances were given for a mesh of {face_count} faces; give one distance, or one per face"
         )));
     }
+    Ok(())
+}
+
+fn inset(mesh: &Mesh, distances: &[f64], mode: InsetMode, keep_inner: bool) -> Result<Mesh> {
+    let faces = mesh.face_count();
+    check_distance_count(distances.len(), faces)?;
     for (i, &d) in distances.iter().enumerate() {
         let limit = if mode == InsetMode::EdgeFraction {
             0.5

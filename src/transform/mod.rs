@@ -9,5 +9,6 @@ mod offset;
 
 pub use bevel::{bevel_edges, bevel_vertices};
 pub use carpet::sierpinski_carpet;
+pub(crate) use inset::check_distance_count;
 pub use inset::{picture_frame, window, InsetMode};
 pub use offset::{offset, thicken, OffsetType};

@@ -281,8 +281,117 @@ static void test_crease_edges_from_mesh(void) {
   weft_mesh_free(mesh);
 }
 
+/* The cube as six separate quads: corner c of the cube's faces is vertex c,
+ * at the position of cube vertex cube_indices[c]. */
+static WeftMesh *unwelded_cube(double *positions) {
+  uint32_t indices[24];
+  WeftMesh *mesh = NULL;
+  int c;
+  for (c = 0; c < 24; ++c) {
+    memcpy(positions + 3 * c, cube_positions + 3 * cube_indices[c], 3 * sizeof(double));
+    indices[c] = (uint32_t)c;
+  }
+  CHECK_STATUS(weft_mesh_new(positions, 24, cube_sizes, 6, indices, 24, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static void test_crease_edges_vertex_map(void) {
+  double positions[72];
+  WeftMesh *pieces = unwelded_cube(positions), *welded = NULL, *plain = NULL;
+  uint32_t pairs[48], plain_pairs[48], map[24];
+  /* A colour per input vertex, from its position: the weld must keep it. */
+  double colour[24], welded_colour[8];
+  int hit[8] = {0};
+  size_t count = 99, plain_count = 0, v, first_new = 0;
+  const double *welded_positions;
+  for (v = 0; v < 24; ++v) colour[v] = positions[3 * v] + 2 * positions[3 * v + 1] + 4 * positions[3 * v + 2];
+
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 48, &count, map, 24), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(welded) == 8 && count == 12);
+  welded_positions = weft_mesh_positions(welded);
+  for (v = 0; v < 24; ++v) {
+    CHECK(map[v] < 8);
+    if (map[v] >= 8) continue;
+    /* Each input vertex went to the welded vertex at its position... */
+    CHECK(memcmp(welded_positions + 3 * map[v], positions + 3 * v, 3 * sizeof(double)) == 0);
+    /* ...which is numbered in order of first use: the first of its position keeps the lowest free index. */
+    if (!hit[map[v]]) {
+      CHECK(map[v] == first_new);
+      first_new++;
+      hit[map[v]] = 1;
+    }
+    welded_colour[map[v]] = colour[v];
+  }
+  CHECK(first_new == 8);
+  /* Carried through the map, every input vertex finds its own colour on the welded mesh. */
+  for (v = 0; v < 24; ++v) CHECK(map[v] < 8 && welded_colour[map[v]] == colour[v]);
+
+  /* The same weld and creases as without the map. */
+  CHECK_STATUS(weft_crease_edges_from_mesh(pieces, 180.0, &plain, plain_pairs, 48, &plain_count), WEFT_STATUS_OK);
+  CHECK(plain_count == count && memcmp(plain_pairs, pairs, 2 * count * sizeof(uint32_t)) == 0);
+  CHECK(memcmp(weft_mesh_positions(plain), welded_positions, 24 * sizeof(double)) == 0);
+  CHECK(memcmp(weft_mesh_face_indices(plain), weft_mesh_face_indices(welded), 24 * sizeof(uint32_t)) == 0);
+  weft_mesh_free(plain);
+  weft_mesh_free(welded);
+  welded = NULL;
+
+  /* A welded mesh maps to itself. */
+  {
+    WeftMesh *whole = cube();
+    CHECK_STATUS(weft_crease_edges_from_mesh_ex(whole, 45.0, &welded, pairs, 48, &count, map, 8), WEFT_STATUS_OK);
+    CHECK(count == 12);
+    for (v = 0; v < 8; ++v) CHECK(map[v] == v);
+    weft_mesh_free(welded);
+    welded = NULL;
+    weft_mesh_free(whole);
+  }
+
+  /* Too small a map, or none: refused before any work, nothing written. */
+  map[0] = 77;
+  count = 99;
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 48, &count, map, 23),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_vertex_map has room for 23 elements but 24 are needed");
+  CHECK(map[0] == 77 && count == 99 && welded == NULL);
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 48, &count, NULL, 0),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_vertex_map has room for 0 elements but 24 are needed");
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 48, &count, NULL, 24),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_vertex_map is NULL");
+  /* The other buffers and arguments as without the map. */
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 23, &count, map, 24),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("out_pairs has room for 23 elements but 24 are needed");
+  CHECK(map[0] == 77);
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, -1.0, &welded, pairs, 48, &count, map, 24),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("the crease angle is -1 degrees");
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(NULL, 180.0, &welded, pairs, 48, &count, map, 24),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("mesh is NULL");
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, NULL, pairs, 48, &count, map, 24),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_welded is NULL");
+  CHECK_STATUS(weft_crease_edges_from_mesh_ex(pieces, 180.0, &welded, pairs, 48, NULL, map, 24),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_crease_count is NULL");
+  CHECK(map[0] == 77 && count == 99 && welded == NULL);
+  /* An empty mesh needs no map. */
+  {
+    WeftMesh *empty = NULL;
+    CHECK_STATUS(weft_mesh_new(NULL, 0, NULL, 0, NULL, 0, &empty), WEFT_STATUS_OK);
+    CHECK_STATUS(weft_crease_edges_from_mesh_ex(empty, 180.0, &welded, NULL, 0, &count, NULL, 0), WEFT_STATUS_OK);
+    CHECK(count == 0 && weft_mesh_vertex_count(welded) == 0);
+    weft_mesh_free(welded);
+    weft_mesh_free(empty);
+  }
+  weft_mesh_free(pieces);
+}
+
 int main(void) {
   test_crease_edges_from_mesh();
+  test_crease_edges_vertex_map();
   test_creases_and_corners();
   test_counts_and_vertex_data();
   test_face_varying();

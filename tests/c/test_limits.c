@@ -56,6 +56,58 @@ static void test_point_counts(void) {
   CHECK_MESSAGE("more than memory can hold");
 }
 
+static void test_counts_before_buffers(void) {
+  /* A count the call refuses is refused before the buffer it describes is
+   * viewed: every buffer here is far shorter than its count claims (under
+   * AddressSanitizer a read past it would be caught). */
+  static const double square[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+  static const uint32_t tri[] = {3};
+  static const uint32_t corners[] = {0, 1, 2};
+  const size_t huge = (size_t)1 << 32, big = (size_t)1 << 20;
+  double values[4] = {0.1, 0.1, 0.1, 0.1}, out_values[4] = {0};
+  WeftSubdivisionOptions options;
+  WeftMesh *mesh = NULL, *cube = NULL;
+  memset(&options, 0, sizeof options);
+
+  CHECK_REFUSED(weft_mesh_new(square, 4, tri, huge, corners, 3, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_MESSAGE("invalid mesh: face count 4294967296 exceeds the limit of 2147483647");
+  CHECK_REFUSED(weft_mesh_new(square, 4, tri, 1, corners, huge, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_MESSAGE("invalid mesh: index count 4294967296 exceeds the limit of 2147483647");
+  CHECK_REFUSED(weft_mesh_new(square, SIZE_MAX, tri, 1, corners, 3, &mesh), mesh, WEFT_STATUS_INPUT_TOO_LARGE);
+  CHECK_MESSAGE("invalid mesh: vertex count");
+  /* A grid whose u x v disagrees with a point count within the cap. */
+  CHECK_STATUS(weft_mesh_from_grid(square, big, 2, 2, false, false, false, &mesh), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("1048576 points were given but a grid of u_count");
+  CHECK_MESSAGE("needs 4");
+  CHECK(mesh == NULL);
+
+  CHECK_STATUS(weft_box(1, 1, 1, 1, 1, 1, &cube), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_stellate(cube, values, big, &mesh), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("1048576 heights were given for a mesh of 6 faces; give one per face");
+  CHECK_STATUS(weft_mesh_window(cube, values, big, WEFT_INSET_EDGE_FRACTION, &mesh), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("1048576 distances were given for a mesh of 6 faces");
+  CHECK_STATUS(weft_picture_frame(cube, values, big, WEFT_INSET_EDGE_FRACTION, &mesh), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("1048576 distances were given for a mesh of 6 faces");
+  CHECK_STATUS(weft_laplacian_hc_smooth_ex(cube, 1, 0.0, 0.6, WEFT_NAKED_EDGES_FIXED, WEFT_SMOOTH_DIRECTION_FREE,
+                                           values, big, &mesh),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("activation has 1048576 values but the mesh has 8 vertices");
+  CHECK(mesh == NULL);
+  CHECK_STATUS(weft_blur_values(cube, values, big, 1, 1, 0.5, WEFT_NAKED_EDGES_FIXED, out_values, 4),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("1048576 values were given but the mesh's 8 vertices with 1 components need 8");
+  CHECK_STATUS(weft_subdivide_vertex_data(cube, &options, 1, values, big, 1, out_values, 4),
+               WEFT_STATUS_COUNT_MISMATCH);
+  CHECK_MESSAGE("data holds 1048576 doubles but 8 vertices of width 1 need 8");
+  CHECK_STATUS(weft_subdivide_face_varying(cube, &options, 1, WEFT_FACE_VARYING_ALL, values, 4, 1, corners, big,
+                                           out_values, 4),
+               WEFT_STATUS_COUNT_MISMATCH);
+  CHECK_MESSAGE("value_indices holds 1048576 indices but the mesh has 24 face corners");
+  /* Nothing was written to the too-short output either. */
+  CHECK(out_values[0] == 0.0 && out_values[3] == 0.0);
+  weft_mesh_free(cube);
+}
+
 static void test_levels(void) {
   WeftMesh *cube = NULL, *mesh = NULL;
   CHECK_STATUS(weft_box(2, 2, 2, 1, 1, 1, &cube), WEFT_STATUS_OK);
@@ -144,6 +196,7 @@ static void test_huge_coordinates(void) {
 int main(void) {
   test_primitives();
   test_point_counts();
+  test_counts_before_buffers();
   test_levels();
   test_huge_coordinates();
   return check_summary("test_limits");

@@ -178,6 +178,160 @@ static void test_orientation(void) {
   weft_mesh_free(cube);
 }
 
+/* The signed volume a closed mesh encloses (positive when its faces face
+ * out): the tetrahedra from the vertices' centroid to fans of triangles
+ * about each face's first corner. Measured from the centroid, every face
+ * of a cube counts, and a reversed one counts against. */
+static double signed_volume(const WeftMesh *mesh) {
+  const double *p = weft_mesh_positions(mesh);
+  const uint32_t *sizes = weft_mesh_face_sizes(mesh), *indices = weft_mesh_face_indices(mesh);
+  double volume = 0, o[3] = {0, 0, 0};
+  size_t f, start = 0, k, v, n = weft_mesh_vertex_count(mesh);
+  for (v = 0; v < n; ++v) {
+    for (k = 0; k < 3; ++k) o[k] += p[3 * v + k] / (double)n;
+  }
+  for (f = 0; f < weft_mesh_face_count(mesh); start += sizes[f], ++f) {
+    const double *pa = p + 3 * indices[start];
+    for (k = 1; k + 1 < sizes[f]; ++k) {
+      const double *pb = p + 3 * indices[start + k], *pc = p + 3 * indices[start + k + 1];
+      double a[3], b[3], c[3];
+      int i;
+      for (i = 0; i < 3; ++i) {
+        a[i] = pa[i] - o[i];
+        b[i] = pb[i] - o[i];
+        c[i] = pc[i] - o[i];
+      }
+      volume += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) +
+                 a[2] * (b[0] * c[1] - b[1] * c[0])) / 6.0;
+    }
+  }
+  return volume;
+}
+
+/* Whether every edge of the mesh is run once in each direction: every
+ * directed edge appears once, and so does its reverse. */
+static int every_edge_consistent(const WeftMesh *mesh) {
+  const uint32_t *sizes = weft_mesh_face_sizes(mesh), *indices = weft_mesh_face_indices(mesh);
+  uint32_t from[64], to[64];
+  size_t n = 0, f, k, i, j, start = 0;
+  for (f = 0; f < weft_mesh_face_count(mesh); start += sizes[f], ++f) {
+    for (k = 0; k < sizes[f] && n < 64; ++k, ++n) {
+      from[n] = indices[start + k];
+      to[n] = indices[start + (k + 1) % sizes[f]];
+    }
+  }
+  for (i = 0; i < n; ++i) {
+    size_t same = 0, reverse = 0;
+    for (j = 0; j < n; ++j) {
+      same += from[j] == from[i] && to[j] == to[i];
+      reverse += from[j] == to[i] && to[j] == from[i];
+    }
+    if (same != 1 || reverse != 1) return 0;
+  }
+  return n > 0;
+}
+
+/* Whether `face` runs the corners `expected` (both of `size`) from some start. */
+static int same_face_up_to_rotation(const uint32_t *face, const uint32_t *expected, size_t size) {
+  size_t shift, k;
+  for (shift = 0; shift < size; ++shift) {
+    for (k = 0; k < size && face[(k + shift) % size] == expected[k]; ++k) {
+    }
+    if (k == size) return 1;
+  }
+  return 0;
+}
+
+static void test_three_flipped_faces(void) {
+  /* The three faces at vertex 0 (-z, -y, -x) reversed, first corner kept. */
+  static const uint32_t three_flipped[] = {0, 1, 3, 2, 4, 5, 7, 6, 0, 4, 5, 1,
+                                           2, 6, 7, 3, 0, 2, 6, 4, 1, 3, 7, 5};
+  WeftMesh *cube = make_cube(0.0), *scrambled = NULL, *fixed = NULL;
+  WeftMeshInfo info;
+  size_t flipped = 0, f;
+  CHECK_STATUS(weft_mesh_new(weft_mesh_positions(cube), 8, cube_sizes, 6, three_flipped, 24, &scrambled),
+               WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(scrambled, &info), WEFT_STATUS_OK);
+  CHECK(info.is_orientable && !info.is_oriented && info.is_closed);
+  CHECK(!every_edge_consistent(scrambled));
+  /* Half the faces wrong: the volume cancels out. */
+  CHECK(near(signed_volume(scrambled), 0.0));
+
+  CHECK_STATUS(weft_unify_orientation(scrambled, &fixed, &flipped), WEFT_STATUS_OK);
+  CHECK(flipped == 3);
+  CHECK(every_edge_consistent(fixed));
+  /* Facing out: the unit cube's volume, positive. */
+  CHECK(near(signed_volume(fixed), 1.0));
+  CHECK_STATUS(weft_mesh_info(fixed, &info), WEFT_STATUS_OK);
+  CHECK(info.is_oriented && info.is_orientable && info.is_closed);
+  /* Each face is the unflipped cube's, up to where it starts. */
+  CHECK(weft_mesh_face_count(fixed) == 6 && weft_mesh_index_count(fixed) == 24);
+  for (f = 0; f < 6; ++f) {
+    CHECK(same_face_up_to_rotation(weft_mesh_face_indices(fixed) + 4 * f, cube_indices + 4 * f, 4));
+  }
+  /* The positions are untouched. */
+  CHECK(memcmp(weft_mesh_positions(fixed), weft_mesh_positions(cube), 24 * sizeof(double)) == 0);
+  weft_mesh_free(fixed);
+  weft_mesh_free(scrambled);
+  weft_mesh_free(cube);
+}
+
+/* A band of `n` quads around a circle of radius 2, its two rows of
+ * vertices (2i the outer edge at angle i, 2i + 1 the inner) joined back on
+ * themselves, with a half twist (a Möbius strip) or without (an annulus). */
+static WeftMesh *make_band(int twisted) {
+  enum { n = 12 };
+  double positions[6 * n];
+  uint32_t sizes[n], indices[4 * n];
+  WeftMesh *mesh = NULL;
+  int i;
+  for (i = 0; i < n; ++i) {
+    double theta = 2.0 * 3.14159265358979323846 * i / n, half = twisted ? theta / 2 : 0;
+    int side;
+    for (side = 0; side < 2; ++side) {
+      double w = side == 0 ? 0.5 : -0.5, r = 2.0 + w * cos(half);
+      positions[6 * i + 3 * side] = r * cos(theta);
+      positions[6 * i + 3 * side + 1] = r * sin(theta);
+      positions[6 * i + 3 * side + 2] = w * sin(half);
+    }
+    sizes[i] = 4;
+    indices[4 * i] = (uint32_t)(2 * i);
+    indices[4 * i + 1] = (uint32_t)(2 * i + 1);
+    if (i + 1 < n) {
+      indices[4 * i + 2] = (uint32_t)(2 * i + 3);
+      indices[4 * i + 3] = (uint32_t)(2 * i + 2);
+    } else {
+      /* Round the circle, a half twist brings the outer edge back as the inner one. */
+      indices[4 * i + 2] = twisted ? 0 : 1;
+      indices[4 * i + 3] = twisted ? 1 : 0;
+    }
+  }
+  CHECK_STATUS(weft_mesh_new(positions, 2 * n, sizes, n, indices, 4 * n, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
+static void test_mobius_strip(void) {
+  WeftMesh *strip = make_band(1), *annulus = make_band(0), *unified = NULL;
+  WeftMeshInfo info;
+  size_t flipped = 99;
+  CHECK_STATUS(weft_mesh_info(strip, &info), WEFT_STATUS_OK);
+  CHECK(!info.is_orientable && !info.is_oriented && !info.is_closed);
+  /* One border of 2n edges, one piece, manifold. */
+  CHECK(info.naked_edge_count == 24 && info.edge_count == 36 && info.component_count == 1);
+  CHECK(info.non_manifold_edge_count == 0 && info.non_manifold_vertex_count == 0);
+  /* No winding makes it orientable: unify does what it can, and says so. */
+  CHECK_STATUS(weft_unify_orientation(strip, &unified, &flipped), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_info(unified, &info), WEFT_STATUS_OK);
+  CHECK(!info.is_orientable && !info.is_oriented);
+  weft_mesh_free(unified);
+  /* The same band without the twist is orientable and already oriented. */
+  CHECK_STATUS(weft_mesh_info(annulus, &info), WEFT_STATUS_OK);
+  CHECK(info.is_orientable && info.is_oriented && !info.is_closed);
+  CHECK(info.naked_edge_count == 24 && info.edge_count == 36 && info.component_count == 1);
+  weft_mesh_free(annulus);
+  weft_mesh_free(strip);
+}
+
 static void test_normals_and_planarity(void) {
   /* z = xy on the unit square: (15 - sqrt 33) / (4 sqrt(66 + 2 sqrt 33)) from its plane. */
   static const double hypar_positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 1, 0, 1, 0};
@@ -260,6 +414,8 @@ int main(void) {
   test_join_weld_cull();
   test_t_nodes();
   test_orientation();
+  test_three_flipped_faces();
+  test_mobius_strip();
   test_normals_and_planarity();
   test_naked_boundaries();
   return check_summary("test_mend");

@@ -215,13 +215,13 @@ namespace Weft.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            AddMeshInput(pManager, "M", "The mesh whose seams and folds become creases.");
+            AddMeshInput(pManager, "M", "The mesh whose seams and folds become creases; its vertex colours, when it has one per vertex, are carried onto the welded mesh.");
             pManager.AddNumberParameter("Angle", "A", "Folds sharper than this many degrees become creases; 180 or more: only unwelded seams.", GH_ParamAccess.item, 180.0);
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The welded mesh.", GH_ParamAccess.item);
+            pManager.AddMeshParameter("Mesh", "M", "The welded mesh, with the input's vertex colours (each welded vertex the first of its coincident vertices' colour).", GH_ParamAccess.item);
             pManager.AddLineParameter("Creases", "C", "The crease edges as lines, for C of a creased subdivision.", GH_ParamAccess.list);
             pManager.AddIntegerParameter("Start", "A", "The first vertex of each crease (of the welded mesh).", GH_ParamAccess.list);
             pManager.AddIntegerParameter("End", "B", "The second vertex of each crease.", GH_ParamAccess.list);
@@ -230,14 +230,25 @@ namespace Weft.Grasshopper
         protected override void Solve(IGH_DataAccess DA)
         {
             double angle = Get(DA, 1, 180.0);
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            int[] colours;
+            PolygonArrays input = GetPolygons(DA, 0, out colours);
+            if (input == null) return;
+            using (WeftMesh mesh = WeftMesh.Create(input.Positions, input.FaceSizes, input.FaceIndices))
             {
-                if (mesh == null) return;
                 uint[] pairs;
-                using (WeftMesh welded = Subdivision.CreaseEdgesFromMesh(mesh, angle, out pairs))
+                uint[] vertexMap = null;
+                using (WeftMesh welded = colours == null
+                    ? Subdivision.CreaseEdgesFromMesh(mesh, angle, out pairs)
+                    : Subdivision.CreaseEdgesFromMesh(mesh, angle, out pairs, out vertexMap))
                 {
                     double[] positions = welded.GetPositions();
-                    DA.SetData(0, RhinoMeshes.FromWeft(welded));
+                    Mesh result = RhinoMeshes.FromWeft(welded);
+                    if (vertexMap != null)
+                    {
+                        // The weld merged coincident vertices: their colours follow its vertex map.
+                        RhinoMeshes.SetVertexColours(result, CreaseInputs.ColoursThroughWeld(colours, vertexMap, welded.VertexCount));
+                    }
+                    DA.SetData(0, result);
                     DA.SetDataList(1, RhinoMeshes.ToLines(CreaseInputs.Segments(positions, pairs)));
                     var starts = new List<int>(pairs.Length / 2);
                     var ends = new List<int>(pairs.Length / 2);
