@@ -1,4 +1,6 @@
-//! Mending on meshes of a million elements: weld and the topology it feeds.
+//! Mending on meshes of a million elements: weld and the topology it feeds,
+//! with OpenSubdiv building its topology of the same mesh beside Weft's
+//! (`Far::TopologyRefinerFactory::Create`, no refinement).
 //!
 //! Run with `cargo bench --bench mending`.
 
@@ -7,6 +9,7 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, Criterion};
 use weft::weld::{weld, DEFAULT_WELD_TOLERANCE};
 use weft::{shapes, DVec3, Mesh, Topology};
+use weft_reference::{BoundaryInterpolation, OsdOptions, OsdRefiner, RefMesh, Scheme as OsdScheme};
 
 /// A 500 × 500 quad grid whose every face has its own four vertices, each
 /// moved by up to 0.0004 on every axis: 1,000,000 vertices that weld back to
@@ -37,6 +40,15 @@ fn mending(c: &mut Criterion) {
     let grid = shapes::quad_grid(1000, 1000);
     group.bench_function("topology of 1M quads", |b| {
         b.iter(|| Topology::new(black_box(&grid)))
+    });
+    let cage = RefMesh {
+        positions: grid.positions().iter().flat_map(|p| p.to_array()).collect(),
+        face_sizes: grid.face_sizes().to_vec(),
+        face_indices: grid.face_indices().to_vec(),
+    };
+    let options = OsdOptions::new(OsdScheme::CatmullClark, BoundaryInterpolation::EdgeOnly);
+    group.bench_function("OpenSubdiv topology of 1M quads", |b| {
+        b.iter(|| OsdRefiner::new(black_box(&cage), &options, 0).expect("osd"))
     });
     group.finish();
 }

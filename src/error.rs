@@ -86,5 +86,13 @@ pub fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
             std::mem::size_of::<T>()
         ))
     })?;
+    // Large results are written once into fresh memory: with 4 KiB pages,
+    // faulting it in costs more than the arithmetic that fills it.
+    if capacity.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE_ADVICE_BYTES {
+        weft_pages::advise_huge_pages(v.spare_capacity_mut());
+    }
     Ok(v)
 }
+
+/// Buffers from this size up are advised for transparent huge pages.
+const HUGE_PAGE_ADVICE_BYTES: usize = 8 << 20;

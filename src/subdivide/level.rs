@@ -213,18 +213,22 @@ impl Connectivity {
         let next = |c: usize| faces.next(c, face_of(c));
         let edge_slots = 2 * e_count + c_count;
 
-        let mut edges = try_vec(edge_slots, "edges")?;
-        for v in 0..v_count {
-            edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
-        }
-        for e in 0..e_count {
-            let point = v_base + e as u32;
-            edges.extend(
-                self.edge_corners(e)
-                    .iter()
-                    .map(|&c| [point, f_base + face_of(c as usize) as u32]),
-            );
-        }
+        // The arrays are independent of each other: built side by side.
+        let build_edges = || -> Result<Vec<[u32; 2]>> {
+            let mut edges = try_vec(edge_slots, "edges")?;
+            for v in 0..v_count {
+                edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
+            }
+            for e in 0..e_count {
+                let point = v_base + e as u32;
+                edges.extend(
+                    self.edge_corners(e)
+                        .iter()
+                        .map(|&c| [point, f_base + face_of(c as usize) as u32]),
+                );
+            }
+            Ok(edges)
+        };
 
         let mut corner_faces = try_vec(4 * c_count, "corner faces")?;
         corner_faces.extend((0..4 * c_count as u32).map(|k| k / 4));
@@ -247,80 +251,98 @@ impl Connectivity {
                 }),
         );
 
-        let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
-        let mut edge_corners = try_vec(4 * c_count, "edge corners")?;
-        edge_offsets.push(0);
-        for v in 0..v_count {
-            for &e in self.vertex_edges(v) {
-                let start = edge_corners.len();
-                edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
-                    let c = c as usize;
-                    if idx[c] == v as u32 {
-                        4 * c as u32
-                    } else {
-                        4 * next(c) as u32 + 3
-                    }
-                }));
-                edge_corners[start..].sort_unstable();
+        let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
+            let mut edge_corners = try_vec(4 * c_count, "edge corners")?;
+            edge_offsets.push(0);
+            for v in 0..v_count {
+                for &e in self.vertex_edges(v) {
+                    let start = edge_corners.len();
+                    edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
+                        let c = c as usize;
+                        if idx[c] == v as u32 {
+                            4 * c as u32
+                        } else {
+                            4 * next(c) as u32 + 3
+                        }
+                    }));
+                    edge_corners[start..].sort_unstable();
+                    edge_offsets.push(edge_corners.len() as u32);
+                }
+            }
+            for &c in &self.edge_corners {
+                let c = c as usize;
+                let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
+                edge_corners.extend_from_slice(&[a.min(b), a.max(b)]);
                 edge_offsets.push(edge_corners.len() as u32);
             }
-        }
-        for &c in &self.edge_corners {
-            let c = c as usize;
-            let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
-            edge_corners.extend_from_slice(&[a.min(b), a.max(b)]);
-            edge_offsets.push(edge_corners.len() as u32);
-        }
+            Ok((edge_offsets, edge_corners))
+        };
 
         let child_vertices = v_count + e_count + faces.face_count();
-        let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
-        let mut vertex_corners = try_vec(4 * c_count, "vertex corners")?;
-        vertex_offsets.push(0);
-        for v in 0..v_count {
-            vertex_corners.extend(self.vertex_corners(v).iter().map(|&c| 4 * c));
-            vertex_offsets.push(vertex_corners.len() as u32);
-        }
-        for e in 0..e_count {
-            let start = vertex_corners.len();
-            for &c in self.edge_corners(e) {
-                vertex_corners.extend_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
-            }
-            vertex_corners[start..].sort_unstable();
-            vertex_offsets.push(vertex_corners.len() as u32);
-        }
-        for w in faces.offsets.windows(2) {
-            vertex_corners.extend((w[0]..w[1]).map(|c| 4 * c + 2));
-            vertex_offsets.push(vertex_corners.len() as u32);
-        }
-
-        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
-        if with_vertex_edges {
-            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-            vertex_edge_offsets.push(0);
+        let build_vertex_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
+            let mut vertex_corners = try_vec(4 * c_count, "vertex corners")?;
+            vertex_offsets.push(0);
             for v in 0..v_count {
-                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-                vertex_edge_offsets.push(vertex_edges.len() as u32);
+                vertex_corners.extend(self.vertex_corners(v).iter().map(|&c| 4 * c));
+                vertex_offsets.push(vertex_corners.len() as u32);
             }
-            for (e, &[a, b]) in self.edges.iter().enumerate() {
-                let e32 = e as u32;
-                vertex_edges.extend_from_slice(&[
-                    self.vertex_edge_slot(a, e32),
-                    self.vertex_edge_slot(b, e32),
-                ]);
-                vertex_edges.extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
-                vertex_edge_offsets.push(vertex_edges.len() as u32);
+            for e in 0..e_count {
+                let start = vertex_corners.len();
+                for &c in self.edge_corners(e) {
+                    vertex_corners.extend_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
+                }
+                vertex_corners[start..].sort_unstable();
+                vertex_offsets.push(vertex_corners.len() as u32);
             }
             for w in faces.offsets.windows(2) {
-                let start = vertex_edges.len();
-                vertex_edges.extend(
-                    (w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)),
-                );
-                vertex_edges[start..].sort_unstable();
-                vertex_edge_offsets.push(vertex_edges.len() as u32);
+                vertex_corners.extend((w[0]..w[1]).map(|c| 4 * c + 2));
+                vertex_offsets.push(vertex_corners.len() as u32);
             }
-        }
+            Ok((vertex_offsets, vertex_corners))
+        };
 
+        let build_vertex_edges = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+            if with_vertex_edges {
+                vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+                vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+                vertex_edge_offsets.push(0);
+                for v in 0..v_count {
+                    vertex_edges
+                        .extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                    vertex_edge_offsets.push(vertex_edges.len() as u32);
+                }
+                for (e, &[a, b]) in self.edges.iter().enumerate() {
+                    let e32 = e as u32;
+                    vertex_edges.extend_from_slice(&[
+                        self.vertex_edge_slot(a, e32),
+                        self.vertex_edge_slot(b, e32),
+                    ]);
+                    vertex_edges
+                        .extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
+                    vertex_edge_offsets.push(vertex_edges.len() as u32);
+                }
+                for w in faces.offsets.windows(2) {
+                    let start = vertex_edges.len();
+                    vertex_edges.extend(
+                        (w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)),
+                    );
+                    vertex_edges[start..].sort_unstable();
+                    vertex_edge_offsets.push(vertex_edges.len() as u32);
+                }
+            }
+            Ok((vertex_edge_offsets, vertex_edges))
+        };
+
+        let ((edges, edge_corners), (vertex_corners, vertex_edges)) = rayon::join(
+            || rayon::join(build_edges, build_edge_corners),
+            || rayon::join(build_vertex_corners, build_vertex_edges),
+        );
+        let (edges, (edge_offsets, edge_corners)) = (edges?, edge_corners?);
+        let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
+            (vertex_corners?, vertex_edges?);
         Ok(Connectivity {
             edges,
             corner_faces,
@@ -387,140 +409,161 @@ impl Connectivity {
         };
 
         let edge_slots = 2 * e_count + inner_high.len();
-        let mut edges = try_vec(edge_slots, "edges")?;
-        for v in 0..v_count {
-            edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
-        }
-        for m in 0..e_count {
-            let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
-            edges.extend(block.iter().map(|&h| [v_base + m as u32, v_base + h]));
-        }
+        // The arrays are independent of each other: built side by side.
+        let build_edges = || -> Result<(Vec<[u32; 2]>, Vec<u32>)> {
+            let mut edges = try_vec(edge_slots, "edges")?;
+            for v in 0..v_count {
+                edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
+            }
+            for m in 0..e_count {
+                let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
+                edges.extend(block.iter().map(|&h| [v_base + m as u32, v_base + h]));
+            }
 
-        let mut corner_faces = try_vec(12 * f_count, "corner faces")?;
-        corner_faces.extend((0..12 * f_count as u32).map(|k| k / 3));
-
-        let mut corner_edges = try_vec(12 * f_count, "corner edges")?;
-        for f in 0..f_count {
-            let e = face_edges(f);
-            for i in 0..3 {
-                let (v, e_previous) = (idx[3 * f + i], e[(i + 2) % 3]);
+            let mut corner_edges = try_vec(12 * f_count, "corner edges")?;
+            for f in 0..f_count {
+                let e = face_edges(f);
+                for i in 0..3 {
+                    let (v, e_previous) = (idx[3 * f + i], e[(i + 2) % 3]);
+                    corner_edges.extend_from_slice(&[
+                        self.vertex_edge_slot(v, e[i]),
+                        inner(e[i], e_previous),
+                        self.vertex_edge_slot(v, e_previous),
+                    ]);
+                }
                 corner_edges.extend_from_slice(&[
-                    self.vertex_edge_slot(v, e[i]),
-                    inner(e[i], e_previous),
-                    self.vertex_edge_slot(v, e_previous),
+                    inner(e[0], e[1]),
+                    inner(e[1], e[2]),
+                    inner(e[2], e[0]),
                 ]);
             }
-            corner_edges.extend_from_slice(&[
-                inner(e[0], e[1]),
-                inner(e[1], e[2]),
-                inner(e[2], e[0]),
-            ]);
-        }
+            Ok((edges, corner_edges))
+        };
 
-        let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
-        let mut edge_corners = try_vec(12 * f_count, "edge corners")?;
-        edge_offsets.push(0);
-        for v in 0..v_count {
-            for &e in self.vertex_edges(v) {
-                let start = edge_corners.len();
-                edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
-                    let (f, i) = (c / 3, c % 3);
-                    if idx[c as usize] == v as u32 {
-                        12 * f + 3 * i
-                    } else {
-                        12 * f + 3 * ((i + 1) % 3) + 2
-                    }
-                }));
-                edge_corners[start..].sort_unstable();
-                edge_offsets.push(edge_corners.len() as u32);
-            }
-        }
-        for m in 0..e_count {
-            for &h in &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize] {
-                let start = edge_corners.len();
-                for &c in self.edge_corners(m) {
-                    let (f, i) = (c / 3, c % 3);
-                    let e = face_edges(f as usize);
-                    // The inside edge {E_j, E_(j+1)} is T_(j+1)'s corner 1 and T_3's corner j.
-                    let j = if e[(i as usize + 1) % 3] == h {
-                        i
-                    } else if e[(i as usize + 2) % 3] == h {
-                        (i + 2) % 3
-                    } else {
-                        continue;
-                    };
-                    edge_corners
-                        .extend_from_slice(&[12 * f + 3 * ((j + 1) % 3) + 1, 12 * f + 9 + j]);
+        let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
+            let mut edge_corners = try_vec(12 * f_count, "edge corners")?;
+            edge_offsets.push(0);
+            for v in 0..v_count {
+                for &e in self.vertex_edges(v) {
+                    let start = edge_corners.len();
+                    edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
+                        let (f, i) = (c / 3, c % 3);
+                        if idx[c as usize] == v as u32 {
+                            12 * f + 3 * i
+                        } else {
+                            12 * f + 3 * ((i + 1) % 3) + 2
+                        }
+                    }));
+                    edge_corners[start..].sort_unstable();
+                    edge_offsets.push(edge_corners.len() as u32);
                 }
-                edge_corners[start..].sort_unstable();
-                edge_offsets.push(edge_corners.len() as u32);
             }
-        }
+            for m in 0..e_count {
+                for &h in &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize] {
+                    let start = edge_corners.len();
+                    for &c in self.edge_corners(m) {
+                        let (f, i) = (c / 3, c % 3);
+                        let e = face_edges(f as usize);
+                        // The inside edge {E_j, E_(j+1)} is T_(j+1)'s corner 1 and T_3's corner j.
+                        let j = if e[(i as usize + 1) % 3] == h {
+                            i
+                        } else if e[(i as usize + 2) % 3] == h {
+                            (i + 2) % 3
+                        } else {
+                            continue;
+                        };
+                        edge_corners
+                            .extend_from_slice(&[12 * f + 3 * ((j + 1) % 3) + 1, 12 * f + 9 + j]);
+                    }
+                    edge_corners[start..].sort_unstable();
+                    edge_offsets.push(edge_corners.len() as u32);
+                }
+            }
+            Ok((edge_offsets, edge_corners))
+        };
 
         let child_vertices = v_count + e_count;
-        let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
-        let mut vertex_corners = try_vec(12 * f_count, "vertex corners")?;
-        vertex_offsets.push(0);
-        for v in 0..v_count {
-            vertex_corners.extend(
-                self.vertex_corners(v)
-                    .iter()
-                    .map(|&c| 12 * (c / 3) + 3 * (c % 3)),
-            );
-            vertex_offsets.push(vertex_corners.len() as u32);
-        }
-        for e in 0..e_count {
-            let start = vertex_corners.len();
-            for &c in self.edge_corners(e) {
-                let (f, i) = (c / 3, c % 3);
-                vertex_corners.extend_from_slice(&[
-                    12 * f + 3 * i + 1,
-                    12 * f + 3 * ((i + 1) % 3) + 2,
-                    12 * f + 9 + i,
-                ]);
-            }
-            vertex_corners[start..].sort_unstable();
-            vertex_offsets.push(vertex_corners.len() as u32);
-        }
-
-        let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
-        if with_vertex_edges {
-            vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-            vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-            vertex_edge_offsets.push(0);
+        let build_vertex_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
+            let mut vertex_corners = try_vec(12 * f_count, "vertex corners")?;
+            vertex_offsets.push(0);
             for v in 0..v_count {
-                vertex_edges.extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-                vertex_edge_offsets.push(vertex_edges.len() as u32);
+                vertex_corners.extend(
+                    self.vertex_corners(v)
+                        .iter()
+                        .map(|&c| 12 * (c / 3) + 3 * (c % 3)),
+                );
+                vertex_offsets.push(vertex_corners.len() as u32);
             }
-            for (e, &[a, b]) in self.edges.iter().enumerate() {
-                let e32 = e as u32;
-                vertex_edges.extend_from_slice(&[
-                    self.vertex_edge_slot(a, e32),
-                    self.vertex_edge_slot(b, e32),
-                ]);
-                let start = vertex_edges.len();
+            for e in 0..e_count {
+                let start = vertex_corners.len();
                 for &c in self.edge_corners(e) {
-                    let (f, i) = (c as usize / 3, c as usize % 3);
-                    let edges = face_edges(f);
-                    for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
-                        if x < e32 {
-                            vertex_edges.push(inner(x, e32));
+                    let (f, i) = (c / 3, c % 3);
+                    vertex_corners.extend_from_slice(&[
+                        12 * f + 3 * i + 1,
+                        12 * f + 3 * ((i + 1) % 3) + 2,
+                        12 * f + 9 + i,
+                    ]);
+                }
+                vertex_corners[start..].sort_unstable();
+                vertex_offsets.push(vertex_corners.len() as u32);
+            }
+            Ok((vertex_offsets, vertex_corners))
+        };
+
+        let build_vertex_edges = || -> Result<(Vec<u32>, Vec<u32>)> {
+            let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
+            if with_vertex_edges {
+                vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
+                vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
+                vertex_edge_offsets.push(0);
+                for v in 0..v_count {
+                    vertex_edges
+                        .extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
+                    vertex_edge_offsets.push(vertex_edges.len() as u32);
+                }
+                for (e, &[a, b]) in self.edges.iter().enumerate() {
+                    let e32 = e as u32;
+                    vertex_edges.extend_from_slice(&[
+                        self.vertex_edge_slot(a, e32),
+                        self.vertex_edge_slot(b, e32),
+                    ]);
+                    let start = vertex_edges.len();
+                    for &c in self.edge_corners(e) {
+                        let (f, i) = (c as usize / 3, c as usize % 3);
+                        let edges = face_edges(f);
+                        for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
+                            if x < e32 {
+                                vertex_edges.push(inner(x, e32));
+                            }
                         }
                     }
-                }
-                vertex_edges[start..].sort_unstable();
-                let mut kept = start;
-                for k in start..vertex_edges.len() {
-                    if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
-                        vertex_edges[kept] = vertex_edges[k];
-                        kept += 1;
+                    vertex_edges[start..].sort_unstable();
+                    let mut kept = start;
+                    for k in start..vertex_edges.len() {
+                        if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
+                            vertex_edges[kept] = vertex_edges[k];
+                            kept += 1;
+                        }
                     }
+                    vertex_edges.truncate(kept);
+                    vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
+                    vertex_edge_offsets.push(vertex_edges.len() as u32);
                 }
-                vertex_edges.truncate(kept);
-                vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
-                vertex_edge_offsets.push(vertex_edges.len() as u32);
             }
-        }
+            Ok((vertex_edge_offsets, vertex_edges))
+        };
+
+        let ((edges, edge_corners), (vertex_corners, vertex_edges)) = rayon::join(
+            || rayon::join(build_edges, build_edge_corners),
+            || rayon::join(build_vertex_corners, build_vertex_edges),
+        );
+        let ((edges, corner_edges), (edge_offsets, edge_corners)) = (edges?, edge_corners?);
+        let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
+            (vertex_corners?, vertex_edges?);
+        let mut corner_faces = try_vec(12 * f_count, "corner faces")?;
+        corner_faces.extend((0..12 * f_count as u32).map(|k| k / 3));
 
         Ok(Connectivity {
             edges,

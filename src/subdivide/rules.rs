@@ -23,9 +23,14 @@
 //! child is smooth. (Re-deriving would differ from OpenSubdiv: the point on a
 //! non-manifold edge is a crease, not a corner.)
 
+use rayon::prelude::*;
+
 use super::level::{zeroed, Connectivity, Faces, Plan, VertexRule, NONE};
 use super::{NakedEdges, Scheme};
 use crate::error::{try_vec, Result};
+
+/// Items per rayon task: small enough to balance, large enough to amortise.
+const CHUNK: usize = 4096;
 
 /// Sharpness of every edge and rule of every vertex of one level.
 #[derive(Debug, Clone)]
@@ -234,20 +239,27 @@ pub(crate) fn plan(
     let face_of = |c: u32| connectivity.corner_faces[c as usize] as usize;
 
     let mut edges = try_vec(connectivity.edge_count(), "edge stencils")?;
-    for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
-        let wings = match (tags.edge_sharp[e], connectivity.edge_corners(e)) {
-            (false, &[c1, c2]) => match scheme {
-                Scheme::CatmullClark => [face_of(c1) as u32, face_of(c2) as u32],
-                // The vertex of the triangle opposite the edge follows the edge's end.
-                Scheme::Loop => [c1, c2].map(|c| {
-                    let f = face_of(c);
-                    indices[faces.next(faces.next(c as usize, f), f)]
-                }),
-            },
-            _ => [NONE, NONE],
-        };
-        edges.push([a, b, wings[0], wings[1]]);
-    }
+    edges.par_extend(
+        connectivity
+            .edges
+            .par_iter()
+            .with_min_len(CHUNK)
+            .enumerate()
+            .map(|(e, &[a, b])| {
+                let wings = match (tags.edge_sharp[e], connectivity.edge_corners(e)) {
+                    (false, &[c1, c2]) => match scheme {
+                        Scheme::CatmullClark => [face_of(c1) as u32, face_of(c2) as u32],
+                        // The vertex of the triangle opposite the edge follows the edge's end.
+                        Scheme::Loop => [c1, c2].map(|c| {
+                            let f = face_of(c);
+                            indices[faces.next(faces.next(c as usize, f), f)]
+                        }),
+                    },
+                    _ => [NONE, NONE],
+                };
+                [a, b, wings[0], wings[1]]
+            }),
+    );
 
     let per_neighbour = match scheme {
         Scheme::CatmullClark => 2,
@@ -265,22 +277,29 @@ pub(crate) fn plan(
         ring_offsets.push(total);
     }
     let mut ring: Vec<u32> = zeroed(total as usize, "vertex stencils")?;
-    for (v, rule) in tags.vertex_rules.iter().enumerate() {
-        if *rule != VertexRule::Smooth {
-            continue;
-        }
-        let corners = connectivity.vertex_corners(v);
-        let slot = &mut ring[ring_offsets[v] as usize..ring_offsets[v + 1] as usize];
-        // Around a smooth (manifold, interior, oriented) vertex each edge
-        // leaves v in exactly one face: the corners' next vertices are the ring.
-        for (i, &c) in corners.iter().enumerate() {
-            let f = face_of(c);
-            slot[i] = indices[faces.next(c as usize, f)];
-            if per_neighbour == 2 {
-                slot[corners.len() + i] = f as u32;
+    // Each block of vertices owns a contiguous part of the ring.
+    let blocks = split_by_offsets(&mut ring, &ring_offsets, CHUNK);
+    blocks.into_par_iter().for_each(|(first, block)| {
+        let base = ring_offsets[first] as usize;
+        let last = (first + CHUNK).min(vertex_count);
+        for v in first..last {
+            if tags.vertex_rules[v] != VertexRule::Smooth {
+                continue;
+            }
+            let corners = connectivity.vertex_corners(v);
+            let slot =
+                &mut block[ring_offsets[v] as usize - base..ring_offsets[v + 1] as usize - base];
+            // Around a smooth (manifold, interior, oriented) vertex each edge
+            // leaves v in exactly one face: the corners' next vertices are the ring.
+            for (i, &c) in corners.iter().enumerate() {
+                let f = face_of(c);
+                slot[i] = indices[faces.next(c as usize, f)];
+                if per_neighbour == 2 {
+                    slot[corners.len() + i] = f as u32;
+                }
             }
         }
-    }
+    });
     // A crease vertex's ring is the far ends of its two sharp edges.
     let mut filled: Vec<u8> = zeroed(vertex_count, "vertex stencils")?;
     for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
@@ -306,6 +325,26 @@ pub(crate) fn plan(
         vertex_ring_offsets: ring_offsets,
         vertex_ring: ring,
     })
+}
+
+/// Splits `values` into the parts owned by each block of `block` items,
+/// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
+/// its first item.
+fn split_by_offsets<'a, T>(
+    mut values: &'a mut [T],
+    offsets: &[u32],
+    block: usize,
+) -> Vec<(usize, &'a mut [T])> {
+    let items = offsets.len().saturating_sub(1);
+    let mut parts = Vec::with_capacity(items.div_ceil(block));
+    for first in (0..items).step_by(block) {
+        let last = (first + block).min(items);
+        let len = (offsets[last] - offsets[first]) as usize;
+        let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
+        parts.push((first, part));
+        values = rest;
+    }
+    parts
 }
 
 /// Loop's smooth vertex weights `(vertex, each neighbour)` for `valence`
