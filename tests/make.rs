@@ -6,7 +6,7 @@ use weft::stellate::{stellate, Heights};
 use weft::subdivide::{catmull_clark, NakedEdges};
 use weft::voronoi::{cells_to_mesh, voronoi};
 use weft::weld::{join, weld};
-use weft::{DVec3, Topology};
+use weft::{DVec3, Mesh, Topology};
 
 fn random_points(seed: u64, n: usize, accept: impl Fn(DVec3) -> bool) -> Vec<DVec3> {
     let mut state = seed;
@@ -52,13 +52,31 @@ fn check_skin(points: &[DVec3], boundary: &[DVec3]) {
         .iter()
         .all(|p| (p.z + 0.3).abs() < 1e-12));
 
-    // The chain of the workflow, only Weft calls: the pyramids joined (here
-    // already one mesh, so joining it with an empty mesh must change nothing),
-    // welded, then Catmull-Clark with the outline fixed.
-    let joined = join(&[&skin, &weft::Mesh::empty()]).unwrap();
-    assert_eq!(joined, skin);
+    // The chain as a designer builds it, only Weft calls: one pyramid per
+    // cell, the list joined, welded, then Catmull-Clark with the outline fixed.
+    let pyramids: Vec<Mesh> = cells
+        .iter()
+        .map(|cell| {
+            stellate(
+                &cells_to_mesh(std::slice::from_ref(cell)).unwrap(),
+                Heights::One(-0.3),
+            )
+            .unwrap()
+        })
+        .collect();
+    let joined = join(&pyramids.iter().collect::<Vec<_>>()).unwrap();
+    assert_eq!(joined.vertex_count(), skin.vertex_count());
+    assert_eq!(joined.face_count(), skin.face_count());
+    assert_eq!(
+        Topology::new(&joined).info(&joined).component_count,
+        points.len()
+    );
     let (welded, report) = weld(&joined, 1e-9).unwrap();
     assert_eq!(report.removed_face_count, 0);
+    // The same surface as welding the pyramids stellated all at once.
+    let (welded_at_once, _) = weld(&skin, 1e-9).unwrap();
+    assert_eq!(welded.vertex_count(), welded_at_once.vertex_count());
+    assert_eq!(welded.face_count(), welded_at_once.face_count());
     let smooth = catmull_clark(&welded, 2, NakedEdges::Fixed).unwrap();
     for mesh in [&welded, &smooth] {
         let topology = Topology::new(mesh);
