@@ -65,10 +65,12 @@ impl EarClipper {
     /// Appends the n − 2 triangles of polygon `face`.
     fn clip(&mut self, face: &[u32], positions: &[DVec3], out: &mut Vec<u32>) {
         let corners: Vec<DVec3> = face.iter().map(|&v| positions[v as usize]).collect();
-        let normal = newell_vector(&corners);
-        // A basis of the best-fit plane oriented so the polygon winds counter-clockwise.
+        // A basis of the best-fit plane oriented so the polygon winds
+        // counter-clockwise. Newell's vector is twice the polygon's area
+        // long; the basis is orthonormal only when built from a unit normal.
+        let normal = newell_vector(&corners).normalize_or_zero();
         let axis_u = normal.any_orthonormal_vector();
-        let axis_v = normal.normalize_or_zero().cross(axis_u);
+        let axis_v = normal.cross(axis_u);
         self.points.clear();
         self.points.extend(
             corners
@@ -165,6 +167,31 @@ mod tests {
         // 1-3 is shorter than 0-2.
         assert_eq!(t.mesh.face_indices(), &[0, 1, 3, 1, 2, 3]);
         assert_eq!(t.parent_faces, vec![0, 0]);
+    }
+
+    #[test]
+    fn a_folded_hexagon_keeps_its_winding() {
+        // Two squares meeting at a right angle along the middle of the
+        // hexagon's long sides; those two corners are straight in the
+        // best-fit plane, one of them slightly reflex.
+        let p = [
+            (-1.00156, -0.32860, 1.00466),
+            (-0.33696, -0.33077, 1.00034),
+            (-0.33034, 0.33112, 1.00370),
+            (-0.99774, 0.33576, 0.99899),
+            (-0.99599, 0.33404, 0.33505),
+            (-0.99929, -0.33210, 0.33576),
+        ]
+        .map(|(x, y, z)| DVec3::new(x, y, z))
+        .to_vec();
+        let normal = newell_vector(&p);
+        let mesh = Mesh::from_polygons(p, [[0u32, 1, 2, 3, 4, 5]]).unwrap();
+        let t = triangulate(&mesh).unwrap();
+        assert_eq!(t.mesh.face_count(), 4);
+        for f in t.mesh.faces() {
+            let q: Vec<DVec3> = f.iter().map(|&v| t.mesh.positions()[v as usize]).collect();
+            assert!(newell_vector(&q).dot(normal) > 0.0, "{f:?}");
+        }
     }
 
     #[test]

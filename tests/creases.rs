@@ -293,16 +293,18 @@ fn without_creases_equals_the_plain_schemes() {
 #[test]
 fn carried_vertex_data_equals_opensubdiv() {
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
-        for (name, cage, _) in shapes_for(scheme) {
-            let (creases, corners) = creased(&cage, &[2.5, 0.5, f64::INFINITY], &[1.5]);
-            let options = SubdivisionOptions {
-                naked_edges: NakedEdges::CornerFixed,
-                creases,
-                corners,
-                creasing: Creasing::Chaikin,
+        for (name, cage, closed) in shapes_for(scheme) {
+            let modes: &[NakedEdges] = if closed {
+                &[NakedEdges::Smooth]
+            } else {
+                &[
+                    NakedEdges::Smooth,
+                    NakedEdges::CornerFixed,
+                    NakedEdges::Fixed,
+                ]
             };
+            let (creases, corners) = creased(&cage, &[2.5, 0.5, f64::INFINITY], &[1.5]);
             let reference_cage = to_ref(&cage);
-            let osd = osd_options(scheme, &options, &reference_cage);
             // Five columns: a colour and two weights, not linear in position.
             let width = 5;
             let data: Vec<f64> = (0..cage.vertex_count())
@@ -311,20 +313,33 @@ fn carried_vertex_data_equals_opensubdiv() {
                     [x.sin(), (0.3 * x).cos(), 0.1 * x, x * x * 0.01, 1.0]
                 })
                 .collect();
-            for levels in 1..=3 {
-                let what = format!("{scheme:?} {name} vertex data level {levels}");
-                let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
-                let ours = subdivider.vertex_data(&data, width).unwrap();
-                let refiner = OsdRefiner::new(&reference_cage, &osd, levels).unwrap();
-                let theirs = refiner.interpolate(&data, width);
-                let mut faces = refiner.faces();
-                faces.positions = refiner.interpolate(&reference_cage.positions, 3);
-                let map = vertex_map(&subdivider.mesh().unwrap(), &faces, &what);
-                assert_rows_close(&ours, &theirs, width, &map, 1e-12, &what);
-                // The constant column stays 1.
-                assert!(ours
-                    .chunks_exact(width)
-                    .all(|row| (row[4] - 1.0).abs() < 1e-12));
+            for creasing in [Creasing::Uniform, Creasing::Chaikin] {
+                for &naked_edges in modes {
+                    let options = SubdivisionOptions {
+                        naked_edges,
+                        creases: creases.clone(),
+                        corners: corners.clone(),
+                        creasing,
+                    };
+                    let osd = osd_options(scheme, &options, &reference_cage);
+                    for levels in 1..=3 {
+                        let what = format!(
+                            "{scheme:?} {name} {creasing:?} {naked_edges:?} vertex data level {levels}"
+                        );
+                        let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                        let ours = subdivider.vertex_data(&data, width).unwrap();
+                        let refiner = OsdRefiner::new(&reference_cage, &osd, levels).unwrap();
+                        let theirs = refiner.interpolate(&data, width);
+                        let mut faces = refiner.faces();
+                        faces.positions = refiner.interpolate(&reference_cage.positions, 3);
+                        let map = vertex_map(&subdivider.mesh().unwrap(), &faces, &what);
+                        assert_rows_close(&ours, &theirs, width, &map, 1e-12, &what);
+                        // The constant column stays 1.
+                        assert!(ours
+                            .chunks_exact(width)
+                            .all(|row| (row[4] - 1.0).abs() < 1e-12));
+                    }
+                }
             }
         }
     }
@@ -382,17 +397,20 @@ fn limit_positions_and_normals_equal_opensubdiv() {
             let reference_cage = to_ref(&cage);
             for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
                 let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
-                for &naked_edges in modes {
+                for (creasing, &naked_edges) in [Creasing::Uniform, Creasing::Chaikin]
+                    .into_iter()
+                    .flat_map(|creasing| modes.iter().map(move |m| (creasing, m)))
+                {
                     let options = SubdivisionOptions {
                         naked_edges,
                         creases: creases.clone(),
                         corners: corners.clone(),
-                        creasing: Creasing::Chaikin,
+                        creasing,
                     };
                     let osd = osd_options(scheme, &options, &reference_cage);
                     for levels in 0..=3 {
                         let what = format!(
-                            "{scheme:?} {name} {set} {naked_edges:?} limit at level {levels}"
+                            "{scheme:?} {name} {set} {creasing:?} {naked_edges:?} limit at level {levels}"
                         );
                         let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
                         let ours = subdivider.limit().unwrap();

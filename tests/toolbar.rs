@@ -286,6 +286,169 @@ fn thicken_of_an_open_grid_is_a_closed_solid() {
     }
 }
 
+/// The unit normal of each face around each vertex, once per corner, as
+/// the offset module reads them (Newell's normal of each face).
+fn normals_around(mesh: &Mesh) -> Vec<Vec<DVec3>> {
+    let mut around = vec![Vec::new(); mesh.vertex_count()];
+    for (f, face) in mesh.faces().enumerate() {
+        let n = newell(mesh, f).normalize();
+        for &v in face {
+            around[v as usize].push(n);
+        }
+    }
+    around
+}
+
+/// Checks that `moved` is `mesh` offset by `d` as `kind` defines it, vertex
+/// by vertex: n_v the normalised sum of the unit normals of v's faces,
+/// Diagonal moves by d·n_v; Hypotenuse Average along n_v by the mean over
+/// v's faces of d / cos θ_f (cosines below 0.1 taken as 0.1); Planes
+/// Intersection onto the plane of each of v's faces moved by d along its
+/// normal (with two faces, onto their moved line).
+fn assert_offset_by(mesh: &Mesh, moved: &[DVec3], d: f64, kind: OffsetType) {
+    for (v, normals) in normals_around(mesh).iter().enumerate() {
+        let p = mesh.positions()[v];
+        let step = moved[v] - p;
+        let n_v = normals.iter().sum::<DVec3>().normalize();
+        let what = format!("{kind:?} vertex {v}: moved by {step}");
+        match kind {
+            OffsetType::Diagonal => assert!((step - d * n_v).length() < 1e-12, "{what}"),
+            OffsetType::HypotenuseAverage => {
+                let mean = normals
+                    .iter()
+                    .map(|n| d / n_v.dot(*n).max(0.1))
+                    .sum::<f64>()
+                    / normals.len() as f64;
+                assert!((step - mean * n_v).length() < 1e-12, "{what}");
+            }
+            OffsetType::PlanesIntersection => {
+                for n in normals {
+                    assert!((n.dot(step) - d).abs() < 1e-12, "{what}: {n}");
+                }
+            }
+        }
+    }
+}
+
+/// A prism on an equilateral triangle, outward: at each corner the base
+/// meets the two walls at right angles, the walls meet each other at 60°.
+fn triangular_prism() -> Mesh {
+    let corner = |k: usize, z: f64| {
+        let a = std::f64::consts::TAU * k as f64 / 3.0;
+        DVec3::new(a.cos(), a.sin(), z)
+    };
+    let positions = (0..6).map(|i| corner(i % 3, (i / 3) as f64)).collect();
+    let faces: [&[u32]; 5] = [
+        &[0, 2, 1],
+        &[3, 4, 5],
+        &[0, 1, 4, 3],
+        &[1, 2, 5, 4],
+        &[2, 0, 3, 5],
+    ];
+    let prism = Mesh::from_polygons(positions, faces).unwrap();
+    assert!(volume(&prism) > 0.0);
+    prism
+}
+
+#[test]
+fn offset_types_differ_where_faces_meet_at_unequal_angles() {
+    let prism = triangular_prism();
+    let d = 0.2;
+    let kinds = [
+        OffsetType::Diagonal,
+        OffsetType::HypotenuseAverage,
+        OffsetType::PlanesIntersection,
+    ];
+    let moved: Vec<Mesh> = kinds
+        .iter()
+        .map(|&kind| offset(&prism, d, kind).unwrap())
+        .collect();
+    for (out, &kind) in moved.iter().zip(&kinds) {
+        assert_eq!(out.face_indices(), prism.face_indices());
+        assert_offset_by(&prism, out.positions(), d, kind);
+    }
+    // At corner 0 the unit normals are -z and two horizontal ones 120°
+    // apart, so n_v = (u - z)/√2, u halfway between the walls' normals:
+    // cos θ is 1/√2 to the base and 1/(2√2) to each wall.
+    let u = DVec3::X;
+    let n_v = (u - DVec3::Z) / 2f64.sqrt();
+    let p = prism.positions()[0];
+    let hypotenuse = n_v * d * (2f64.sqrt() + 2.0 * 2.0 * 2f64.sqrt()) / 3.0;
+    let planes = u * 2.0 * d - DVec3::Z * d;
+    assert!((moved[1].positions()[0] - p - hypotenuse).length() < 1e-12);
+    assert!((moved[2].positions()[0] - p - planes).length() < 1e-12);
+    assert!((moved[0].positions()[0] - p - n_v * d).length() < 1e-12);
+    // Here, unlike at a cube's corner, the hypotenuse average misses the
+    // offset planes: farther than d from the base, nearer to the walls.
+    let hyp = moved[1].positions()[0] - p;
+    assert!((hypotenuse - planes).length() > 0.7 * d);
+    assert!(-hyp.z > 1.1 * d);
+    assert!(hyp.dot(u) / 2.0 < 0.9 * d);
+    // The diagonal moves less than d from every face's plane.
+    let diagonal = moved[0].positions()[0] - p;
+    for n in &normals_around(&prism)[0] {
+        assert!(n.dot(diagonal) < 0.75 * d, "{n}");
+    }
+}
+
+/// `mesh` without its face `f`.
+fn without_face(mesh: &Mesh, f: usize) -> Mesh {
+    let faces: Vec<&[u32]> = (0..mesh.face_count())
+        .filter(|&g| g != f)
+        .map(|g| mesh.face(g))
+        .collect();
+    Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap()
+}
+
+#[test]
+fn thicken_with_each_offset_type_is_a_closed_solid_offset_by_d() {
+    // The unit cube and the prism without their tops: 4 and 3 naked edges.
+    let open_box = without_face(&shapes::cube(), 1);
+    let open_prism = without_face(&triangular_prism(), 1);
+    for (name, open, naked) in [("box", &open_box, 4), ("prism", &open_prism, 3)] {
+        assert_eq!(info(open).naked_edge_count, naked);
+        let (v, f) = (open.vertex_count(), open.face_count());
+        for kind in [
+            OffsetType::Diagonal,
+            OffsetType::HypotenuseAverage,
+            OffsetType::PlanesIntersection,
+        ] {
+            for d in [0.2, -0.2] {
+                let what = format!("{name} {kind:?} d = {d}");
+                let solid = thicken(open, d, kind).unwrap();
+                // The surface, its offset, and a quad along each naked edge.
+                assert_eq!(solid.vertex_count(), 2 * v, "{what}");
+                assert_eq!(solid.face_count(), 2 * f + naked, "{what}");
+                assert_eq!(
+                    solid.index_count(),
+                    2 * open.index_count() + 4 * naked,
+                    "{what}"
+                );
+                let i = info(&solid);
+                assert!(
+                    i.is_closed && i.is_oriented && i.component_count == 1,
+                    "{what}: {i:?}"
+                );
+                assert_eq!(i.non_manifold_vertex_count, 0, "{what}");
+                assert!(volume(&solid) > 0.0, "{what}: faces outward");
+                assert_eq!(&solid.positions()[..v], open.positions(), "{what}");
+                let layer = &solid.positions()[v..];
+                assert_eq!(layer, offset(open, d, kind).unwrap().positions(), "{what}");
+                assert_offset_by(open, layer, d, kind);
+            }
+        }
+    }
+    let open = open_box;
+    // Planes intersection keeps every wall d thick, the rim included: the
+    // solid is the box grown (or shrunk) by d on every side but the top.
+    for d in [0.2, -0.2] {
+        let solid = thicken(&open, d, OffsetType::PlanesIntersection).unwrap();
+        let side = 1.0 + 2.0 * d;
+        let expected = (side * side * (1.0 + d) - 1.0).abs();
+        assert!((volume(&solid) - expected).abs() < 1e-12, "d = {d}");
+    }
+}
+
 #[test]
 fn window_and_picture_frame_counts() {
     let cube = shapes::cube();
