@@ -118,6 +118,37 @@ impl Mesh {
         mesh
     }
 
+    /// As [`Mesh::from_valid_parts`], for faces all of `size` corners (a
+    /// refined level): sizes and offsets written in parallel, reserved
+    /// fallibly.
+    pub(crate) fn from_valid_uniform_parts(
+        positions: Vec<DVec3>,
+        size: u32,
+        face_indices: Vec<u32>,
+    ) -> Result<Mesh, crate::Error> {
+        use rayon::prelude::*;
+        const CHUNK: usize = 16384;
+        let face_count = face_indices.len() / size as usize;
+        let mut face_sizes = crate::error::try_vec(face_count, "face sizes")?;
+        face_sizes.par_extend(rayon::iter::repeat_n(size, face_count).with_min_len(CHUNK));
+        let mut face_offsets = crate::error::try_vec(face_count + 1, "face offsets")?;
+        face_offsets.par_extend(
+            (0..face_count as u32 + 1)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|f| f * size),
+        );
+        let mesh = Mesh {
+            positions,
+            face_sizes,
+            face_indices,
+            face_offsets,
+        };
+        debug_assert_eq!(mesh.face_offsets, offsets(&mesh.face_sizes));
+        debug_assert_eq!(mesh.check_faces(), Ok(()));
+        Ok(mesh)
+    }
+
     /// Number of vertices.
     #[inline]
     pub fn vertex_count(&self) -> usize {

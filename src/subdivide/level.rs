@@ -231,7 +231,12 @@ impl Connectivity {
         };
 
         let mut corner_faces = try_vec(4 * c_count, "corner faces")?;
-        corner_faces.extend((0..4 * c_count as u32).map(|k| k / 4));
+        corner_faces.par_extend(
+            (0..4 * c_count as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|k| k / 4),
+        );
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
         let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
@@ -563,7 +568,12 @@ impl Connectivity {
         let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
             (vertex_corners?, vertex_edges?);
         let mut corner_faces = try_vec(12 * f_count, "corner faces")?;
-        corner_faces.extend((0..12 * f_count as u32).map(|k| k / 3));
+        corner_faces.par_extend(
+            (0..12 * f_count as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|k| k / 3),
+        );
 
         Ok(Connectivity {
             edges,
@@ -693,10 +703,12 @@ impl Plan {
     }
 }
 
-/// A vector of `n` zeros, reserved fallibly.
-pub(crate) fn zeroed<T: Default + Clone>(n: usize, what: &str) -> Result<Vec<T>> {
+/// A vector of `n` zeros, reserved fallibly and filled in parallel (filling
+/// is what faults the fresh pages in, and the kernel zeroes each page on the
+/// thread that touches it first).
+pub(crate) fn zeroed<T: Default + Clone + Send + Sync>(n: usize, what: &str) -> Result<Vec<T>> {
     let mut v = try_vec(n, what)?;
-    v.resize(n, T::default());
+    v.par_extend(rayon::iter::repeat_n(T::default(), n).with_min_len(4 * CHUNK));
     Ok(v)
 }
 

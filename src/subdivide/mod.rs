@@ -174,19 +174,17 @@ pub fn subdivide(
         (Some(positions), None) => positions,
         (None, _) => mesh.positions().to_vec(),
     };
-    let sizes = if faces.offsets.is_empty() {
-        // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
-        let size = match scheme {
-            Scheme::CatmullClark => 4,
-            Scheme::Loop => 3,
-        };
-        let mut sizes = try_vec(faces.indices.len() / size, "face sizes")?;
-        sizes.resize(faces.indices.len() / size, size as u32);
-        sizes
-    } else {
-        faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
+    if !faces.offsets.is_empty() {
+        // Level 0, or no faces: the cage's own sizes.
+        let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+        return Ok(Mesh::from_valid_parts(positions, sizes, faces.indices));
+    }
+    // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
+    let size = match scheme {
+        Scheme::CatmullClark => 4,
+        Scheme::Loop => 3,
     };
-    Ok(Mesh::from_valid_parts(positions, sizes, faces.indices))
+    Mesh::from_valid_uniform_parts(positions, size, faces.indices)
 }
 
 /// The cage face each face of the refined mesh comes from, in the refined
