@@ -6,7 +6,7 @@
 //! pages instead, which cuts the page faults 512-fold. Subdividing a mesh to
 //! a few million faces spends more time in those faults than in arithmetic.
 //!
-//! The only `unsafe` of the workspace outside the C ABI lives here: one
+//! The library's only `unsafe` outside its C ABI lives here: one
 //! `madvise(MADV_HUGEPAGE)` call, which never reads, writes or frees the
 //! memory it is given, so the function is safe to call on any slice.
 
