@@ -3,12 +3,12 @@ using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
-    /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded.</summary>
+    /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded. Takes Weaverbird's S input; a split moves no vertex, so every mode gives the same mesh.</summary>
     public sealed class SplitPolygonsComponent : MeshOperationComponent
     {
         public SplitPolygonsComponent()
             : base("Split Polygons Subdivision", "wbSplitPolygons",
-                   "Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded.",
+                   "Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded. S is Weaverbird's naked-edge input, kept so definitions connect as before: a split moves no vertex, naked or not, so 0, 1 and 2 give the same mesh.",
                    "Subdivide", "split_polygons", "The mesh to split.", "The split mesh.")
         {
         }
@@ -21,10 +21,13 @@ namespace Weft.Grasshopper
         protected override void RegisterOptions(GH_InputParamManager pManager)
         {
             AddLevelsInput(pManager);
+            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed; a split moves no vertex, so all three give the same mesh.", GH_ParamAccess.item, 1);
         }
 
         protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
+            // Checked like every S input, though a linear split leaves naked vertices where they are.
+            ToNakedEdges(Get(DA, 2, 1));
             return Toolbar.SplitPolygons(mesh, Get(DA, 1, 1));
         }
     }
