@@ -23,6 +23,8 @@
 //! child is smooth. (Re-deriving would differ from OpenSubdiv: the point on a
 //! non-manifold edge is a crease, not a corner.)
 
+use std::ops::Range;
+
 use rayon::prelude::*;
 
 use super::level::{zeroed, Connectivity, Faces, Plan, VertexRule, NONE};
@@ -279,10 +281,9 @@ pub(crate) fn plan(
     let mut ring: Vec<u32> = zeroed(total as usize, "vertex stencils")?;
     // Each block of vertices owns a contiguous part of the ring.
     let blocks = split_by_offsets(&mut ring, &ring_offsets, CHUNK);
-    blocks.into_par_iter().for_each(|(first, block)| {
-        let base = ring_offsets[first] as usize;
-        let last = (first + CHUNK).min(vertex_count);
-        for v in first..last {
+    blocks.into_par_iter().for_each(|(vertices, block)| {
+        let base = ring_offsets[vertices.start] as usize;
+        for v in vertices {
             if tags.vertex_rules[v] != VertexRule::Smooth {
                 continue;
             }
@@ -329,19 +330,19 @@ pub(crate) fn plan(
 
 /// Splits `values` into the parts owned by each block of `block` items,
 /// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
-/// its first item.
+/// its items.
 fn split_by_offsets<'a, T>(
     mut values: &'a mut [T],
     offsets: &[u32],
     block: usize,
-) -> Vec<(usize, &'a mut [T])> {
+) -> Vec<(Range<usize>, &'a mut [T])> {
     let items = offsets.len().saturating_sub(1);
     let mut parts = Vec::with_capacity(items.div_ceil(block));
     for first in (0..items).step_by(block) {
         let last = (first + block).min(items);
         let len = (offsets[last] - offsets[first]) as usize;
         let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
-        parts.push((first, part));
+        parts.push((first..last, part));
         values = rest;
     }
     parts
