@@ -216,19 +216,23 @@ fn assert_rows_close(
     }
 }
 
+/// The naked-edge modes worth comparing: on a closed shape they all agree.
+fn naked_edge_modes(closed: bool) -> &'static [NakedEdges] {
+    if closed {
+        &[NakedEdges::Smooth]
+    } else {
+        &[
+            NakedEdges::Smooth,
+            NakedEdges::CornerFixed,
+            NakedEdges::Fixed,
+        ]
+    }
+}
 #[test]
 fn creases_and_corners_equal_opensubdiv() {
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
         for (name, cage, closed) in shapes_for(scheme) {
-            let modes: &[NakedEdges] = if closed {
-                &[NakedEdges::Smooth]
-            } else {
-                &[
-                    NakedEdges::Smooth,
-                    NakedEdges::CornerFixed,
-                    NakedEdges::Fixed,
-                ]
-            };
+            let modes = naked_edge_modes(closed);
             let reference_cage = to_ref(&cage);
             for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
                 let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
@@ -294,15 +298,7 @@ fn without_creases_equals_the_plain_schemes() {
 fn carried_vertex_data_equals_opensubdiv() {
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
         for (name, cage, closed) in shapes_for(scheme) {
-            let modes: &[NakedEdges] = if closed {
-                &[NakedEdges::Smooth]
-            } else {
-                &[
-                    NakedEdges::Smooth,
-                    NakedEdges::CornerFixed,
-                    NakedEdges::Fixed,
-                ]
-            };
+            let modes = naked_edge_modes(closed);
             let (creases, corners) = creased(&cage, &[2.5, 0.5, f64::INFINITY], &[1.5]);
             let reference_cage = to_ref(&cage);
             // Five columns: a colour and two weights, not linear in position.
@@ -385,15 +381,7 @@ fn an_infinite_corner_stays_and_a_hard_crease_stays_on_its_polyline() {
 fn limit_positions_and_normals_equal_opensubdiv() {
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
         for (name, cage, closed) in shapes_for(scheme) {
-            let modes: &[NakedEdges] = if closed {
-                &[NakedEdges::Smooth]
-            } else {
-                &[
-                    NakedEdges::Smooth,
-                    NakedEdges::CornerFixed,
-                    NakedEdges::Fixed,
-                ]
-            };
+            let modes = naked_edge_modes(closed);
             let reference_cage = to_ref(&cage);
             for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
                 let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
