@@ -16,7 +16,8 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::level::{Connectivity, Faces, Plan, VertexRule, NONE};
+use super::gathers::Gathers;
+use super::level::{Connectivity, Faces, VertexRule, NONE};
 use crate::error::{try_vec, Result};
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -70,9 +71,8 @@ pub(crate) fn child_faces(
 }
 
 #[inline]
-fn face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
-    let corners =
-        &plan.face_indices[plan.face_offsets[f] as usize..plan.face_offsets[f + 1] as usize];
+fn face_point(level: &impl Gathers, points: &[DVec3], f: usize) -> DVec3 {
+    let corners = level.face(f);
     let sum = corners
         .iter()
         .fold(DVec3::ZERO, |s, &v| s + points[v as usize]);
@@ -80,8 +80,8 @@ fn face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
 }
 
 #[inline]
-fn edge_point(plan: &Plan, points: &[DVec3], face_points: &[DVec3], e: usize) -> DVec3 {
-    let [a, b, f0, f1] = plan.edges[e];
+fn edge_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], e: usize) -> DVec3 {
+    let [a, b, f0, f1] = level.edge(e);
     let ends = points[a as usize] + points[b as usize];
     if f0 == NONE {
         ends * 0.5
@@ -91,50 +91,47 @@ fn edge_point(plan: &Plan, points: &[DVec3], face_points: &[DVec3], e: usize) ->
 }
 
 #[inline]
-fn vertex_point(plan: &Plan, points: &[DVec3], face_points: &[DVec3], v: usize) -> DVec3 {
+fn vertex_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], v: usize) -> DVec3 {
     let p = points[v];
-    let ring = plan.ring(v);
-    match plan.vertex_rules[v] {
+    match level.rule(v) {
         VertexRule::Corner => p,
         VertexRule::Crease => {
-            p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
+            let [a, b] = level.crease_neighbours(v);
+            p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
         }
         VertexRule::Smooth => {
-            let n = ring.len() / 2;
-            let (neighbours, faces) = ring.split_at(n);
-            let sum = neighbours
-                .iter()
-                .fold(DVec3::ZERO, |s, &u| s + points[u as usize])
-                + faces
-                    .iter()
-                    .fold(DVec3::ZERO, |s, &f| s + face_points[f as usize]);
-            let n = n as f64;
+            let neighbours = level.neighbours(v);
+            let n = neighbours.len() as f64;
+            let sum = neighbours.fold(DVec3::ZERO, |s, u| s + points[u as usize])
+                + level
+                    .faces_around(v)
+                    .fold(DVec3::ZERO, |s, f| s + face_points[f as usize]);
             (p * (n - 2.0) + sum / n) / n
         }
     }
 }
 
-/// Applies one level's plan: reads `points` (the level's V positions) and
+/// Applies one level's gathers: reads `points` (the level's V positions) and
 /// fills `out` with the V + E + F positions of the next level.
-pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
-    let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
-    let (edge_points, face_points) = rest.split_at_mut(plan.edge_count());
+pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
+    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
     face_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(f, out)| *out = face_point(plan, points, f));
+        .for_each(|(f, out)| *out = face_point(level, points, f));
     let face_points = &*face_points;
     edge_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(e, out)| *out = edge_point(plan, points, face_points, e));
+        .for_each(|(e, out)| *out = edge_point(level, points, face_points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| *out = vertex_point(plan, points, face_points, v));
+        .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
 }
 
 /// As [`apply`], into a new vector written once (no zero-filling): the face
@@ -142,27 +139,27 @@ pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
 ///
 /// # Errors
 /// [`crate::Error::OutOfMemory`].
-pub(crate) fn points(plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
-    let (v, e, f) = (plan.vertex_count, plan.edge_count(), plan.face_count());
+pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    let (v, e, f) = (level.vertex_count(), level.edge_count(), level.face_count());
     let mut face_points = try_vec(f, "face points")?;
     face_points.par_extend(
         (0..f)
             .into_par_iter()
             .with_min_len(CHUNK)
-            .map(|f| face_point(plan, points, f)),
+            .map(|f| face_point(level, points, f)),
     );
     let mut out = try_vec(v + e + f, "refined positions")?;
     out.par_extend(
         (0..v)
             .into_par_iter()
             .with_min_len(CHUNK)
-            .map(|v| vertex_point(plan, points, &face_points, v)),
+            .map(|v| vertex_point(level, points, &face_points, v)),
     );
     out.par_extend(
         (0..e)
             .into_par_iter()
             .with_min_len(CHUNK)
-            .map(|e| edge_point(plan, points, &face_points, e)),
+            .map(|e| edge_point(level, points, &face_points, e)),
     );
     out.par_extend(face_points.par_iter().with_min_len(CHUNK).copied());
     Ok(out)

@@ -592,6 +592,12 @@ impl Connectivity {
         self.edges.len()
     }
 
+    /// The face of corner `c`.
+    #[inline]
+    pub(crate) fn face_of(&self, c: usize) -> usize {
+        self.corner_faces[c] as usize
+    }
+
     /// The corners on edge `e`: one per face using it.
     #[inline]
     pub(crate) fn edge_corners(&self, e: usize) -> &[u32] {
@@ -669,6 +675,7 @@ pub(crate) enum VertexRule {
 /// new face points).
 #[derive(Debug, Clone)]
 pub(crate) struct Plan {
+    pub(crate) scheme: Scheme,
     /// Vertex count of the level the plan reads.
     pub(crate) vertex_count: usize,
     /// The faces of the level the plan reads (for face points; empty for Loop).
@@ -687,12 +694,14 @@ pub(crate) struct Plan {
 }
 
 impl Plan {
-    pub(crate) fn edge_count(&self) -> usize {
-        self.edges.len()
-    }
-
-    pub(crate) fn face_count(&self) -> usize {
-        self.face_offsets.len().saturating_sub(1)
+    /// Ring entries per neighbour of a smooth vertex: Catmull-Clark's rings
+    /// hold the faces too.
+    #[inline]
+    pub(crate) fn ring_stride(&self) -> usize {
+        match self.scheme {
+            Scheme::CatmullClark => 2,
+            Scheme::Loop => 1,
+        }
     }
 
     /// The ring of vertex `v` (see [`Plan::vertex_ring`]).

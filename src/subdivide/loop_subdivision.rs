@@ -15,7 +15,8 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::level::{Connectivity, Faces, Plan, VertexRule, NONE};
+use super::gathers::Gathers;
+use super::level::{Connectivity, Faces, VertexRule, NONE};
 use super::rules::loop_smooth_weights;
 use crate::error::{try_vec, Result};
 
@@ -68,8 +69,8 @@ pub(crate) fn child_faces(
 }
 
 #[inline]
-fn edge_point(plan: &Plan, points: &[DVec3], e: usize) -> DVec3 {
-    let [a, b, c, d] = plan.edges[e];
+fn edge_point(level: &impl Gathers, points: &[DVec3], e: usize) -> DVec3 {
+    let [a, b, c, d] = level.edge(e);
     let ends = points[a as usize] + points[b as usize];
     if c == NONE {
         ends * 0.5
@@ -79,58 +80,57 @@ fn edge_point(plan: &Plan, points: &[DVec3], e: usize) -> DVec3 {
 }
 
 #[inline]
-fn vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
+fn vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
     let p = points[v];
-    let ring = plan.ring(v);
-    match plan.vertex_rules[v] {
+    match level.rule(v) {
         VertexRule::Corner => p,
         VertexRule::Crease => {
-            p * 0.75 + (points[ring[0] as usize] + points[ring[1] as usize]) * 0.125
+            let [a, b] = level.crease_neighbours(v);
+            p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
         }
         VertexRule::Smooth => {
-            let (own, each) = loop_smooth_weights(ring.len());
-            let sum = ring
-                .iter()
-                .fold(DVec3::ZERO, |s, &u| s + points[u as usize]);
+            let neighbours = level.neighbours(v);
+            let (own, each) = loop_smooth_weights(neighbours.len());
+            let sum = neighbours.fold(DVec3::ZERO, |s, u| s + points[u as usize]);
             p * own + sum * each
         }
     }
 }
 
-/// Applies one level's plan: reads `points` (the level's V positions) and
+/// Applies one level's gathers: reads `points` (the level's V positions) and
 /// fills `out` with the V + E positions of the next level.
-pub(crate) fn apply(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
-    let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
+pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     edge_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(e, out)| *out = edge_point(plan, points, e));
+        .for_each(|(e, out)| *out = edge_point(level, points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| *out = vertex_point(plan, points, v));
+        .for_each(|(v, out)| *out = vertex_point(level, points, v));
 }
 
 /// As [`apply`], into a new vector written once (no zero-filling).
 ///
 /// # Errors
 /// [`crate::Error::OutOfMemory`].
-pub(crate) fn points(plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
-    let (v, e) = (plan.vertex_count, plan.edge_count());
+pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
+    let (v, e) = (level.vertex_count(), level.edge_count());
     let mut out = try_vec(v + e, "refined positions")?;
     out.par_extend(
         (0..v)
             .into_par_iter()
             .with_min_len(CHUNK)
-            .map(|v| vertex_point(plan, points, v)),
+            .map(|v| vertex_point(level, points, v)),
     );
     out.par_extend(
         (0..e)
             .into_par_iter()
             .with_min_len(CHUNK)
-            .map(|e| edge_point(plan, points, e)),
+            .map(|e| edge_point(level, points, e)),
     );
     Ok(out)
 }

@@ -35,6 +35,7 @@
 mod catmull_clark;
 mod creases;
 mod face_varying;
+mod gathers;
 mod level;
 mod limit;
 mod loop_subdivision;
@@ -51,6 +52,7 @@ pub use creases::{
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;
+use refiner::{Purpose, Step};
 pub use stencils::{subdivide_with, Subdivider};
 
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
@@ -159,13 +161,23 @@ pub fn subdivide(
     };
     let mut positions: Option<Vec<DVec3>> =
         scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
-    let faces = refiner::plan_levels(mesh, scheme, levels, naked_edges, false, |plan, _| {
-        let source = positions.as_deref().unwrap_or(mesh.positions());
-        let next = refiner::points(scheme, &plan, source)?;
-        drop(plan);
-        positions = Some(next);
-        Ok(())
-    })?;
+    let faces = refiner::plan_levels(
+        mesh,
+        scheme,
+        levels,
+        naked_edges,
+        Purpose::OneShot,
+        |step| {
+            let source = positions.as_deref().unwrap_or(mesh.positions());
+            let next = match &step {
+                Step::Planned(plan) => refiner::points(scheme, plan, source)?,
+                Step::Last(level) => refiner::points(scheme, level, source)?,
+            };
+            drop(step);
+            positions = Some(next);
+            Ok(())
+        },
+    )?;
     let positions = match (positions, scale) {
         (Some(mut positions), Some(scale)) => {
             scale::restore_points(&mut positions, scale, "the position")?;

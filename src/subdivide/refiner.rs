@@ -7,6 +7,7 @@ use std::sync::Mutex;
 
 use glam::DVec3;
 
+use super::gathers::{Gathers, LevelGathers};
 use super::level::{Connectivity, Faces, Plan};
 use super::rules::{cage_tags, child_tags, plan, Tags};
 use super::{
@@ -49,10 +50,19 @@ impl Refiner {
         naked_edges: NakedEdges,
     ) -> Result<Refiner> {
         let mut plans = Vec::new();
-        let faces = plan_levels(cage, scheme, levels, naked_edges, true, |p, _| {
-            plans.push(p);
-            Ok(())
-        })?;
+        let faces = plan_levels(
+            cage,
+            scheme,
+            levels,
+            naked_edges,
+            Purpose::Refiner,
+            |step| {
+                if let Step::Planned(plan) = step {
+                    plans.push(plan);
+                }
+                Ok(())
+            },
+        )?;
         let largest_intermediate = plans
             .iter()
             .skip(1)
@@ -241,11 +251,12 @@ fn face_sizes(faces: &Faces) -> Vec<u32> {
     faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
-/// Applies one plan of `scheme` into a new vector, each point written once.
-pub(crate) fn points(scheme: Scheme, plan: &Plan, points: &[DVec3]) -> Result<Vec<DVec3>> {
+/// Applies one level's gathers of `scheme` into a new vector, each point
+/// written once.
+pub(crate) fn points(scheme: Scheme, level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
     match scheme {
-        Scheme::CatmullClark => catmull_clark::points(plan, points),
-        Scheme::Loop => loop_subdivision::points(plan, points),
+        Scheme::CatmullClark => catmull_clark::points(level, points),
+        Scheme::Loop => loop_subdivision::points(level, points),
     }
 }
 
@@ -257,17 +268,34 @@ pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DV
     }
 }
 
-/// Plans every level in turn, handing each plan with its level index to
-/// `each`, and returns the faces of the last level (without offsets unless
-/// `last_offsets`: every face of a refined level has the same size). Checks
-/// the scheme's preconditions and every level's size before allocating.
+/// What [`plan_levels`] plans for.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Purpose {
+    /// Every level planned; the last level's faces with offsets.
+    Refiner,
+    /// One evaluation: the last level's gathers read from the level itself
+    /// ([`Step::Last`]), its faces without offsets (all the same size).
+    OneShot,
+}
+
+/// A level handed on by [`plan_levels`].
+pub(crate) enum Step<'a> {
+    /// A level's gathers, stored.
+    Planned(Plan),
+    /// The last level of a one-shot subdivision, read where it lies.
+    Last(LevelGathers<'a>),
+}
+
+/// Plans every level in turn, handing each to `each`, and returns the faces
+/// of the last level. Checks the scheme's preconditions and every level's
+/// size before allocating.
 pub(crate) fn plan_levels(
     cage: &Mesh,
     scheme: Scheme,
     levels: u32,
     naked_edges: NakedEdges,
-    last_offsets: bool,
-    mut each: impl FnMut(Plan, usize) -> Result<()>,
+    purpose: Purpose,
+    mut each: impl FnMut(Step<'_>) -> Result<()>,
 ) -> Result<Faces> {
     if scheme == Scheme::Loop {
         if let Some((face, size)) = cage.first_non_triangle() {
@@ -294,14 +322,22 @@ pub(crate) fn plan_levels(
     let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
     for level in 0..levels as usize {
         let last = level + 1 == levels as usize;
+        let with_offsets = !last || purpose == Purpose::Refiner;
         let next_faces = match scheme {
             Scheme::CatmullClark => {
-                catmull_clark::child_faces(&faces, &connectivity, !last || last_offsets)?
+                catmull_clark::child_faces(&faces, &connectivity, with_offsets)?
             }
-            Scheme::Loop => {
-                loop_subdivision::child_faces(&faces, &connectivity, !last || last_offsets)?
-            }
+            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, with_offsets)?,
         };
+        if last && purpose == Purpose::OneShot {
+            each(Step::Last(LevelGathers {
+                scheme,
+                faces: &faces,
+                connectivity: &connectivity,
+                tags: &tags,
+            }))?;
+            return Ok(next_faces);
+        }
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
         if !last {
             // The next level's edges and adjacency, written from this one's.
@@ -317,7 +353,7 @@ pub(crate) fn plan_levels(
             plan.face_offsets = faces.offsets;
             plan.face_indices = faces.indices;
         }
-        each(plan, level)?;
+        each(Step::Planned(plan))?;
         faces = next_faces;
     }
     Ok(faces)

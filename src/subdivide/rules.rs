@@ -27,7 +27,8 @@ use std::ops::Range;
 
 use rayon::prelude::*;
 
-use super::level::{zeroed, Connectivity, Faces, Plan, VertexRule, NONE};
+use super::gathers::{Gathers, LevelGathers};
+use super::level::{zeroed, Connectivity, Faces, Plan, VertexRule};
 use super::{NakedEdges, Scheme};
 use crate::error::{try_vec, Result};
 
@@ -229,38 +230,27 @@ pub(crate) fn child_tags(
     })
 }
 
-/// The gathers that make the next level's points from this level's.
+/// The gathers that make the next level's points from this level's, stored
+/// (see [`LevelGathers`] for where each is found).
 pub(crate) fn plan(
     scheme: Scheme,
     faces: &Faces,
     connectivity: &Connectivity,
     tags: &Tags,
 ) -> Result<Plan> {
+    let level = LevelGathers {
+        scheme,
+        faces,
+        connectivity,
+        tags,
+    };
     let vertex_count = faces.vertex_count;
-    let indices = &faces.indices;
-    let face_of = |c: u32| connectivity.corner_faces[c as usize] as usize;
-
     let mut edges = try_vec(connectivity.edge_count(), "edge stencils")?;
     edges.par_extend(
-        connectivity
-            .edges
-            .par_iter()
+        (0..connectivity.edge_count())
+            .into_par_iter()
             .with_min_len(CHUNK)
-            .enumerate()
-            .map(|(e, &[a, b])| {
-                let wings = match (tags.edge_sharp[e], connectivity.edge_corners(e)) {
-                    (false, &[c1, c2]) => match scheme {
-                        Scheme::CatmullClark => [face_of(c1) as u32, face_of(c2) as u32],
-                        // The vertex of the triangle opposite the edge follows the edge's end.
-                        Scheme::Loop => [c1, c2].map(|c| {
-                            let f = face_of(c);
-                            indices[faces.next(faces.next(c as usize, f), f)]
-                        }),
-                    },
-                    _ => [NONE, NONE],
-                };
-                [a, b, wings[0], wings[1]]
-            }),
+            .map(|e| level.edge(e)),
     );
 
     let per_neighbour = match scheme {
@@ -284,40 +274,29 @@ pub(crate) fn plan(
     blocks.into_par_iter().for_each(|(vertices, block)| {
         let base = ring_offsets[vertices.start] as usize;
         for v in vertices {
-            if tags.vertex_rules[v] != VertexRule::Smooth {
-                continue;
-            }
-            let corners = connectivity.vertex_corners(v);
             let slot =
                 &mut block[ring_offsets[v] as usize - base..ring_offsets[v + 1] as usize - base];
-            // Around a smooth (manifold, interior, oriented) vertex each edge
-            // leaves v in exactly one face: the corners' next vertices are the ring.
-            for (i, &c) in corners.iter().enumerate() {
-                let f = face_of(c);
-                slot[i] = indices[faces.next(c as usize, f)];
-                if per_neighbour == 2 {
-                    slot[corners.len() + i] = f as u32;
+            match tags.vertex_rules[v] {
+                VertexRule::Smooth => {
+                    let n = slot.len() / per_neighbour as usize;
+                    for (i, u) in level.neighbours(v).enumerate() {
+                        slot[i] = u;
+                    }
+                    if per_neighbour == 2 {
+                        for (i, f) in level.faces_around(v).enumerate() {
+                            slot[n + i] = f;
+                        }
+                    }
                 }
+                VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
+                VertexRule::Corner => {}
             }
         }
     });
-    // A crease vertex's ring is the far ends of its two sharp edges.
-    let mut filled: Vec<u8> = zeroed(vertex_count, "vertex stencils")?;
-    for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
-        if !tags.edge_sharp[e] {
-            continue;
-        }
-        for (v, other) in [(a, b), (b, a)] {
-            let v = v as usize;
-            if tags.vertex_rules[v] == VertexRule::Crease && filled[v] < 2 {
-                ring[ring_offsets[v] as usize + filled[v] as usize] = other;
-                filled[v] += 1;
-            }
-        }
-    }
 
     // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
     Ok(Plan {
+        scheme,
         vertex_count,
         face_offsets: Vec::new(),
         face_indices: Vec::new(),
