@@ -47,7 +47,7 @@ pub(crate) fn child_faces(
     let mut indices = try_vec(4 * corner_count, "child faces")?;
     let edge_base = vertex_count as u32;
     let face_base = (vertex_count + edge_count) as u32;
-    let (corner_edges, corner_faces) = (&connectivity.corner_edges, &connectivity.corner_faces);
+    let corner_edges = &connectivity.corner_edges;
     // Quad c = [v_c, e_c, f, e_prev(c)]: each index written once, in place.
     indices.par_extend(
         (0..4 * corner_count)
@@ -58,13 +58,14 @@ pub(crate) fn child_faces(
                 match k % 4 {
                     0 => faces.indices[c],
                     1 => edge_base + corner_edges[c],
-                    2 => face_base + corner_faces[c],
-                    _ => edge_base + corner_edges[faces.prev(c, corner_faces[c] as usize)],
+                    2 => face_base + connectivity.face_of(c) as u32,
+                    _ => edge_base + corner_edges[faces.prev(c, connectivity.face_of(c))],
                 }
             }),
     );
     Ok(Faces {
         vertex_count: vertex_count + edge_count + faces.face_count(),
+        size: 4,
         offsets,
         indices,
     })

@@ -141,7 +141,7 @@ impl Subdivider {
         let faces = &parent.faces;
         let connectivity = &parent.connectivity;
         let sharpness = &parent.sharpness;
-        let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+        let face_of = |c: usize| connectivity.face_of(c);
         let value = |i: u32| &values[i as usize * width..(i as usize + 1) * width];
         let mut out: Vec<f64> = Vec::new();
         // Appends Σ weight · value and returns the new value's index.
@@ -426,7 +426,7 @@ impl Subdivider {
 /// first face (the edge is no seam, so every face agrees).
 fn far_value(faces: &Faces, connectivity: &Connectivity, indices: &[u32], e: u32, v: usize) -> u32 {
     let c = connectivity.edge_corners(e as usize)[0] as usize;
-    let f = connectivity.corner_faces[c] as usize;
+    let f = connectivity.face_of(c);
     if faces.indices[c] as usize == v {
         indices[faces.next(c, f)]
     } else {
@@ -445,7 +445,7 @@ fn far_values(
     let mut out = [0; 2];
     for (slot, &c) in out.iter_mut().zip(connectivity.edge_corners(e as usize)) {
         let c = c as usize;
-        let f = connectivity.corner_faces[c] as usize;
+        let f = connectivity.face_of(c);
         *slot = if faces.indices[c] as usize == v {
             indices[faces.next(c, f)]
         } else {
@@ -463,7 +463,7 @@ fn fan_ends(
     indices: &[u32],
     fan: &[usize],
 ) -> Vec<u32> {
-    let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+    let face_of = |c: usize| connectivity.face_of(c);
     let mut ends = Vec::new();
     for &c in fan {
         let f = face_of(c);
@@ -527,7 +527,7 @@ fn span_of(
         .filter(|&c| indices[c] == sibling)
         .collect();
     let at_vertex = |c: usize| {
-        let f = connectivity.corner_faces[c] as usize;
+        let f = connectivity.face_of(c);
         if faces.indices[c] as usize == v {
             c
         } else {
@@ -542,8 +542,8 @@ fn span_of(
             [c1, c2] => {
                 let (a, b) = (at_vertex(c1 as usize), at_vertex(c2 as usize));
                 let (na, nb) = (
-                    faces.next(c1 as usize, connectivity.corner_faces[c1 as usize] as usize),
-                    faces.next(c2 as usize, connectivity.corner_faces[c2 as usize] as usize),
+                    faces.next(c1 as usize, connectivity.face_of(c1 as usize)),
+                    faces.next(c2 as usize, connectivity.face_of(c2 as usize)),
                 );
                 // Both faces use the value here, and agree at the far end
                 // too (a seam inside the span, at a dart, bounds it instead).

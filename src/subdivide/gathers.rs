@@ -119,7 +119,7 @@ impl Gathers for LevelGathers<'_> {
 
     #[inline]
     fn face(&self, f: usize) -> &[u32] {
-        &self.faces.indices[self.faces.offsets[f] as usize..self.faces.offsets[f + 1] as usize]
+        self.faces.face(f)
     }
 
     #[inline]

@@ -24,37 +24,79 @@ pub(crate) const NONE: u32 = u32::MAX;
 #[derive(Debug, Clone)]
 pub(crate) struct Faces {
     pub(crate) vertex_count: usize,
-    /// `offsets[f]..offsets[f + 1]` are face f's corners; one longer than the face count.
+    /// The corner count of every face when all have 3 or all have 4 (every
+    /// refined level), else 0: corners then find their face and neighbours
+    /// by arithmetic instead of reading the offsets.
+    pub(crate) size: u32,
+    /// `offsets[f]..offsets[f + 1]` are face f's corners; one longer than the
+    /// face count, or empty for a last level of uniform `size`.
     pub(crate) offsets: Vec<u32>,
     pub(crate) indices: Vec<u32>,
 }
 
 impl Faces {
+    /// The faces of a mesh (a cage).
+    pub(crate) fn of_mesh(mesh: &crate::Mesh) -> Faces {
+        let size = match mesh.face_sizes().first() {
+            Some(&first @ (3 | 4)) if mesh.face_sizes().iter().all(|&s| s == first) => first,
+            _ => 0,
+        };
+        Faces {
+            vertex_count: mesh.vertex_count(),
+            size,
+            offsets: mesh.face_offsets().to_vec(),
+            indices: mesh.face_indices().to_vec(),
+        }
+    }
+
     pub(crate) fn face_count(&self) -> usize {
-        self.offsets.len() - 1
+        match self.offsets.len() {
+            0 if self.size != 0 => self.indices.len() / self.size as usize,
+            0 => 0,
+            n => n - 1,
+        }
     }
 
     pub(crate) fn corner_count(&self) -> usize {
         self.indices.len()
     }
 
-    /// The next corner of the same face.
+    /// The corners of face `f`.
     #[inline]
-    pub(crate) fn next(&self, corner: usize, face: usize) -> usize {
-        if corner + 1 == self.offsets[face + 1] as usize {
-            self.offsets[face] as usize
-        } else {
-            corner + 1
+    pub(crate) fn corners(&self, f: usize) -> std::ops::Range<usize> {
+        match self.size {
+            0 => self.offsets[f] as usize..self.offsets[f + 1] as usize,
+            size => f * size as usize..(f + 1) * size as usize,
         }
     }
 
-    /// The previous corner of the same face.
+    /// The vertices of face `f`.
+    #[inline]
+    pub(crate) fn face(&self, f: usize) -> &[u32] {
+        &self.indices[self.corners(f)]
+    }
+
+    /// The next corner of the same face (`face` is the corner's).
+    #[inline]
+    pub(crate) fn next(&self, corner: usize, face: usize) -> usize {
+        match self.size {
+            4 => (corner & !3) | ((corner + 1) & 3),
+            3 if corner % 3 == 2 => corner - 2,
+            3 => corner + 1,
+            _ if corner + 1 == self.offsets[face + 1] as usize => self.offsets[face] as usize,
+            _ => corner + 1,
+        }
+    }
+
+    /// The previous corner of the same face (`face` is the corner's).
     #[inline]
     pub(crate) fn prev(&self, corner: usize, face: usize) -> usize {
-        if corner == self.offsets[face] as usize {
-            self.offsets[face + 1] as usize - 1
-        } else {
-            corner - 1
+        match self.size {
+            4 => (corner & !3) | ((corner + 3) & 3),
+            3 if corner % 3 == 0 => corner + 2,
+            3 => corner - 1,
+            _ if corner == self.offsets[face] as usize => self.offsets[face + 1] as usize - 1,
+            _ => corner - 1,
         }
     }
 }
@@ -64,7 +106,9 @@ impl Faces {
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Connectivity {
     pub(crate) edges: Vec<[u32; 2]>,
-    /// For each corner, its face.
+    /// The faces' [`Faces::size`]: when not 0, a corner's face is arithmetic.
+    pub(crate) face_size: u32,
+    /// For each corner, its face; empty when `face_size` is not 0 (see [`Connectivity::face_of`]).
     pub(crate) corner_faces: Vec<u32>,
     /// For each corner, the edge from it to the next corner of its face.
     pub(crate) corner_edges: Vec<u32>,
@@ -89,17 +133,24 @@ impl Connectivity {
         let vertex_count = faces.vertex_count;
         let indices = &faces.indices;
 
-        let mut corner_faces = try_vec(corner_count, "corner faces")?;
-        for (f, w) in faces.offsets.windows(2).enumerate() {
-            corner_faces.extend(std::iter::repeat_n(f as u32, (w[1] - w[0]) as usize));
+        let mut corner_faces = Vec::new();
+        if faces.size == 0 {
+            corner_faces = try_vec(corner_count, "corner faces")?;
+            for (f, w) in faces.offsets.windows(2).enumerate() {
+                corner_faces.extend(std::iter::repeat_n(f as u32, (w[1] - w[0]) as usize));
+            }
         }
+        let face_of = |c: usize| match faces.size {
+            0 => corner_faces[c] as usize,
+            size => c / size as usize,
+        };
 
         // Bucket each corner's edge under its lower vertex; sorting each small
         // bucket by the higher vertex gives the edges in sorted order.
         let mut bucket_offsets = zeroed(vertex_count + 1, "edge buckets")?;
         let edge_end = |c: usize| {
             let a = indices[c];
-            let b = indices[faces.next(c, corner_faces[c] as usize)];
+            let b = indices[faces.next(c, face_of(c))];
             (a.min(b), a.max(b))
         };
         for c in 0..corner_count {
@@ -165,6 +216,7 @@ impl Connectivity {
 
         Ok(Connectivity {
             edges,
+            face_size: faces.size,
             corner_faces,
             corner_edges,
             edge_offsets,
@@ -209,7 +261,7 @@ impl Connectivity {
             (v_count + e_count) as u32,
             2 * e_count as u32,
         );
-        let face_of = |c: usize| self.corner_faces[c] as usize;
+        let face_of = |c: usize| self.face_of(c);
         let next = |c: usize| faces.next(c, face_of(c));
         let edge_slots = 2 * e_count + c_count;
 
@@ -229,14 +281,6 @@ impl Connectivity {
             }
             Ok(edges)
         };
-
-        let mut corner_faces = try_vec(4 * c_count, "corner faces")?;
-        corner_faces.par_extend(
-            (0..4 * c_count as u32)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|k| k / 4),
-        );
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
         let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
@@ -350,7 +394,8 @@ impl Connectivity {
             (vertex_corners?, vertex_edges?);
         Ok(Connectivity {
             edges,
-            corner_faces,
+            face_size: 4,
+            corner_faces: Vec::new(),
             corner_edges,
             edge_offsets,
             edge_corners,
@@ -567,17 +612,10 @@ impl Connectivity {
         let ((edges, corner_edges), (edge_offsets, edge_corners)) = (edges?, edge_corners?);
         let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
             (vertex_corners?, vertex_edges?);
-        let mut corner_faces = try_vec(12 * f_count, "corner faces")?;
-        corner_faces.par_extend(
-            (0..12 * f_count as u32)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|k| k / 3),
-        );
-
         Ok(Connectivity {
             edges,
-            corner_faces,
+            face_size: 3,
+            corner_faces: Vec::new(),
             corner_edges,
             edge_offsets,
             edge_corners,
@@ -595,7 +633,11 @@ impl Connectivity {
     /// The face of corner `c`.
     #[inline]
     pub(crate) fn face_of(&self, c: usize) -> usize {
-        self.corner_faces[c] as usize
+        match self.face_size {
+            0 => self.corner_faces[c] as usize,
+            4 => c / 4,
+            size => c / size as usize,
+        }
     }
 
     /// The corners on edge `e`: one per face using it.
@@ -735,6 +777,7 @@ mod tests {
     fn connectivity_of_two_triangles() {
         let faces = Faces {
             vertex_count: 4,
+            size: 0,
             offsets: vec![0, 3, 6],
             indices: vec![0, 1, 2, 0, 2, 3],
         };
@@ -747,10 +790,49 @@ mod tests {
         assert_eq!(c.vertex_edges(2), &[1, 3, 4]);
     }
 
+    /// On faces of one size, corners find their face and neighbours by
+    /// arithmetic exactly as through the offsets.
+    #[test]
+    fn uniform_faces_match_their_offsets() {
+        use crate::shapes;
+        for mesh in [
+            shapes::cube(),
+            shapes::icosahedron(),
+            shapes::quad_grid(3, 2),
+        ] {
+            let uniform = Faces::of_mesh(&mesh);
+            assert_ne!(uniform.size, 0);
+            let general = Faces {
+                size: 0,
+                ..uniform.clone()
+            };
+            let (a, b) = (
+                Connectivity::new(&uniform).unwrap(),
+                Connectivity::new(&general).unwrap(),
+            );
+            assert!(a.corner_faces.is_empty());
+            assert_same(&a, &b, "uniform");
+            for c in 0..uniform.corner_count() {
+                let f = b.face_of(c);
+                assert_eq!(uniform.next(c, f), general.next(c, f), "next of {c}");
+                assert_eq!(uniform.prev(c, f), general.prev(c, f), "prev of {c}");
+                assert_eq!(uniform.face(f), general.face(f));
+            }
+            assert_eq!(uniform.face_count(), general.face_count());
+        }
+        assert_eq!(Faces::of_mesh(&shapes::mixed_polygons()).size, 0);
+    }
+
     fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
         assert_eq!(derived.edges, bucketed.edges, "{what}: edges");
+        let faces_of = |c: &Connectivity| {
+            (0..c.corner_edges.len())
+                .map(|k| c.face_of(k))
+                .collect::<Vec<_>>()
+        };
         assert_eq!(
-            derived.corner_faces, bucketed.corner_faces,
+            faces_of(derived),
+            faces_of(bucketed),
             "{what}: corner faces"
         );
         assert_eq!(
@@ -827,11 +909,7 @@ mod tests {
             if scheme == Scheme::Loop && mesh.first_non_triangle().is_some() {
                 continue;
             }
-            let mut faces = Faces {
-                vertex_count: mesh.vertex_count(),
-                offsets: mesh.face_offsets().to_vec(),
-                indices: mesh.face_indices().to_vec(),
-            };
+            let mut faces = Faces::of_mesh(&mesh);
             let mut connectivity = Connectivity::new(&faces).unwrap();
             for level in 1..=3 {
                 let child = match scheme {
@@ -844,9 +922,14 @@ mod tests {
                 }
                 .unwrap();
                 let derived = connectivity.refine(scheme, &faces, true).unwrap();
+                // Bucketed through the offsets, not the faces' uniform size.
+                let offsets_only = Faces {
+                    size: 0,
+                    ..child.clone()
+                };
                 assert_same(
                     &derived,
-                    &Connectivity::new(&child).unwrap(),
+                    &Connectivity::new(&offsets_only).unwrap(),
                     &format!("{name} {scheme:?} level {level}"),
                 );
                 (faces, connectivity) = (child, derived);

@@ -169,7 +169,7 @@ impl Subdivider {
             let opposite: Vec<DVec3> = quads
                 .iter()
                 .map(|&c| {
-                    let f = connectivity.corner_faces[c as usize] as usize;
+                    let f = connectivity.face_of(c as usize);
                     let start = faces.offsets[f] as usize;
                     let local = (c as usize - start + 2) % 4;
                     points[faces.indices[start + local] as usize]

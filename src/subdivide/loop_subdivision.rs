@@ -63,6 +63,7 @@ pub(crate) fn child_faces(
     );
     Ok(Faces {
         vertex_count: vertex_count + connectivity.edge_count(),
+        size: 3,
         offsets,
         indices,
     })

@@ -147,7 +147,7 @@ fn is_one_fan(
     }
     let corners = connectivity.vertex_corners(v);
     let start = corners[0] as usize;
-    let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+    let face_of = |c: usize| connectivity.face_of(c);
     let mut seen = 1u32;
     // Clockwise: across the edge arriving at v.
     let mut c = start;
@@ -346,11 +346,7 @@ mod tests {
     use crate::shapes;
 
     fn tags_of(mesh: &crate::Mesh, naked: NakedEdges) -> Tags {
-        let faces = Faces {
-            vertex_count: mesh.vertex_count(),
-            offsets: mesh.face_offsets().to_vec(),
-            indices: mesh.face_indices().to_vec(),
-        };
+        let faces = Faces::of_mesh(mesh);
         let connectivity = Connectivity::new(&faces).unwrap();
         cage_tags(&faces, &connectivity, naked).unwrap()
     }

@@ -252,7 +252,7 @@ fn level_stencils(
     };
     let rows = vertex_count + edge_count + face_points;
     let face_point = |f: usize| (vertex_count + vertex_count + edge_count + f) as u32;
-    let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+    let face_of = |c: usize| connectivity.face_of(c);
     let mut offsets = try_vec(rows + 1, "stencils")?;
     offsets.push(0u32);
     let mut sources = Vec::new();
@@ -413,11 +413,7 @@ impl Subdivider {
                 return Err(Error::NotTriangles { face, size });
             }
         }
-        let mut faces = Faces {
-            vertex_count: cage.vertex_count(),
-            offsets: cage.face_offsets().to_vec(),
-            indices: cage.face_indices().to_vec(),
-        };
+        let mut faces = Faces::of_mesh(cage);
         let mut connectivity = Connectivity::new(&faces)?;
         check_counts(
             scheme,
@@ -702,7 +698,7 @@ fn child_first_corners(
 ) -> Result<(Vec<u32>, Vec<u32>)> {
     let vertex_count = faces.vertex_count;
     let edge_count = connectivity.edge_count();
-    let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+    let face_of = |c: usize| connectivity.face_of(c);
     // The first corner of the child face at parent corner c.
     let child_face_corner = |c: usize| -> usize {
         match scheme {
@@ -793,7 +789,7 @@ pub(crate) fn walk_around(
     if around.is_empty() {
         return false;
     }
-    let face_of = |c: usize| connectivity.corner_faces[c] as usize;
+    let face_of = |c: usize| connectivity.face_of(c);
     let start = around
         .iter()
         .copied()
