@@ -256,147 +256,174 @@ impl Connectivity {
         let (v_count, e_count, c_count) =
             (faces.vertex_count, self.edge_count(), faces.corner_count());
         let idx = &faces.indices;
-        let (v_base, f_base, two_e) = (
-            v_count as u32,
-            (v_count + e_count) as u32,
-            2 * e_count as u32,
-        );
-        let face_of = |c: usize| self.face_of(c);
-        let next = |c: usize| faces.next(c, face_of(c));
-        let edge_slots = 2 * e_count + c_count;
+        let (v_base, f_base, two_e) = (v_count as u32, (v_count + e_count) as u32, 2 * e_count);
+        let next = |c: usize| faces.next(c, self.face_of(c));
+        let edge_slots = two_e + c_count;
+        // Child edge s < 2E is [v, V + e] for vertex-edge slot s; child edge
+        // 2E + k is [V + e, F + f] for edge-corner slot k (corner c on e, in
+        // face f). Every array below is written slot by slot in parallel.
+        let slot_vertex = |s: usize| -> u32 {
+            // Of the edge's ends, the lower owns the lower range of slots.
+            let [a, b] = self.edges[self.vertex_edges[s] as usize];
+            if (s as u32) < self.vertex_edge_offsets[a as usize + 1] {
+                a
+            } else {
+                b
+            }
+        };
 
         // The arrays are independent of each other: built side by side.
         let build_edges = || -> Result<Vec<[u32; 2]>> {
             let mut edges = try_vec(edge_slots, "edges")?;
-            for v in 0..v_count {
-                edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
-            }
-            for e in 0..e_count {
-                let point = v_base + e as u32;
-                edges.extend(
-                    self.edge_corners(e)
-                        .iter()
-                        .map(|&c| [point, f_base + face_of(c as usize) as u32]),
-                );
-            }
+            edges.par_extend(
+                (0..edge_slots)
+                    .into_par_iter()
+                    .with_min_len(CHUNK)
+                    .map(|s| match s.checked_sub(two_e) {
+                        None => [slot_vertex(s), v_base + self.vertex_edges[s]],
+                        Some(k) => {
+                            let c = self.edge_corners[k] as usize;
+                            [v_base + self.corner_edges[c], f_base + self.face_of(c) as u32]
+                        }
+                    }),
+            );
             Ok(edges)
         };
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
-        let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
-        corner_edges.par_extend(
-            (0..4 * c_count)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|k| {
+        let build_corner_edges = || -> Result<Vec<u32>> {
+            let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
+            corner_edges.par_extend((0..4 * c_count).into_par_iter().with_min_len(CHUNK).map(
+                |k| {
                     let c = k / 4;
-                    let previous = faces.prev(c, face_of(c));
+                    let previous = faces.prev(c, self.face_of(c));
                     match k % 4 {
                         0 => self.vertex_edge_slot(idx[c], self.corner_edges[c]),
-                        1 => two_e + self.edge_corner_slot(c),
-                        2 => two_e + self.edge_corner_slot(previous),
+                        1 => two_e as u32 + self.edge_corner_slot(c),
+                        2 => two_e as u32 + self.edge_corner_slot(previous),
                         _ => self.vertex_edge_slot(idx[c], self.corner_edges[previous]),
                     }
-                }),
-        );
+                },
+            ));
+            Ok(corner_edges)
+        };
 
         let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
-            let mut edge_corners = try_vec(4 * c_count, "edge corners")?;
-            edge_offsets.push(0);
-            for v in 0..v_count {
-                for &e in self.vertex_edges(v) {
-                    let start = edge_corners.len();
-                    edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
+            let edge_offsets = par_offsets(edge_slots, "edge offsets", |s| {
+                if s < two_e {
+                    self.edge_corners(self.vertex_edges[s] as usize).len() as u32
+                } else {
+                    2
+                }
+            })?;
+            let edge_corners = fill_by_offsets(&edge_offsets, "edge corners", |s, out| {
+                if s < two_e {
+                    let v = slot_vertex(s);
+                    let corners = self.edge_corners(self.vertex_edges[s] as usize);
+                    for (out, &c) in out.iter_mut().zip(corners) {
                         let c = c as usize;
-                        if idx[c] == v as u32 {
+                        *out = if idx[c] == v {
                             4 * c as u32
                         } else {
                             4 * next(c) as u32 + 3
-                        }
-                    }));
-                    edge_corners[start..].sort_unstable();
-                    edge_offsets.push(edge_corners.len() as u32);
+                        };
+                    }
+                    out.sort_unstable();
+                } else {
+                    let c = self.edge_corners[s - two_e] as usize;
+                    let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
+                    out.copy_from_slice(&[a.min(b), a.max(b)]);
                 }
-            }
-            for &c in &self.edge_corners {
-                let c = c as usize;
-                let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
-                edge_corners.extend_from_slice(&[a.min(b), a.max(b)]);
-                edge_offsets.push(edge_corners.len() as u32);
-            }
+            })?;
             Ok((edge_offsets, edge_corners))
         };
 
+        // Child vertex u is parent vertex u, then the points of the parent's
+        // edges (from V), then of its faces (from V + E).
         let child_vertices = v_count + e_count + faces.face_count();
         let build_vertex_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
-            let mut vertex_corners = try_vec(4 * c_count, "vertex corners")?;
-            vertex_offsets.push(0);
-            for v in 0..v_count {
-                vertex_corners.extend(self.vertex_corners(v).iter().map(|&c| 4 * c));
-                vertex_offsets.push(vertex_corners.len() as u32);
-            }
-            for e in 0..e_count {
-                let start = vertex_corners.len();
-                for &c in self.edge_corners(e) {
-                    vertex_corners.extend_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
+            let vertex_offsets = par_offsets(child_vertices, "vertex corners", |u| {
+                (match u {
+                    u if u < v_count => self.vertex_corners(u).len(),
+                    u if u < v_count + e_count => 2 * self.edge_corners(u - v_count).len(),
+                    u => faces.corners(u - v_count - e_count).len(),
+                }) as u32
+            })?;
+            let vertex_corners = fill_by_offsets(&vertex_offsets, "vertex corners", |u, out| {
+                if u < v_count {
+                    for (out, &c) in out.iter_mut().zip(self.vertex_corners(u)) {
+                        *out = 4 * c;
+                    }
+                } else if u < v_count + e_count {
+                    let corners = self.edge_corners(u - v_count);
+                    for (pair, &c) in out.chunks_exact_mut(2).zip(corners) {
+                        pair.copy_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
+                    }
+                    out.sort_unstable();
+                } else {
+                    for (out, c) in out.iter_mut().zip(faces.corners(u - v_count - e_count)) {
+                        *out = 4 * c as u32 + 2;
+                    }
                 }
-                vertex_corners[start..].sort_unstable();
-                vertex_offsets.push(vertex_corners.len() as u32);
-            }
-            for w in faces.offsets.windows(2) {
-                vertex_corners.extend((w[0]..w[1]).map(|c| 4 * c + 2));
-                vertex_offsets.push(vertex_corners.len() as u32);
-            }
+            })?;
             Ok((vertex_offsets, vertex_corners))
         };
 
         let build_vertex_edges = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
-            if with_vertex_edges {
-                vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-                vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-                vertex_edge_offsets.push(0);
-                for v in 0..v_count {
-                    vertex_edges
-                        .extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-                    vertex_edge_offsets.push(vertex_edges.len() as u32);
-                }
-                for (e, &[a, b]) in self.edges.iter().enumerate() {
-                    let e32 = e as u32;
-                    vertex_edges.extend_from_slice(&[
-                        self.vertex_edge_slot(a, e32),
-                        self.vertex_edge_slot(b, e32),
-                    ]);
-                    vertex_edges
-                        .extend(two_e + self.edge_offsets[e]..two_e + self.edge_offsets[e + 1]);
-                    vertex_edge_offsets.push(vertex_edges.len() as u32);
-                }
-                for w in faces.offsets.windows(2) {
-                    let start = vertex_edges.len();
-                    vertex_edges.extend(
-                        (w[0] as usize..w[1] as usize).map(|c| two_e + self.edge_corner_slot(c)),
-                    );
-                    vertex_edges[start..].sort_unstable();
-                    vertex_edge_offsets.push(vertex_edges.len() as u32);
-                }
+            if !with_vertex_edges {
+                return Ok((Vec::new(), Vec::new()));
             }
+            let vertex_edge_offsets = par_offsets(child_vertices, "vertex edges", |u| {
+                (match u {
+                    u if u < v_count => self.vertex_edges(u).len(),
+                    u if u < v_count + e_count => 2 + self.edge_corners(u - v_count).len(),
+                    u => faces.corners(u - v_count - e_count).len(),
+                }) as u32
+            })?;
+            let vertex_edges = fill_by_offsets(&vertex_edge_offsets, "vertex edges", |u, out| {
+                if u < v_count {
+                    let slots = self.vertex_edge_offsets[u]..self.vertex_edge_offsets[u + 1];
+                    for (out, slot) in out.iter_mut().zip(slots) {
+                        *out = slot;
+                    }
+                } else if u < v_count + e_count {
+                    let e = u - v_count;
+                    let [a, b] = self.edges[e];
+                    out[0] = self.vertex_edge_slot(a, e as u32);
+                    out[1] = self.vertex_edge_slot(b, e as u32);
+                    let slots = self.edge_offsets[e]..self.edge_offsets[e + 1];
+                    for (out, slot) in out[2..].iter_mut().zip(slots) {
+                        *out = two_e as u32 + slot;
+                    }
+                } else {
+                    let corners = faces.corners(u - v_count - e_count);
+                    for (out, c) in out.iter_mut().zip(corners) {
+                        *out = two_e as u32 + self.edge_corner_slot(c);
+                    }
+                    out.sort_unstable();
+                }
+            })?;
             Ok((vertex_edge_offsets, vertex_edges))
         };
 
-        let ((edges, edge_corners), (vertex_corners, vertex_edges)) = rayon::join(
-            || rayon::join(build_edges, build_edge_corners),
-            || rayon::join(build_vertex_corners, build_vertex_edges),
-        );
-        let (edges, (edge_offsets, edge_corners)) = (edges?, edge_corners?);
-        let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
-            (vertex_corners?, vertex_edges?);
+        let ((edges, corner_edges), ((edge_corners, vertex_corners), vertex_edges)) =
+            rayon::join(
+                || rayon::join(build_edges, build_corner_edges),
+                || {
+                    rayon::join(
+                        || rayon::join(build_edge_corners, build_vertex_corners),
+                        build_vertex_edges,
+                    )
+                },
+            );
+        let (edge_offsets, edge_corners) = edge_corners?;
+        let (vertex_offsets, vertex_corners) = vertex_corners?;
+        let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
         Ok(Connectivity {
-            edges,
+            edges: edges?,
             face_size: 4,
             corner_faces: Vec::new(),
-            corner_edges,
+            corner_edges: corner_edges?,
             edge_offsets,
             edge_corners,
             vertex_offsets,
@@ -761,6 +788,82 @@ pub(crate) fn zeroed<T: Default + Clone + Send + Sync>(n: usize, what: &str) -> 
     let mut v = try_vec(n, what)?;
     v.par_extend(rayon::iter::repeat_n(T::default(), n).with_min_len(4 * CHUNK));
     Ok(v)
+}
+
+/// The offsets of `n` items of `count(i)` values each (one longer than `n`),
+/// counted and summed in parallel.
+pub(crate) fn par_offsets(
+    n: usize,
+    what: &str,
+    count: impl Fn(usize) -> u32 + Sync + Send,
+) -> Result<Vec<u32>> {
+    let mut offsets = try_vec(n + 1, what)?;
+    offsets.push(0);
+    offsets.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(count));
+    // Each block's total, then each block summed from the totals before it.
+    let block = (4 * CHUNK).max(n.div_ceil(4 * rayon::current_num_threads().max(1)));
+    let totals: Vec<u32> = offsets[1..]
+        .par_chunks(block)
+        .map(|b| b.iter().sum())
+        .collect();
+    let mut bases = Vec::with_capacity(totals.len());
+    let mut sum = 0u32;
+    for total in totals {
+        bases.push(sum);
+        sum += total;
+    }
+    offsets[1..]
+        .par_chunks_mut(block)
+        .zip(bases)
+        .for_each(|(b, mut sum)| {
+            for x in b {
+                sum += *x;
+                *x = sum;
+            }
+        });
+    Ok(offsets)
+}
+
+/// A vector of `offsets[n]` values, item i's `offsets[i]..offsets[i + 1]`
+/// written by `fill(i, part)`, blocks of items in parallel.
+pub(crate) fn fill_by_offsets<T: Default + Clone + Send + Sync>(
+    offsets: &[u32],
+    what: &str,
+    fill: impl Fn(usize, &mut [T]) + Sync + Send,
+) -> Result<Vec<T>> {
+    let mut values = zeroed(offsets.last().map_or(0, |&n| n as usize), what)?;
+    split_by_offsets(&mut values, offsets, CHUNK)
+        .into_par_iter()
+        .for_each(|(items, block)| {
+            let base = offsets[items.start] as usize;
+            for i in items {
+                fill(
+                    i,
+                    &mut block[offsets[i] as usize - base..offsets[i + 1] as usize - base],
+                );
+            }
+        });
+    Ok(values)
+}
+
+/// Splits `values` into the parts owned by each block of `block` items,
+/// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
+/// its items.
+pub(crate) fn split_by_offsets<'a, T>(
+    mut values: &'a mut [T],
+    offsets: &[u32],
+    block: usize,
+) -> Vec<(std::ops::Range<usize>, &'a mut [T])> {
+    let items = offsets.len().saturating_sub(1);
+    let mut parts = Vec::with_capacity(items.div_ceil(block));
+    for first in (0..items).step_by(block) {
+        let last = (first + block).min(items);
+        let len = (offsets[last] - offsets[first]) as usize;
+        let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
+        parts.push((first..last, part));
+        values = rest;
+    }
+    parts
 }
 
 pub(crate) fn prefix_sum(counts: &mut [u32]) {

@@ -23,12 +23,10 @@
 //! child is smooth. (Re-deriving would differ from OpenSubdiv: the point on a
 //! non-manifold edge is a crease, not a corner.)
 
-use std::ops::Range;
-
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, LevelGathers};
-use super::level::{zeroed, Connectivity, Faces, Plan, VertexRule};
+use super::level::{fill_by_offsets, par_offsets, zeroed, Connectivity, Faces, Plan, VertexRule};
 use super::{NakedEdges, Scheme};
 use crate::error::{try_vec, Result};
 
@@ -257,42 +255,30 @@ pub(crate) fn plan(
         Scheme::CatmullClark => 2,
         Scheme::Loop => 1,
     };
-    let mut ring_offsets = try_vec(vertex_count + 1, "vertex stencils")?;
-    ring_offsets.push(0u32);
-    let mut total = 0u32;
-    for (v, rule) in tags.vertex_rules.iter().enumerate() {
-        total += match rule {
+    let ring_offsets = par_offsets(vertex_count, "vertex stencils", |v| {
+        match tags.vertex_rules[v] {
             VertexRule::Smooth => per_neighbour * connectivity.vertex_corners(v).len() as u32,
             VertexRule::Crease => 2,
             VertexRule::Corner => 0,
-        };
-        ring_offsets.push(total);
-    }
-    let mut ring: Vec<u32> = zeroed(total as usize, "vertex stencils")?;
-    // Each block of vertices owns a contiguous part of the ring.
-    let blocks = split_by_offsets(&mut ring, &ring_offsets, CHUNK);
-    blocks.into_par_iter().for_each(|(vertices, block)| {
-        let base = ring_offsets[vertices.start] as usize;
-        for v in vertices {
-            let slot =
-                &mut block[ring_offsets[v] as usize - base..ring_offsets[v + 1] as usize - base];
-            match tags.vertex_rules[v] {
-                VertexRule::Smooth => {
-                    let n = slot.len() / per_neighbour as usize;
-                    for (i, u) in level.neighbours(v).enumerate() {
-                        slot[i] = u;
-                    }
-                    if per_neighbour == 2 {
-                        for (i, f) in level.faces_around(v).enumerate() {
-                            slot[n + i] = f;
-                        }
+        }
+    })?;
+    let ring = fill_by_offsets(&ring_offsets, "vertex stencils", |v, slot| {
+        match tags.vertex_rules[v] {
+            VertexRule::Smooth => {
+                let n = slot.len() / per_neighbour as usize;
+                for (out, u) in slot.iter_mut().zip(level.neighbours(v)) {
+                    *out = u;
+                }
+                if per_neighbour == 2 {
+                    for (out, f) in slot[n..].iter_mut().zip(level.faces_around(v)) {
+                        *out = f;
                     }
                 }
-                VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
-                VertexRule::Corner => {}
             }
+            VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
+            VertexRule::Corner => {}
         }
-    });
+    })?;
 
     // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
     Ok(Plan {
@@ -305,26 +291,6 @@ pub(crate) fn plan(
         vertex_ring_offsets: ring_offsets,
         vertex_ring: ring,
     })
-}
-
-/// Splits `values` into the parts owned by each block of `block` items,
-/// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
-/// its items.
-fn split_by_offsets<'a, T>(
-    mut values: &'a mut [T],
-    offsets: &[u32],
-    block: usize,
-) -> Vec<(Range<usize>, &'a mut [T])> {
-    let items = offsets.len().saturating_sub(1);
-    let mut parts = Vec::with_capacity(items.div_ceil(block));
-    for first in (0..items).step_by(block) {
-        let last = (first + block).min(items);
-        let len = (offsets[last] - offsets[first]) as usize;
-        let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
-        parts.push((first..last, part));
-        values = rest;
-    }
-    parts
 }
 
 /// Loop's smooth vertex weights `(vertex, each neighbour)` for `valence`
