@@ -17,7 +17,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{Connectivity, Faces, VertexRule, NONE};
+use super::level::{flatten, Connectivity, Faces, VertexRule, NONE};
 use crate::error::{try_vec, Result};
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -44,25 +44,26 @@ pub(crate) fn child_faces(
                 .map(|q| 4 * q),
         );
     }
-    let mut indices = try_vec(4 * corner_count, "child faces")?;
     let edge_base = vertex_count as u32;
     let face_base = (vertex_count + edge_count) as u32;
     let corner_edges = &connectivity.corner_edges;
-    // Quad c = [v_c, e_c, f, e_prev(c)]: each index written once, in place.
-    indices.par_extend(
-        (0..4 * corner_count)
+    // Quad c = [v_c, e_c, f, e_prev(c)]: each written once, in place.
+    let mut quads = try_vec(corner_count, "child faces")?;
+    quads.par_extend(
+        (0..corner_count)
             .into_par_iter()
-            .with_min_len(4 * CHUNK)
-            .map(|k| {
-                let c = k / 4;
-                match k % 4 {
-                    0 => faces.indices[c],
-                    1 => edge_base + corner_edges[c],
-                    2 => face_base + connectivity.face_of(c) as u32,
-                    _ => edge_base + corner_edges[faces.prev(c, connectivity.face_of(c))],
-                }
+            .with_min_len(CHUNK)
+            .map(|c| {
+                let f = connectivity.face_of(c);
+                [
+                    faces.indices[c],
+                    edge_base + corner_edges[c],
+                    face_base + f as u32,
+                    edge_base + corner_edges[faces.prev(c, f)],
+                ]
             }),
     );
+    let indices = flatten(quads);
     Ok(Faces {
         vertex_count: vertex_count + edge_count + faces.face_count(),
         size: 4,

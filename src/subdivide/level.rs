@@ -283,7 +283,10 @@ impl Connectivity {
                         None => [slot_vertex(s), v_base + self.vertex_edges[s]],
                         Some(k) => {
                             let c = self.edge_corners[k] as usize;
-                            [v_base + self.corner_edges[c], f_base + self.face_of(c) as u32]
+                            [
+                                v_base + self.corner_edges[c],
+                                f_base + self.face_of(c) as u32,
+                            ]
                         }
                     }),
             );
@@ -292,20 +295,17 @@ impl Connectivity {
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
         let build_corner_edges = || -> Result<Vec<u32>> {
-            let mut corner_edges = try_vec(4 * c_count, "corner edges")?;
-            corner_edges.par_extend((0..4 * c_count).into_par_iter().with_min_len(CHUNK).map(
-                |k| {
-                    let c = k / 4;
-                    let previous = faces.prev(c, self.face_of(c));
-                    match k % 4 {
-                        0 => self.vertex_edge_slot(idx[c], self.corner_edges[c]),
-                        1 => two_e as u32 + self.edge_corner_slot(c),
-                        2 => two_e as u32 + self.edge_corner_slot(previous),
-                        _ => self.vertex_edge_slot(idx[c], self.corner_edges[previous]),
-                    }
-                },
-            ));
-            Ok(corner_edges)
+            let mut quads = try_vec(c_count, "corner edges")?;
+            quads.par_extend((0..c_count).into_par_iter().with_min_len(CHUNK).map(|c| {
+                let previous = faces.prev(c, self.face_of(c));
+                [
+                    self.vertex_edge_slot(idx[c], self.corner_edges[c]),
+                    two_e as u32 + self.edge_corner_slot(c),
+                    two_e as u32 + self.edge_corner_slot(previous),
+                    self.vertex_edge_slot(idx[c], self.corner_edges[previous]),
+                ]
+            }));
+            Ok(flatten(quads))
         };
 
         let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
@@ -406,16 +406,15 @@ impl Connectivity {
             Ok((vertex_edge_offsets, vertex_edges))
         };
 
-        let ((edges, corner_edges), ((edge_corners, vertex_corners), vertex_edges)) =
-            rayon::join(
-                || rayon::join(build_edges, build_corner_edges),
-                || {
-                    rayon::join(
-                        || rayon::join(build_edge_corners, build_vertex_corners),
-                        build_vertex_edges,
-                    )
-                },
-            );
+        let ((edges, corner_edges), ((edge_corners, vertex_corners), vertex_edges)) = rayon::join(
+            || rayon::join(build_edges, build_corner_edges),
+            || {
+                rayon::join(
+                    || rayon::join(build_edge_corners, build_vertex_corners),
+                    build_vertex_edges,
+                )
+            },
+        );
         let (edge_offsets, edge_corners) = edge_corners?;
         let (vertex_offsets, vertex_corners) = vertex_corners?;
         let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
@@ -788,6 +787,14 @@ pub(crate) fn zeroed<T: Default + Clone + Send + Sync>(n: usize, what: &str) -> 
     let mut v = try_vec(n, what)?;
     v.par_extend(rayon::iter::repeat_n(T::default(), n).with_min_len(4 * CHUNK));
     Ok(v)
+}
+
+/// The indices of fixed-size groups (a quad's, a triangle's children's) as
+/// one list, in place: the buffer is reinterpreted, not copied.
+pub(crate) fn flatten<const N: usize>(groups: Vec<[u32; N]>) -> Vec<u32> {
+    // `[u32; N]` and `u32` share their alignment and N divides the bytes:
+    // the cast cannot fail.
+    bytemuck::cast_vec(groups)
 }
 
 /// The offsets of `n` items of `count(i)` values each (one longer than `n`),

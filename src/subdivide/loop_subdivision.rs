@@ -16,7 +16,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{Connectivity, Faces, VertexRule, NONE};
+use super::level::{flatten, Connectivity, Faces, VertexRule, NONE};
 use super::rules::loop_smooth_weights;
 use crate::error::{try_vec, Result};
 
@@ -42,25 +42,27 @@ pub(crate) fn child_faces(
                 .map(|t| 3 * t),
         );
     }
-    let mut indices = try_vec(12 * face_count, "child faces")?;
     let base = vertex_count as u32;
     let corner_edges = &connectivity.corner_edges;
     // Where each of the 12 indices of a triangle's children comes from: a
     // corner (0..3) or an edge (3..6) of the parent.
     const SOURCE: [usize; 12] = [0, 3, 5, 1, 4, 3, 2, 5, 4, 3, 4, 5];
-    indices.par_extend(
-        (0..12 * face_count)
+    let mut children = try_vec(face_count, "child faces")?;
+    children.par_extend(
+        (0..face_count)
             .into_par_iter()
-            .with_min_len(4 * CHUNK)
-            .map(|k| {
-                let (f, source) = (k / 12, SOURCE[k % 12]);
-                if source < 3 {
-                    faces.indices[3 * f + source]
-                } else {
-                    base + corner_edges[3 * f + source - 3]
-                }
+            .with_min_len(CHUNK)
+            .map(|f| {
+                SOURCE.map(|source| {
+                    if source < 3 {
+                        faces.indices[3 * f + source]
+                    } else {
+                        base + corner_edges[3 * f + source - 3]
+                    }
+                })
             }),
     );
+    let indices = flatten(children);
     Ok(Faces {
         vertex_count: vertex_count + connectivity.edge_count(),
         size: 3,
