@@ -316,16 +316,7 @@ pub(crate) fn plan_levels(
         levels,
     )?;
     let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
-    let tt = std::time::Instant::now();
-    let timing = std::env::var_os("WEFT_TIMING").is_some();
     for level in 0..levels as usize {
-        let t0 = std::time::Instant::now();
-        if timing {
-            eprintln!(
-                "start level {level} at {:.1}",
-                (t0 - tt).as_secs_f64() * 1e3
-            );
-        }
         let last = level + 1 == levels as usize;
         let with_offsets = !last || purpose == Purpose::Refiner;
         let next_faces = match scheme {
@@ -334,9 +325,6 @@ pub(crate) fn plan_levels(
             }
             Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, with_offsets)?,
         };
-        if timing {
-            eprintln!("  child faces {:.1}", t0.elapsed().as_secs_f64() * 1e3);
-        }
         if last && purpose == Purpose::OneShot {
             each(Step::Last(LevelGathers {
                 scheme,
@@ -344,15 +332,9 @@ pub(crate) fn plan_levels(
                 connectivity: &connectivity,
                 tags: &tags,
             }))?;
-            if timing {
-                eprintln!("  last points {:.1}", t0.elapsed().as_secs_f64() * 1e3);
-            }
             return Ok(next_faces);
         }
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
-        if timing {
-            eprintln!("  plan {:.1}", t0.elapsed().as_secs_f64() * 1e3);
-        }
         if !last {
             // The next level's edges and adjacency, written from this one's.
             let next_connectivity =
@@ -367,13 +349,7 @@ pub(crate) fn plan_levels(
             plan.face_offsets = faces.offsets;
             plan.face_indices = faces.indices;
         }
-        if timing {
-            eprintln!("  refine {:.1}", t0.elapsed().as_secs_f64() * 1e3);
-        }
         each(Step::Planned(plan))?;
-        if timing {
-            eprintln!("  points {:.1}", t0.elapsed().as_secs_f64() * 1e3);
-        }
         faces = next_faces;
     }
     Ok(faces)
