@@ -16,7 +16,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::Gathers;
+use super::gathers::{Gathers, RefinedGathers};
 use super::level::{flatten, Connectivity, Faces, VertexRule, NONE};
 use crate::error::{try_vec, Result};
 
@@ -72,13 +72,48 @@ pub(crate) fn child_faces(
     })
 }
 
+/// The quads two levels down from `parent`, written from the parent level
+/// alone (see [`RefinedGathers`]): the level between is never built. Their
+/// order is that of [`child_faces`] applied twice; without offsets.
+pub(crate) fn grandchild_faces(parent: &RefinedGathers) -> Result<Faces> {
+    let corner_count = parent.face_count();
+    let vertex_base = parent.vertex_count() as u32;
+    let face_base = vertex_base + parent.edge_count() as u32;
+    // The child quad c has corners 4c..4c + 4; each makes a quad
+    // [v_k, e_k, c, e_prev(k)] of the grandchild level.
+    let mut quads = try_vec(corner_count, "child faces")?;
+    quads.par_extend(
+        (0..corner_count)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|c| {
+                let (quad, edges) = (parent.quad(c), parent.quad_edges(c));
+                let mut out = [0u32; 16];
+                for j in 0..4 {
+                    out[4 * j..4 * j + 4].copy_from_slice(&[
+                        quad[j],
+                        vertex_base + edges[j],
+                        face_base + c as u32,
+                        vertex_base + edges[(j + 3) % 4],
+                    ]);
+                }
+                out
+            }),
+    );
+    Ok(Faces {
+        vertex_count: parent.vertex_count() + parent.edge_count() + corner_count,
+        size: 4,
+        offsets: Vec::new(),
+        indices: flatten(quads),
+    })
+}
+
 #[inline]
 fn face_point(level: &impl Gathers, points: &[DVec3], f: usize) -> DVec3 {
     let corners = level.face(f);
-    let sum = corners
-        .iter()
-        .fold(DVec3::ZERO, |s, &v| s + points[v as usize]);
-    sum / corners.len() as f64
+    let n = corners.len() as f64;
+    let sum = corners.fold(DVec3::ZERO, |s, v| s + points[v as usize]);
+    sum / n
 }
 
 #[inline]
@@ -102,13 +137,13 @@ fn vertex_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], v
             p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
         }
         VertexRule::Smooth => {
-            let neighbours = level.neighbours(v);
-            let n = neighbours.len() as f64;
-            let sum = neighbours.fold(DVec3::ZERO, |s, u| s + points[u as usize])
-                + level
-                    .faces_around(v)
-                    .fold(DVec3::ZERO, |s, f| s + face_points[f as usize]);
-            (p * (n - 2.0) + sum / n) / n
+            // Two sums side by side, each in ring order.
+            let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
+            let n = level.around(v, |u, f| {
+                neighbours += points[u as usize];
+                faces += face_points[f as usize];
+            }) as f64;
+            (p * (n - 2.0) + (neighbours + faces) / n) / n
         }
     }
 }

@@ -1,12 +1,12 @@
 //! Where the arithmetic pass finds the old points each new point gathers.
 //!
 //! A [`Plan`] stores the gathers of a level once, for a refiner to re-apply
-//! to new positions; a [`LevelGathers`] reads the same gathers straight from
-//! the level's faces, connectivity and tags. The one-shot path uses the
-//! latter for its last level, which is never applied twice: writing the
-//! plan's hundred-odd megabytes only to read them back once costs more than
-//! finding each gather where it already lies. Both give the same gathers in
-//! the same order, so both give the same bits.
+//! to new positions. A one-shot subdivision applies each level once, so it
+//! reads the same gathers where they already lie: [`LevelGathers`] from the
+//! level's faces, connectivity and tags, and for Catmull-Clark's last level
+//! [`RefinedGathers`] from its parent level's, so that the largest
+//! connectivity is never built. All give the same gathers in the same
+//! order, so all give the same bits.
 
 use super::level::{Connectivity, Faces, Plan, VertexRule, NONE};
 use super::rules::Tags;
@@ -20,18 +20,18 @@ pub(crate) trait Gathers: Sync {
     fn edge_count(&self) -> usize;
     /// Face count of the level read (0 when the scheme makes no face points).
     fn face_count(&self) -> usize;
-    /// The vertices of face `f`.
-    fn face(&self, f: usize) -> &[u32];
+    /// The vertices of face `f`, in order.
+    fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_;
     /// Edge `e` as `[a, b, wing, wing]` (see [`Plan::edges`]).
     fn edge(&self, e: usize) -> [u32; 4];
     /// How vertex `v`'s point is made.
     fn rule(&self, v: usize) -> VertexRule;
     /// A crease vertex's two sharp neighbours.
     fn crease_neighbours(&self, v: usize) -> [u32; 2];
-    /// A smooth vertex's neighbours, around it.
-    fn neighbours(&self, v: usize) -> impl ExactSizeIterator<Item = u32> + '_;
-    /// A smooth vertex's faces, in the order of [`Gathers::neighbours`].
-    fn faces_around(&self, v: usize) -> impl Iterator<Item = u32> + '_;
+    /// Visits a smooth vertex's neighbours around it, each with the face it
+    /// is reached through (Catmull-Clark; [`NONE`] for Loop), and returns
+    /// how many there are.
+    fn around(&self, v: usize, visit: impl FnMut(u32, u32)) -> usize;
 }
 
 impl Gathers for Plan {
@@ -48,8 +48,9 @@ impl Gathers for Plan {
     }
 
     #[inline]
-    fn face(&self, f: usize) -> &[u32] {
-        &self.face_indices[self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize]
+    fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+        let corners = self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize;
+        self.face_indices[corners].iter().copied()
     }
 
     #[inline]
@@ -69,17 +70,13 @@ impl Gathers for Plan {
     }
 
     #[inline]
-    fn neighbours(&self, v: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+    fn around(&self, v: usize, mut visit: impl FnMut(u32, u32)) -> usize {
         let ring = self.ring(v);
         let n = ring.len() / self.ring_stride();
-        ring[..n].iter().copied()
-    }
-
-    #[inline]
-    fn faces_around(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
-        let ring = self.ring(v);
-        let n = ring.len() / self.ring_stride();
-        ring[n..].iter().copied()
+        for i in 0..n {
+            visit(ring[i], if n < ring.len() { ring[n + i] } else { NONE });
+        }
+        n
     }
 }
 
@@ -95,9 +92,43 @@ pub(crate) struct LevelGathers<'a> {
 impl LevelGathers<'_> {
     /// The vertex following corner `c` in its face.
     #[inline]
-    fn next_vertex(&self, c: u32) -> u32 {
-        let c = c as usize;
-        self.faces.indices[self.faces.next(c, self.connectivity.face_of(c))]
+    fn next_vertex(&self, c: usize) -> u32 {
+        self.faces.indices[self.next(c)]
+    }
+
+    #[inline]
+    fn next(&self, c: usize) -> usize {
+        self.faces.next(c, self.connectivity.face_of(c))
+    }
+
+    #[inline]
+    fn prev(&self, c: usize) -> usize {
+        self.faces.prev(c, self.connectivity.face_of(c))
+    }
+
+    /// The first two of `v`'s sharp edges in edge order ([`NONE`] past the
+    /// last; a crease vertex has exactly two): each edge at `v` leaves it
+    /// from one of its corners or arrives at one.
+    fn crease_edges(&self, v: usize) -> [u32; 2] {
+        let connectivity = self.connectivity;
+        let mut sharp = [NONE; 2];
+        for &c in connectivity.vertex_corners(v) {
+            let c = c as usize;
+            for e in [
+                connectivity.corner_edges[c],
+                connectivity.corner_edges[self.prev(c)],
+            ] {
+                if !self.tags.edge_sharp[e as usize] || sharp.contains(&e) {
+                    continue;
+                }
+                if e < sharp[0] {
+                    sharp = [e, sharp[0]];
+                } else if e < sharp[1] {
+                    sharp[1] = e;
+                }
+            }
+        }
+        sharp
     }
 }
 
@@ -118,23 +149,19 @@ impl Gathers for LevelGathers<'_> {
     }
 
     #[inline]
-    fn face(&self, f: usize) -> &[u32] {
-        self.faces.face(f)
+    fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+        self.faces.face(f).iter().copied()
     }
 
     #[inline]
     fn edge(&self, e: usize) -> [u32; 4] {
-        let [a, b] = self.connectivity.edges[e];
-        let wings = match (self.tags.edge_sharp[e], self.connectivity.edge_corners(e)) {
+        let connectivity = self.connectivity;
+        let [a, b] = connectivity.edges[e];
+        let wings = match (self.tags.edge_sharp[e], connectivity.edge_corners(e)) {
             (false, &[c1, c2]) => match self.scheme {
-                Scheme::CatmullClark => {
-                    [c1, c2].map(|c| self.connectivity.face_of(c as usize) as u32)
-                }
+                Scheme::CatmullClark => [c1, c2].map(|c| connectivity.face_of(c as usize) as u32),
                 // The vertex opposite the edge in a triangle follows the edge's far end.
-                Scheme::Loop => [c1, c2].map(|c| {
-                    let f = self.connectivity.face_of(c as usize);
-                    self.faces.indices[self.faces.next(self.faces.next(c as usize, f), f)]
-                }),
+                Scheme::Loop => [c1, c2].map(|c| self.next_vertex(self.next(c as usize))),
             },
             _ => [NONE, NONE],
         };
@@ -146,58 +173,333 @@ impl Gathers for LevelGathers<'_> {
         self.tags.vertex_rules[v]
     }
 
-    /// The far ends of the first two of `v`'s sharp edges in edge order
-    /// (a crease vertex has exactly two): each edge at `v` leaves it from a
-    /// corner or arrives at one.
     fn crease_neighbours(&self, v: usize) -> [u32; 2] {
-        let connectivity = self.connectivity;
-        let mut sharp = [NONE; 2];
-        for &c in connectivity.vertex_corners(v) {
-            let c = c as usize;
-            let previous = self.faces.prev(c, connectivity.face_of(c));
-            for e in [
-                connectivity.corner_edges[c],
-                connectivity.corner_edges[previous],
-            ] {
-                if !self.tags.edge_sharp[e as usize] || sharp.contains(&e) {
-                    continue;
+        self.crease_edges(v).map(|e| match e {
+            NONE => v as u32,
+            e => {
+                let [a, b] = self.connectivity.edges[e as usize];
+                if a as usize == v {
+                    b
+                } else {
+                    a
                 }
-                // Keep the two lowest edge indices, ascending.
-                if e < sharp[0] {
-                    sharp = [e, sharp[0]];
-                } else if e < sharp[1] {
-                    sharp[1] = e;
-                }
-            }
-        }
-        sharp.map(|e| {
-            if e == NONE {
-                return v as u32;
-            }
-            let [a, b] = connectivity.edges[e as usize];
-            if a as usize == v {
-                b
-            } else {
-                a
             }
         })
     }
 
     #[inline]
-    fn neighbours(&self, v: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+    fn around(&self, v: usize, mut visit: impl FnMut(u32, u32)) -> usize {
         // Around a smooth (manifold, interior, oriented) vertex each edge
         // leaves v in exactly one face: the corners' next vertices are the ring.
-        self.connectivity
-            .vertex_corners(v)
-            .iter()
-            .map(|&c| self.next_vertex(c))
+        let corners = self.connectivity.vertex_corners(v);
+        for &c in corners {
+            let c = c as usize;
+            let face = match self.scheme {
+                Scheme::CatmullClark => self.connectivity.face_of(c) as u32,
+                Scheme::Loop => NONE,
+            };
+            visit(self.next_vertex(c), face);
+        }
+        corners.len()
+    }
+}
+
+/// The gathers of the level Catmull-Clark makes from `parent`, read from the
+/// parent's faces, connectivity (with its vertices' edges) and tags: the
+/// level's faces, edges, corners and rings are each a known function of the
+/// parent's (as [`Connectivity::refine`] writes them), so they are worked
+/// out where needed instead of stored.
+///
+/// With the parent's V vertices, E edges and F faces and corners c: the
+/// level's vertices are the parent's vertices, then `V + e`, then `V + E + f`;
+/// its face c is the quad `[v_c, V + e_c, V + E + f_c, V + e_prev(c)]`, whose
+/// corners are `4c..4c + 4`; its edges are `[v, V + e]` for the parent's
+/// vertex-edge slots (2E of them), then `[V + e, V + E + f]` for its
+/// edge-corner slots.
+#[derive(Clone, Copy)]
+pub(crate) struct RefinedGathers<'a> {
+    pub(crate) parent: LevelGathers<'a>,
+}
+
+impl RefinedGathers<'_> {
+    fn parent_counts(&self) -> (usize, usize) {
+        (
+            self.parent.faces.vertex_count,
+            self.parent.connectivity.edge_count(),
+        )
+    }
+
+    /// The level's face c, made at the parent's corner c.
+    #[inline]
+    pub(crate) fn quad(&self, c: usize) -> [u32; 4] {
+        let (v, e) = self.parent_counts();
+        let parent = &self.parent;
+        let corner_edges = &parent.connectivity.corner_edges;
+        [
+            parent.faces.indices[c],
+            (v as u32) + corner_edges[c],
+            (v + e + parent.connectivity.face_of(c)) as u32,
+            (v as u32) + corner_edges[parent.prev(c)],
+        ]
+    }
+
+    /// The edges of the level's face c, in its corners' order (the edge
+    /// from each corner to the next).
+    #[inline]
+    pub(crate) fn quad_edges(&self, c: usize) -> [u32; 4] {
+        let connectivity = self.parent.connectivity;
+        let two_e = 2 * connectivity.edge_count() as u32;
+        let v = self.parent.faces.indices[c];
+        let previous = self.parent.prev(c);
+        [
+            connectivity.vertex_edge_slot(v, connectivity.corner_edges[c]),
+            two_e + connectivity.edge_corner_slot(c),
+            two_e + connectivity.edge_corner_slot(previous),
+            connectivity.vertex_edge_slot(v, connectivity.corner_edges[previous]),
+        ]
+    }
+
+    /// The end of vertex-edge slot `s` that owns it.
+    #[inline]
+    fn slot_vertex(&self, s: usize) -> usize {
+        let connectivity = self.parent.connectivity;
+        let [a, b] = connectivity.edges[connectivity.vertex_edges[s] as usize];
+        // Of the edge's ends, the lower owns the lower range of slots.
+        if (s as u32) < connectivity.vertex_edge_offsets[a as usize + 1] {
+            a as usize
+        } else {
+            b as usize
+        }
+    }
+}
+
+/// The two faces of a child edge from its two corners, in the order of the
+/// corners (as the level's sorted edge corners list them).
+#[inline]
+fn faces_of_corners(k1: u32, k2: u32) -> [u32; 2] {
+    [k1.min(k2) / 4, k1.max(k2) / 4]
+}
+
+impl Gathers for RefinedGathers<'_> {
+    fn vertex_count(&self) -> usize {
+        let (v, e) = self.parent_counts();
+        v + e + self.parent.faces.face_count()
+    }
+
+    fn edge_count(&self) -> usize {
+        let (_, e) = self.parent_counts();
+        2 * e + self.parent.faces.corner_count()
+    }
+
+    fn face_count(&self) -> usize {
+        self.parent.faces.corner_count()
     }
 
     #[inline]
-    fn faces_around(&self, v: usize) -> impl Iterator<Item = u32> + '_ {
-        self.connectivity
-            .vertex_corners(v)
-            .iter()
-            .map(|&c| self.connectivity.face_of(c as usize) as u32)
+    fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+        self.quad(f).into_iter()
+    }
+
+    #[inline]
+    fn edge(&self, s: usize) -> [u32; 4] {
+        let (v_count, e_count) = self.parent_counts();
+        let parent = &self.parent;
+        let connectivity = parent.connectivity;
+        let idx = &parent.faces.indices;
+        match s.checked_sub(2 * e_count) {
+            None => {
+                let e = connectivity.vertex_edges[s] as usize;
+                let v = self.slot_vertex(s);
+                let wings = match (parent.tags.edge_sharp[e], connectivity.edge_corners(e)) {
+                    (false, &[c1, c2]) => {
+                        // The child quad at c holds the half of e at v, or the one after c.
+                        let corner = |c: u32| {
+                            let c = c as usize;
+                            if idx[c] as usize == v {
+                                4 * c as u32
+                            } else {
+                                4 * parent.next(c) as u32 + 3
+                            }
+                        };
+                        faces_of_corners(corner(c1), corner(c2))
+                    }
+                    _ => [NONE, NONE],
+                };
+                [v as u32, (v_count + e) as u32, wings[0], wings[1]]
+            }
+            Some(k) => {
+                let c = connectivity.edge_corners[k] as usize;
+                let e = connectivity.corner_edges[c] as usize;
+                let f = connectivity.face_of(c);
+                let [f0, f1] = faces_of_corners(4 * c as u32 + 1, 4 * parent.next(c) as u32 + 2);
+                [(v_count + e) as u32, (v_count + e_count + f) as u32, f0, f1]
+            }
+        }
+    }
+
+    #[inline]
+    fn rule(&self, u: usize) -> VertexRule {
+        let (v_count, e_count) = self.parent_counts();
+        match u {
+            u if u < v_count => self.parent.tags.vertex_rules[u],
+            u if u < v_count + e_count && self.parent.tags.edge_sharp[u - v_count] => {
+                VertexRule::Crease
+            }
+            _ => VertexRule::Smooth,
+        }
+    }
+
+    fn crease_neighbours(&self, u: usize) -> [u32; 2] {
+        let (v_count, e_count) = self.parent_counts();
+        if u < v_count {
+            // The halves of the parent's two sharp edges at u.
+            self.parent.crease_edges(u).map(|e| match e {
+                NONE => u as u32,
+                e => v_count as u32 + e,
+            })
+        } else if u < v_count + e_count {
+            // The point of a sharp edge: both halves are sharp.
+            self.parent.connectivity.edges[u - v_count]
+        } else {
+            [u as u32; 2]
+        }
+    }
+
+    #[inline]
+    fn around(&self, u: usize, mut visit: impl FnMut(u32, u32)) -> usize {
+        let (v_count, e_count) = self.parent_counts();
+        let parent = &self.parent;
+        let connectivity = parent.connectivity;
+        let corner_edges = &connectivity.corner_edges;
+        if u < v_count {
+            // Child corner 4c of each parent corner c at u: next comes V + e_c.
+            let corners = connectivity.vertex_corners(u);
+            for &c in corners {
+                visit(v_count as u32 + corner_edges[c as usize], c);
+            }
+            corners.len()
+        } else if u < v_count + e_count {
+            // Child corners 4c + 1 (next: the face point of c's face) and
+            // 4 next(c) + 3 (next: next(c)'s vertex), visited in corner order.
+            let mut ring = [(0u32, 0u32, 0u32); 4];
+            let corners = connectivity.edge_corners(u - v_count);
+            for (pair, &c) in ring.chunks_exact_mut(2).zip(corners) {
+                let c = c as usize;
+                let next = parent.next(c);
+                let face_point = (v_count + e_count + connectivity.face_of(c)) as u32;
+                pair[0] = (4 * c as u32 + 1, face_point, c as u32);
+                pair[1] = (4 * next as u32 + 3, parent.faces.indices[next], next as u32);
+            }
+            // A smooth edge has two corners.
+            let n = (2 * corners.len()).min(4);
+            ring[..n].sort_unstable();
+            for &(_, neighbour, face) in &ring[..n] {
+                visit(neighbour, face);
+            }
+            n
+        } else {
+            // Child corner 4c + 2 of each corner c of the face: next comes V + e_prev(c).
+            let corners = parent.faces.corners(u - v_count - e_count);
+            let n = corners.len();
+            for c in corners {
+                visit(v_count as u32 + corner_edges[parent.prev(c)], c as u32);
+            }
+            n
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shapes;
+    use crate::subdivide::catmull_clark;
+    use crate::subdivide::rules::{cage_tags, child_tags};
+    use crate::subdivide::NakedEdges;
+
+    /// Reading a level's gathers from its parent gives what building the
+    /// level and reading it gives: every face, edge, rule and ring, on
+    /// closed, open, mixed and non-manifold shapes, in every naked-edge mode.
+    #[test]
+    fn refined_gathers_equal_the_built_level() {
+        let shapes = [
+            shapes::cube(),
+            shapes::quad_grid(3, 2),
+            shapes::quad_grid_with_hole(),
+            shapes::mixed_polygons(),
+            shapes::fin(),
+            shapes::bow_tie(),
+            shapes::mobius_strip(6),
+            shapes::tetrahedron(),
+        ];
+        for (s, mesh) in shapes.iter().enumerate() {
+            for naked in [
+                NakedEdges::Fixed,
+                NakedEdges::Smooth,
+                NakedEdges::CornerFixed,
+            ] {
+                let faces = Faces::of_mesh(mesh);
+                let connectivity = Connectivity::new(&faces).unwrap();
+                let tags = cage_tags(&faces, &connectivity, naked).unwrap();
+                let child = catmull_clark::child_faces(&faces, &connectivity, true).unwrap();
+                let child_connectivity = connectivity
+                    .refine(Scheme::CatmullClark, &faces, true)
+                    .unwrap();
+                let child_tags =
+                    child_tags(Scheme::CatmullClark, &tags, &faces, &child_connectivity).unwrap();
+                let parent = LevelGathers {
+                    scheme: Scheme::CatmullClark,
+                    faces: &faces,
+                    connectivity: &connectivity,
+                    tags: &tags,
+                };
+                let refined = RefinedGathers { parent };
+                let built = LevelGathers {
+                    scheme: Scheme::CatmullClark,
+                    faces: &child,
+                    connectivity: &child_connectivity,
+                    tags: &child_tags,
+                };
+                let what = format!("shape {s} {naked:?}");
+                let grandchild =
+                    catmull_clark::child_faces(&child, &child_connectivity, false).unwrap();
+                assert_eq!(
+                    catmull_clark::grandchild_faces(&refined).unwrap().indices,
+                    grandchild.indices,
+                    "{what}: grandchild faces"
+                );
+                assert_eq!(refined.vertex_count(), built.vertex_count(), "{what}");
+                assert_eq!(refined.edge_count(), built.edge_count(), "{what}");
+                assert_eq!(refined.face_count(), built.face_count(), "{what}");
+                for f in 0..built.face_count() {
+                    assert!(refined.face(f).eq(built.face(f)), "{what}: face {f}");
+                    let edges: Vec<u32> = (4 * f..4 * f + 4)
+                        .map(|c| child_connectivity.corner_edges[c])
+                        .collect();
+                    assert_eq!(refined.quad_edges(f).to_vec(), edges, "{what}: face {f}");
+                }
+                for e in 0..built.edge_count() {
+                    assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
+                }
+                for v in 0..built.vertex_count() {
+                    let rule = built.rule(v);
+                    assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
+                    match rule {
+                        VertexRule::Crease => assert_eq!(
+                            refined.crease_neighbours(v),
+                            built.crease_neighbours(v),
+                            "{what}: vertex {v}"
+                        ),
+                        VertexRule::Smooth => {
+                            let (mut a, mut b) = (Vec::new(), Vec::new());
+                            let n = refined.around(v, |u, f| a.push((u, f)));
+                            assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
+                            assert_eq!(a, b, "{what}: vertex {v}");
+                        }
+                        VertexRule::Corner => {}
+                    }
+                }
+            }
+        }
     }
 }

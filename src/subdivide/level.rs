@@ -687,13 +687,13 @@ impl Connectivity {
 
     /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`.
     #[inline]
-    fn vertex_edge_slot(&self, v: u32, e: u32) -> u32 {
+    pub(crate) fn vertex_edge_slot(&self, v: u32, e: u32) -> u32 {
         self.vertex_edge_offsets[v as usize] + position(self.vertex_edges(v as usize), e)
     }
 
     /// Where corner `c` sits in `edge_corners`.
     #[inline]
-    fn edge_corner_slot(&self, c: usize) -> u32 {
+    pub(crate) fn edge_corner_slot(&self, c: usize) -> u32 {
         let e = self.corner_edges[c] as usize;
         self.edge_offsets[e] + position(self.edge_corners(e), c as u32)
     }

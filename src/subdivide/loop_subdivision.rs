@@ -92,9 +92,9 @@ fn vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
             p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
         }
         VertexRule::Smooth => {
-            let neighbours = level.neighbours(v);
-            let (own, each) = loop_smooth_weights(neighbours.len());
-            let sum = neighbours.fold(DVec3::ZERO, |s, u| s + points[u as usize]);
+            let mut sum = DVec3::ZERO;
+            let n = level.around(v, |u, _| sum += points[u as usize]);
+            let (own, each) = loop_smooth_weights(n);
             p * own + sum * each
         }
     }

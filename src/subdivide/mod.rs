@@ -3,10 +3,12 @@
 //!
 //! Each level runs in two passes. A topology pass finds the level's edges by
 //! bucketing, tags every edge and vertex with its rule (`rules.rs`: boundary,
-//! corner, non-manifold), writes the next level's faces arithmetically and
-//! records every new point as a gather of old points (a *plan*). An
-//! arithmetic pass applies the plan to positions in parallel, with no atomics.
-//! [`Refiner`] keeps the plans of all levels for re-evaluation.
+//! corner, non-manifold) and writes the next level's faces arithmetically;
+//! every new point is then a gather of old points. An arithmetic pass applies
+//! the gathers to positions in parallel, with no atomics. [`Refiner`] stores
+//! them once as *plans* for re-evaluation; a one-shot subdivision reads them
+//! where they lie, Catmull-Clark's last level from the level before it
+//! (`gathers.rs`), so the largest connectivity is never built.
 //!
 //! # Output order
 //! One level of V vertices, E edges and F faces makes, in order: the V
@@ -171,9 +173,9 @@ pub fn subdivide(
             let source = positions.as_deref().unwrap_or(mesh.positions());
             let next = match &step {
                 Step::Planned(plan) => refiner::points(scheme, plan, source)?,
-                Step::Last(level) => refiner::points(scheme, level, source)?,
+                Step::Level(level) => refiner::points(scheme, level, source)?,
+                Step::Refined(level) => refiner::points(scheme, level, source)?,
             };
-            drop(step);
             positions = Some(next);
             Ok(())
         },

@@ -7,7 +7,7 @@ use std::sync::Mutex;
 
 use glam::DVec3;
 
-use super::gathers::{Gathers, LevelGathers};
+use super::gathers::{Gathers, LevelGathers, RefinedGathers};
 use super::level::{Connectivity, Faces, Plan};
 use super::rules::{cage_tags, child_tags, plan, Tags};
 use super::{
@@ -273,8 +273,9 @@ pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DV
 pub(crate) enum Purpose {
     /// Every level planned; the last level's faces with offsets.
     Refiner,
-    /// One evaluation: the last level's gathers read from the level itself
-    /// ([`Step::Last`]), its faces without offsets (all the same size).
+    /// One evaluation: no plans, each level's gathers read where they lie
+    /// ([`Step::Level`], [`Step::Refined`]); the last level's faces without
+    /// offsets (all the same size).
     OneShot,
 }
 
@@ -282,8 +283,11 @@ pub(crate) enum Purpose {
 pub(crate) enum Step<'a> {
     /// A level's gathers, stored.
     Planned(Plan),
-    /// The last level of a one-shot subdivision, read where it lies.
-    Last(LevelGathers<'a>),
+    /// A level's gathers, read from the level.
+    Level(LevelGathers<'a>),
+    /// Catmull-Clark's last level's gathers, read from the level before the
+    /// one they apply to.
+    Refined(RefinedGathers<'a>),
 }
 
 /// Plans every level in turn, handing each to `each`, and returns the faces
@@ -318,22 +322,42 @@ pub(crate) fn plan_levels(
     let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
     for level in 0..levels as usize {
         let last = level + 1 == levels as usize;
-        let with_offsets = !last || purpose == Purpose::Refiner;
-        let next_faces = match scheme {
-            Scheme::CatmullClark => {
-                catmull_clark::child_faces(&faces, &connectivity, with_offsets)?
-            }
-            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, with_offsets)?,
-        };
-        if last && purpose == Purpose::OneShot {
-            each(Step::Last(LevelGathers {
+        if purpose == Purpose::OneShot {
+            let gathers = LevelGathers {
                 scheme,
                 faces: &faces,
                 connectivity: &connectivity,
                 tags: &tags,
-            }))?;
-            return Ok(next_faces);
+            };
+            if scheme == Scheme::CatmullClark && level + 2 == levels as usize {
+                // The last two levels from this one's connectivity: the
+                // next level's is never built.
+                each(Step::Level(gathers))?;
+                let refined = RefinedGathers { parent: gathers };
+                let last_faces = catmull_clark::grandchild_faces(&refined)?;
+                each(Step::Refined(refined))?;
+                return Ok(last_faces);
+            }
+            let next_faces = match scheme {
+                Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity, !last)?,
+                Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, !last)?,
+            };
+            each(Step::Level(gathers))?;
+            if last {
+                return Ok(next_faces);
+            }
+            // The vertices' edges are read by the next refinement, and by
+            // Catmull-Clark's refined gathers.
+            let next_connectivity =
+                connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
+            tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
+            (faces, connectivity) = (next_faces, next_connectivity);
+            continue;
         }
+        let next_faces = match scheme {
+            Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity, true)?,
+            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, true)?,
+        };
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
         if !last {
             // The next level's edges and adjacency, written from this one's.

@@ -205,23 +205,37 @@ pub(crate) fn child_tags(
     let mut edge_sharp = try_vec(child.edge_count(), "edge tags")?;
     // A child edge from the parent's vertex a to the point of parent edge e is
     // [a, V + e]; every other child edge has both ends at new points.
-    edge_sharp.extend(child.edges.iter().map(|&[low, high]| {
-        (low as usize) < parent_vertices && parent.edge_sharp[high as usize - parent_vertices]
-    }));
+    edge_sharp.par_extend(
+        child
+            .edges
+            .par_iter()
+            .with_min_len(CHUNK)
+            .map(|&[low, high]| {
+                (low as usize) < parent_vertices
+                    && parent.edge_sharp[high as usize - parent_vertices]
+            }),
+    );
     let face_points = match scheme {
         Scheme::CatmullClark => parent_faces.face_count(),
         Scheme::Loop => 0,
     };
     let mut vertex_rules = try_vec(parent_vertices + parent_edges + face_points, "vertex tags")?;
-    vertex_rules.extend_from_slice(&parent.vertex_rules);
-    vertex_rules.extend(parent.edge_sharp.iter().map(|&sharp| {
-        if sharp {
-            VertexRule::Crease
-        } else {
-            VertexRule::Smooth
-        }
-    }));
-    vertex_rules.extend(std::iter::repeat_n(VertexRule::Smooth, face_points));
+    vertex_rules.par_extend(parent.vertex_rules.par_iter().with_min_len(CHUNK).copied());
+    vertex_rules.par_extend(
+        parent
+            .edge_sharp
+            .par_iter()
+            .with_min_len(CHUNK)
+            .map(|&sharp| {
+                if sharp {
+                    VertexRule::Crease
+                } else {
+                    VertexRule::Smooth
+                }
+            }),
+    );
+    vertex_rules
+        .par_extend(rayon::iter::repeat_n(VertexRule::Smooth, face_points).with_min_len(CHUNK));
     Ok(Tags {
         edge_sharp,
         vertex_rules,
@@ -266,14 +280,14 @@ pub(crate) fn plan(
         match tags.vertex_rules[v] {
             VertexRule::Smooth => {
                 let n = slot.len() / per_neighbour as usize;
-                for (out, u) in slot.iter_mut().zip(level.neighbours(v)) {
-                    *out = u;
-                }
-                if per_neighbour == 2 {
-                    for (out, f) in slot[n..].iter_mut().zip(level.faces_around(v)) {
-                        *out = f;
+                let mut i = 0;
+                level.around(v, |u, f| {
+                    slot[i] = u;
+                    if per_neighbour == 2 {
+                        slot[n + i] = f;
                     }
-                }
+                    i += 1;
+                });
             }
             VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
             VertexRule::Corner => {}
