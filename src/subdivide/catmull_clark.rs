@@ -17,7 +17,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, RefinedGathers};
-use super::level::{flatten, Connectivity, Faces, VertexRule, NONE};
+use super::level::{flatten, par_map, Connectivity, Faces, VertexRule, NONE};
 use crate::error::{try_vec, Result};
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -36,33 +36,21 @@ pub(crate) fn child_faces(
     let corner_count = faces.corner_count();
     let mut offsets = Vec::new();
     if with_offsets {
-        offsets = try_vec(corner_count + 1, "child faces")?;
-        offsets.par_extend(
-            (0..corner_count as u32 + 1)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|q| 4 * q),
-        );
+        offsets = par_map(corner_count + 1, "child faces", |q| 4 * q as u32)?;
     }
     let edge_base = vertex_count as u32;
     let face_base = (vertex_count + edge_count) as u32;
     let corner_edges = &connectivity.corner_edges;
     // Quad c = [v_c, e_c, f, e_prev(c)]: each written once, in place.
-    let mut quads = try_vec(corner_count, "child faces")?;
-    quads.par_extend(
-        (0..corner_count)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|c| {
-                let f = connectivity.face_of(c);
-                [
-                    faces.indices[c],
-                    edge_base + corner_edges[c],
-                    face_base + f as u32,
-                    edge_base + corner_edges[faces.prev(c, f)],
-                ]
-            }),
-    );
+    let quads = par_map(corner_count, "child faces", |c| {
+        let f = connectivity.face_of(c);
+        [
+            faces.indices[c],
+            edge_base + corner_edges[c],
+            face_base + f as u32,
+            edge_base + corner_edges[faces.prev(c, f)],
+        ]
+    })?;
     let indices = flatten(quads);
     Ok(Faces {
         vertex_count: vertex_count + edge_count + faces.face_count(),
@@ -81,25 +69,19 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers) -> Result<Faces> {
     let face_base = vertex_base + parent.edge_count() as u32;
     // The child quad c has corners 4c..4c + 4; each makes a quad
     // [v_k, e_k, c, e_prev(k)] of the grandchild level.
-    let mut quads = try_vec(corner_count, "child faces")?;
-    quads.par_extend(
-        (0..corner_count)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|c| {
-                let (quad, edges) = (parent.quad(c), parent.quad_edges(c));
-                let mut out = [0u32; 16];
-                for j in 0..4 {
-                    out[4 * j..4 * j + 4].copy_from_slice(&[
-                        quad[j],
-                        vertex_base + edges[j],
-                        face_base + c as u32,
-                        vertex_base + edges[(j + 3) % 4],
-                    ]);
-                }
-                out
-            }),
-    );
+    let quads = par_map(corner_count, "child faces", |c| {
+        let (quad, edges) = (parent.quad(c), parent.quad_edges(c));
+        let mut out = [0u32; 16];
+        for j in 0..4 {
+            out[4 * j..4 * j + 4].copy_from_slice(&[
+                quad[j],
+                vertex_base + edges[j],
+                face_base + c as u32,
+                vertex_base + edges[(j + 3) % 4],
+            ]);
+        }
+        out
+    })?;
     Ok(Faces {
         vertex_count: parent.vertex_count() + parent.edge_count() + corner_count,
         size: 4,
@@ -178,13 +160,7 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 /// [`crate::Error::OutOfMemory`].
 pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
     let (v, e, f) = (level.vertex_count(), level.edge_count(), level.face_count());
-    let mut face_points = try_vec(f, "face points")?;
-    face_points.par_extend(
-        (0..f)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|f| face_point(level, points, f)),
-    );
+    let face_points = par_map(f, "face points", |f| face_point(level, points, f))?;
     let mut out = try_vec(v + e + f, "refined positions")?;
     out.par_extend(
         (0..v)

@@ -247,29 +247,9 @@ impl RefinedGathers<'_> {
     /// from each corner to the next).
     #[inline]
     pub(crate) fn quad_edges(&self, c: usize) -> [u32; 4] {
-        let connectivity = self.parent.connectivity;
-        let two_e = 2 * connectivity.edge_count() as u32;
-        let v = self.parent.faces.indices[c];
-        let previous = self.parent.prev(c);
-        [
-            connectivity.vertex_edge_slot(v, connectivity.corner_edges[c]),
-            two_e + connectivity.edge_corner_slot(c),
-            two_e + connectivity.edge_corner_slot(previous),
-            connectivity.vertex_edge_slot(v, connectivity.corner_edges[previous]),
-        ]
-    }
-
-    /// The end of vertex-edge slot `s` that owns it.
-    #[inline]
-    fn slot_vertex(&self, s: usize) -> usize {
-        let connectivity = self.parent.connectivity;
-        let [a, b] = connectivity.edges[connectivity.vertex_edges[s] as usize];
-        // Of the edge's ends, the lower owns the lower range of slots.
-        if (s as u32) < connectivity.vertex_edge_offsets[a as usize + 1] {
-            a as usize
-        } else {
-            b as usize
-        }
+        self.parent
+            .connectivity
+            .child_quad_edges(self.parent.faces, c)
     }
 }
 
@@ -309,7 +289,7 @@ impl Gathers for RefinedGathers<'_> {
         match s.checked_sub(2 * e_count) {
             None => {
                 let e = connectivity.vertex_edges[s] as usize;
-                let v = self.slot_vertex(s);
+                let v = connectivity.slot_vertex(s) as usize;
                 let wings = match (parent.tags.edge_sharp[e], connectivity.edge_corners(e)) {
                     (false, &[c1, c2]) => {
                         // The child quad at c holds the half of e at v, or the one after c.

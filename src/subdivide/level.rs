@@ -262,49 +262,25 @@ impl Connectivity {
         // Child edge s < 2E is [v, V + e] for vertex-edge slot s; child edge
         // 2E + k is [V + e, F + f] for edge-corner slot k (corner c on e, in
         // face f). Every array below is written slot by slot in parallel.
-        let slot_vertex = |s: usize| -> u32 {
-            // Of the edge's ends, the lower owns the lower range of slots.
-            let [a, b] = self.edges[self.vertex_edges[s] as usize];
-            if (s as u32) < self.vertex_edge_offsets[a as usize + 1] {
-                a
-            } else {
-                b
-            }
-        };
+        let slot_vertex = |s: usize| self.slot_vertex(s);
 
         // The arrays are independent of each other: built side by side.
         let build_edges = || -> Result<Vec<[u32; 2]>> {
-            let mut edges = try_vec(edge_slots, "edges")?;
-            edges.par_extend(
-                (0..edge_slots)
-                    .into_par_iter()
-                    .with_min_len(CHUNK)
-                    .map(|s| match s.checked_sub(two_e) {
-                        None => [slot_vertex(s), v_base + self.vertex_edges[s]],
-                        Some(k) => {
-                            let c = self.edge_corners[k] as usize;
-                            [
-                                v_base + self.corner_edges[c],
-                                f_base + self.face_of(c) as u32,
-                            ]
-                        }
-                    }),
-            );
-            Ok(edges)
+            par_map(edge_slots, "edges", |s| match s.checked_sub(two_e) {
+                None => [slot_vertex(s), v_base + self.vertex_edges[s]],
+                Some(k) => {
+                    let c = self.edge_corners[k] as usize;
+                    [
+                        v_base + self.corner_edges[c],
+                        f_base + self.face_of(c) as u32,
+                    ]
+                }
+            })
         };
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
         let build_corner_edges = || -> Result<Vec<u32>> {
-            let mut quads = try_vec(c_count, "corner edges")?;
-            quads.par_extend((0..c_count).into_par_iter().with_min_len(CHUNK).map(|c| {
-                let previous = faces.prev(c, self.face_of(c));
-                [
-                    self.vertex_edge_slot(idx[c], self.corner_edges[c]),
-                    two_e as u32 + self.edge_corner_slot(c),
-                    two_e as u32 + self.edge_corner_slot(previous),
-                    self.vertex_edge_slot(idx[c], self.corner_edges[previous]),
-                ]
-            }));
+            let quads = par_map(c_count, "corner edges", |c| self.child_quad_edges(faces, c))?;
             Ok(flatten(quads))
         };
 
@@ -685,6 +661,35 @@ impl Connectivity {
             [self.vertex_edge_offsets[v] as usize..self.vertex_edge_offsets[v + 1] as usize]
     }
 
+    /// The end of edge `vertex_edges[s]` whose list holds slot `s`.
+    #[inline]
+    pub(crate) fn slot_vertex(&self, s: usize) -> u32 {
+        let [a, b] = self.edges[self.vertex_edges[s] as usize];
+        // Of the edge's ends, the lower owns the lower range of slots.
+        if (s as u32) < self.vertex_edge_offsets[a as usize + 1] {
+            a
+        } else {
+            b
+        }
+    }
+
+    /// Catmull-Clark: the edges of the child quad at corner `c` of `faces`
+    /// (whose connectivity this is), in the quad's corner order:
+    /// `[v_c, e_c]`, `[e_c, f]`, `[f, e_prev]`, `[e_prev, v_c]` (see
+    /// [`Connectivity::refine`] for the child edges' order).
+    #[inline]
+    pub(crate) fn child_quad_edges(&self, faces: &Faces, c: usize) -> [u32; 4] {
+        let two_e = 2 * self.edge_count() as u32;
+        let v = faces.indices[c];
+        let previous = faces.prev(c, self.face_of(c));
+        [
+            self.vertex_edge_slot(v, self.corner_edges[c]),
+            two_e + self.edge_corner_slot(c),
+            two_e + self.edge_corner_slot(previous),
+            self.vertex_edge_slot(v, self.corner_edges[previous]),
+        ]
+    }
+
     /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`.
     #[inline]
     pub(crate) fn vertex_edge_slot(&self, v: u32, e: u32) -> u32 {
@@ -795,6 +800,18 @@ pub(crate) fn flatten<const N: usize>(groups: Vec<[u32; N]>) -> Vec<u32> {
     // `[u32; N]` and `u32` share their alignment and N divides the bytes:
     // the cast cannot fail.
     bytemuck::cast_vec(groups)
+}
+
+/// `f(0), …, f(n - 1)`, reserved fallibly and written in parallel, each
+/// element once.
+pub(crate) fn par_map<T: Send>(
+    n: usize,
+    what: &str,
+    f: impl Fn(usize) -> T + Sync + Send,
+) -> Result<Vec<T>> {
+    let mut values = try_vec(n, what)?;
+    values.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(f));
+    Ok(values)
 }
 
 /// The offsets of `n` items of `count(i)` values each (one longer than `n`),

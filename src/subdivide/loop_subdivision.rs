@@ -16,7 +16,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{flatten, Connectivity, Faces, VertexRule, NONE};
+use super::level::{flatten, par_map, Connectivity, Faces, VertexRule, NONE};
 use super::rules::loop_smooth_weights;
 use crate::error::{try_vec, Result};
 
@@ -34,34 +34,22 @@ pub(crate) fn child_faces(
     let face_count = faces.face_count();
     let mut offsets = Vec::new();
     if with_offsets {
-        offsets = try_vec(4 * face_count + 1, "child faces")?;
-        offsets.par_extend(
-            (0..4 * face_count as u32 + 1)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|t| 3 * t),
-        );
+        offsets = par_map(4 * face_count + 1, "child faces", |t| 3 * t as u32)?;
     }
     let base = vertex_count as u32;
     let corner_edges = &connectivity.corner_edges;
     // Where each of the 12 indices of a triangle's children comes from: a
     // corner (0..3) or an edge (3..6) of the parent.
     const SOURCE: [usize; 12] = [0, 3, 5, 1, 4, 3, 2, 5, 4, 3, 4, 5];
-    let mut children = try_vec(face_count, "child faces")?;
-    children.par_extend(
-        (0..face_count)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|f| {
-                SOURCE.map(|source| {
-                    if source < 3 {
-                        faces.indices[3 * f + source]
-                    } else {
-                        base + corner_edges[3 * f + source - 3]
-                    }
-                })
-            }),
-    );
+    let children = par_map(face_count, "child faces", |f| {
+        SOURCE.map(|source| {
+            if source < 3 {
+                faces.indices[3 * f + source]
+            } else {
+                base + corner_edges[3 * f + source - 3]
+            }
+        })
+    })?;
     let indices = flatten(children);
     Ok(Faces {
         vertex_count: vertex_count + connectivity.edge_count(),

@@ -26,7 +26,9 @@
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, LevelGathers};
-use super::level::{fill_by_offsets, par_offsets, zeroed, Connectivity, Faces, Plan, VertexRule};
+use super::level::{
+    fill_by_offsets, par_map, par_offsets, zeroed, Connectivity, Faces, Plan, VertexRule,
+};
 use super::{NakedEdges, Scheme};
 use crate::error::{try_vec, Result};
 
@@ -257,13 +259,9 @@ pub(crate) fn plan(
         tags,
     };
     let vertex_count = faces.vertex_count;
-    let mut edges = try_vec(connectivity.edge_count(), "edge stencils")?;
-    edges.par_extend(
-        (0..connectivity.edge_count())
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|e| level.edge(e)),
-    );
+    let edges = par_map(connectivity.edge_count(), "edge stencils", |e| {
+        level.edge(e)
+    })?;
 
     let per_neighbour = match scheme {
         Scheme::CatmullClark => 2,
