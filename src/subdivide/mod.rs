@@ -54,7 +54,7 @@ pub use creases::{
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;
-use refiner::{Purpose, Step};
+use refiner::Step;
 pub use stencils::{subdivide_with, Subdivider};
 
 use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
@@ -163,23 +163,15 @@ pub fn subdivide(
     };
     let mut positions: Option<Vec<DVec3>> =
         scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
-    let faces = refiner::plan_levels(
-        mesh,
-        scheme,
-        levels,
-        naked_edges,
-        Purpose::OneShot,
-        |step| {
-            let source = positions.as_deref().unwrap_or(mesh.positions());
-            let next = match &step {
-                Step::Planned(plan) => refiner::points(scheme, plan, source)?,
-                Step::Level(level) => refiner::points(scheme, level, source)?,
-                Step::Refined(level) => refiner::points(scheme, level, source)?,
-            };
-            positions = Some(next);
-            Ok(())
-        },
-    )?;
+    let faces = refiner::gather_levels(mesh, scheme, levels, naked_edges, |step| {
+        let source = positions.as_deref().unwrap_or(mesh.positions());
+        let next = match &step {
+            Step::Level(level) => refiner::points(scheme, level, source)?,
+            Step::Refined(level) => refiner::points(scheme, level, source)?,
+        };
+        positions = Some(next);
+        Ok(())
+    })?;
     let positions = match (positions, scale) {
         (Some(mut positions), Some(scale)) => {
             scale::restore_points(&mut positions, scale, "the position")?;

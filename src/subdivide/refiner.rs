@@ -50,19 +50,7 @@ impl Refiner {
         naked_edges: NakedEdges,
     ) -> Result<Refiner> {
         let mut plans = Vec::new();
-        let faces = plan_levels(
-            cage,
-            scheme,
-            levels,
-            naked_edges,
-            Purpose::Refiner,
-            |step| {
-                if let Step::Planned(plan) = step {
-                    plans.push(plan);
-                }
-                Ok(())
-            },
-        )?;
+        let faces = plan_levels(cage, scheme, levels, naked_edges, |plan| plans.push(plan))?;
         let largest_intermediate = plans
             .iter()
             .skip(1)
@@ -268,21 +256,8 @@ pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DV
     }
 }
 
-/// What [`plan_levels`] plans for.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub(crate) enum Purpose {
-    /// Every level planned; the last level's faces with offsets.
-    Refiner,
-    /// One evaluation: no plans, each level's gathers read where they lie
-    /// ([`Step::Level`], [`Step::Refined`]); the last level's faces without
-    /// offsets (all the same size).
-    OneShot,
-}
-
-/// A level handed on by [`plan_levels`].
+/// A level handed on by [`gather_levels`].
 pub(crate) enum Step<'a> {
-    /// A level's gathers, stored.
-    Planned(Plan),
     /// A level's gathers, read from the level.
     Level(LevelGathers<'a>),
     /// Catmull-Clark's last level's gathers, read from the level before the
@@ -290,27 +265,25 @@ pub(crate) enum Step<'a> {
     Refined(RefinedGathers<'a>),
 }
 
-/// Plans every level in turn, handing each to `each`, and returns the faces
-/// of the last level. Checks the scheme's preconditions and every level's
-/// size before allocating.
-pub(crate) fn plan_levels(
+/// The cage's faces, connectivity and tags, or `None` when there is nothing
+/// to refine (no level or no face). Checks the scheme's preconditions and
+/// every level's size before allocating.
+fn cage_level(
     cage: &Mesh,
     scheme: Scheme,
     levels: u32,
     naked_edges: NakedEdges,
-    purpose: Purpose,
-    mut each: impl FnMut(Step<'_>) -> Result<()>,
-) -> Result<Faces> {
+) -> Result<Option<(Faces, Connectivity, Tags)>> {
     if scheme == Scheme::Loop {
         if let Some((face, size)) = cage.first_non_triangle() {
             return Err(Error::NotTriangles { face, size });
         }
     }
-    let mut faces = Faces::of_mesh(cage);
     if levels == 0 || cage.face_count() == 0 {
-        return Ok(faces);
+        return Ok(None);
     }
-    let mut connectivity = Connectivity::new(&faces)?;
+    let faces = Faces::of_mesh(cage);
+    let connectivity = Connectivity::new(&faces)?;
     check_counts(
         scheme,
         cage.vertex_count() as u64,
@@ -319,45 +292,41 @@ pub(crate) fn plan_levels(
         cage.index_count() as u64,
         levels,
     )?;
-    let mut tags: Tags = cage_tags(&faces, &connectivity, naked_edges)?;
+    let tags = cage_tags(&faces, &connectivity, naked_edges)?;
+    Ok(Some((faces, connectivity, tags)))
+}
+
+/// The faces of the level `scheme` makes from `faces`, with their offsets
+/// when `with_offsets`.
+fn child_faces(
+    scheme: Scheme,
+    faces: &Faces,
+    connectivity: &Connectivity,
+    with_offsets: bool,
+) -> Result<Faces> {
+    match scheme {
+        Scheme::CatmullClark => catmull_clark::child_faces(faces, connectivity, with_offsets),
+        Scheme::Loop => loop_subdivision::child_faces(faces, connectivity, with_offsets),
+    }
+}
+
+/// Plans every level in turn, handing each plan to `each`, and returns the
+/// faces of the last level, with offsets.
+pub(crate) fn plan_levels(
+    cage: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: NakedEdges,
+    mut each: impl FnMut(Plan),
+) -> Result<Faces> {
+    let Some((mut faces, mut connectivity, mut tags)) =
+        cage_level(cage, scheme, levels, naked_edges)?
+    else {
+        return Ok(Faces::of_mesh(cage));
+    };
     for level in 0..levels as usize {
         let last = level + 1 == levels as usize;
-        if purpose == Purpose::OneShot {
-            let gathers = LevelGathers {
-                scheme,
-                faces: &faces,
-                connectivity: &connectivity,
-                tags: &tags,
-            };
-            if scheme == Scheme::CatmullClark && level + 2 == levels as usize {
-                // The last two levels from this one's connectivity: the
-                // next level's is never built.
-                each(Step::Level(gathers))?;
-                let refined = RefinedGathers { parent: gathers };
-                let last_faces = catmull_clark::grandchild_faces(&refined)?;
-                each(Step::Refined(refined))?;
-                return Ok(last_faces);
-            }
-            let next_faces = match scheme {
-                Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity, !last)?,
-                Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, !last)?,
-            };
-            each(Step::Level(gathers))?;
-            if last {
-                return Ok(next_faces);
-            }
-            // The vertices' edges are read by the next refinement, and by
-            // Catmull-Clark's refined gathers.
-            let next_connectivity =
-                connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
-            tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
-            (faces, connectivity) = (next_faces, next_connectivity);
-            continue;
-        }
-        let next_faces = match scheme {
-            Scheme::CatmullClark => catmull_clark::child_faces(&faces, &connectivity, true)?,
-            Scheme::Loop => loop_subdivision::child_faces(&faces, &connectivity, true)?,
-        };
+        let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
         if !last {
             // The next level's edges and adjacency, written from this one's.
@@ -373,8 +342,54 @@ pub(crate) fn plan_levels(
             plan.face_offsets = faces.offsets;
             plan.face_indices = faces.indices;
         }
-        each(Step::Planned(plan))?;
+        each(plan);
         faces = next_faces;
+    }
+    Ok(faces)
+}
+
+/// One-shot subdivision's levels: hands each level's gathers to `each`,
+/// read where they lie instead of planned (each applies once), and returns
+/// the faces of the last level, without offsets (all the same size).
+/// Catmull-Clark's last two levels both come from the connectivity of the
+/// level before them, so the largest connectivity is never built.
+pub(crate) fn gather_levels(
+    cage: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: NakedEdges,
+    mut each: impl FnMut(Step<'_>) -> Result<()>,
+) -> Result<Faces> {
+    let Some((mut faces, mut connectivity, mut tags)) =
+        cage_level(cage, scheme, levels, naked_edges)?
+    else {
+        return Ok(Faces::of_mesh(cage));
+    };
+    for level in 0..levels as usize {
+        let last = level + 1 == levels as usize;
+        let gathers = LevelGathers {
+            scheme,
+            faces: &faces,
+            connectivity: &connectivity,
+            tags: &tags,
+        };
+        if scheme == Scheme::CatmullClark && level + 2 == levels as usize {
+            each(Step::Level(gathers))?;
+            let refined = RefinedGathers { parent: gathers };
+            let last_faces = catmull_clark::grandchild_faces(&refined)?;
+            each(Step::Refined(refined))?;
+            return Ok(last_faces);
+        }
+        let next_faces = child_faces(scheme, &faces, &connectivity, !last)?;
+        each(Step::Level(gathers))?;
+        if last {
+            return Ok(next_faces);
+        }
+        // The vertices' edges are read by the next refinement, and by
+        // Catmull-Clark's refined gathers.
+        let next_connectivity = connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
+        tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
+        (faces, connectivity) = (next_faces, next_connectivity);
     }
     Ok(faces)
 }
