@@ -49,19 +49,28 @@ struct Case {
     cage: RefMesh,
 }
 
+/// The cases' names, in the tables' order.
+const CASE_NAMES: [&str; 4] = ["cc-10k", "cc-100k", "loop-20k", "loop-100k"];
+
 fn cases() -> Vec<Case> {
-    let case = |name, scheme, mesh: Mesh| Case {
+    CASE_NAMES.into_iter().map(case).collect()
+}
+
+/// The case `name` of [`CASE_NAMES`], built alone.
+fn case(name: &'static str) -> Case {
+    let (scheme, mesh) = match name {
+        "cc-10k" => (Scheme::CatmullClark, shapes::torus(100, 100)),
+        "cc-100k" => (Scheme::CatmullClark, shapes::torus(250, 400)),
+        "loop-20k" => (Scheme::Loop, shapes::triangle_torus(100, 100)),
+        "loop-100k" => (Scheme::Loop, shapes::triangle_torus(200, 250)),
+        _ => panic!("no case {name}"),
+    };
+    Case {
         name,
         scheme,
         cage: ref_mesh(&mesh),
         mesh,
-    };
-    vec![
-        case("cc-10k", Scheme::CatmullClark, shapes::torus(100, 100)),
-        case("cc-100k", Scheme::CatmullClark, shapes::torus(250, 400)),
-        case("loop-20k", Scheme::Loop, shapes::triangle_torus(100, 100)),
-        case("loop-100k", Scheme::Loop, shapes::triangle_torus(200, 250)),
-    ]
+    }
 }
 
 fn ref_mesh(mesh: &Mesh) -> RefMesh {
@@ -309,9 +318,17 @@ fn peak_child(spec: &str) {
         words.next().unwrap().parse::<u32>().unwrap(),
         words.next().unwrap(),
     );
-    let case = cases().into_iter().find(|c| c.name == name).unwrap();
+    // Built alone: memory freed by other cases would be reused unseen.
+    let name = CASE_NAMES
+        .into_iter()
+        .find(|&n| n == name)
+        .expect("a case name");
+    let case = case(name);
     let all = pool(std::thread::available_parallelism().map_or(1, |n| n.get()));
-    all.install(|| drop(weft_one_shot(&case, 1)));
+    // Starts the pool's threads on a small mesh, so that no memory the
+    // measured call could reuse is left free on the heap.
+    let warm_up = weft::shapes::icosahedron();
+    all.install(|| drop(subdivide(&warm_up, case.scheme, 1, NakedEdges::Smooth)));
     std::fs::write("/proc/self/clear_refs", "5").expect("reset the peak resident size");
     let before = status_kib("VmRSS:") * 1024;
     let output = match who {
@@ -348,26 +365,35 @@ fn peak_memory(filter: Option<&str>) {
         let mut numbers = text.split_whitespace().map(|w| w.parse::<f64>().ok());
         Some((numbers.next()??, numbers.next()??))
     };
-    for name in ["cc-100k", "loop-100k"] {
-        let case = format!("{name}-L3");
-        if filter.is_some_and(|f| !case.contains(f)) {
-            continue;
+    for name in CASE_NAMES {
+        for levels in 1..=3 {
+            let label = format!("{name}-L{levels}");
+            if filter.is_some_and(|f| !label.contains(f)) {
+                continue;
+            }
+            let weft = measure(&format!("{name} {levels} weft"));
+            let osd = measure(&format!("{name} {levels} osd"));
+            let (Some((weft_peak, output)), Some((osd_peak, _))) = (weft, osd) else {
+                println!("| {label} | – | – | – | – | – |");
+                continue;
+            };
+            println!(
+                "| {label} | {} | {} | {:.2}× | {} | {:.2}× |",
+                mb(output),
+                mb(weft_peak),
+                weft_peak / output,
+                mb(osd_peak),
+                osd_peak / output
+            );
         }
-        let weft = measure(&format!("{name} 3 weft"));
-        let osd = measure(&format!("{name} 3 osd"));
-        let mb = |b: f64| format!("{:.0}", b / 1e6);
-        let (Some((weft_peak, output)), Some((osd_peak, _))) = (weft, osd) else {
-            println!("| {case} | – | – | – | – | – |");
-            continue;
-        };
-        println!(
-            "| {case} | {} | {} | {:.2}× | {} | {:.2}× |",
-            mb(output),
-            mb(weft_peak),
-            weft_peak / output,
-            mb(osd_peak),
-            osd_peak / output
-        );
+    }
+}
+
+/// Megabytes, with a decimal below 10.
+fn mb(bytes: f64) -> String {
+    match bytes / 1e6 {
+        m if m < 10.0 => format!("{m:.1}"),
+        m => format!("{m:.0}"),
     }
 }
 
