@@ -231,7 +231,8 @@ impl Connectivity {
     /// The connectivity of the level `scheme` makes from `faces`, whose
     /// connectivity is `self`, written from the parent's without sorting. Equal
     /// to [`Connectivity::new`] of the child faces. The vertices' edges, only
-    /// needed to refine once more, are left empty unless `vertex_edges`.
+    /// needed to refine once more (as the one-shot's refined gathers do
+    /// without building the result), are left empty unless `vertex_edges`.
     ///
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
