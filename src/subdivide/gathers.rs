@@ -396,6 +396,7 @@ mod tests {
     use crate::subdivide::catmull_clark;
     use crate::subdivide::rules::{cage_tags, child_tags};
     use crate::subdivide::NakedEdges;
+    use glam::DVec3;
 
     /// Reading a level's gathers from its parent gives what building the
     /// level and reading it gives: every face, edge, rule and ring, on
@@ -411,6 +412,18 @@ mod tests {
             shapes::bow_tie(),
             shapes::mobius_strip(6),
             shapes::tetrahedron(),
+            // Two triangles on the same three vertices, closed; and the same
+            // quad twice, every edge run the same way by both.
+            crate::Mesh::from_polygons(
+                vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+                [[0u32, 1, 2], [1, 0, 2]],
+            )
+            .unwrap(),
+            crate::Mesh::from_polygons(
+                vec![DVec3::ZERO, DVec3::X, DVec3::ONE, DVec3::Y],
+                [[0u32, 1, 2, 3], [0, 1, 2, 3]],
+            )
+            .unwrap(),
         ];
         for (s, mesh) in shapes.iter().enumerate() {
             for naked in [
