@@ -444,15 +444,7 @@ impl Connectivity {
                         .filter(|&h| h > m),
                 );
             }
-            inner_high[start..].sort_unstable();
-            let mut kept = start;
-            for k in start..inner_high.len() {
-                if k == start || inner_high[k] != inner_high[kept - 1] {
-                    inner_high[kept] = inner_high[k];
-                    kept += 1;
-                }
-            }
-            inner_high.truncate(kept);
+            sort_and_dedup_from(&mut inner_high, start);
             inner_offsets.push(inner_high.len() as u32);
         }
         let inner = |x: u32, y: u32| -> u32 {
@@ -592,15 +584,7 @@ impl Connectivity {
                             }
                         }
                     }
-                    vertex_edges[start..].sort_unstable();
-                    let mut kept = start;
-                    for k in start..vertex_edges.len() {
-                        if k == start || vertex_edges[k] != vertex_edges[kept - 1] {
-                            vertex_edges[kept] = vertex_edges[k];
-                            kept += 1;
-                        }
-                    }
-                    vertex_edges.truncate(kept);
+                    sort_and_dedup_from(&mut vertex_edges, start);
                     vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
                     vertex_edge_offsets.push(vertex_edges.len() as u32);
                 }
@@ -703,6 +687,19 @@ impl Connectivity {
         let e = self.corner_edges[c] as usize;
         self.edge_offsets[e] + position(self.edge_corners(e), c as u32)
     }
+}
+
+/// Sorts `list[start..]` and drops its repeats.
+fn sort_and_dedup_from(list: &mut Vec<u32>, start: usize) {
+    list[start..].sort_unstable();
+    let mut kept = start;
+    for k in start..list.len() {
+        if k == start || list[k] != list[kept - 1] {
+            list[kept] = list[k];
+            kept += 1;
+        }
+    }
+    list.truncate(kept);
 }
 
 /// The index of `x` in the short list `list`, which holds it.
