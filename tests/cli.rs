@@ -31,6 +31,14 @@ fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
+/// Every one of `expected` appears in `text`.
+#[track_caller]
+fn assert_mentions(text: &str, expected: &[&str]) {
+    for expected in expected {
+        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
+    }
+}
+
 #[track_caller]
 fn assert_exit(o: &Output, code: i32) {
     assert_eq!(
@@ -51,16 +59,17 @@ fn info_reports_counts_and_properties() {
     let o = weft(&dir, &["info", "torus.obj"]);
     assert_exit(&o, 0);
     let text = stdout(&o);
-    for expected in [
-        "vertices              48",
-        "faces                 48 (0 triangles, 48 quads, 0 n-gons)",
-        "edges                 96",
-        "naked edges           0",
-        "closed                yes",
-        "orientable            yes",
-    ] {
-        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
-    }
+    assert_mentions(
+        &text,
+        &[
+            "vertices              48",
+            "faces                 48 (0 triangles, 48 quads, 0 n-gons)",
+            "edges                 96",
+            "naked edges           0",
+            "closed                yes",
+            "orientable            yes",
+        ],
+    );
 
     let o = weft(&dir, &["info", "hole.ply", "--json"]);
     assert_exit(&o, 0);
@@ -1767,17 +1776,18 @@ fn info_reports_non_manifold_fins_and_vertices() {
     let o = weft(&dir, &["info", "fin.obj"]);
     assert_exit(&o, 0);
     let text = stdout(&o);
-    for expected in [
-        "fin.obj\n",
-        "  faces                 3 (0 triangles, 3 quads, 0 n-gons)\n",
-        "  edges                 10\n",
-        "  naked edges           9\n",
-        "  non-manifold edges    1\n",
-        "  non-manifold vertices 2\n",
-        "  closed                no\n",
-    ] {
-        assert!(text.contains(expected), "missing {expected:?} in\n{text}");
-    }
+    assert_mentions(
+        &text,
+        &[
+            "fin.obj\n",
+            "  faces                 3 (0 triangles, 3 quads, 0 n-gons)\n",
+            "  edges                 10\n",
+            "  naked edges           9\n",
+            "  non-manifold edges    1\n",
+            "  non-manifold vertices 2\n",
+            "  closed                no\n",
+        ],
+    );
     let o = weft(&dir, &["info", "fin.obj", "--json"]);
     assert_exit(&o, 0);
     let json = stdout(&o);
