@@ -6,6 +6,7 @@
 
 pub mod boundary;
 pub mod creases;
+pub mod files;
 pub mod make;
 pub mod mend;
 pub mod mesh;

@@ -1,0 +1,203 @@
+"""The Mesh class: a WeftMesh handle with numpy views on its buffers."""
+
+import ctypes
+import weakref
+from collections import namedtuple
+
+import numpy as np
+
+from . import _arrays
+from ._lib import WeftMeshInfo, lib
+
+__all__ = ["Mesh", "MeshInfo"]
+
+MeshInfo = namedtuple("MeshInfo", [name for name, _ in WeftMeshInfo._fields_])
+MeshInfo.__doc__ = """Counts and flags of a mesh's topology (see :meth:`Mesh.info`)."""
+
+
+class Mesh:
+    """An immutable polygon mesh owned by the Weft library.
+
+    ``vertices`` is an (n, 3) array-like of real numbers (any float or
+    integer dtype; stored as float64). ``faces`` is a list of vertex-index
+    sequences of mixed sizes, or an (f, k) array of any integer dtype;
+    counter-clockwise seen from the front is the front face::
+
+        >>> m = weft.Mesh([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]])
+        >>> m.face_count, len(m.vertices)
+        (1, 4)
+
+    The arrays are copied into the library once; ``vertices``,
+    ``face_sizes`` and ``face_indices`` are then read-only numpy views on the
+    library's own buffers (no copy), valid as long as any of them or the
+    mesh is alive. The library frees the mesh when the last goes.
+
+    Raises :class:`TypeError` or :class:`ValueError` (naming the argument)
+    for a wrong dtype or shape, and :class:`weft.WeftError` for what the
+    library refuses: an index out of range, a face of fewer than three
+    vertices, a repeated index, a NaN or infinite coordinate.
+
+    Meshes pickle, and ``copy.copy`` / ``copy.deepcopy`` give an equal mesh
+    with buffers of its own; ``==`` compares vertices and faces bit for bit.
+    """
+
+    __slots__ = ("_handle", "_finalizer", "__weakref__")
+
+    def __init__(self, vertices, faces):
+        positions = _arrays.float_array(vertices, "vertices", width=3)
+        sizes, indices = _arrays.faces_arrays(faces)
+        self._adopt(_new_handle(positions, sizes, indices))
+
+    @classmethod
+    def from_arrays(cls, vertices, face_sizes, face_indices):
+        """A mesh from flat buffers, as the C ABI takes them: ``face_sizes``
+        holds the corner count of each face and ``face_indices`` their
+        concatenation (integers of any dtype)::
+
+            >>> m = weft.Mesh.from_arrays(vertices, [3, 4], [0, 1, 2, 0, 2, 3, 4])
+        """
+        positions = _arrays.float_array(vertices, "vertices", width=3)
+        sizes = _arrays.index_array(face_sizes, "face_sizes")
+        indices = _arrays.index_array(face_indices, "face_indices")
+        if sizes.ndim != 1:
+            raise ValueError(f"face_sizes must be one-dimensional, not of shape {sizes.shape}")
+        if indices.ndim != 1:
+            raise ValueError(f"face_indices must be one-dimensional, not of shape {indices.shape}")
+        return cls._from_handle(_new_handle(positions, sizes, indices))
+
+    @classmethod
+    def _from_handle(cls, handle):
+        """Takes ownership of a WeftMesh * the library handed out."""
+        mesh = cls.__new__(cls)
+        mesh._adopt(handle)
+        return mesh
+
+    def _adopt(self, handle):
+        self._handle = handle
+        self._finalizer = weakref.finalize(self, lib.weft_mesh_free, handle)
+
+    @property
+    def handle(self):
+        """The ``WeftMesh *`` as an integer, for calls through :data:`weft.lib`;
+        valid while this mesh is alive."""
+        return self._handle
+
+    @property
+    def vertex_count(self):
+        return lib.weft_mesh_vertex_count(self._handle)
+
+    @property
+    def face_count(self):
+        return lib.weft_mesh_face_count(self._handle)
+
+    @property
+    def index_count(self):
+        """The number of face corners (the sum of the face sizes)."""
+        return lib.weft_mesh_index_count(self._handle)
+
+    @property
+    def vertices(self):
+        """The positions: a read-only (n, 3) float64 view on the library's buffer."""
+        n = self.vertex_count
+        return _arrays.view(lib.weft_mesh_positions(self._handle), 3 * n, ctypes.c_double, np.float64, self, (n, 3))
+
+    @property
+    def face_sizes(self):
+        """The corner count of each face: a read-only uint32 view."""
+        return _arrays.view(lib.weft_mesh_face_sizes(self._handle), self.face_count, ctypes.c_uint32, np.uint32, self)
+
+    @property
+    def face_indices(self):
+        """The faces' vertex indices one face after another: a read-only uint32 view."""
+        return _arrays.view(lib.weft_mesh_face_indices(self._handle), self.index_count, ctypes.c_uint32, np.uint32, self)
+
+    @property
+    def faces(self):
+        """The faces as a list of lists of vertex indices (a copy)."""
+        sizes = self.face_sizes
+        if len(sizes) == 0:
+            return []
+        if (sizes == sizes[0]).all():
+            return self.face_indices.reshape(-1, int(sizes[0])).tolist()
+        ends = np.cumsum(sizes, dtype=np.int64)[:-1]
+        return [face.tolist() for face in np.split(self.face_indices, ends)]
+
+    def face_array(self):
+        """The faces as an (f, k) uint32 array when all have k corners;
+        ValueError for mixed sizes (use ``faces`` or ``face_sizes``)."""
+        sizes = self.face_sizes
+        if len(sizes) == 0:
+            return np.zeros((0, 3), dtype=np.uint32)
+        if not (sizes == sizes[0]).all():
+            raise ValueError(f"the mesh mixes faces of {sorted(set(sizes.tolist()))} corners; it has no (f, k) array")
+        return self.face_indices.reshape(-1, int(sizes[0]))
+
+    def info(self):
+        """Counts and flags of the topology: edges, naked and non-manifold
+        edges, components, closed, orientable, oriented::
+
+            >>> weft.box(1, 1, 1).info().is_closed
+            True
+        """
+        info = WeftMeshInfo()
+        lib.weft_mesh_info(self._handle, ctypes.byref(info))
+        return MeshInfo(*(getattr(info, name) for name in MeshInfo._fields))
+
+    def copy_arrays(self):
+        """(vertices, face_sizes, face_indices) as new writable arrays of
+        their own, filled by the library's ``weft_mesh_copy_*``."""
+        positions = np.empty((self.vertex_count, 3), dtype=np.float64)
+        sizes = np.empty(self.face_count, dtype=np.uint32)
+        indices = np.empty(self.index_count, dtype=np.uint32)
+        lib.weft_mesh_copy_positions(self._handle, _arrays.address(positions), positions.size)
+        lib.weft_mesh_copy_faces(self._handle, _arrays.address(sizes), sizes.size, _arrays.address(indices), indices.size)
+        return positions, sizes, indices
+
+    def __reduce__(self):
+        return (Mesh.from_arrays, self.copy_arrays())
+
+    def __copy__(self):
+        return Mesh.from_arrays(*self.copy_arrays())
+
+    def __deepcopy__(self, memo):
+        return self.__copy__()
+
+    def __eq__(self, other):
+        if not isinstance(other, Mesh):
+            return NotImplemented
+        return (
+            np.array_equal(self.face_sizes, other.face_sizes)
+            and np.array_equal(self.face_indices, other.face_indices)
+            and self.vertices.shape == other.vertices.shape
+            and self.vertices.tobytes() == other.vertices.tobytes()
+        )
+
+    __hash__ = None
+
+    def __repr__(self):
+        return f"weft.Mesh({self.vertex_count} vertices, {self.face_count} faces)"
+
+
+def _new_handle(positions, sizes, indices):
+    handle = ctypes.c_void_p()
+    lib.weft_mesh_new(
+        _arrays.address(positions),
+        positions.shape[0],
+        _arrays.address(sizes),
+        sizes.size,
+        _arrays.address(indices),
+        indices.size,
+        ctypes.byref(handle),
+    )
+    return handle.value
+
+
+def take_mesh(out):
+    """A Mesh owning the handle an operation wrote into ``out`` (a c_void_p)."""
+    return Mesh._from_handle(out.value)
+
+
+def check_mesh(value, name="mesh"):
+    if not isinstance(value, Mesh):
+        raise TypeError(f"{name} must be a weft.Mesh, not {type(value).__name__} (make one with weft.Mesh(vertices, faces))")
+    return value._handle

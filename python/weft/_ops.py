@@ -1,0 +1,876 @@
+"""The operations of include/weft.h over Mesh objects and numpy arrays.
+
+Each wrapper checks and converts its arguments, calls the C function once
+(ctypes releases the GIL for the call) and wraps what comes back; the
+geometry is all in the library.
+"""
+
+import ctypes
+import weakref
+from collections import namedtuple
+
+import numpy as np
+
+from . import _arrays
+from ._lib import WeftPlane, WeftSubdivisionOptions, WeftWeldReport, lib
+from ._mesh import Mesh, check_mesh, take_mesh
+
+DEFAULT_WELD_TOLERANCE = 0.001
+SHARPNESS_INFINITE = 10.0
+
+# The string spellings of the C enumerations. A new C value is one entry.
+NAKED_EDGES = {"fixed": 0, "smooth": 1, "corner-fixed": 2}
+SCHEMES = {"catmull-clark": 0, "loop": 1}
+CREASING = {"uniform": 0, "chaikin": 1}
+FACE_VARYING = {"smooth": 0, "corners-only": 1, "corners-plus1": 2, "corners-plus2": 3, "boundaries": 4, "all": 5}
+PLATONIC = {"tetrahedron": 0, "hexahedron": 1, "octahedron": 2, "dodecahedron": 3, "icosahedron": 4}
+SIDED = {"prism": 0, "antiprism": 1, "pyramid": 2, "dipyramid": 3}
+OFFSET = {"diagonal": 0, "hypotenuse-average": 1, "planes-intersection": 2}
+INSET = {"edge-fraction": 0, "parallelogram": 1}
+SMOOTH_DIRECTION = {"free": 0, "along-normal": 1, "tangential": 2}
+TILE_FILL = {
+    "skip": 0, "best": 1, "triangle-fan": 2, "triangle-hand": 3, "triangle-knit": 4,
+    "triangle-zigzag": 5, "quad-stitch": 6, "quad-fan": 7,
+}
+TILE_FACES = {"all": 0, "quads-and-more": 1, "pentagons-and-more": 2, "triangles": 9, "quads": 16}
+DUAL = {"vertex-average": 0, "keep-size": 1}
+
+WeldReport = namedtuple("WeldReport", [name for name, _ in WeftWeldReport._fields_])
+WeldReport.__doc__ = "What :func:`weld` changed: vertices merged, faces removed, unused vertices left out."
+
+TNODE_DTYPE = np.dtype(
+    [("vertex", np.uint32), ("edge_start", np.uint32), ("edge_end", np.uint32), ("face", np.uint32), ("parameter", np.float64)],
+    align=True,
+)
+
+
+def _choice(value, name, table):
+    if isinstance(value, str):
+        key = value.lower().replace("_", "-").replace(" ", "-")
+        if key in table:
+            return table[key]
+    raise ValueError(f"{name} is {value!r}; it must be one of {', '.join(repr(k) for k in table)}")
+
+
+def _count(value, name, minimum=0):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+    if value < minimum or value > 0xFFFFFFFF:
+        raise ValueError(f"{name} is {value}; it must be at least {minimum}")
+    return int(value)
+
+
+def _size(value, name):
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, not {type(value).__name__}")
+    if value < 0:
+        raise ValueError(f"{name} is {value}; it must not be negative")
+    return int(value)
+
+
+def _number(value, name):
+    if isinstance(value, (bool, str, bytes)):
+        raise TypeError(f"{name} must be a number, not {type(value).__name__}")
+    try:
+        return float(value)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a number, not {type(value).__name__}") from None
+
+
+def _out():
+    return ctypes.c_void_p()
+
+
+def _mesh_op(function, mesh, *arguments):
+    """Calls an operation of the form f(mesh, ..., WeftMesh **out) and wraps the result."""
+    handle = check_mesh(mesh)
+    out = _out()
+    function(handle, *arguments, ctypes.byref(out))
+    return take_mesh(out)
+
+
+def _plane(plane):
+    """A WeftPlane from None (world XY) or (origin, x_axis, y_axis)."""
+    if plane is None:
+        return None
+    try:
+        origin, x_axis, y_axis = plane
+    except (TypeError, ValueError):
+        raise ValueError("plane must be None or (origin, x_axis, y_axis), three points of 3 numbers") from None
+    parts = [_arrays.float_array(p, f"plane[{i}]") for i, p in enumerate((origin, x_axis, y_axis))]
+    for i, part in enumerate(parts):
+        if part.shape != (3,):
+            raise ValueError(f"plane[{i}] must hold 3 numbers, not {part.size}")
+    return ctypes.byref(WeftPlane(*((ctypes.c_double * 3)(*p) for p in parts)))
+
+
+# Subdivision ---------------------------------------------------------------
+
+def catmull_clark(mesh, levels=1, naked_edges="fixed"):
+    """Subdivides a mesh with Catmull-Clark ``levels`` times, as OpenSubdiv's
+    Catmark scheme; triangles, quads and n-gons may be mixed and every face
+    of the result is a quad. ``naked_edges`` is ``"fixed"`` (the outline
+    stays), ``"smooth"`` (it tends to a cubic B-spline) or
+    ``"corner-fixed"`` (as smooth, keeping vertices of one face).
+
+    The input's vertices keep their indices, then come one point per edge,
+    then one per face::
+
+        >>> s = weft.catmull_clark(weft.box(1, 1, 1), levels=2, naked_edges="smooth")
+        >>> s.face_count
+        96
+    """
+    return _mesh_op(lib.weft_catmull_clark, mesh, _count(levels, "levels"), _choice(naked_edges, "naked_edges", NAKED_EDGES))
+
+
+def loop(mesh, levels=1, naked_edges="fixed"):
+    """Subdivides a triangle mesh with Loop ``levels`` times (each triangle
+    becomes 4), as OpenSubdiv's Loop scheme; ``naked_edges`` as in
+    :func:`catmull_clark`. A face that is not a triangle is a
+    :class:`WeftError` (NOT_TRIANGLES) naming it; :func:`triangulate` first::
+
+        >>> weft.loop(weft.platonic("icosahedron"), levels=1).face_count
+        80
+    """
+    return _mesh_op(lib.weft_loop, mesh, _count(levels, "levels"), _choice(naked_edges, "naked_edges", NAKED_EDGES))
+
+
+class _Options:
+    """A WeftSubdivisionOptions and the arrays its pointers point into."""
+
+    def __init__(self, mesh, scheme, naked_edges, creases, corners, creasing):
+        self.struct = WeftSubdivisionOptions()
+        self.struct.scheme = _choice(scheme, "scheme", SCHEMES)
+        self.struct.naked_edges = _choice(naked_edges, "naked_edges", NAKED_EDGES)
+        self.struct.creasing = _choice(creasing, "creasing", CREASING)
+        self.keep = []
+        if creases is not None and len(creases):
+            table = _arrays.float_array(creases, "creases", width=3)
+            pairs = _arrays.index_array(_whole(table[:, :2], "creases"), "creases")
+            sharpness = np.ascontiguousarray(table[:, 2])
+            self.struct.crease_count = len(table)
+            self.struct.crease_vertex_pairs = pairs.ctypes.data
+            self.struct.crease_sharpness = sharpness.ctypes.data
+            self.keep += [pairs, sharpness]
+        if corners is not None and len(corners):
+            table = _arrays.float_array(corners, "corners", width=2)
+            vertices = _arrays.index_array(_whole(table[:, 0], "corners"), "corners")
+            sharpness = np.ascontiguousarray(table[:, 1])
+            self.struct.corner_count = len(table)
+            self.struct.corner_vertices = vertices.ctypes.data
+            self.struct.corner_sharpness = sharpness.ctypes.data
+            self.keep += [vertices, sharpness]
+
+    @property
+    def ref(self):
+        return ctypes.byref(self.struct)
+
+
+def _whole(values, name):
+    """Vertex indices that came in a float table, checked to be whole numbers."""
+    if not np.all(np.isfinite(values)) or not np.all(values == np.round(values)):
+        raise ValueError(f"{name}: vertex indices must be whole numbers")
+    return values.astype(np.int64)
+
+
+def subdivide(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+    """Subdivides a mesh with creases and sharp corners, as OpenSubdiv does
+    with the same options.
+
+    ``scheme`` is ``"catmull-clark"`` or ``"loop"``; ``naked_edges`` as in
+    :func:`catmull_clark`. ``creases`` is a sequence of ``(i, j, sharpness)``
+    (the ends of an edge of the mesh), ``corners`` of ``(vertex, sharpness)``;
+    sharpness 0 is smooth, :data:`SHARPNESS_INFINITE` (10) or more a hard
+    crease. ``creasing`` is ``"uniform"`` or ``"chaikin"``::
+
+        >>> cube = weft.box(1, 1, 1)
+        >>> s = weft.subdivide(cube, levels=2, creases=[(0, 1, 10.0)], corners=[(2, 10.0)])
+    """
+    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    return _mesh_op(lib.weft_subdivide_ex, mesh, options.ref, _count(levels, "levels"))
+
+
+def subdivision_counts(mesh, scheme="catmull-clark", levels=1):
+    """(vertex_count, face_count, index_count) of the mesh ``levels`` steps
+    of ``scheme`` make, without subdividing::
+
+        >>> weft.subdivision_counts(weft.box(1, 1, 1), levels=1)
+        (26, 24, 96)
+    """
+    counts = [ctypes.c_size_t() for _ in range(3)]
+    lib.weft_subdivision_counts(
+        check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), *(ctypes.byref(c) for c in counts)
+    )
+    return tuple(c.value for c in counts)
+
+
+def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+    """Carries per-vertex data (colours, weights: an (n,) or (n, width)
+    array) through the subdivision :func:`subdivide` makes with the same
+    options; each refined vertex gets the weighted sum its position gets::
+
+        >>> colours = weft.subdivide_vertex_data(cube, np.random.rand(8, 3), levels=2)
+    """
+    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    values = _arrays.float_array(data, "data", width=None) if np.ndim(data) == 1 else None
+    if values is None:
+        values = _arrays._as_numeric(data, "data")
+        if values.ndim != 2:
+            raise ValueError(f"data must have shape (n,) or (n, width), not {values.shape}")
+        values = _arrays.float_array(values, "data", width=values.shape[1])
+    width = 1 if values.ndim == 1 else values.shape[1]
+    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
+    out = np.empty((vertex_count, width) if values.ndim == 2 else vertex_count, dtype=np.float64)
+    lib.weft_subdivide_vertex_data(
+        check_mesh(mesh), options.ref, _count(levels, "levels"), _arrays.address(values), values.size, width,
+        _arrays.address(out), out.size,
+    )
+    return out
+
+
+def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth", scheme="catmull-clark",
+                           naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+    """Carries per-corner values (UVs) through the subdivision: ``values``
+    is a (k,) or (k, width) array, ``value_indices`` the value of every face
+    corner, face after face (as ``mesh.face_indices``). ``linear`` says where
+    values are interpolated linearly: ``"smooth"``, ``"corners-only"``,
+    ``"corners-plus1"``, ``"corners-plus2"``, ``"boundaries"`` or ``"all"``.
+    Returns the refined mesh's per-corner values, face after face::
+
+        >>> uvs = weft.subdivide_face_varying(m, uv_table, uv_indices, levels=2)
+    """
+    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    table = _arrays._as_numeric(values, "values")
+    if table.ndim not in (1, 2):
+        raise ValueError(f"values must have shape (k,) or (k, width), not {table.shape}")
+    width = 1 if table.ndim == 1 else table.shape[1]
+    table = _arrays.float_array(table, "values", width=None if table.ndim == 1 else width)
+    indices = _arrays.index_array(value_indices, "value_indices")
+    if indices.ndim != 1:
+        indices = indices.reshape(-1)
+    _, _, index_count = subdivision_counts(mesh, scheme, levels)
+    out = np.empty((index_count, width) if table.ndim == 2 else index_count, dtype=np.float64)
+    lib.weft_subdivide_face_varying(
+        check_mesh(mesh), options.ref, _count(levels, "levels"), _choice(linear, "linear", FACE_VARYING),
+        _arrays.address(table), len(table), width, _arrays.address(indices), indices.size, _arrays.address(out), out.size,
+    )
+    return out
+
+
+def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+    """The vertices of :func:`subdivide` moved onto the limit surface, and
+    the surface's unit normals there: ``(positions, normals)``, two (N, 3)
+    arrays::
+
+        >>> points, normals = weft.subdivide_limit(weft.box(1, 1, 1), levels=2)
+    """
+    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
+    positions = np.empty((vertex_count, 3), dtype=np.float64)
+    normals = np.empty((vertex_count, 3), dtype=np.float64)
+    lib.weft_subdivide_limit(
+        check_mesh(mesh), options.ref, _count(levels, "levels"), _arrays.address(positions), _arrays.address(normals), positions.size
+    )
+    return positions, normals
+
+
+def subdivision_face_count(mesh, scheme="catmull-clark", levels=1):
+    """The number of faces ``levels`` steps of ``scheme`` make, without subdividing."""
+    count = ctypes.c_size_t()
+    lib.weft_subdivision_face_count(check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), ctypes.byref(count))
+    return count.value
+
+
+def subdivision_parent_faces(mesh, scheme="catmull-clark", levels=1):
+    """For every face of the subdivided mesh, the index of the input face it
+    comes from (a uint32 array)::
+
+        >>> weft.subdivision_parent_faces(weft.box(1, 1, 1), levels=1)[:8]
+        array([0, 0, 0, 0, 1, 1, 1, 1], dtype=uint32)
+    """
+    out = np.empty(subdivision_face_count(mesh, scheme, levels), dtype=np.uint32)
+    lib.weft_subdivision_parent_faces(check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), _arrays.address(out), out.size)
+    return out
+
+
+class Refiner:
+    """A subdivision planned once for a cage's topology, re-evaluated for new
+    vertex positions at the cost of the arithmetic only (a slider dragged).
+
+    Options as in :func:`subdivide`; ``r.mesh`` is the refined mesh at the
+    cage's positions, ``r.evaluate(new_vertices)`` the refined positions for
+    new cage positions (an (N, 3) array)::
+
+        >>> r = weft.Refiner(cage, scheme="catmull-clark", levels=3, naked_edges="smooth")
+        >>> moved = r.evaluate(cage.vertices * 2.0)
+    """
+
+    def __init__(self, cage, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+        handle = check_mesh(cage, "cage")
+        out = _out()
+        levels = _count(levels, "levels")
+        if creases is None and corners is None and creasing == "uniform":
+            lib.weft_refiner_new(handle, _choice(scheme, "scheme", SCHEMES), levels, _choice(naked_edges, "naked_edges", NAKED_EDGES), ctypes.byref(out))
+        else:
+            options = _Options(cage, scheme, naked_edges, creases, corners, creasing)
+            lib.weft_refiner_new_ex(handle, options.ref, levels, ctypes.byref(out))
+        self._handle = out.value
+        self._cage_vertex_count = cage.vertex_count
+        self._finalizer = weakref.finalize(self, lib.weft_refiner_free, self._handle)
+
+    @property
+    def vertex_count(self):
+        """The number of refined vertices."""
+        return lib.weft_refiner_vertex_count(self._handle)
+
+    @property
+    def face_count(self):
+        """The number of refined faces."""
+        return lib.weft_refiner_face_count(self._handle)
+
+    @property
+    def mesh(self):
+        """The refined mesh at the cage positions the refiner was built from."""
+        out = _out()
+        lib.weft_refiner_mesh(self._handle, ctypes.byref(out))
+        return take_mesh(out)
+
+    def evaluate(self, vertices, out=None):
+        """The refined positions for new cage positions ``vertices`` (an
+        (n, 3) array-like, n the cage's vertex count), as an (N, 3) float64
+        array; pass ``out`` (a C-contiguous (N, 3) float64 array) to reuse
+        a buffer."""
+        positions = _arrays.float_array(vertices, "vertices", width=3)
+        if out is None:
+            out = np.empty((self.vertex_count, 3), dtype=np.float64)
+        elif not (isinstance(out, np.ndarray) and out.dtype == np.float64 and out.flags.c_contiguous and out.flags.writeable):
+            raise TypeError("out must be a writable, C-contiguous float64 numpy array")
+        elif out.shape != (self.vertex_count, 3):
+            raise ValueError(f"out must have shape ({self.vertex_count}, 3), not {out.shape}")
+        lib.weft_refiner_evaluate(self._handle, _arrays.address(positions), positions.shape[0], _arrays.address(out), out.size)
+        return out
+
+    def __repr__(self):
+        return f"weft.Refiner({self.vertex_count} vertices, {self.face_count} faces)"
+
+
+def crease_edges_from_mesh(mesh, angle_degrees=180.0, vertex_map=False):
+    """Prepares a mesh whose creases are unwelded seams or sharp folds for
+    creased subdivision, as Rhino's ToSubD: welds vertices at the same
+    position and lists as creases the seams and every edge whose faces'
+    normals differ by more than ``angle_degrees``. Returns ``(welded,
+    pairs)``, pairs an (c, 2) uint32 array, or ``(welded, pairs, map)`` with
+    ``vertex_map=True`` (the welded vertex each input vertex became)::
+
+        >>> welded, pairs = weft.crease_edges_from_mesh(m, 30.0)
+        >>> s = weft.subdivide(welded, levels=2, creases=[(i, j, 10.0) for i, j in pairs])
+    """
+    handle = check_mesh(mesh)
+    angle = _number(angle_degrees, "angle_degrees")
+    out = _out()
+    pairs = np.empty(2 * mesh.index_count, dtype=np.uint32)
+    count = ctypes.c_size_t()
+    if vertex_map:
+        mapping = np.empty(mesh.vertex_count, dtype=np.uint32)
+        lib.weft_crease_edges_from_mesh_ex(
+            handle, angle, ctypes.byref(out), _arrays.address(pairs), pairs.size, ctypes.byref(count), _arrays.address(mapping), mapping.size
+        )
+        return take_mesh(out), pairs[: 2 * count.value].reshape(-1, 2).copy(), mapping
+    lib.weft_crease_edges_from_mesh(handle, angle, ctypes.byref(out), _arrays.address(pairs), pairs.size, ctypes.byref(count))
+    return take_mesh(out), pairs[: 2 * count.value].reshape(-1, 2).copy()
+
+
+# Mending -------------------------------------------------------------------
+
+def join(meshes):
+    """Joins meshes into one, offsetting each one's indices; faces keep their order::
+
+        >>> both = weft.join([weft.box(1, 1, 1), weft.box(2, 2, 2)])
+    """
+    meshes = list(meshes)
+    handles = (ctypes.c_void_p * max(len(meshes), 1))(*(check_mesh(m, f"meshes[{i}]") for i, m in enumerate(meshes)))
+    out = _out()
+    lib.weft_join(handles if meshes else None, len(meshes), ctypes.byref(out))
+    return take_mesh(out)
+
+
+def weld(meshes, tolerance=DEFAULT_WELD_TOLERANCE):
+    """Joins meshes (one mesh or a sequence) and welds vertices at most
+    ``tolerance`` apart, transitively; faces drop repeated corners and
+    faces left with fewer than 3 are removed. Returns ``(mesh, report)``
+    with a :class:`WeldReport`::
+
+        >>> w, report = weft.weld([m1, m2], tolerance=1e-6)
+        >>> report.merged_vertex_count
+    """
+    mesh = meshes if isinstance(meshes, Mesh) else join(meshes)
+    report = WeftWeldReport()
+    result = _mesh_op(lambda h, out: lib.weft_weld(h, _number(tolerance, "tolerance"), out, ctypes.byref(report)), mesh)
+    return result, WeldReport(report.merged_vertex_count, report.removed_face_count, report.unused_vertex_count)
+
+
+def find_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE):
+    """The T-nodes: vertices on the naked boundary lying inside another
+    face's naked edge, the reason welding fails. A numpy structured array
+    with fields ``vertex``, ``edge_start``, ``edge_end``, ``face`` and
+    ``parameter`` (0 at edge_start, 1 at edge_end)::
+
+        >>> nodes = weft.find_t_nodes(m, 1e-6)
+        >>> nodes["vertex"]
+    """
+    handle = check_mesh(mesh)
+    tolerance = _number(tolerance, "tolerance")
+    count = ctypes.c_size_t()
+    lib.weft_find_t_nodes(handle, tolerance, None, 0, ctypes.byref(count))
+    nodes = np.empty(count.value, dtype=TNODE_DTYPE)
+    if count.value:
+        lib.weft_find_t_nodes(handle, tolerance, nodes.ctypes.data, nodes.size, ctypes.byref(count))
+    return nodes
+
+
+def repair_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE, report=False):
+    """Inserts each T-node into the edge it lies on (the face becomes an
+    n-gon), so both sides share the seam. With ``report=True`` returns
+    ``(mesh, inserted)``::
+
+        >>> repaired = weft.repair_t_nodes(m, 1e-6)
+    """
+    inserted = ctypes.c_size_t()
+    handle = check_mesh(mesh)
+    out = _out()
+    lib.weft_repair_t_nodes(handle, _number(tolerance, "tolerance"), ctypes.byref(out), ctypes.byref(inserted))
+    result = take_mesh(out)
+    return (result, inserted.value) if report else result
+
+
+def cull_adjacent(mesh, report=False):
+    """Removes every face that has a twin with the same vertices (either
+    orientation, any start): all copies go, as the walls inside joined and
+    welded boxes. Weld first. With ``report=True`` returns ``(mesh, removed)``::
+
+        >>> culled, removed = weft.cull_adjacent(w, report=True)
+    """
+    removed = ctypes.c_size_t()
+    out = _out()
+    lib.weft_cull_adjacent(check_mesh(mesh), ctypes.byref(out), ctypes.byref(removed))
+    result = take_mesh(out)
+    return (result, removed.value) if report else result
+
+
+def unify(mesh, report=False):
+    """Gives every connected piece one consistent winding, flipping the
+    fewest faces, and turns closed pieces to face outward. With
+    ``report=True`` returns ``(mesh, flipped)``::
+
+        >>> oriented = weft.unify(m)
+    """
+    flipped = ctypes.c_size_t()
+    out = _out()
+    lib.weft_unify_orientation(check_mesh(mesh), ctypes.byref(out), ctypes.byref(flipped))
+    result = take_mesh(out)
+    return (result, flipped.value) if report else result
+
+
+unify_orientation = unify
+
+
+def flip(mesh):
+    """Reverses every face, keeping its first corner first
+    ({a, b, c, d} becomes {a, d, c, b})::
+
+        >>> weft.flip(weft.flip(m)) == m
+        True
+    """
+    return _mesh_op(lib.weft_flip, mesh)
+
+
+def face_normals(mesh):
+    """The unit normal of each face (Newell's method): an (f, 3) array."""
+    out = np.empty((mesh.face_count if isinstance(mesh, Mesh) else 0, 3), dtype=np.float64)
+    lib.weft_face_normals(check_mesh(mesh), _arrays.address(out), out.size)
+    return out
+
+
+def vertex_normals(mesh):
+    """The angle-weighted unit normal of each vertex: an (n, 3) array."""
+    out = np.empty((mesh.vertex_count if isinstance(mesh, Mesh) else 0, 3), dtype=np.float64)
+    lib.weft_vertex_normals(check_mesh(mesh), _arrays.address(out), out.size)
+    return out
+
+
+def planarity(mesh):
+    """Per face, the largest distance of its corners from its best-fit
+    plane (0 for triangles): an (f,) array; planar within ``t`` where ``<= t``."""
+    out = np.empty(mesh.face_count if isinstance(mesh, Mesh) else 0, dtype=np.float64)
+    lib.weft_planarity(check_mesh(mesh), _arrays.address(out), out.size)
+    return out
+
+
+def naked_boundaries(mesh):
+    """The naked edges chained into polylines: a list of ``(points, closed)``,
+    points an (k, 3) array (a closed polyline does not repeat its start)::
+
+        >>> [(len(p), closed) for p, closed in weft.naked_boundaries(weft.plane_grid(1, 1, 2, 2))]
+        [(8, True)]
+    """
+    handle = check_mesh(mesh)
+    total, lines = ctypes.c_size_t(), ctypes.c_size_t()
+    lib.weft_naked_boundaries(handle, None, 0, None, None, 0, ctypes.byref(total), ctypes.byref(lines))
+    points = np.empty((total.value, 3), dtype=np.float64)
+    counts = np.empty(lines.value, dtype=np.uintp)
+    closed = np.empty(lines.value, dtype=np.bool_)
+    if lines.value:
+        lib.weft_naked_boundaries(
+            handle, _arrays.address(points), points.size, _arrays.address(counts), _arrays.address(closed), lines.value,
+            ctypes.byref(total), ctypes.byref(lines),
+        )
+    ends = np.cumsum(counts)[:-1].astype(np.int64)
+    return list(zip(np.split(points, ends), closed.tolist())) if lines.value else []
+
+
+# Making --------------------------------------------------------------------
+
+def delaunay(points, plane=None):
+    """Triangulates points by the Delaunay criterion of their projections
+    onto ``plane`` (None: world XY; else ``(origin, x_axis, y_axis)``); the
+    vertices are the distinct input points in order (points whose
+    projections coincide are merged, so ``len(points) - mesh.vertex_count``
+    were merged)::
+
+        >>> tri = weft.delaunay(np.random.rand(100, 3))
+    """
+    positions = _arrays.float_array(points, "points", width=3)
+    out = _out()
+    merged = ctypes.c_size_t()
+    lib.weft_delaunay(_arrays.address(positions), positions.shape[0], _plane(plane), ctypes.byref(out), ctypes.byref(merged))
+    return take_mesh(out)
+
+
+class Cells:
+    """Voronoi cells from :func:`voronoi`: one polygon per input point,
+    empty for a point outside the boundary or repeating an earlier one.
+    ``sizes`` holds each cell's corner count and ``corners`` all corners, a
+    (k, 3) array (read-only views on the library's buffers); ``cells[i]``
+    is cell i's (size, 3) array; :meth:`to_mesh` makes one n-gon per cell."""
+
+    def __init__(self, handle):
+        self._handle = handle
+        self._finalizer = weakref.finalize(self, lib.weft_cells_free, handle)
+
+    def __len__(self):
+        return lib.weft_cells_count(self._handle)
+
+    @property
+    def sizes(self):
+        return _arrays.view(lib.weft_cells_sizes(self._handle), len(self), ctypes.c_uint32, np.uint32, self)
+
+    @property
+    def corners(self):
+        n = lib.weft_cells_corner_count(self._handle)
+        return _arrays.view(lib.weft_cells_corners(self._handle), 3 * n, ctypes.c_double, np.float64, self, (n, 3))
+
+    def __getitem__(self, index):
+        sizes = self.sizes
+        index = range(len(sizes))[index]
+        start = int(sizes[:index].sum())
+        return self.corners[start : start + int(sizes[index])]
+
+    def copy_arrays(self):
+        """(sizes, corners) as new writable arrays, filled by ``weft_cells_copy``."""
+        sizes = np.empty(len(self), dtype=np.uint32)
+        corners = np.empty((lib.weft_cells_corner_count(self._handle), 3), dtype=np.float64)
+        lib.weft_cells_copy(self._handle, _arrays.address(sizes), sizes.size, _arrays.address(corners), corners.size)
+        return sizes, corners
+
+    def to_mesh(self):
+        """One n-gon face per non-empty cell, in cell order; the cells share
+        no vertices (:func:`weld` joins them)."""
+        out = _out()
+        lib.weft_cells_to_mesh(self._handle, ctypes.byref(out))
+        return take_mesh(out)
+
+    def __repr__(self):
+        return f"weft.Cells({len(self)} cells)"
+
+
+def voronoi(points, boundary=None, radius=0.0, plane=None):
+    """The Voronoi cell of each point on ``plane`` (None: world XY), clipped
+    to ``boundary`` (an (m, 3) polygon; None: the points' bounding rectangle
+    grown by 10 %) and, when ``radius`` > 0, to a circle of that radius::
+
+        >>> cells = weft.voronoi(np.random.rand(50, 3), radius=0.2)
+        >>> skin = weft.weld(cells.to_mesh())[0]
+    """
+    positions = _arrays.float_array(points, "points", width=3)
+    corners = None if boundary is None else _arrays.float_array(boundary, "boundary", width=3)
+    out = _out()
+    lib.weft_voronoi(
+        _arrays.address(positions), positions.shape[0], _plane(plane), _arrays.address(corners),
+        0 if corners is None else corners.shape[0], _number(radius, "radius"), ctypes.byref(out),
+    )
+    return Cells(out.value)
+
+
+def mesh_from_grid(points, u_count=None, v_count=None, closed_u=False, closed_v=False, triangulate=False):
+    """Connects a grid of points (a sampled surface) into quads (or
+    triangles): ``points`` is a (v, u, 3) array, or (n, 3) with ``u_count``
+    and ``v_count`` (u runs fastest)::
+
+        >>> grid = weft.mesh_from_grid(np.random.rand(4, 5, 3))
+    """
+    array = _arrays._as_numeric(points, "points")
+    if array.ndim == 3:
+        if u_count is None and v_count is None:
+            v_count, u_count = array.shape[:2]
+        array = array.reshape(-1, array.shape[-1])
+    positions = _arrays.float_array(array, "points", width=3)
+    if u_count is None or v_count is None:
+        raise ValueError("u_count and v_count are needed when points is an (n, 3) array")
+    out = _out()
+    lib.weft_mesh_from_grid(
+        _arrays.address(positions), positions.shape[0], _size(u_count, "u_count"), _size(v_count, "v_count"),
+        bool(closed_u), bool(closed_v), bool(triangulate), ctypes.byref(out),
+    )
+    return take_mesh(out)
+
+
+def _per_face(values, name):
+    array = np.atleast_1d(_arrays._as_numeric(values, name))
+    return _arrays.float_array(array.reshape(-1) if array.ndim <= 1 else array, name)
+
+
+def stellate(mesh, heights):
+    """Raises a pyramid on every face: an apex at the centroid moved along
+    the normal by the face's height (one number, or one per face)::
+
+        >>> spiky = weft.stellate(weft.box(1, 1, 1), 0.3)
+    """
+    values = _per_face(heights, "heights")
+    return _mesh_op(lib.weft_stellate, mesh, _arrays.address(values), values.size)
+
+
+def plane_grid(size_x=1.0, size_y=1.0, u_count=1, v_count=1):
+    """A flat rectangle on the XY plane, centred on the origin, facing +z, of u × v quads."""
+    out = _out()
+    lib.weft_plane_grid(_number(size_x, "size_x"), _number(size_y, "size_y"), _size(u_count, "u_count"), _size(v_count, "v_count"), ctypes.byref(out))
+    return take_mesh(out)
+
+
+def box(size_x=1.0, size_y=1.0, size_z=1.0, u_count=1, v_count=1, w_count=1):
+    """A closed, welded box centred on the origin, its sides divided into quads::
+
+        >>> weft.box(1, 1, 1).face_count
+        6
+    """
+    out = _out()
+    lib.weft_box(
+        _number(size_x, "size_x"), _number(size_y, "size_y"), _number(size_z, "size_z"),
+        _size(u_count, "u_count"), _size(v_count, "v_count"), _size(w_count, "w_count"), ctypes.byref(out),
+    )
+    return take_mesh(out)
+
+
+def uv_sphere(radius=1.0, u_count=16, v_count=8):
+    """A sphere centred on the origin: quads, and a fan of triangles at each pole."""
+    out = _out()
+    lib.weft_uv_sphere(_number(radius, "radius"), _size(u_count, "u_count"), _size(v_count, "v_count"), ctypes.byref(out))
+    return take_mesh(out)
+
+
+def platonic(kind, radius=1.0):
+    """A platonic solid (``"tetrahedron"``, ``"hexahedron"``, ``"octahedron"``,
+    ``"dodecahedron"`` or ``"icosahedron"``) with its vertices on the sphere of ``radius``."""
+    out = _out()
+    lib.weft_platonic(_choice(kind, "kind", PLATONIC), _number(radius, "radius"), ctypes.byref(out))
+    return take_mesh(out)
+
+
+def sided_solid(kind, sides, radius=1.0, height=1.0):
+    """A ``"prism"``, ``"antiprism"``, ``"pyramid"`` or ``"dipyramid"`` on a regular n-gon."""
+    out = _out()
+    lib.weft_sided_solid(_choice(kind, "kind", SIDED), _size(sides, "sides"), _number(radius, "radius"), _number(height, "height"), ctypes.byref(out))
+    return take_mesh(out)
+
+
+def mesh_from_lines(segments, tolerance=DEFAULT_WELD_TOLERANCE, max_valence=4):
+    """The faces a set of line segments encloses: ``segments`` is an (s, 2, 3)
+    or (s, 6) array; endpoints within ``tolerance`` weld, faces of up to
+    ``max_valence`` corners are kept."""
+    array = _arrays._as_numeric(segments, "segments")
+    if array.ndim == 3:
+        if array.shape[1:] != (2, 3):
+            raise ValueError(f"segments must have shape (s, 2, 3) or (s, 6), not {array.shape}")
+        array = array.reshape(-1, 6)
+    flat = _arrays.float_array(array, "segments", width=6)
+    out = _out()
+    lib.weft_mesh_from_lines(_arrays.address(flat), flat.shape[0], _number(tolerance, "tolerance"), _count(max_valence, "max_valence"), ctypes.byref(out))
+    return take_mesh(out)
+
+
+# The toolbar ---------------------------------------------------------------
+
+def triangulate(mesh):
+    """Splits quads along the shorter diagonal and ear-clips n-gons; vertices are kept."""
+    return _mesh_op(lib.weft_triangulate, mesh)
+
+
+def split_polygons(mesh, levels=1):
+    """Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing."""
+    return _mesh_op(lib.weft_split_polygons, mesh, _count(levels, "levels"))
+
+
+def split_triangles(mesh, levels=1):
+    """Splits each triangle into four through its edge midpoints, without smoothing."""
+    return _mesh_op(lib.weft_split_triangles, mesh, _count(levels, "levels"))
+
+
+def constant_quads_split(mesh, levels=1):
+    """Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing."""
+    return _mesh_op(lib.weft_constant_quads_split, mesh, _count(levels, "levels"))
+
+
+def midedge(mesh, levels=1):
+    """The mid-edge subdivision (Peters and Reif)."""
+    return _mesh_op(lib.weft_midedge, mesh, _count(levels, "levels"))
+
+
+def inner_polygons(mesh, levels=1, pull=0.5):
+    """Gives each face an inner face pulled towards its centroid, joined by quads."""
+    return _mesh_op(lib.weft_inner_polygons, mesh, _count(levels, "levels"), _number(pull, "pull"))
+
+
+def sierpinski_triangles(mesh, levels=1):
+    """A triangle in each corner of each face, the middle left open."""
+    return _mesh_op(lib.weft_sierpinski_triangles, mesh, _count(levels, "levels"))
+
+
+def sierpinski_carpet(mesh, levels=1):
+    """Cuts each quad into 3 × 3 and removes the middle one."""
+    return _mesh_op(lib.weft_sierpinski_carpet, mesh, _count(levels, "levels"))
+
+
+def laplacian_smooth(mesh, iterations=1, blend=0.5, naked_edges="fixed"):
+    """Moves every vertex ``blend`` of the way to its neighbours' average, ``iterations`` times."""
+    return _mesh_op(
+        lib.weft_laplacian_smooth, mesh, _count(iterations, "iterations"), _number(blend, "blend"),
+        _choice(naked_edges, "naked_edges", NAKED_EDGES),
+    )
+
+
+def laplacian_hc_smooth(mesh, iterations=1, alpha=0.0, beta=0.6, naked_edges="fixed", direction="free", activation=None):
+    """Volume-preserving Laplacian smoothing (HC, Vollmer, Mann and Müller
+    1999). ``direction`` is ``"free"``, ``"along-normal"`` or
+    ``"tangential"``; ``activation`` one weight in [0, 1] per vertex (None:
+    all 1)::
+
+        >>> smooth = weft.laplacian_hc_smooth(m, iterations=10, beta=0.6)
+    """
+    arguments = (_count(iterations, "iterations"), _number(alpha, "alpha"), _number(beta, "beta"), _choice(naked_edges, "naked_edges", NAKED_EDGES))
+    direction = _choice(direction, "direction", SMOOTH_DIRECTION)
+    if activation is None and direction == 0:
+        return _mesh_op(lib.weft_laplacian_hc_smooth, mesh, *arguments)
+    weights = None if activation is None else _arrays.float_array(activation, "activation")
+    return _mesh_op(
+        lib.weft_laplacian_hc_smooth_ex, mesh, *arguments, direction, _arrays.address(weights), 0 if weights is None else weights.size
+    )
+
+
+def blur_values(mesh, values, iterations=1, blend=0.5, naked_edges="fixed"):
+    """Blurs per-vertex values (an (n,) or (n, components) array) over the
+    mesh; returns them in the same shape."""
+    array = _arrays._as_numeric(values, "values")
+    if array.ndim not in (1, 2):
+        raise ValueError(f"values must have shape (n,) or (n, components), not {array.shape}")
+    components = 1 if array.ndim == 1 else array.shape[1]
+    array = _arrays.float_array(array, "values", width=None if array.ndim == 1 else components)
+    out = np.empty_like(array)
+    lib.weft_blur_values(
+        check_mesh(mesh), _arrays.address(array), array.size, components, _count(iterations, "iterations"), _number(blend, "blend"),
+        _choice(naked_edges, "naked_edges", NAKED_EDGES), _arrays.address(out), out.size,
+    )
+    return out
+
+
+def offset_mesh(mesh, distance, offset_type="diagonal"):
+    """Moves every vertex ``distance`` along the normal (``offset_type``:
+    ``"diagonal"``, ``"hypotenuse-average"``, ``"planes-intersection"``)."""
+    return _mesh_op(lib.weft_offset_mesh, mesh, _number(distance, "distance"), _choice(offset_type, "offset_type", OFFSET))
+
+
+def thicken_mesh(mesh, distance, offset_type="diagonal"):
+    """A solid of a surface: it, its offset by ``distance``, and quads along the naked edges."""
+    return _mesh_op(lib.weft_thicken_mesh, mesh, _number(distance, "distance"), _choice(offset_type, "offset_type", OFFSET))
+
+
+def mesh_window(mesh, distances, inset_mode="edge-fraction"):
+    """Insets each face, keeping the frame of quads and the inner face
+    (``distances``: one, or one per face; ``inset_mode``:
+    ``"edge-fraction"`` or ``"parallelogram"``)."""
+    values = _per_face(distances, "distances")
+    return _mesh_op(lib.weft_mesh_window, mesh, _arrays.address(values), values.size, _choice(inset_mode, "inset_mode", INSET))
+
+
+def picture_frame(mesh, distances, inset_mode="edge-fraction"):
+    """Insets each face and keeps only the frame: each face becomes a ring."""
+    values = _per_face(distances, "distances")
+    return _mesh_op(lib.weft_picture_frame, mesh, _arrays.address(values), values.size, _choice(inset_mode, "inset_mode", INSET))
+
+
+def bevel_edges(mesh, fraction=0.2):
+    """Bevels every edge (Conway's expansion), ``fraction`` in (0, 1)."""
+    return _mesh_op(lib.weft_bevel_edges, mesh, _number(fraction, "fraction"))
+
+
+def bevel_vertices(mesh, fraction=0.2):
+    """Cuts every vertex off (Conway's truncation), ``fraction`` in (0, 0.5)."""
+    return _mesh_op(lib.weft_bevel_vertices, mesh, _number(fraction, "fraction"))
+
+
+def dual(mesh, mode="vertex-average"):
+    """The dual mesh: a vertex per face, a face per interior vertex
+    (``mode``: ``"vertex-average"`` or ``"keep-size"``)."""
+    return _mesh_op(lib.weft_dual, mesh, _choice(mode, "mode", DUAL))
+
+
+def edges(mesh):
+    """The unique edges as sorted (low, high) vertex pairs: an (e, 2) uint32 array."""
+    handle = check_mesh(mesh)
+    count = ctypes.c_size_t()
+    lib.weft_mesh_edge_count(handle, ctypes.byref(count))
+    out = np.empty((count.value, 2), dtype=np.uint32)
+    lib.weft_mesh_copy_edges(handle, _arrays.address(out), out.size)
+    return out
+
+
+def edge_segments(mesh):
+    """The unique edges as line segments, in the order of :func:`edges`: an (e, 2, 3) array."""
+    handle = check_mesh(mesh)
+    count = ctypes.c_size_t()
+    lib.weft_mesh_edge_count(handle, ctypes.byref(count))
+    out = np.empty((count.value, 2, 3), dtype=np.float64)
+    lib.weft_mesh_copy_edge_segments(handle, _arrays.address(out), out.size)
+    return out
+
+
+def reroute_faces(mesh, shift=1):
+    """Rotates every face's corner list to start ``shift`` corners later (negative goes back)."""
+    if isinstance(shift, bool) or not isinstance(shift, (int, np.integer)):
+        raise TypeError(f"shift must be an integer, not {type(shift).__name__}")
+    if not -(2**63) <= shift < 2**63:
+        raise ValueError(f"shift is {shift}; it must fit 64 bits")
+    return _mesh_op(lib.weft_reroute_faces, mesh, int(shift))
+
+
+def tile(mesh, fill="best", faces="all"):
+    """Re-fills the chosen faces by a pattern (``fill``: ``"skip"``,
+    ``"best"``, ``"triangle-fan"``, ``"triangle-hand"``, ``"triangle-knit"``,
+    ``"triangle-zigzag"``, ``"quad-stitch"``, ``"quad-fan"``; ``faces``:
+    ``"all"``, ``"quads-and-more"``, ``"pentagons-and-more"``,
+    ``"triangles"``, ``"quads"``)."""
+    return _mesh_op(lib.weft_tile, mesh, _choice(fill, "fill", TILE_FILL), _choice(faces, "faces", TILE_FACES))
+
+
+def version():
+    """The library's version, such as ``"0.1.0"``."""
+    return lib.weft_version().decode()
+
