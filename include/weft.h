@@ -718,6 +718,49 @@ WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle
 WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
 
 /**
+ * Reads a mesh file, choosing the format by the extension of `path`
+ * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does. STL
+ * corners come unwelded, one vertex per triangle corner (`weft_weld` with
+ * tolerance 0 joins them); vertex colours, UVs and creases are not read.
+ *
+ * `path` is a NUL-terminated UTF-8 path; it must not be NULL.
+ * `out_mesh` receives the mesh on success (free it with `weft_mesh_free`)
+ * and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER; WEFT_STATUS_INVALID_ARGUMENT for a
+ * path that is not UTF-8, an unknown extension, a file that cannot be
+ * read, or content that does not follow its format (the message names the
+ * file and the line, or the byte offset of a binary file); and with the
+ * status of `weft_mesh_new` (WEFT_STATUS_INDEX_OUT_OF_RANGE, …) when the
+ * file's faces do not make a valid mesh, the message naming the file, its
+ * line or byte offset and the face.
+ *
+ * # Safety
+ * `path` is NULL or a NUL-terminated string; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_read_mesh_file(const char *path, struct WeftMesh **out_mesh);
+
+/**
+ * Writes a mesh file, choosing the format by the extension of `path`
+ * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does: PLY as
+ * binary little endian, STL as binary with polygons written as triangle
+ * fans. The file is written beside its destination under a temporary name
+ * and renamed into place, so a failed write leaves no partial file and an
+ * existing file as it was.
+ *
+ * `mesh` must not be NULL. `path` is a NUL-terminated UTF-8 path; it must
+ * not be NULL; its folder must exist.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, or WEFT_STATUS_INVALID_ARGUMENT for
+ * a path that is not UTF-8, an unknown extension, a missing folder or a
+ * file the system refuses to write (the message names the file).
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `path` is NULL or a NUL-terminated string.
+ */
+WeftStatus weft_write_mesh_file(const struct WeftMesh *mesh, const char *path);
+
+/**
  * Triangulates points by the Delaunay criterion of their projections onto
  * a plane; the mesh's vertices are the original 3-D points, its triangles
  * front-facing along the plane's normal.

@@ -69,7 +69,13 @@ class BuildWithCargo(build_py):
         super().run()
         destination = Path(self.build_lib) / "weft"
         destination.mkdir(parents=True, exist_ok=True)
-        shutil.copy2(built, destination / library_name())
+        shipped = destination / library_name()
+        shutil.copy2(built, shipped)
+        # The release profile keeps debug info for profiling (a 30 MB
+        # library); the wheel does not need it.
+        strip = shutil.which("strip")
+        if strip and sys.platform.startswith("linux"):
+            subprocess.run([strip, "--strip-debug", str(shipped)], check=True)
 
 
 class PlatformWheel(bdist_wheel):

@@ -110,6 +110,8 @@ def test_weft_error_pickles():
         (np.zeros((3, 3, 1)), [[0, 1, 2]], ValueError, "vertices must have shape"),
         ([["a", "b", "c"]] * 3, [[0, 1, 2]], TypeError, "vertices must hold real numbers"),
         (np.zeros((3, 3), dtype=complex), [[0, 1, 2]], TypeError, "vertices"),
+        (np.ones((3, 3), dtype=bool), [[0, 1, 2]], TypeError, "vertices must hold real numbers"),
+        (SQUARE, np.ones((1, 3), dtype=bool), TypeError, "faces must hold integers"),
         ([[0, 0, 0], [1, 0], [0, 1, 0]], [[0, 1, 2]], ValueError, "vertices"),
         (SQUARE, [[0, 1.5, 2]], TypeError, "faces\\[0\\] must hold integer"),
         (SQUARE, [[0, 1, 2], [0, "x", 3]], TypeError, "faces\\[1\\]"),

@@ -1,6 +1,5 @@
 """Checks and conversions of array arguments: each error names the argument."""
 
-import ctypes
 import itertools
 import operator
 
@@ -22,7 +21,7 @@ def _as_numeric(value, name):
 def float_array(value, name, width=None, allow_empty_flat=True):
     """A C-contiguous float64 array of shape (n, width) (or (n,) when width is None)."""
     array = _as_numeric(value, name)
-    if array.dtype.kind not in "biuf":
+    if array.dtype.kind not in "iuf":
         raise TypeError(f"{name} must hold real numbers, not {array.dtype}")
     if width is not None:
         if array.size == 0 and allow_empty_flat and array.ndim <= 2:
@@ -39,9 +38,9 @@ def index_array(value, name, shape_text="one-dimensional"):
     array = _as_numeric(value, name)
     if array.size == 0:
         return np.zeros(array.shape, dtype=np.uint32)
-    if array.dtype.kind not in "iub":
+    if array.dtype.kind not in "iu":
         raise TypeError(f"{name} must hold integers, not {array.dtype}")
-    if array.dtype.kind != "b" and array.dtype != np.uint32:
+    if array.dtype != np.uint32:
         low, high = array.min(), array.max()
         if low < 0:
             raise ValueError(f"{name} holds a negative index ({low}) at {_where(array, low)}")
@@ -116,7 +115,3 @@ def view(pointer, count, ctype, dtype, owner, shape=None):
         array = np.frombuffer(buffer, dtype=dtype)
     array.flags.writeable = False
     return array.reshape(shape) if shape is not None else array
-
-
-def c_double_p(array):
-    return ctypes.cast(array.ctypes.data, ctypes.POINTER(ctypes.c_double))
