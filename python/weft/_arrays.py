@@ -73,10 +73,18 @@ def faces_arrays(faces, name="faces"):
             sizes[f] = len(face)
         except TypeError:
             raise TypeError(f"{name}[{f}] must be a sequence of vertex indices, not {type(face).__name__}") from None
-    flat = list(itertools.chain.from_iterable(faces))
     for f, face in enumerate(faces):
         if isinstance(face, (str, bytes)):
             raise TypeError(f"{name}[{f}] must be a sequence of vertex indices, not {type(face).__name__}")
+    if len(sizes) and sizes.min() == sizes.max():
+        # Faces of one size: numpy reads the nested lists in one pass.
+        try:
+            block = np.array(faces)
+        except (TypeError, ValueError):
+            block = None
+        if block is not None and block.ndim == 2 and block.dtype.kind in "iu":
+            return sizes, index_array(block, name).reshape(-1)
+    flat = list(itertools.chain.from_iterable(faces))
     if not flat:
         return sizes, np.zeros(0, dtype=np.uint32)
     try:

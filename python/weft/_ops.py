@@ -138,7 +138,7 @@ def loop(mesh, levels=1, naked_edges="fixed"):
 class _Options:
     """A WeftSubdivisionOptions and the arrays its pointers point into."""
 
-    def __init__(self, mesh, scheme, naked_edges, creases, corners, creasing):
+    def __init__(self, scheme, naked_edges, creases, corners, creasing):
         self.struct = WeftSubdivisionOptions()
         self.struct.scheme = _choice(scheme, "scheme", SCHEMES)
         self.struct.naked_edges = _choice(naked_edges, "naked_edges", NAKED_EDGES)
@@ -166,6 +166,15 @@ class _Options:
         return ctypes.byref(self.struct)
 
 
+def _table(values, name, rows="n"):
+    """A float64 table of shape (rows,) or (rows, width), and its width."""
+    array = _arrays._as_numeric(values, name)
+    if array.ndim not in (1, 2):
+        raise ValueError(f"{name} must have shape ({rows},) or ({rows}, width), not {array.shape}")
+    width = 1 if array.ndim == 1 else array.shape[1]
+    return _arrays.float_array(array, name, width=None if array.ndim == 1 else width), width
+
+
 def _whole(values, name):
     """Vertex indices that came in a float table, checked to be whole numbers."""
     if not np.all(np.isfinite(values)) or not np.all(values == np.round(values)):
@@ -186,7 +195,7 @@ def subdivide(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", creas
         >>> cube = weft.box(1, 1, 1)
         >>> s = weft.subdivide(cube, levels=2, creases=[(0, 1, 10.0)], corners=[(2, 10.0)])
     """
-    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    options = _Options(scheme, naked_edges, creases, corners, creasing)
     return _mesh_op(lib.weft_subdivide_ex, mesh, options.ref, _count(levels, "levels"))
 
 
@@ -211,14 +220,8 @@ def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_ed
 
         >>> colours = weft.subdivide_vertex_data(cube, np.random.rand(8, 3), levels=2)
     """
-    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
-    values = _arrays.float_array(data, "data", width=None) if np.ndim(data) == 1 else None
-    if values is None:
-        values = _arrays._as_numeric(data, "data")
-        if values.ndim != 2:
-            raise ValueError(f"data must have shape (n,) or (n, width), not {values.shape}")
-        values = _arrays.float_array(values, "data", width=values.shape[1])
-    width = 1 if values.ndim == 1 else values.shape[1]
+    options = _Options(scheme, naked_edges, creases, corners, creasing)
+    values, width = _table(data, "data")
     vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
     out = np.empty((vertex_count, width) if values.ndim == 2 else vertex_count, dtype=np.float64)
     lib.weft_subdivide_vertex_data(
@@ -239,12 +242,8 @@ def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth
 
         >>> uvs = weft.subdivide_face_varying(m, uv_table, uv_indices, levels=2)
     """
-    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
-    table = _arrays._as_numeric(values, "values")
-    if table.ndim not in (1, 2):
-        raise ValueError(f"values must have shape (k,) or (k, width), not {table.shape}")
-    width = 1 if table.ndim == 1 else table.shape[1]
-    table = _arrays.float_array(table, "values", width=None if table.ndim == 1 else width)
+    options = _Options(scheme, naked_edges, creases, corners, creasing)
+    table, width = _table(values, "values", rows="k")
     indices = _arrays.index_array(value_indices, "value_indices")
     if indices.ndim != 1:
         indices = indices.reshape(-1)
@@ -264,7 +263,7 @@ def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed",
 
         >>> points, normals = weft.subdivide_limit(weft.box(1, 1, 1), levels=2)
     """
-    options = _Options(mesh, scheme, naked_edges, creases, corners, creasing)
+    options = _Options(scheme, naked_edges, creases, corners, creasing)
     vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
     positions = np.empty((vertex_count, 3), dtype=np.float64)
     normals = np.empty((vertex_count, 3), dtype=np.float64)
@@ -312,7 +311,7 @@ class Refiner:
         if creases is None and corners is None and creasing == "uniform":
             lib.weft_refiner_new(handle, _choice(scheme, "scheme", SCHEMES), levels, _choice(naked_edges, "naked_edges", NAKED_EDGES), ctypes.byref(out))
         else:
-            options = _Options(cage, scheme, naked_edges, creases, corners, creasing)
+            options = _Options(scheme, naked_edges, creases, corners, creasing)
             lib.weft_refiner_new_ex(handle, options.ref, levels, ctypes.byref(out))
         self._handle = out.value
         self._cage_vertex_count = cage.vertex_count
@@ -404,9 +403,11 @@ def weld(meshes, tolerance=DEFAULT_WELD_TOLERANCE):
         >>> report.merged_vertex_count
     """
     mesh = meshes if isinstance(meshes, Mesh) else join(meshes)
+    handle = check_mesh(mesh)
     report = WeftWeldReport()
-    result = _mesh_op(lambda h, out: lib.weft_weld(h, _number(tolerance, "tolerance"), out, ctypes.byref(report)), mesh)
-    return result, WeldReport(report.merged_vertex_count, report.removed_face_count, report.unused_vertex_count)
+    out = _out()
+    lib.weft_weld(handle, _number(tolerance, "tolerance"), ctypes.byref(out), ctypes.byref(report))
+    return take_mesh(out), WeldReport(report.merged_vertex_count, report.removed_face_count, report.unused_vertex_count)
 
 
 def find_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE):
@@ -486,23 +487,26 @@ def flip(mesh):
 
 def face_normals(mesh):
     """The unit normal of each face (Newell's method): an (f, 3) array."""
-    out = np.empty((mesh.face_count if isinstance(mesh, Mesh) else 0, 3), dtype=np.float64)
-    lib.weft_face_normals(check_mesh(mesh), _arrays.address(out), out.size)
+    handle = check_mesh(mesh)
+    out = np.empty((mesh.face_count, 3), dtype=np.float64)
+    lib.weft_face_normals(handle, _arrays.address(out), out.size)
     return out
 
 
 def vertex_normals(mesh):
     """The angle-weighted unit normal of each vertex: an (n, 3) array."""
-    out = np.empty((mesh.vertex_count if isinstance(mesh, Mesh) else 0, 3), dtype=np.float64)
-    lib.weft_vertex_normals(check_mesh(mesh), _arrays.address(out), out.size)
+    handle = check_mesh(mesh)
+    out = np.empty((mesh.vertex_count, 3), dtype=np.float64)
+    lib.weft_vertex_normals(handle, _arrays.address(out), out.size)
     return out
 
 
 def planarity(mesh):
     """Per face, the largest distance of its corners from its best-fit
     plane (0 for triangles): an (f,) array; planar within ``t`` where ``<= t``."""
-    out = np.empty(mesh.face_count if isinstance(mesh, Mesh) else 0, dtype=np.float64)
-    lib.weft_planarity(check_mesh(mesh), _arrays.address(out), out.size)
+    handle = check_mesh(mesh)
+    out = np.empty(mesh.face_count, dtype=np.float64)
+    lib.weft_planarity(handle, _arrays.address(out), out.size)
     return out
 
 
@@ -778,11 +782,7 @@ def laplacian_hc_smooth(mesh, iterations=1, alpha=0.0, beta=0.6, naked_edges="fi
 def blur_values(mesh, values, iterations=1, blend=0.5, naked_edges="fixed"):
     """Blurs per-vertex values (an (n,) or (n, components) array) over the
     mesh; returns them in the same shape."""
-    array = _arrays._as_numeric(values, "values")
-    if array.ndim not in (1, 2):
-        raise ValueError(f"values must have shape (n,) or (n, components), not {array.shape}")
-    components = 1 if array.ndim == 1 else array.shape[1]
-    array = _arrays.float_array(array, "values", width=None if array.ndim == 1 else components)
+    array, components = _table(values, "values")
     out = np.empty_like(array)
     lib.weft_blur_values(
         check_mesh(mesh), _arrays.address(array), array.size, components, _count(iterations, "iterations"), _number(blend, "blend"),
