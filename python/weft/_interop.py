@@ -28,7 +28,9 @@ def _require(module, package, what):
 def from_trimesh(tm):
     """A Mesh from a ``trimesh.Trimesh`` (its vertices and triangles, as they are)::
 
-        >>> m = weft.from_trimesh(trimesh.creation.icosphere())
+        >>> import trimesh
+        >>> weft.from_trimesh(trimesh.creation.icosphere()).face_count
+        1280
     """
     _require("trimesh", "trimesh", "weft.from_trimesh")
     try:
@@ -59,7 +61,9 @@ def from_compas(cm):
     """A Mesh from a ``compas.datastructures.Mesh``; vertices are numbered
     in the COMPAS mesh's vertex order, faces keep their sizes (n-gons stay n-gons)::
 
-        >>> m = weft.from_compas(compas.datastructures.Mesh.from_polyhedron(6))
+        >>> from compas.datastructures import Mesh as CompasMesh
+        >>> weft.from_compas(CompasMesh.from_polyhedron(6)).face_count
+        6
     """
     _require("compas", "compas", "weft.from_compas")
     try:
@@ -89,7 +93,8 @@ def from_rhino3dm(rm):
     quads Rhino stores it as (``weft.weld`` and the subdivisions see one
     surface either way)::
 
-        >>> m = weft.from_rhino3dm(rhino_mesh)
+        >>> weft.from_rhino3dm(weft.to_rhino3dm(weft.box())) == weft.box()
+        True
     """
     rhino3dm = _require("rhino3dm", "rhino3dm", "weft.from_rhino3dm")
     if not isinstance(rm, rhino3dm.Mesh):
@@ -178,7 +183,11 @@ def read(path):
     ``.3dm`` through rhino3dm (every mesh object of the file, joined). STL
     corners come unwelded (``weft.weld(m, 0.0)`` joins them)::
 
-        >>> m = weft.read("cage.obj")
+        >>> import os, tempfile
+        >>> path = os.path.join(tempfile.mkdtemp(), "cage.obj")
+        >>> weft.write(weft.box(), path)
+        >>> weft.read(path) == weft.box()
+        True
     """
     text, encoded = _path_bytes(path)
     if _is_3dm(text):
@@ -204,7 +213,11 @@ def write(mesh, path):
     when ``mesh`` is a list). The file is written under a temporary name and
     renamed into place, so a failed write leaves no partial file::
 
-        >>> weft.write(weft.catmull_clark(m, levels=2), "smooth.ply")
+        >>> import os, tempfile
+        >>> path = os.path.join(tempfile.mkdtemp(), "smooth.ply")
+        >>> weft.write(weft.catmull_clark(weft.box(), levels=2), path)
+        >>> weft.read(path).face_count
+        96
     """
     text, encoded = _path_bytes(path)
     if _is_3dm(text):

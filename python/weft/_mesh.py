@@ -54,7 +54,9 @@ class Mesh:
         holds the corner count of each face and ``face_indices`` their
         concatenation (integers of any dtype)::
 
-            >>> m = weft.Mesh.from_arrays(vertices, [3, 4], [0, 1, 2, 0, 2, 3, 4])
+            >>> vertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [-1, 0.5, 0]]
+            >>> weft.Mesh.from_arrays(vertices, [3, 4], [0, 1, 2, 0, 2, 3, 4]).faces
+            [[0, 1, 2], [0, 2, 3, 4]]
         """
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes = _arrays.index_array(face_sizes, "face_sizes")

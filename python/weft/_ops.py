@@ -218,7 +218,8 @@ def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_ed
     array) through the subdivision :func:`subdivide` makes with the same
     options; each refined vertex gets the weighted sum its position gets::
 
-        >>> colours = weft.subdivide_vertex_data(cube, np.random.rand(8, 3), levels=2)
+        >>> weft.subdivide_vertex_data(weft.box(), np.random.rand(8, 3), levels=2).shape
+        (98, 3)
     """
     options = _Options(scheme, naked_edges, creases, corners, creasing)
     values, width = _table(data, "data")
@@ -240,7 +241,9 @@ def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth
     ``"corners-plus1"``, ``"corners-plus2"``, ``"boundaries"`` or ``"all"``.
     Returns the refined mesh's per-corner values, face after face::
 
-        >>> uvs = weft.subdivide_face_varying(m, uv_table, uv_indices, levels=2)
+        >>> cube = weft.box()
+        >>> weft.subdivide_face_varying(cube, np.random.rand(24, 2), np.arange(24), levels=2).shape
+        (384, 2)
     """
     options = _Options(scheme, naked_edges, creases, corners, creasing)
     table, width = _table(values, "values", rows="k")
@@ -274,7 +277,11 @@ def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed",
 
 
 def subdivision_face_count(mesh, scheme="catmull-clark", levels=1):
-    """The number of faces ``levels`` steps of ``scheme`` make, without subdividing."""
+    """The number of faces ``levels`` steps of ``scheme`` make, without subdividing::
+
+        >>> weft.subdivision_face_count(weft.box(), levels=2)
+        96
+    """
     count = ctypes.c_size_t()
     lib.weft_subdivision_face_count(check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), ctypes.byref(count))
     return count.value
@@ -300,8 +307,10 @@ class Refiner:
     cage's positions, ``r.evaluate(new_vertices)`` the refined positions for
     new cage positions (an (N, 3) array)::
 
+        >>> cage = weft.box()
         >>> r = weft.Refiner(cage, scheme="catmull-clark", levels=3, naked_edges="smooth")
-        >>> moved = r.evaluate(cage.vertices * 2.0)
+        >>> r.evaluate(cage.vertices * 2.0).shape
+        (386, 3)
     """
 
     def __init__(self, cage, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
@@ -361,7 +370,9 @@ def crease_edges_from_mesh(mesh, angle_degrees=180.0, vertex_map=False):
     pairs)``, pairs an (c, 2) uint32 array, or ``(welded, pairs, map)`` with
     ``vertex_map=True`` (the welded vertex each input vertex became)::
 
-        >>> welded, pairs = weft.crease_edges_from_mesh(m, 30.0)
+        >>> welded, pairs = weft.crease_edges_from_mesh(weft.triangulate(weft.box()), 30.0)
+        >>> len(pairs)
+        12
         >>> s = weft.subdivide(welded, levels=2, creases=[(i, j, 10.0) for i, j in pairs])
     """
     handle = check_mesh(mesh)
@@ -399,8 +410,11 @@ def weld(meshes, tolerance=DEFAULT_WELD_TOLERANCE):
     faces left with fewer than 3 are removed. Returns ``(mesh, report)``
     with a :class:`WeldReport`::
 
+        >>> m1 = weft.box()
+        >>> m2 = weft.Mesh(m1.vertices + [1.0, 0, 0], m1.faces)
         >>> w, report = weft.weld([m1, m2], tolerance=1e-6)
         >>> report.merged_vertex_count
+        4
     """
     mesh = meshes if isinstance(meshes, Mesh) else join(meshes)
     handle = check_mesh(mesh)
@@ -416,8 +430,10 @@ def find_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE):
     with fields ``vertex``, ``edge_start``, ``edge_end``, ``face`` and
     ``parameter`` (0 at edge_start, 1 at edge_end)::
 
-        >>> nodes = weft.find_t_nodes(m, 1e-6)
-        >>> nodes["vertex"]
+        >>> coarse, fine = weft.plane_grid(2, 2), weft.plane_grid(2, 2, 2, 2)
+        >>> m, _ = weft.weld([coarse, weft.Mesh(fine.vertices + [2.0, 0, 0], fine.faces)], 1e-9)
+        >>> weft.find_t_nodes(m, 1e-6)["vertex"]
+        array([6], dtype=uint32)
     """
     handle = check_mesh(mesh)
     tolerance = _number(tolerance, "tolerance")
@@ -434,7 +450,11 @@ def repair_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE, report=False):
     n-gon), so both sides share the seam. With ``report=True`` returns
     ``(mesh, inserted)``::
 
-        >>> repaired = weft.repair_t_nodes(m, 1e-6)
+        >>> coarse, fine = weft.plane_grid(2, 2), weft.plane_grid(2, 2, 2, 2)
+        >>> m, _ = weft.weld([coarse, weft.Mesh(fine.vertices + [2.0, 0, 0], fine.faces)], 1e-9)
+        >>> repaired, inserted = weft.repair_t_nodes(m, 1e-6, report=True)
+        >>> inserted
+        1
     """
     inserted = ctypes.c_size_t()
     handle = check_mesh(mesh)
@@ -449,7 +469,10 @@ def cull_adjacent(mesh, report=False):
     orientation, any start): all copies go, as the walls inside joined and
     welded boxes. Weld first. With ``report=True`` returns ``(mesh, removed)``::
 
+        >>> w, _ = weft.weld([weft.box(), weft.Mesh(weft.box().vertices + [1.0, 0, 0], weft.box().faces)])
         >>> culled, removed = weft.cull_adjacent(w, report=True)
+        >>> removed
+        2
     """
     removed = ctypes.c_size_t()
     out = _out()
@@ -463,7 +486,11 @@ def unify(mesh, report=False):
     fewest faces, and turns closed pieces to face outward. With
     ``report=True`` returns ``(mesh, flipped)``::
 
-        >>> oriented = weft.unify(m)
+        >>> box = weft.box()
+        >>> one_flipped = weft.Mesh(box.vertices, [box.faces[0][::-1]] + box.faces[1:])
+        >>> oriented, flipped = weft.unify(one_flipped, report=True)
+        >>> flipped
+        1
     """
     flipped = ctypes.c_size_t()
     out = _out()
@@ -479,6 +506,7 @@ def flip(mesh):
     """Reverses every face, keeping its first corner first
     ({a, b, c, d} becomes {a, d, c, b})::
 
+        >>> m = weft.box()
         >>> weft.flip(weft.flip(m)) == m
         True
     """
@@ -486,7 +514,11 @@ def flip(mesh):
 
 
 def face_normals(mesh):
-    """The unit normal of each face (Newell's method): an (f, 3) array."""
+    """The unit normal of each face (Newell's method): an (f, 3) array::
+
+        >>> weft.face_normals(weft.box()).shape
+        (6, 3)
+    """
     handle = check_mesh(mesh)
     out = np.empty((mesh.face_count, 3), dtype=np.float64)
     lib.weft_face_normals(handle, _arrays.address(out), out.size)
@@ -494,7 +526,11 @@ def face_normals(mesh):
 
 
 def vertex_normals(mesh):
-    """The angle-weighted unit normal of each vertex: an (n, 3) array."""
+    """The angle-weighted unit normal of each vertex: an (n, 3) array::
+
+        >>> weft.vertex_normals(weft.box()).shape
+        (8, 3)
+    """
     handle = check_mesh(mesh)
     out = np.empty((mesh.vertex_count, 3), dtype=np.float64)
     lib.weft_vertex_normals(handle, _arrays.address(out), out.size)
@@ -503,7 +539,11 @@ def vertex_normals(mesh):
 
 def planarity(mesh):
     """Per face, the largest distance of its corners from its best-fit
-    plane (0 for triangles): an (f,) array; planar within ``t`` where ``<= t``."""
+    plane (0 for triangles): an (f,) array; planar within ``t`` where ``<= t``::
+
+        >>> float(weft.planarity(weft.box()).max())
+        0.0
+    """
     handle = check_mesh(mesh)
     out = np.empty(mesh.face_count, dtype=np.float64)
     lib.weft_planarity(handle, _arrays.address(out), out.size)
@@ -654,7 +694,11 @@ def stellate(mesh, heights):
 
 
 def plane_grid(size_x=1.0, size_y=1.0, u_count=1, v_count=1):
-    """A flat rectangle on the XY plane, centred on the origin, facing +z, of u × v quads."""
+    """A flat rectangle on the XY plane, centred on the origin, facing +z, of u × v quads::
+
+        >>> weft.plane_grid(2, 1, 4, 2).face_count
+        8
+    """
     out = _out()
     lib.weft_plane_grid(_number(size_x, "size_x"), _number(size_y, "size_y"), _size(u_count, "u_count"), _size(v_count, "v_count"), ctypes.byref(out))
     return take_mesh(out)
@@ -675,7 +719,11 @@ def box(size_x=1.0, size_y=1.0, size_z=1.0, u_count=1, v_count=1, w_count=1):
 
 
 def uv_sphere(radius=1.0, u_count=16, v_count=8):
-    """A sphere centred on the origin: quads, and a fan of triangles at each pole."""
+    """A sphere centred on the origin: quads, and a fan of triangles at each pole::
+
+        >>> weft.uv_sphere(1.0, 8, 4).face_count
+        32
+    """
     out = _out()
     lib.weft_uv_sphere(_number(radius, "radius"), _size(u_count, "u_count"), _size(v_count, "v_count"), ctypes.byref(out))
     return take_mesh(out)
@@ -683,14 +731,22 @@ def uv_sphere(radius=1.0, u_count=16, v_count=8):
 
 def platonic(kind, radius=1.0):
     """A platonic solid (``"tetrahedron"``, ``"hexahedron"``, ``"octahedron"``,
-    ``"dodecahedron"`` or ``"icosahedron"``) with its vertices on the sphere of ``radius``."""
+    ``"dodecahedron"`` or ``"icosahedron"``) with its vertices on the sphere of ``radius``::
+
+        >>> weft.platonic("icosahedron").face_count
+        20
+    """
     out = _out()
     lib.weft_platonic(_choice(kind, "kind", PLATONIC), _number(radius, "radius"), ctypes.byref(out))
     return take_mesh(out)
 
 
 def sided_solid(kind, sides, radius=1.0, height=1.0):
-    """A ``"prism"``, ``"antiprism"``, ``"pyramid"`` or ``"dipyramid"`` on a regular n-gon."""
+    """A ``"prism"``, ``"antiprism"``, ``"pyramid"`` or ``"dipyramid"`` on a regular n-gon::
+
+        >>> weft.sided_solid("prism", 6).face_count
+        8
+    """
     out = _out()
     lib.weft_sided_solid(_choice(kind, "kind", SIDED), _size(sides, "sides"), _number(radius, "radius"), _number(height, "height"), ctypes.byref(out))
     return take_mesh(out)
@@ -699,7 +755,11 @@ def sided_solid(kind, sides, radius=1.0, height=1.0):
 def mesh_from_lines(segments, tolerance=DEFAULT_WELD_TOLERANCE, max_valence=4):
     """The faces a set of line segments encloses: ``segments`` is an (s, 2, 3)
     or (s, 6) array; endpoints within ``tolerance`` weld, faces of up to
-    ``max_valence`` corners are kept."""
+    ``max_valence`` corners are kept::
+
+        >>> weft.mesh_from_lines([[(0, 0, 0), (1, 0, 0)], [(1, 0, 0), (1, 1, 0)], [(1, 1, 0), (0, 0, 0)]]).face_count
+        1
+    """
     array = _arrays._as_numeric(segments, "segments")
     if array.ndim == 3:
         if array.shape[1:] != (2, 3):
@@ -714,47 +774,83 @@ def mesh_from_lines(segments, tolerance=DEFAULT_WELD_TOLERANCE, max_valence=4):
 # The toolbar ---------------------------------------------------------------
 
 def triangulate(mesh):
-    """Splits quads along the shorter diagonal and ear-clips n-gons; vertices are kept."""
+    """Splits quads along the shorter diagonal and ear-clips n-gons; vertices are kept::
+
+        >>> weft.triangulate(weft.box()).face_count
+        12
+    """
     return _mesh_op(lib.weft_triangulate, mesh)
 
 
 def split_polygons(mesh, levels=1):
-    """Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing."""
+    """Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing::
+
+        >>> weft.split_polygons(weft.box(), 1).face_count
+        24
+    """
     return _mesh_op(lib.weft_split_polygons, mesh, _count(levels, "levels"))
 
 
 def split_triangles(mesh, levels=1):
-    """Splits each triangle into four through its edge midpoints, without smoothing."""
+    """Splits each triangle into four through its edge midpoints, without smoothing::
+
+        >>> weft.split_triangles(weft.platonic("octahedron"), 1).face_count
+        32
+    """
     return _mesh_op(lib.weft_split_triangles, mesh, _count(levels, "levels"))
 
 
 def constant_quads_split(mesh, levels=1):
-    """Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing."""
+    """Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing::
+
+        >>> weft.constant_quads_split(weft.box(), 1).face_count
+        24
+    """
     return _mesh_op(lib.weft_constant_quads_split, mesh, _count(levels, "levels"))
 
 
 def midedge(mesh, levels=1):
-    """The mid-edge subdivision (Peters and Reif)."""
+    """The mid-edge subdivision (Peters and Reif)::
+
+        >>> weft.midedge(weft.box(), 1).face_count
+        14
+    """
     return _mesh_op(lib.weft_midedge, mesh, _count(levels, "levels"))
 
 
 def inner_polygons(mesh, levels=1, pull=0.5):
-    """Gives each face an inner face pulled towards its centroid, joined by quads."""
+    """Gives each face an inner face pulled towards its centroid, joined by quads::
+
+        >>> weft.inner_polygons(weft.box(), 1, 0.3).face_count
+        30
+    """
     return _mesh_op(lib.weft_inner_polygons, mesh, _count(levels, "levels"), _number(pull, "pull"))
 
 
 def sierpinski_triangles(mesh, levels=1):
-    """A triangle in each corner of each face, the middle left open."""
+    """A triangle in each corner of each face, the middle left open::
+
+        >>> weft.sierpinski_triangles(weft.platonic("tetrahedron"), 1).face_count
+        12
+    """
     return _mesh_op(lib.weft_sierpinski_triangles, mesh, _count(levels, "levels"))
 
 
 def sierpinski_carpet(mesh, levels=1):
-    """Cuts each quad into 3 × 3 and removes the middle one."""
+    """Cuts each quad into 3 × 3 and removes the middle one::
+
+        >>> weft.sierpinski_carpet(weft.box(), 1).face_count
+        48
+    """
     return _mesh_op(lib.weft_sierpinski_carpet, mesh, _count(levels, "levels"))
 
 
 def laplacian_smooth(mesh, iterations=1, blend=0.5, naked_edges="fixed"):
-    """Moves every vertex ``blend`` of the way to its neighbours' average, ``iterations`` times."""
+    """Moves every vertex ``blend`` of the way to its neighbours' average, ``iterations`` times::
+
+        >>> weft.laplacian_smooth(weft.uv_sphere(), iterations=5, blend=0.5).vertex_count
+        114
+    """
     return _mesh_op(
         lib.weft_laplacian_smooth, mesh, _count(iterations, "iterations"), _number(blend, "blend"),
         _choice(naked_edges, "naked_edges", NAKED_EDGES),
@@ -767,7 +863,8 @@ def laplacian_hc_smooth(mesh, iterations=1, alpha=0.0, beta=0.6, naked_edges="fi
     ``"tangential"``; ``activation`` one weight in [0, 1] per vertex (None:
     all 1)::
 
-        >>> smooth = weft.laplacian_hc_smooth(m, iterations=10, beta=0.6)
+        >>> weft.laplacian_hc_smooth(weft.uv_sphere(), iterations=10, beta=0.6).vertex_count
+        114
     """
     arguments = (_count(iterations, "iterations"), _number(alpha, "alpha"), _number(beta, "beta"), _choice(naked_edges, "naked_edges", NAKED_EDGES))
     direction = _choice(direction, "direction", SMOOTH_DIRECTION)
@@ -781,7 +878,11 @@ def laplacian_hc_smooth(mesh, iterations=1, alpha=0.0, beta=0.6, naked_edges="fi
 
 def blur_values(mesh, values, iterations=1, blend=0.5, naked_edges="fixed"):
     """Blurs per-vertex values (an (n,) or (n, components) array) over the
-    mesh; returns them in the same shape."""
+    mesh; returns them in the same shape::
+
+        >>> weft.blur_values(weft.box(), np.arange(8.0), iterations=2).shape
+        (8,)
+    """
     array, components = _table(values, "values")
     out = np.empty_like(array)
     lib.weft_blur_values(
@@ -793,47 +894,79 @@ def blur_values(mesh, values, iterations=1, blend=0.5, naked_edges="fixed"):
 
 def offset_mesh(mesh, distance, offset_type="diagonal"):
     """Moves every vertex ``distance`` along the normal (``offset_type``:
-    ``"diagonal"``, ``"hypotenuse-average"``, ``"planes-intersection"``)."""
+    ``"diagonal"``, ``"hypotenuse-average"``, ``"planes-intersection"``)::
+
+        >>> weft.offset_mesh(weft.box(), 0.1).vertex_count
+        8
+    """
     return _mesh_op(lib.weft_offset_mesh, mesh, _number(distance, "distance"), _choice(offset_type, "offset_type", OFFSET))
 
 
 def thicken_mesh(mesh, distance, offset_type="diagonal"):
-    """A solid of a surface: it, its offset by ``distance``, and quads along the naked edges."""
+    """A solid of a surface: it, its offset by ``distance``, and quads along the naked edges::
+
+        >>> weft.thicken_mesh(weft.plane_grid(), 0.1).face_count
+        6
+    """
     return _mesh_op(lib.weft_thicken_mesh, mesh, _number(distance, "distance"), _choice(offset_type, "offset_type", OFFSET))
 
 
 def mesh_window(mesh, distances, inset_mode="edge-fraction"):
     """Insets each face, keeping the frame of quads and the inner face
     (``distances``: one, or one per face; ``inset_mode``:
-    ``"edge-fraction"`` or ``"parallelogram"``)."""
+    ``"edge-fraction"`` or ``"parallelogram"``)::
+
+        >>> weft.mesh_window(weft.box(), 0.2).face_count
+        30
+    """
     values = _per_face(distances, "distances")
     return _mesh_op(lib.weft_mesh_window, mesh, _arrays.address(values), values.size, _choice(inset_mode, "inset_mode", INSET))
 
 
 def picture_frame(mesh, distances, inset_mode="edge-fraction"):
-    """Insets each face and keeps only the frame: each face becomes a ring."""
+    """Insets each face and keeps only the frame: each face becomes a ring::
+
+        >>> weft.picture_frame(weft.box(), 0.2).face_count
+        24
+    """
     values = _per_face(distances, "distances")
     return _mesh_op(lib.weft_picture_frame, mesh, _arrays.address(values), values.size, _choice(inset_mode, "inset_mode", INSET))
 
 
 def bevel_edges(mesh, fraction=0.2):
-    """Bevels every edge (Conway's expansion), ``fraction`` in (0, 1)."""
+    """Bevels every edge (Conway's expansion), ``fraction`` in (0, 1)::
+
+        >>> weft.bevel_edges(weft.box(), 0.3).face_count
+        26
+    """
     return _mesh_op(lib.weft_bevel_edges, mesh, _number(fraction, "fraction"))
 
 
 def bevel_vertices(mesh, fraction=0.2):
-    """Cuts every vertex off (Conway's truncation), ``fraction`` in (0, 0.5)."""
+    """Cuts every vertex off (Conway's truncation), ``fraction`` in (0, 0.5)::
+
+        >>> weft.bevel_vertices(weft.box(), 0.3).face_count
+        14
+    """
     return _mesh_op(lib.weft_bevel_vertices, mesh, _number(fraction, "fraction"))
 
 
 def dual(mesh, mode="vertex-average"):
     """The dual mesh: a vertex per face, a face per interior vertex
-    (``mode``: ``"vertex-average"`` or ``"keep-size"``)."""
+    (``mode``: ``"vertex-average"`` or ``"keep-size"``)::
+
+        >>> weft.dual(weft.box()).face_count
+        8
+    """
     return _mesh_op(lib.weft_dual, mesh, _choice(mode, "mode", DUAL))
 
 
 def edges(mesh):
-    """The unique edges as sorted (low, high) vertex pairs: an (e, 2) uint32 array."""
+    """The unique edges as sorted (low, high) vertex pairs: an (e, 2) uint32 array::
+
+        >>> weft.edges(weft.box()).shape
+        (12, 2)
+    """
     handle = check_mesh(mesh)
     count = ctypes.c_size_t()
     lib.weft_mesh_edge_count(handle, ctypes.byref(count))
@@ -843,7 +976,11 @@ def edges(mesh):
 
 
 def edge_segments(mesh):
-    """The unique edges as line segments, in the order of :func:`edges`: an (e, 2, 3) array."""
+    """The unique edges as line segments, in the order of :func:`edges`: an (e, 2, 3) array::
+
+        >>> weft.edge_segments(weft.box()).shape
+        (12, 2, 3)
+    """
     handle = check_mesh(mesh)
     count = ctypes.c_size_t()
     lib.weft_mesh_edge_count(handle, ctypes.byref(count))
@@ -853,7 +990,11 @@ def edge_segments(mesh):
 
 
 def reroute_faces(mesh, shift=1):
-    """Rotates every face's corner list to start ``shift`` corners later (negative goes back)."""
+    """Rotates every face's corner list to start ``shift`` corners later (negative goes back)::
+
+        >>> weft.reroute_faces(weft.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]]), 1).faces
+        [[1, 2, 0]]
+    """
     if isinstance(shift, bool) or not isinstance(shift, (int, np.integer)):
         raise TypeError(f"shift must be an integer, not {type(shift).__name__}")
     if not -(2**63) <= shift < 2**63:
@@ -866,11 +1007,19 @@ def tile(mesh, fill="best", faces="all"):
     ``"best"``, ``"triangle-fan"``, ``"triangle-hand"``, ``"triangle-knit"``,
     ``"triangle-zigzag"``, ``"quad-stitch"``, ``"quad-fan"``; ``faces``:
     ``"all"``, ``"quads-and-more"``, ``"pentagons-and-more"``,
-    ``"triangles"``, ``"quads"``)."""
+    ``"triangles"``, ``"quads"``)::
+
+        >>> weft.tile(weft.box(), "triangle-fan", "quads").face_count
+        24
+    """
     return _mesh_op(lib.weft_tile, mesh, _choice(fill, "fill", TILE_FILL), _choice(faces, "faces", TILE_FACES))
 
 
 def version():
-    """The library's version, such as ``"0.1.0"``."""
+    """The library's version, such as ``"0.1.0"``::
+
+        >>> weft.version()
+        '0.1.0'
+    """
     return lib.weft_version().decode()
 
