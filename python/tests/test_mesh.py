@@ -5,6 +5,7 @@ import gc
 import pickle
 import threading
 import time
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -15,12 +16,17 @@ from conftest import random_cage, same_bits
 SQUARE = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]]
 
 
-def test_the_first_example_of_the_readme():
-    m = weft.Mesh(SQUARE, [[0, 1, 2, 3]])
-    s = weft.catmull_clark(m, levels=2, naked_edges="smooth")
-    assert s.vertices.shape == (25, 3) and s.face_count == 16
-    assert s.vertices.dtype == np.float64
+def test_the_first_example_of_the_readme(tmp_path, monkeypatch, capsys):
+    readme = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    example = readme.split("```python\n", 1)[1].split("```", 1)[0]
+    monkeypatch.chdir(tmp_path)
+    scope = {}
+    exec(compile(example, "README.md", "exec"), scope)
+    assert capsys.readouterr().out == "(25, 3) 16\n"
+    s = scope["s"]
+    assert s.vertices.dtype == np.float64 and not s.vertices.flags.owndata
     assert (s.face_sizes == 4).all() and s.face_sizes.dtype == np.uint32
+    assert weft.read(tmp_path / "smooth.obj") == s
 
 
 @pytest.mark.parametrize("dtype", [np.int8, np.int16, np.int32, np.int64, np.uint8, np.uint16, np.uint32, np.uint64])
