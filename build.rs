@@ -22,10 +22,14 @@ fn main() {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-current_version,{version}");
     } else if family == "unix" {
         println!("cargo:rustc-cdylib-link-arg=-Wl,-soname,libweft.so.{major}");
-        let script = PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("weft.map");
+        let script =
+            PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("weft.map");
         fs::write(&script, "{\n  global:\n    weft_*;\n  local:\n    *;\n};\n")
             .expect("the build directory is writable");
-        println!("cargo:rustc-cdylib-link-arg=-Wl,--version-script={}", script.display());
+        println!(
+            "cargo:rustc-cdylib-link-arg=-Wl,--version-script={}",
+            script.display()
+        );
         link_soname_in_build_tree(&major);
     }
 }
@@ -37,7 +41,9 @@ fn main() {
 fn link_soname_in_build_tree(major: &str) {
     // OUT_DIR is <profile dir>/build/<package>-<hash>/out.
     let out_dir = PathBuf::from(env::var("OUT_DIR").expect("cargo sets OUT_DIR"));
-    let Some(profile_dir) = out_dir.ancestors().nth(3) else { return };
+    let Some(profile_dir) = out_dir.ancestors().nth(3) else {
+        return;
+    };
     let link = profile_dir.join(format!("libweft.so.{major}"));
     if fs::symlink_metadata(&link).is_ok() {
         return;
