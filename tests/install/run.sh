@@ -3,8 +3,9 @@
 # more staged under DESTDIR) and builds against it as a C or C++ host would:
 # pkg-config with the shared and the static library, by hand with an rpath,
 # CMake's weft::weft and weft::weft_static in a C++ and a C-only project,
-# the C++ example under AddressSanitizer. Checks the soname, the exported
-# symbols, the size, and that removing what the manifest lists removes all.
+# the C++ example and the tests of weft.hpp under AddressSanitizer. Checks
+# the soname, the exported symbols, the size, and that removing what the
+# manifest lists removes all.
 # Prints "install tests: N passed, N failed" and exits non-zero on a failure.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
@@ -112,11 +113,16 @@ for cxx in g++ clang++; do
   command -v "$cxx" >/dev/null || continue
   check "weft.hpp compiles with $cxx -std=c++17 ${warn[*]}" \
     "$cxx" -std=c++17 "${warn[@]}" -I"$prefix/include" -c examples/subdivide_cube.cpp -o "$bin/cube_cpp_$cxx.o"
+  check "weft.hpp tests compile with $cxx" \
+    "$cxx" -std=c++17 "${warn[@]}" -I"$prefix/include" -c tests/install/wrapper_test.cpp -o "$bin/wrapper_$cxx.o"
 done
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 check "C++ example with AddressSanitizer builds" sh -c \
   "c++ -std=c++17 ${warn[*]} -g -fsanitize=address,undefined -fno-omit-frame-pointer examples/subdivide_cube.cpp \$(pkg-config --cflags --libs weft) -o '$bin/cube_cpp_asan'"
 check "C++ example runs clean under AddressSanitizer" runs_cube "$bin/cube_cpp_asan" "LD_LIBRARY_PATH=$lib"
+check "weft.hpp tests build with AddressSanitizer" sh -c \
+  "c++ -std=c++17 ${warn[*]} -g -fsanitize=address,undefined -fno-omit-frame-pointer tests/install/wrapper_test.cpp \$(pkg-config --cflags --libs weft) -Wl,-rpath,'$lib' -o '$bin/wrapper_test'"
+check "weft.hpp tests pass under AddressSanitizer" "$bin/wrapper_test"
 unset ASAN_OPTIONS UBSAN_OPTIONS
 
 # CMake: both targets, in a C++ project and in a C-only one; they run with
