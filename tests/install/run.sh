@@ -9,7 +9,7 @@
 # Prints "install tests: N passed, N failed" and exits non-zero on a failure.
 set -uo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-cd "$root"
+cd "$root" || exit 1
 work=$(mktemp -d "${TMPDIR:-/tmp}/weft-install-test.XXXXXX")
 trap 'rm -rf "$work"' EXIT
 prefix=$work/prefix
