@@ -39,6 +39,14 @@ runs_cube() { # executable, env assignments...
 needs_libweft() { readelf -d "$1" | grep -q "NEEDED.*\[libweft\.so\.$major\]"; }
 no_libweft() { ! readelf -d "$1" | grep -q "NEEDED.*libweft"; }
 
+missing=()
+for tool in cargo cc c++ cmake pkg-config readelf nm; do command -v "$tool" >/dev/null || missing+=("$tool"); done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "The install tests need ${missing[*]} (scripts/install-test-deps.sh installs them)."
+  echo "install tests: 0 passed, 1 failed"
+  exit 1
+fi
+
 if ! scripts/install.sh --prefix "$prefix" >"$work/install.log" 2>&1; then
   tail -n 40 "$work/install.log"
   echo "install tests: 0 passed, 1 failed"
