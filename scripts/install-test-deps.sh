@@ -4,7 +4,7 @@
 # compiler with sanitizer runtimes (the C tests), Mono (the C# wrapper and the
 # Grasshopper compile check), and the Rust components rustfmt and clippy.
 set -euo pipefail
-packages=(libosd-dev libopenmesh-dev g++ gcc mono-devel python3 python3-pip ca-certificates)
+packages=(libosd-dev libopenmesh-dev g++ gcc mono-devel python3 python3-pip ca-certificates cmake pkg-config)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
