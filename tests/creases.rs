@@ -402,7 +402,11 @@ fn limit_positions_and_normals_equal_opensubdiv() {
                         );
                         let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
                         let ours = subdivider.limit().unwrap();
-                        let refiner = OsdRefiner::new(&reference_cage, &osd, levels).unwrap();
+                        let full = OsdOptions {
+                            full_topology: true,
+                            ..osd.clone()
+                        };
+                        let refiner = OsdRefiner::new(&reference_cage, &full, levels).unwrap();
                         let theirs = refiner.limit(&reference_cage.positions).unwrap();
                         let mut faces = refiner.faces();
                         faces.positions = refiner.interpolate(&reference_cage.positions, 3);

@@ -60,6 +60,23 @@ private:
 
 std::unique_ptr<OsdStencils> osd_stencils_new(const OsdRefiner &refiner);
 
+// Osd's own re-evaluation path: a single-precision Far::StencilTable applied
+// by Osd::OmpEvaluator::EvalStencils on `threads` OpenMP threads.
+class OsdParallelStencils {
+public:
+  OsdParallelStencils(std::unique_ptr<const OpenSubdiv::Far::StencilTable> table, int threads);
+
+  std::size_t stencil_count() const;
+  void update(rust::Slice<const float> cage_positions, rust::Slice<float> out) const;
+
+private:
+  std::unique_ptr<const OpenSubdiv::Far::StencilTable> table_;
+  int threads_;
+};
+
+std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner,
+                                                               uint32_t threads);
+
 OmMesh om_catmull_clark(rust::Slice<const double> positions, rust::Slice<const uint32_t> face_sizes,
                         rust::Slice<const uint32_t> face_indices, uint32_t levels);
 OmMesh om_loop(rust::Slice<const double> positions, rust::Slice<const uint32_t> face_sizes,

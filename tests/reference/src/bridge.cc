@@ -9,6 +9,8 @@
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/stencilTableFactory.h>
 #include <opensubdiv/far/topologyDescriptor.h>
+#include <opensubdiv/osd/bufferDescriptor.h>
+#include <opensubdiv/osd/ompEvaluator.h>
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
@@ -176,7 +178,7 @@ std::unique_ptr<OsdRefiner> osd_refiner_new(
   throw_if_failed("OpenSubdiv reported an error building the cage");
   if (levels > 0) {
     Far::TopologyRefiner::UniformOptions uniform{static_cast<int>(levels)};
-    uniform.fullTopologyInLastLevel = true;
+    uniform.fullTopologyInLastLevel = settings.full_topology;
     refiner->RefineUniform(uniform);
     throw_if_failed("OpenSubdiv reported an error refining");
   }
@@ -280,6 +282,43 @@ void OsdStencils::update(rust::Slice<const double> cage_positions, rust::Slice<d
   auto src = rows<3>(cage_positions.data(), 3);
   auto dst = rows<3>(out.data(), 3);
   table_->UpdateValues(src, dst);
+}
+
+OsdParallelStencils::OsdParallelStencils(std::unique_ptr<const Far::StencilTable> table,
+                                         int threads)
+    : table_(std::move(table)), threads_(threads) {}
+
+std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner,
+                                                               uint32_t threads) {
+  install_callbacks();
+  using Factory = Far::StencilTableFactory;
+  Factory::Options options;
+  options.interpolationMode = Factory::INTERPOLATE_VERTEX;
+  options.generateOffsets = true;
+  options.generateControlVerts = false;
+  options.generateIntermediateLevels = false;
+  options.factorizeIntermediateLevels = true;
+  options.maxLevel = unsigned(refiner.refiner().GetMaxLevel());
+  std::unique_ptr<const Far::StencilTable> table(Factory::Create(refiner.refiner(), options));
+  if (!table) far_errors += far_errors.empty() ? "no message" : "";
+  throw_if_failed("OpenSubdiv could not build the stencil table");
+  return std::make_unique<OsdParallelStencils>(std::move(table), int(threads));
+}
+
+std::size_t OsdParallelStencils::stencil_count() const {
+  return std::size_t(table_->GetNumStencils());
+}
+
+void OsdParallelStencils::update(rust::Slice<const float> cage_positions,
+                                 rust::Slice<float> out) const {
+  namespace Osd = OpenSubdiv::Osd;
+  Osd::OmpEvaluator::SetNumThreads(threads_);
+  const Osd::BufferDescriptor desc(0, 3, 3);
+  const bool ok = Osd::OmpEvaluator::EvalStencils(
+      cage_positions.data(), desc, out.data(), desc, table_->GetSizes().data(),
+      table_->GetOffsets().data(), table_->GetControlIndices().data(),
+      table_->GetWeights().data(), 0, table_->GetNumStencils());
+  if (!ok) throw std::runtime_error("Osd::OmpEvaluator::EvalStencils failed");
 }
 
 // ---- OpenMesh ---------------------------------------------------------------

@@ -13,6 +13,10 @@ pub(crate) mod ffi {
         creasing: u32,
         /// `Sdc::Options::FVarLinearInterpolation`.
         fvar_linear: u32,
+        /// `UniformOptions::fullTopologyInLastLevel`: off, as OpenSubdiv's
+        /// users refine for positions and faces; `PrimvarRefiner::Limit`
+        /// needs it on.
+        full_topology: bool,
     }
 
     /// A polygon mesh returned by OpenMesh.
@@ -77,6 +81,21 @@ pub(crate) mod ffi {
         fn stencil_count(self: &OsdStencils) -> usize;
         fn update(self: &OsdStencils, cage_positions: &[f64], out: &mut [f64]);
 
+        /// A `Far::StencilTable` (single precision, as Osd's evaluators
+        /// take) for the last level, evaluated by `Osd::OmpEvaluator`.
+        type OsdParallelStencils;
+
+        fn osd_parallel_stencils_new(
+            refiner: &OsdRefiner,
+            threads: u32,
+        ) -> Result<UniquePtr<OsdParallelStencils>>;
+        fn stencil_count(self: &OsdParallelStencils) -> usize;
+        fn update(
+            self: &OsdParallelStencils,
+            cage_positions: &[f32],
+            out: &mut [f32],
+        ) -> Result<()>;
+
         fn om_catmull_clark(
             positions: &[f64],
             face_sizes: &[u32],
@@ -98,3 +117,5 @@ unsafe impl Send for ffi::OsdRefiner {}
 unsafe impl Sync for ffi::OsdRefiner {}
 unsafe impl Send for ffi::OsdStencils {}
 unsafe impl Sync for ffi::OsdStencils {}
+unsafe impl Send for ffi::OsdParallelStencils {}
+unsafe impl Sync for ffi::OsdParallelStencils {}

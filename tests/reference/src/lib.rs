@@ -14,7 +14,12 @@
 //! - [`OsdRefiner`]: the same refiner, built once and applied to several
 //!   primvars.
 //! - [`OsdStencils`]: `Far::StencilTableFactoryReal<double>` for the last level,
-//!   to re-evaluate new cage positions (`UpdateValues`).
+//!   to re-evaluate new cage positions (`UpdateValues`), and
+//!   [`OsdParallelStencils`], the single-precision table evaluated by
+//!   `Osd::OmpEvaluator` on several threads.
+//!
+//! The C++ side is compiled `-O3 -march=native -DNDEBUG` and refines with
+//! OpenSubdiv's default `UniformOptions`, as its users run it.
 //! - [`openmesh_catmull_clark`], [`openmesh_loop`]: OpenMesh's uniform
 //!   `CatmullClarkT` (on a `PolyMesh`) and `LoopT` (on a `TriMesh`) with
 //!   `Vec3d` points.
@@ -190,6 +195,10 @@ pub struct OsdOptions {
     /// The face-varying linear option (used by
     /// [`opensubdiv_refine_face_varying`]).
     pub fvar_linear: FVarLinear,
+    /// Build the last level's full topology (`fullTopologyInLastLevel`).
+    /// Off by default, as OpenSubdiv's users refine for positions and faces
+    /// (it doubles the refinement's time); [`OsdRefiner::limit`] needs it on.
+    pub full_topology: bool,
 }
 
 impl OsdOptions {
@@ -231,6 +240,7 @@ impl OsdOptions {
                 CreasingMethod::Chaikin => 1,
             },
             fvar_linear: self.fvar_linear as u32,
+            full_topology: self.full_topology,
         }
     }
 }
@@ -551,10 +561,12 @@ impl OsdRefiner {
     /// The limit surface at the last level's vertices: positions and the two
     /// tangents `du`, `dv` from `PrimvarRefiner::Limit` applied to the last
     /// level's interpolated `cage_positions`, and unit normals `du × dv`
-    /// (zero where the cross product vanishes).
+    /// (zero where the cross product vanishes). The refiner must have been
+    /// built with [`OsdOptions::full_topology`].
     ///
     /// # Errors
-    /// OpenSubdiv's message if it cannot evaluate the limit.
+    /// OpenSubdiv's message if it cannot evaluate the limit (also when the
+    /// last level lacks its full topology).
     ///
     /// # Panics
     /// When `cage_positions` does not hold 3 numbers per cage vertex.
@@ -606,7 +618,7 @@ pub struct Limit {
 
 /// Refines `cage` `levels` times with OpenSubdiv and interpolates its
 /// positions: Far `TopologyDescriptor` → `TopologyRefinerFactory::Create` →
-/// `RefineUniform` (full topology in the last level) →
+/// `RefineUniform` (default `UniformOptions`) →
 /// `PrimvarRefinerReal<double>::Interpolate` level by level.
 ///
 /// Returns the last level: its vertices in OpenSubdiv's order (see the crate
@@ -699,7 +711,11 @@ pub fn opensubdiv_limit(
     options: &OsdOptions,
     levels: u32,
 ) -> Result<Limit, ReferenceError> {
-    OsdRefiner::new(cage, options, levels)?.limit(&cage.positions)
+    let options = OsdOptions {
+        full_topology: true,
+        ..options.clone()
+    };
+    OsdRefiner::new(cage, &options, levels)?.limit(&cage.positions)
 }
 
 /// OpenSubdiv's stencil table for the last level of a uniform refinement
@@ -759,6 +775,57 @@ impl OsdStencils {
             self.vertex_count()
         );
         self.table.update(cage_positions, out);
+    }
+}
+
+/// OpenSubdiv's own parallel re-evaluation: a single-precision
+/// `Far::StencilTable` (what Osd's evaluators take) for the last level,
+/// applied by `Osd::OmpEvaluator::EvalStencils` on a chosen number of OpenMP
+/// threads. Debian's OpenSubdiv 3.5 has the OpenMP evaluator and no TBB one.
+pub struct OsdParallelStencils {
+    table: cxx::UniquePtr<ffi::OsdParallelStencils>,
+    cage_vertex_count: usize,
+}
+
+impl OsdParallelStencils {
+    /// Refines `cage`'s topology `levels` times (1..=[`MAX_LEVELS`]) and
+    /// builds the stencils, to be evaluated on `threads` threads.
+    ///
+    /// # Errors
+    /// As [`OsdRefiner::new`]; `levels` 0 is refused.
+    pub fn new(
+        cage: &RefMesh,
+        options: &OsdOptions,
+        levels: u32,
+        threads: u32,
+    ) -> Result<Self, ReferenceError> {
+        if levels == 0 {
+            return refuse("stencils need at least one level".to_owned());
+        }
+        let refiner = OsdRefiner::new(cage, options, levels)?;
+        let table = ffi::osd_parallel_stencils_new(&refiner.inner, threads.max(1))?;
+        Ok(OsdParallelStencils {
+            table,
+            cage_vertex_count: cage.vertex_count(),
+        })
+    }
+
+    /// The number of refined vertices (one stencil each).
+    pub fn vertex_count(&self) -> usize {
+        self.table.stencil_count()
+    }
+
+    /// Evaluates the stencils on `cage_positions` (xyz per cage vertex) into
+    /// `out` (xyz per refined vertex); allocates nothing.
+    ///
+    /// # Panics
+    /// When a buffer has the wrong length, or OpenSubdiv's evaluator fails.
+    pub fn update(&self, cage_positions: &[f32], out: &mut [f32]) {
+        assert_eq!(cage_positions.len(), self.cage_vertex_count * 3);
+        assert_eq!(out.len(), self.vertex_count() * 3);
+        self.table
+            .update(cage_positions, out)
+            .expect("OmpEvaluator evaluates the stencils");
     }
 }
 

@@ -1,0 +1,212 @@
+//! The tables printed after a run: medians read back from criterion's
+//! estimates, ratios, and the targets with what was measured.
+
+use std::path::PathBuf;
+use std::time::Duration;
+
+use crate::{CASE_NAMES, GROUP, LEVELS, REEVALUATED};
+
+/// Timings measured once, outside criterion, kept for the summary.
+pub fn record_once(case: &str, what: &str, time: Duration) {
+    println!(
+        "{GROUP}/{case}/{what}: {:.2} s (timed once)",
+        time.as_secs_f64()
+    );
+    let path = estimates_dir().join(case).join(what);
+    std::fs::create_dir_all(&path).expect("criterion's directory");
+    std::fs::write(path.join("once.txt"), format!("{}", time.as_secs_f64()))
+        .expect("write a timing");
+}
+
+fn estimates_dir() -> PathBuf {
+    let target = std::env::var_os("CARGO_TARGET_DIR")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("target"));
+    target.join("criterion").join(GROUP)
+}
+
+/// The median (seconds) of the latest run of `case/what`, if it ran.
+fn median(case: &str, what: &str) -> Option<f64> {
+    let dir = estimates_dir().join(case).join(what);
+    if let Ok(once) = std::fs::read_to_string(dir.join("once.txt")) {
+        return once.trim().parse().ok();
+    }
+    let json = std::fs::read_to_string(dir.join("new").join("estimates.json")).ok()?;
+    let at = json.find("\"median\"")?;
+    let rest = &json[at..];
+    let value = &rest[rest.find("\"point_estimate\":")? + "\"point_estimate\":".len()..];
+    let end = value.find([',', '}'])?;
+    value[..end].trim().parse::<f64>().ok().map(|ns| ns * 1e-9)
+}
+
+fn ms(t: Option<f64>) -> String {
+    t.map_or("–".to_owned(), |t| format!("{:.1}", t * 1e3))
+}
+
+fn ratio(a: Option<f64>, b: Option<f64>) -> String {
+    a.zip(b)
+        .map_or("–".to_owned(), |(a, b)| format!("{:.2}×", a / b))
+}
+
+/// One-shot subdivision beside OpenSubdiv, OpenMesh and the floors.
+pub fn one_shot(threads: usize) {
+    let all = format!("weft-{threads}t");
+    println!("\n## One-shot through the C ABI (median ms; ratio = other / Weft)\n");
+    println!(
+        "| case | Weft 1t | Weft {threads}t | OSD | OpenMesh | OSD/Weft 1t | OSD/Weft {threads}t \
+         | OM/Weft {threads}t | floor 4 KiB | floor huge | floor warm | Weft {threads}t/floor huge |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for name in CASE_NAMES {
+        for levels in LEVELS {
+            let label = format!("{name}-L{levels}");
+            let get = |what: &str| median(&label, what);
+            let (w1, wn, osd, om) = (get("weft-1t"), get(&all), get("osd"), get("om"));
+            if w1.is_none() && wn.is_none() && osd.is_none() && om.is_none() {
+                continue;
+            }
+            let huge = get("floor-huge");
+            println!(
+                "| {label} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                ms(w1),
+                ms(wn),
+                ms(osd),
+                ms(om),
+                ratio(osd, w1),
+                ratio(osd, wn),
+                ratio(om, wn),
+                ms(get("floor-4k")),
+                ms(huge),
+                ms(get("floor-warm")),
+                ratio(wn, huge),
+            );
+        }
+    }
+}
+
+/// Re-evaluation at level 3 beside OpenSubdiv's stencils.
+pub fn reevaluation(threads: usize) {
+    println!("\n## Re-evaluation at level 3 (median ms)\n");
+    println!(
+        "| case | refiner build {threads}t | one-shot {threads}t | evaluate 1t | evaluate {threads}t \
+         | warm floor | evaluate {threads}t/floor | OSD UpdateValues 1t | OSD OmpEvaluator {threads}t \
+         | OMP/evaluate {threads}t | stencil build (once) |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for name in REEVALUATED {
+        let label = format!("{name}-L3");
+        let get = |what: &str| median(&label, what);
+        let build = get(&format!("refiner-build-{threads}t"));
+        let evaluate = get(&format!("refiner-evaluate-{threads}t"));
+        if build.is_none() && evaluate.is_none() {
+            continue;
+        }
+        let floor = get("evaluate-floor-warm");
+        let omp = get(&format!("stencil-omp-{threads}t"));
+        println!(
+            "| {label} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            ms(build),
+            ms(get(&format!("weft-{threads}t"))),
+            ms(get("refiner-evaluate-1t")),
+            ms(evaluate),
+            ms(floor),
+            ratio(evaluate, floor),
+            ms(get("stencil-update")),
+            ms(omp),
+            ratio(omp, evaluate),
+            get("stencil-build").map_or("–".to_owned(), |t| format!("{t:.2} s")),
+        );
+    }
+}
+
+/// The first call in fresh processes beside the steady state.
+pub fn cold(cold: &[(String, f64, Vec<f64>)], threads: usize) {
+    println!("\n## First call in a fresh process ({threads} threads)\n");
+    println!("| case | cold median | cold samples | steady median | cold/steady |");
+    println!("|---|---:|---|---:|---:|");
+    for (label, median_cold, samples) in cold {
+        let steady = median(label, &format!("weft-{threads}t"));
+        let samples: Vec<String> = samples.iter().map(|s| format!("{:.0}", s * 1e3)).collect();
+        println!(
+            "| {label} | {} | {} | {} | {} |",
+            ms(Some(*median_cold)),
+            samples.join(", "),
+            ms(steady),
+            ratio(Some(*median_cold), steady)
+        );
+    }
+}
+
+/// One target: what it compares, the measured ratio, and whether it holds.
+fn target(what: &str, measured: Option<f64>, bound: f64, at_least: bool) {
+    let (value, met) = match measured {
+        Some(m) => (
+            format!("{m:.2}×"),
+            if (m >= bound) == at_least {
+                "yes"
+            } else {
+                "no"
+            },
+        ),
+        None => ("–".to_owned(), "not run"),
+    };
+    let sign = if at_least { "≥" } else { "≤" };
+    println!("| {what} | {sign} {bound}× | {value} | {met} |");
+}
+
+/// The hard targets of the speed work, read from this run.
+pub fn targets(threads: usize, cold: &[(String, f64, Vec<f64>)]) {
+    let all = format!("weft-{threads}t");
+    let get = |case: &str, what: &str| median(case, what);
+    let over = |a: Option<f64>, b: Option<f64>| a.zip(b).map(|(a, b)| a / b);
+    println!("\n## Targets (this run)\n");
+    println!("| target | bound | measured | met |");
+    println!("|---|---|---:|---|");
+    let (cc, lp) = ("cc-100k-L3", "loop-100k-L3");
+    target(
+        &format!("CC L3 100k: OSD / Weft {threads}t"),
+        over(get(cc, "osd"), get(cc, &all)),
+        8.0,
+        true,
+    );
+    target(
+        "CC L3 100k: OSD / Weft 1t",
+        over(get(cc, "osd"), get(cc, "weft-1t")),
+        4.0,
+        true,
+    );
+    target(
+        &format!("Loop L3 100k: OSD / Weft {threads}t"),
+        over(get(lp, "osd"), get(lp, &all)),
+        6.0,
+        true,
+    );
+    for case in [cc, lp] {
+        target(
+            &format!("{case}: Weft {threads}t / huge-page fresh floor (1t)"),
+            over(get(case, &all), get(case, "floor-huge")),
+            1.5,
+            false,
+        );
+        let evaluate = get(case, &format!("refiner-evaluate-{threads}t"));
+        target(
+            &format!("{case}: evaluate {threads}t / warm floor"),
+            over(evaluate, get(case, "evaluate-floor-warm")),
+            2.0,
+            false,
+        );
+        target(
+            &format!("{case}: OSD OmpEvaluator {threads}t / evaluate {threads}t"),
+            over(get(case, &format!("stencil-omp-{threads}t")), evaluate),
+            3.0,
+            true,
+        );
+        let cold_median = cold.iter().find(|c| c.0 == case).map(|c| c.1);
+        target(
+            &format!("{case}: cold first call / steady"),
+            over(cold_median, get(case, &all)),
+            1.5,
+            false,
+        );
+    }
+}
