@@ -2,7 +2,9 @@
 # Runs every test of Weft, start to end: formatting, lints, the Rust tests
 # (with the OpenSubdiv and OpenMesh comparisons and the header check), the C
 # tests (also under AddressSanitizer and UndefinedBehaviorSanitizer), the C#
-# wrapper's tests on Mono, and the Grasshopper compile check.
+# wrapper's tests on Mono, the Grasshopper compile check and replay, the
+# Python package's tests in a fresh virtual environment, the C and C++
+# install (pkg-config, CMake, weft.hpp) and a short run of every fuzz target.
 # On a fresh Debian machine, run as root, it first installs what is missing.
 set -uo pipefail
 cd "$(dirname "$0")"
@@ -23,7 +25,7 @@ suite "cargo fmt --check" cargo fmt --all --check
 suite "cargo clippy" cargo clippy --workspace --all-targets --quiet -- -D warnings
 suite "cargo test" cargo test --workspace
 suite "C tests" tests/c/run.sh
-for script in dotnet/test.sh grasshopper/check.sh fuzz/smoke.sh tests/install/run.sh; do
+for script in dotnet/test.sh grasshopper/check.sh python/test.sh tests/install/run.sh fuzz/smoke.sh; do
   [ -x "$script" ] && suite "$script" "$script"
 done
 
