@@ -151,7 +151,7 @@ namespace Weft.Grasshopper
                 {
                     result[i] = CreaseItem.FromLine(line.FromX, line.FromY, line.FromZ, line.ToX, line.ToY, line.ToZ);
                 }
-                else if (GH_Convert.ToDouble(items[i], GH_Conversion.Primary, out number) && number == Math.Floor(number)
+                else if (GH_Convert.ToDouble(items[i], out number, GH_Conversion.Primary) && number == Math.Floor(number)
                          && number >= int.MinValue && number <= int.MaxValue)
                 {
                     result[i] = CreaseItem.FromEdge((int)number);
