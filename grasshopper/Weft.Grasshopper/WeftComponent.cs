@@ -128,7 +128,7 @@ namespace Weft.Grasshopper
             }
             if (polylines.Count > 0)
             {
-                parts.Add(MeshArrays.FromPolylines(polylines, DocumentTolerance()));
+                parts.Add(MeshArrays.FromPolylines(polylines, Tolerance()));
             }
             if (parts.Count == 0)
             {
@@ -141,6 +141,21 @@ namespace Weft.Grasshopper
                 colours = partColours.ToArray();
             }
             return all;
+        }
+
+        /// <summary>
+        /// The active Rhino document's absolute tolerance; without a document (Rhino.Compute,
+        /// headless Rhino) <see cref="Tolerances.Default"/>, with a remark saying so.
+        /// </summary>
+        protected double Tolerance()
+        {
+            bool fellBack;
+            double tolerance = Tolerances.Choose(Rhino.RhinoDoc.ActiveDoc == null ? double.NaN : DocumentTolerance(), out fellBack);
+            if (fellBack)
+            {
+                Remark("No Rhino document gives a tolerance: " + Tolerances.Default + " is used where one is needed and T is empty.");
+            }
+            return tolerance;
         }
 
         /// <summary>The value of an item input, or <paramref name="fallback"/> when it is empty.</summary>

@@ -39,7 +39,10 @@ WANTED = {
                                    "MeshVertexColorList"],
     "Grasshopper.Kernel": ["GH_Component", "IGH_DataAccess", "IGH_Param", "GH_RuntimeMessageLevel",
                            "GH_ParamAccess", "GH_Exposure", "GH_Convert", "GH_Conversion",
-                           "GH_AssemblyInfo", "GH_AssemblyPriority", "GH_LoadingInstruction"],
+                           "GH_AssemblyInfo", "GH_AssemblyPriority", "GH_LoadingInstruction",
+                           "GH_LoadingDemand", "GH_Document", "GH_DocumentContext", "GH_ComponentServer"],
+    "Grasshopper": ["Instances"],
+    "Rhino": ["RhinoDoc"],
 }
 STRUCTS = {"MeshFace", "Point3d", "Point3f", "Vector3d", "Vector3f", "Line", "Plane"}
 INTERFACES = {"IGH_DataAccess", "IGH_Param"}
@@ -51,7 +54,7 @@ BUILTIN = {"int": "int", "bool": "bool", "str": "string", "object": "object", "A
 SKIP_NAMES = {"Equals", "GetHashCode", "GetType", "ToString", "Item", "MemberwiseClone", "Finalize"}
 # Members the overlay declares (protected, virtual or abstract in the real API).
 OVERLAY_MEMBERS = {
-    "GH_Component": {"__init__", "ComponentGuid", "Exposure", "Icon"},
+    "GH_Component": {"__init__", "ComponentGuid", "Exposure", "Icon", "RemovedFromDocument", "DocumentContextChanged"},
     "GH_AssemblyInfo": {"__init__", "Name", "Icon", "Description", "Id", "AuthorName", "AuthorContact", "Version"},
     "GH_AssemblyPriority": {"__init__", "PriorityLoad"},
 }

@@ -21,6 +21,10 @@ namespace Weft.Tests
             t.Run("converted arrays make a valid Weft mesh", IntoWeft);
             t.Run("refiner cache: a moved cage re-evaluates, new faces re-plan", RefinerCacheReuse);
             t.Run("refiner cache: a failed plan leaves no refiner and raises the library's error", RefinerCacheError);
+            t.Run("refiner pool: one refiner per branch, so alternating topologies plan once each", RefinerPoolPerBranch);
+            t.Run("refiner pool: branches a solution no longer has are freed, Dispose frees all", RefinerPoolFrees);
+            t.Run("face budget: a level too many is refused, naming the level that fits", FaceBudgetRefuses);
+            t.Run("tolerance: no document or a broken one falls back to the stated default", ToleranceFallback);
             t.Run("face polylines are closed rings of the face corners", FacePolylines);
             t.Run("split polylines: closed ones repeat their first point, empty ones skipped", SplitPolylines);
             t.Run("planarity flags and open rings", PlanarityAndRings);
@@ -183,6 +187,103 @@ namespace Weft.Tests
                 t.Equal(3, cache.PlanCount, "planned three times");
                 t.Equal(24, third.FaceSizes.Length, "one level");
             }
+        }
+
+        private static void RefinerPoolPerBranch()
+        {
+            var flipped = (uint[])CubeIndices.Clone();
+            Array.Reverse(flipped, 0, 4);
+            // One cache for a two-branch tree (the old way) re-plans on every branch.
+            using (var single = new RefinerCache())
+            {
+                for (int solution = 0; solution < 2; solution++)
+                {
+                    single.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    single.Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                }
+                t.Equal(4, single.PlanCount, "one shared cache plans every branch of every solution");
+            }
+            using (var pool = new RefinerPool())
+            {
+                for (int solution = 0; solution < 3; solution++)
+                {
+                    pool.BeginSolution();
+                    pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.For(1).Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.EndSolution();
+                }
+                t.Equal(1, pool.For(0).PlanCount, "branch 0 planned once in three solutions");
+                t.Equal(1, pool.For(1).PlanCount, "branch 1 planned once in three solutions");
+                t.True(pool.For(1).LastReused, "branch 1 reused its refiner");
+            }
+        }
+
+        private static void RefinerPoolFrees()
+        {
+            var pool = new RefinerPool();
+            pool.BeginSolution();
+            for (int branch = 0; branch < 3; branch++) pool.For(branch).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            pool.EndSolution();
+            t.Equal(3, pool.Count, "three branches, three caches");
+            pool.BeginSolution();
+            pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            pool.EndSolution();
+            t.Equal(1, pool.Count, "a one-branch solution frees the other two");
+            t.True(pool.For(0).LastReused, "the remaining branch keeps its refiner");
+            pool.Dispose();
+            t.Equal(0, pool.Count, "Dispose frees every refiner");
+            try
+            {
+                pool.For(-1);
+                t.Fail("a negative branch was accepted");
+            }
+            catch (ArgumentOutOfRangeException e)
+            {
+                t.True(e.Message.Contains("branch"), "the error names the branch: " + e.Message);
+            }
+        }
+
+        private static void FaceBudgetRefuses()
+        {
+            using (var cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+            {
+                // 6 quads: 24 faces at L = 1, 6 * 4^L after that.
+                t.Equal(96L, FaceBudget.FacesAt(cube, Scheme.CatmullClark, 2), "faces at L = 2");
+                FaceBudget.Check(cube, Scheme.CatmullClark, 5, 6144);
+                try
+                {
+                    FaceBudget.Check(cube, Scheme.CatmullClark, 9, 6144);
+                    t.Fail("L = 9 (1,572,864 faces) passed a budget of 6,144");
+                }
+                catch (WeftException e)
+                {
+                    t.Equal(WeftStatus.ResultTooLarge, e.Status, "status");
+                    t.True(e.Message.Contains("L = 9") && e.Message.Contains("L = 5 is the highest level that fits"), e.Message);
+                }
+                // 20 levels overflow every count: refused, not crashed.
+                try
+                {
+                    FaceBudget.Check(cube, Scheme.CatmullClark, 20, FaceBudget.MaxFaces);
+                    t.Fail("L = 20 passed the default budget");
+                }
+                catch (WeftException e)
+                {
+                    t.True(e.Message.Contains("L = 9 is the highest level that fits"), e.Message);
+                }
+            }
+        }
+
+        private static void ToleranceFallback()
+        {
+            bool fellBack;
+            t.Equal(0.01, Tolerances.Choose(0.01, out fellBack), "a document tolerance is used");
+            t.False(fellBack, "no fallback with a document");
+            foreach (double broken in new[] { double.NaN, 0.0, -1.0, double.PositiveInfinity })
+            {
+                t.Equal(Tolerances.Default, Tolerances.Choose(broken, out fellBack), "fallback for " + broken);
+                t.True(fellBack, "fell back for " + broken);
+            }
+            t.True(Tolerances.Default > 0, "the default is a positive tolerance");
         }
 
         private static void RefinerCacheError()

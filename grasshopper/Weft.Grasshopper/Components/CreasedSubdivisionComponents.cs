@@ -13,17 +13,11 @@ namespace Weft.Grasshopper
     /// sharpness, P corner points, PS their sharpness, R the creasing rule,
     /// T the matching tolerance, X the limit switch.
     /// </summary>
-    public abstract class CreasedSubdivisionComponent : WeftComponent
+    public abstract class CreasedSubdivisionComponent : SubdivisionComponent
     {
-        private readonly Scheme scheme;
-
-        // One plan per cage topology and crease set: moving the cage only re-evaluates positions.
-        private readonly RefinerCache cache = new RefinerCache();
-
         protected CreasedSubdivisionComponent(Scheme scheme, string name, string nickname, string description, string iconName)
-            : base(name, nickname, description, "Subdivide", iconName)
+            : base(scheme, name, nickname, description, iconName)
         {
-            this.scheme = scheme;
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -63,7 +57,7 @@ namespace Weft.Grasshopper
             Point3d[] cornerPoints = GetList<Point3d>(DA, 5);
             double[] cornerSharpness = GetList<double>(DA, 6);
             var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
-            double tolerance = Get(DA, 8, DocumentTolerance());
+            double tolerance = Get(DA, 8, Tolerance());
             bool limit = Get(DA, 9, false);
             if (double.IsNaN(tolerance) || tolerance < 0)
             {
@@ -101,18 +95,9 @@ namespace Weft.Grasshopper
                 for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
             }
 
-            if (scheme == Scheme.Loop)
-            {
-                int others = LoopComponent.CountNonTriangles(cage.FaceSizes);
-                if (others > 0)
-                {
-                    // Triangulating keeps the vertices, so creases and corners still name the same ones.
-                    Remark(others + " quad or n-gon face(s) were triangulated before subdividing.");
-                    cage = MeshArrays.Triangulate(cage);
-                }
-            }
+            cage = PrepareCage(cage, levels);
 
-            RefinedArrays refined = cache.Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, scheme, levels, options);
+            RefinedArrays refined = Refiner(DA).Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, Scheme, levels, options);
             double[] positions = refined.Positions;
             LimitSurface surface = null;
             int[] refinedColours = null;
@@ -122,12 +107,12 @@ namespace Weft.Grasshopper
                 {
                     if (limit)
                     {
-                        surface = Subdivision.SubdivideLimit(mesh, scheme, levels, options);
+                        surface = Subdivision.SubdivideLimit(mesh, Scheme, levels, options);
                         positions = surface.Positions;
                     }
                     if (colours != null)
                     {
-                        double[] values = Subdivision.SubdivideVertexData(mesh, scheme, levels, options, CreaseInputs.ColoursToValues(colours), 4);
+                        double[] values = Subdivision.SubdivideVertexData(mesh, Scheme, levels, options, CreaseInputs.ColoursToValues(colours), 4);
                         refinedColours = CreaseInputs.ValuesToColours(values);
                     }
                 }

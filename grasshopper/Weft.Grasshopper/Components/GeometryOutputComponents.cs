@@ -226,7 +226,7 @@ namespace Weft.Grasshopper
         {
             Line[] lines = GetList<Line>(DA, 0);
             if (lines.Length == 0) return;
-            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), Get(DA, 1, DocumentTolerance()), Get(DA, 2, 4)))
+            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), Get(DA, 1, Tolerance()), Get(DA, 2, 4)))
             {
                 if (mesh.FaceCount == 0) Warn("The lines enclose no face.");
                 SetMesh(DA, 0, mesh);

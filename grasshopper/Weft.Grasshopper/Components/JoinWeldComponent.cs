@@ -35,7 +35,7 @@ namespace Weft.Grasshopper
         protected override void Solve(IGH_DataAccess DA)
         {
             bool weld = true;
-            double tolerance = DocumentTolerance();
+            double tolerance = Tolerance();
             DA.GetData(1, ref weld);
             DA.GetData(2, ref tolerance);
             using (WeftMesh joined = GetMesh(DA, 0))

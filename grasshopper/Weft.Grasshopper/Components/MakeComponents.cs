@@ -98,7 +98,7 @@ namespace Weft.Grasshopper
                 List<double[]> rings = FlatGeometry.SplitPolylines(cells.GetCorners(), FlatGeometry.ToInts(sizes), Closed(sizes.Length), true);
                 DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(rings));
                 using (WeftMesh separate = cells.ToMesh())
-                using (WeftMesh welded = Mending.Weld(separate, DocumentTolerance()))
+                using (WeftMesh welded = Mending.Weld(separate, Tolerance()))
                 {
                     SetMesh(DA, 1, welded);
                 }

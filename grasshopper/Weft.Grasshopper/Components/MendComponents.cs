@@ -36,7 +36,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, DocumentTolerance());
+            double tolerance = Get(DA, 1, Tolerance());
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
@@ -92,7 +92,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, DocumentTolerance());
+            double tolerance = Get(DA, 1, Tolerance());
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;

@@ -54,7 +54,7 @@ namespace Weft.Grasshopper
 
         protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
-            int others = LoopComponent.CountNonTriangles(mesh.GetFaceSizes());
+            int others = SubdivisionComponent.CountNonTriangles(mesh.GetFaceSizes());
             if (others == 0) return Toolbar.SplitTriangles(mesh, Get(DA, 1, 1));
             Remark(others + " quad or n-gon face(s) were triangulated first.");
             using (WeftMesh triangles = Subdivision.Triangulate(mesh))

@@ -32,7 +32,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = DocumentTolerance();
+            double tolerance = Tolerance();
             DA.GetData(1, ref tolerance);
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
