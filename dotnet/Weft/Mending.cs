@@ -10,7 +10,7 @@ namespace Weft
     public static class Mending
     {
         /// <summary>The weld tolerance that suits most models (WEFT_DEFAULT_WELD_TOLERANCE).</summary>
-        public const double DefaultWeldTolerance = 0.001;
+        public const double DefaultWeldTolerance = NativeConstants.DefaultWeldTolerance;
 
         static Mending()
         {
