@@ -99,6 +99,21 @@ fi
 duplicates=$(grep -rhoE 'new Guid\("[0-9a-f-]+"\)' "$here/Weft.Grasshopper" | sort | uniq -d)
 if [ -z "$duplicates" ]; then pass "component GUIDs are distinct"; else fail "duplicate GUIDs: $duplicates"; fi
 
+# Every component's name and nickname are the README's, row for row (users compare them with Weaverbird's there).
+unlisted=$(python3 - "$here" <<'PY'
+import re, sys, pathlib
+here = pathlib.Path(sys.argv[1])
+source = "\n".join(p.read_text(encoding="utf-8") for p in (here / "Weft.Grasshopper" / "Components").glob("*.cs"))
+pairs = re.findall(r':\s*base\((?:Scheme\.\w+,\s*)?"([^"]+)",\s*"([^"]+)"', source)
+rows = set(re.findall(r"^\| [A-Z][a-z]+ \| ([^|]+?) \| ([^|]+?) \|", (here / "README.md").read_text(encoding="utf-8"), re.M))
+print(len(pairs) if pairs else "none found", *[f"{n} ({k})" for n, k in pairs if (n, k) not in rows], sep="; ")
+PY
+)
+case "$unlisted" in
+  [0-9]*) if [ "${unlisted#*;}" = "$unlisted" ]; then pass "the README lists all $unlisted components by name and nickname"; else fail "components missing from the README table: ${unlisted#*; }"; fi ;;
+  *) fail "no component names found: $unlisted" ;;
+esac
+
 # Every icon a component names is embedded, 24 x 24.
 missing=""
 for name in $(grep -rhoE '"[a-z_]+"(, "[^"]*", "[^"]*")?\)$' "$here/Weft.Grasshopper/Components" | grep -oE '^"[a-z_]+"' | tr -d '"' | sort -u); do
