@@ -95,9 +95,15 @@ else
   fail "every RhinoCommon and Grasshopper member the components use is in Rhino 7 (stubs $rhino7)"
 fi
 
-# Component GUIDs are fixed forever; two components must never share one.
-duplicates=$(grep -rhoE 'new Guid\("[0-9a-f-]+"\)' "$here/Weft.Grasshopper" | sort | uniq -d)
-if [ -z "$duplicates" ]; then pass "component GUIDs are distinct"; else fail "duplicate GUIDs: $duplicates"; fi
+# Component GUIDs are fixed forever; every component class has one and two never share one.
+duplicates=$(grep -rhoE '\[Guid\("[0-9a-f-]+"\)\]' "$here/Weft.Grasshopper" | sort | uniq -d)
+classes=$(grep -rhcE '^    public sealed class \w+ : \w+Component$' "$here/Weft.Grasshopper" | awk '{ s += $1 } END { print s + 0 }')
+guids=$(grep -rhB1 -E '^    public sealed class \w+ : \w+Component$' "$here/Weft.Grasshopper" | grep -cE '^    \[Guid\("[0-9a-f-]{36}"\)\]$')
+if [ -z "$duplicates" ] && [ "$classes" -gt 0 ] && [ "$classes" -eq "$guids" ]; then
+  pass "each of the $classes components has its own [Guid]"
+else
+  fail "component GUIDs: $guids of $classes classes have one${duplicates:+; shared: $duplicates}"
+fi
 
 # Every component's name and nickname are the README's, row for row (users compare them with Weaverbird's there).
 unlisted=$(python3 - "$here" <<'PY'

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Drawing;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
 
@@ -27,6 +28,17 @@ namespace Weft.Grasshopper
         protected override Bitmap Icon
         {
             get { return Icons.Load(iconName); }
+        }
+
+        /// <summary>The component class's <c>[Guid]</c>: fixed forever and never shared (check.sh checks both).</summary>
+        public sealed override Guid ComponentGuid
+        {
+            get
+            {
+                var id = (GuidAttribute)Attribute.GetCustomAttribute(GetType(), typeof(GuidAttribute));
+                if (id == null) throw new InvalidOperationException(GetType().Name + " has no [Guid]; every component needs a fixed one");
+                return new Guid(id.Value);
+            }
         }
 
         /// <summary>Runs <see cref="Solve"/>, turning every failure into an error message on the component.</summary>
@@ -289,5 +301,56 @@ namespace Weft.Grasshopper
 
         /// <summary>The operation: reads its options from DA and returns the new mesh.</summary>
         protected abstract WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA);
+    }
+}
+
+namespace Weft.Grasshopper
+{
+    /// <summary>A mesh operation whose only option is the levels input L (default 1).</summary>
+    public abstract class LevelsOperationComponent : MeshOperationComponent
+    {
+        private readonly Func<WeftMesh, int, WeftMesh> operation;
+
+        protected LevelsOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                           Func<WeftMesh, int, WeftMesh> operation)
+            : base(name, nickname, description, subcategory, iconName, "The mesh to split.", "The split mesh.")
+        {
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            AddLevelsInput(pManager);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, Get(DA, 1, 1));
+        }
+    }
+
+    /// <summary>A mesh operation whose only option is the fraction input F (default 0.25).</summary>
+    public abstract class FractionOperationComponent : MeshOperationComponent
+    {
+        private readonly string fractionDescription;
+        private readonly Func<WeftMesh, double, WeftMesh> operation;
+
+        protected FractionOperationComponent(string name, string nickname, string description, string iconName, string fractionDescription,
+                                             Func<WeftMesh, double, WeftMesh> operation)
+            : base(name, nickname, description, "Transform", iconName, "The mesh to bevel.", "The bevelled mesh.")
+        {
+            this.fractionDescription = fractionDescription;
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            pManager.AddNumberParameter("Fraction", "F", fractionDescription, GH_ParamAccess.item, 0.25);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, Get(DA, 1, 0.25));
+        }
     }
 }

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -152,6 +153,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Catmull-Clark subdivision with creases, corners, carried vertex colours and the limit surface.</summary>
+    [Guid("9c520a22-89ba-426d-b4f9-492aafbe20e4")]
     public sealed class CreasedCatmullClarkComponent : CreasedSubdivisionComponent
     {
         public CreasedCatmullClarkComponent()
@@ -160,14 +162,10 @@ namespace Weft.Grasshopper
                    "creased_catmull_clark")
         {
         }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("9c520a22-89ba-426d-b4f9-492aafbe20e4"); }
-        }
     }
 
     /// <summary>Loop subdivision with creases, corners, carried vertex colours and the limit surface; quads and n-gons are triangulated first.</summary>
+    [Guid("51ceb365-5b0c-4e44-9fea-d6d16c374538")]
     public sealed class CreasedLoopComponent : CreasedSubdivisionComponent
     {
         public CreasedLoopComponent()
@@ -176,14 +174,10 @@ namespace Weft.Grasshopper
                    "creased_loop")
         {
         }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("51ceb365-5b0c-4e44-9fea-d6d16c374538"); }
-        }
     }
 
     /// <summary>Welds a mesh's unwelded seams and finds its sharp folds, as creases for the creased subdivisions (as Rhino's ToSubD does).</summary>
+    [Guid("e3eefc28-e467-4442-912b-a7c25348b2c1")]
     public sealed class CreaseEdgesFromMeshComponent : WeftComponent
     {
         public CreaseEdgesFromMeshComponent()
@@ -191,11 +185,6 @@ namespace Weft.Grasshopper
                    "Prepares a mesh for creased subdivision as Rhino's ToSubD does: welds vertices at exactly the same position and gives as creases every edge that was unwelded (naked) before and every fold whose faces' normals differ by more than A degrees. Connect M and C to a creased subdivision.",
                    "Subdivide", "crease_edges")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("e3eefc28-e467-4442-912b-a7c25348b2c1"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

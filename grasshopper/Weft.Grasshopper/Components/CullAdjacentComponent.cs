@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Removes faces that have a twin over the same vertices: the inner walls of joined boxes.</summary>
+    [Guid("04050a87-1f12-4935-9270-6d7fecab09c4")]
     public sealed class CullAdjacentComponent : WeftComponent
     {
         public CullAdjacentComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "Removes every face that shares all its vertices with another face (both copies go). Weld first.",
                    "Mend", "cull")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("04050a87-1f12-4935-9270-6d7fecab09c4"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

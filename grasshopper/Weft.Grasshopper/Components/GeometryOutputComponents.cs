@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -6,6 +7,7 @@ using Rhino.Geometry;
 namespace Weft.Grasshopper
 {
     /// <summary>Blurs per-vertex values over the mesh (Weaverbird's wbBlur blurs vertex colours; here any values, e.g. colour channels).</summary>
+    [Guid("440c78b1-633d-4b19-a675-8e41bd51c69d")]
     public sealed class BlurComponent : WeftComponent
     {
         public BlurComponent()
@@ -13,11 +15,6 @@ namespace Weft.Grasshopper
                    "Blurs per-vertex values over the mesh: each iteration moves every value Blend of the way towards its neighbours' average. C values per vertex, vertex after vertex (3 for R, G, B). The mesh is unchanged.",
                    "Smooth", "blur")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("440c78b1-633d-4b19-a675-8e41bd51c69d"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -47,17 +44,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>The vertices of a mesh as points.</summary>
+    [Guid("a119335b-605c-4507-8740-0fbda0c60284")]
     public sealed class VerticesComponent : WeftComponent
     {
         public VerticesComponent()
             : base("Mesh Vertices", "wbVertices", "The vertices of the mesh as points, in vertex order (n-gon meshes and polylines as Weft reads them).",
                    "Extract", "vertices")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("a119335b-605c-4507-8740-0fbda0c60284"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -79,17 +72,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Each face as a closed polyline.</summary>
+    [Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d")]
     public sealed class FacePolylinesComponent : WeftComponent
     {
         public FacePolylinesComponent()
             : base("Face Polylines", "wbFacePolylines", "Each face (triangle, quad or n-gon) as a closed polyline, in face order.",
                    "Extract", "face_polylines")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -111,17 +100,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>The unique edges as lines and vertex index pairs.</summary>
+    [Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b")]
     public sealed class MeshEdgesComponent : WeftComponent
     {
         public MeshEdgesComponent()
             : base("Mesh Edges", "wbEdges", "The unique edges of the mesh as lines, sorted by their lower then higher vertex index, with those indices.",
                    "Extract", "edges")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -157,6 +142,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>The naked edges chained into polylines.</summary>
+    [Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0")]
     public sealed class NakedBoundaryComponent : WeftComponent
     {
         public NakedBoundaryComponent()
@@ -164,11 +150,6 @@ namespace Weft.Grasshopper
                    "The naked edges chained into polylines: each border of a manifold mesh is one closed polyline; polylines stop at vertices with one or three or more naked edges.",
                    "Extract", "naked_boundary")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -195,6 +176,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Faces from lines.</summary>
+    [Guid("cc07b8b1-5e40-4bd9-bf7e-de3149a6332b")]
     public sealed class MeshFromLinesComponent : WeftComponent
     {
         public MeshFromLinesComponent()
@@ -202,11 +184,6 @@ namespace Weft.Grasshopper
                    "Builds the faces a set of lines encloses: endpoints within the tolerance are welded, dangling lines ignored, and the smallest cycles, seen in their best-fit plane, become faces of at most V corners.",
                    "Extract", "mesh_from_lines")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("cc07b8b1-5e40-4bd9-bf7e-de3149a6332b"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

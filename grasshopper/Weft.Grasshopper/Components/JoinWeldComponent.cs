@@ -1,10 +1,12 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Joins meshes and optionally welds them (Weaverbird's wbJoin).</summary>
+    [Guid("925c212d-9b67-4d93-b7dd-e07cda6ad9c5")]
     public sealed class JoinWeldComponent : WeftComponent
     {
         public JoinWeldComponent()
@@ -12,11 +14,6 @@ namespace Weft.Grasshopper
                    "Joins meshes into one and merges the vertices closer than the tolerance.",
                    "Mend", "join")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("925c212d-9b67-4d93-b7dd-e07cda6ad9c5"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

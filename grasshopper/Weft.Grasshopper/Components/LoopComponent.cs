@@ -1,8 +1,10 @@
 using System;
+using System.Runtime.InteropServices;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Loop subdivision (Weaverbird's wbLoop); quads and n-gons are triangulated first.</summary>
+    [Guid("57a9011b-8439-44ee-bf53-c3ea93793bc6")]
     public sealed class LoopComponent : PlainSubdivisionComponent
     {
         public LoopComponent()
@@ -10,11 +12,6 @@ namespace Weft.Grasshopper
                    "Subdivides a triangle mesh with the Loop scheme; quads and n-gons are triangulated first.",
                    "loop")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("57a9011b-8439-44ee-bf53-c3ea93793bc6"); }
         }
     }
 }

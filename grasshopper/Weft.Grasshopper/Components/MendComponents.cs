@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -6,6 +7,7 @@ using Rhino.Geometry;
 namespace Weft.Grasshopper
 {
     /// <summary>Finds and repairs T-nodes.</summary>
+    [Guid("670ccfc8-ec80-4d89-a198-5e0a31845f0f")]
     public sealed class TNodesComponent : WeftComponent
     {
         public TNodesComponent()
@@ -13,11 +15,6 @@ namespace Weft.Grasshopper
                    "Finds the vertices that lie inside another face's naked edge (T-nodes) and repairs them by inserting each into that edge, so both sides share the seam.",
                    "Mend", "t_nodes")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("670ccfc8-ec80-4d89-a198-5e0a31845f0f"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -62,6 +59,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Per-face planarity.</summary>
+    [Guid("d5dd8f4e-d687-4cf8-84eb-52e3beb7f54f")]
     public sealed class PlanarityComponent : WeftComponent
     {
         public PlanarityComponent()
@@ -69,11 +67,6 @@ namespace Weft.Grasshopper
                    "Per face, the largest distance of a corner from the face's best-fit plane (0 for triangles), and whether it is within the tolerance: the planar-quad check for glass and panels.",
                    "Mend", "planarity")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("d5dd8f4e-d687-4cf8-84eb-52e3beb7f54f"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

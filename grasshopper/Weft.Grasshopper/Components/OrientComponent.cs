@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Unifies the winding of each connected piece, or flips every face.</summary>
+    [Guid("b8b331ec-ddfe-459f-be4b-e146759fce39")]
     public sealed class OrientComponent : WeftComponent
     {
         public OrientComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "Gives each connected piece one winding (flipping the fewest faces), or flips every face.",
                    "Mend", "orient")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("b8b331ec-ddfe-459f-be4b-e146759fce39"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Splits quads along the shorter diagonal and n-gons by ear clipping.</summary>
+    [Guid("09a3b686-debf-4bac-a987-93bbb3c72184")]
     public sealed class TriangulateComponent : WeftComponent
     {
         public TriangulateComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "Splits every quad along its shorter diagonal and every n-gon into triangles.",
                    "Mend", "triangulate")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("09a3b686-debf-4bac-a987-93bbb3c72184"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Merges vertices closer than a tolerance.</summary>
+    [Guid("0eff4233-4741-4c91-8cfc-8b88979bddb7")]
     public sealed class WeldComponent : WeftComponent
     {
         public WeldComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "Merges vertices closer than the tolerance; faces that collapse below three vertices are removed.",
                    "Mend", "weld")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("0eff4233-4741-4c91-8cfc-8b88979bddb7"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
