@@ -170,6 +170,28 @@ namespace Weft.Grasshopper
             return tolerance;
         }
 
+        /// <summary>Registers an optional tolerance input T; <paramref name="what"/> says what it measures.</summary>
+        protected static void AddToleranceInput(GH_InputParamManager pManager, string what)
+        {
+            int index = pManager.AddNumberParameter("Tolerance", "T", what + "; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            pManager[index].Optional = true;
+        }
+
+        /// <summary>
+        /// The tolerance input at <paramref name="index"/>, or <see cref="Tolerance"/> when it is
+        /// empty; a negative or NaN value is refused, naming T.
+        /// </summary>
+        protected double GetTolerance(IGH_DataAccess DA, int index)
+        {
+            double tolerance = 0;
+            if (!DA.GetData(index, ref tolerance)) return Tolerance();
+            if (double.IsNaN(tolerance) || tolerance < 0)
+            {
+                throw new WeftException(WeftStatus.InvalidArgument, "T is " + tolerance + "; the tolerance must be 0 or more");
+            }
+            return tolerance;
+        }
+
         /// <summary>The value of an item input, or <paramref name="fallback"/> when it is empty.</summary>
         protected static T Get<T>(IGH_DataAccess DA, int index, T fallback)
         {

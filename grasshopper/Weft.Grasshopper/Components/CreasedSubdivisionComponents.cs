@@ -37,7 +37,7 @@ namespace Weft.Grasshopper
                 "One sharpness for all corners or one per corner, as for creases; 10 or more (the default) pins the vertex where it is.",
                 GH_ParamAccess.list);
             pManager.AddIntegerParameter("Rule", "R", "How semi-sharp creases soften: 0 uniform, 1 Chaikin (averaged along the crease).", GH_ParamAccess.item, 0);
-            pManager.AddNumberParameter("Tolerance", "T", "How far a crease line's ends or a corner point may be from a vertex; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            AddToleranceInput(pManager, "How far a crease line's ends or a corner point may be from a vertex");
             pManager.AddBooleanParameter("Limit", "X", "Project the vertices onto the limit surface and use its normals (smooth shading, offsets).", GH_ParamAccess.item, false);
             for (int i = 3; i <= 8; i++) pManager[i].Optional = true;
         }
@@ -58,12 +58,8 @@ namespace Weft.Grasshopper
             Point3d[] cornerPoints = GetList<Point3d>(DA, 5);
             double[] cornerSharpness = GetList<double>(DA, 6);
             var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
-            double tolerance = Get(DA, 8, Tolerance());
+            double tolerance = GetTolerance(DA, 8);
             bool limit = Get(DA, 9, false);
-            if (double.IsNaN(tolerance) || tolerance < 0)
-            {
-                throw new WeftException(WeftStatus.InvalidArgument, "T is " + tolerance + "; the tolerance must be 0 or more");
-            }
 
             int[] colours;
             PolygonArrays cage = GetPolygons(DA, 0, out colours);

@@ -189,8 +189,7 @@ namespace Weft.Grasshopper
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             pManager.AddLineParameter("Lines", "L", "The lines.", GH_ParamAccess.list);
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Welding distance");
             pManager.AddIntegerParameter("Max Valence", "V", "The largest face size kept, at least 3.", GH_ParamAccess.item, 4);
         }
 
@@ -203,7 +202,7 @@ namespace Weft.Grasshopper
         {
             Line[] lines = GetList<Line>(DA, 0);
             if (lines.Length == 0) return;
-            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), Get(DA, 1, Tolerance()), Get(DA, 2, 4)))
+            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), GetTolerance(DA, 1), Get(DA, 2, 4)))
             {
                 if (mesh.FaceCount == 0) Warn("The lines enclose no face.");
                 SetMesh(DA, 0, mesh);

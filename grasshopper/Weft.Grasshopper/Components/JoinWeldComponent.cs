@@ -20,8 +20,7 @@ namespace Weft.Grasshopper
         {
             AddMeshInput(pManager, "M+", "The meshes to join.");
             pManager.AddBooleanParameter("Weld", "W", "Merge vertices closer than the tolerance.", GH_ParamAccess.item, true);
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[2].Optional = true;
+            AddToleranceInput(pManager, "Welding distance");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -31,10 +30,8 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            bool weld = true;
-            double tolerance = Tolerance();
-            DA.GetData(1, ref weld);
-            DA.GetData(2, ref tolerance);
+            bool weld = Get(DA, 1, true);
+            double tolerance = weld ? GetTolerance(DA, 2) : 0;
             using (WeftMesh joined = GetMesh(DA, 0))
             {
                 if (joined == null) return;

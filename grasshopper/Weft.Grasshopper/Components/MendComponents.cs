@@ -20,8 +20,7 @@ namespace Weft.Grasshopper
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             AddMeshInput(pManager, "M", "The mesh to check.");
-            pManager.AddNumberParameter("Tolerance", "T", "Distance from the edge; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Distance from the edge");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -33,7 +32,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, Tolerance());
+            double tolerance = GetTolerance(DA, 1);
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
@@ -72,8 +71,7 @@ namespace Weft.Grasshopper
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             AddMeshInput(pManager, "M", "The mesh to check.");
-            pManager.AddNumberParameter("Tolerance", "T", "Largest deviation counted as planar; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Largest deviation counted as planar");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -85,7 +83,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, Tolerance());
+            double tolerance = GetTolerance(DA, 1);
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;

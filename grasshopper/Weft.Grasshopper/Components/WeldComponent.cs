@@ -18,8 +18,7 @@ namespace Weft.Grasshopper
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             AddMeshInput(pManager, "M", "The mesh to weld.");
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Welding distance");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -29,8 +28,7 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            double tolerance = Tolerance();
-            DA.GetData(1, ref tolerance);
+            double tolerance = GetTolerance(DA, 1);
             using (WeftMesh mesh = GetMesh(DA, 0))
             {
                 if (mesh == null) return;
