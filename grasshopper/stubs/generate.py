@@ -58,6 +58,8 @@ OVERLAY_MEMBERS = {
     "GH_AssemblyInfo": {"__init__", "Name", "Icon", "Description", "Id", "AuthorName", "AuthorContact", "Version"},
     "GH_AssemblyPriority": {"__init__", "PriorityLoad"},
 }
+# Overlay members that are protected, so McNeel's stubs cannot list them.
+PROTECTED_OVERLAY = {"__init__", "Icon"}
 # Every out/ref member the plug-in uses, each declaration copied from the
 # API documentation page named beside it (Grasshopper:
 # developer.rhino3d.com/api/grasshopper/html/, RhinoCommon:
@@ -348,6 +350,11 @@ def main():
             for name in names:
                 if name not in RHINO7:
                     sys.exit(f"generate.py: {ns}.{name} is not in the Rhino 7 stubs under {args[3]}")
+        # The overlay's public members are in the Rhino 7 stubs too (the protected ones are not listed there).
+        for owner, members in OVERLAY_MEMBERS.items():
+            for member in sorted(members - PROTECTED_OVERLAY):
+                if not in_rhino7(owner, member):
+                    sys.exit(f"generate.py: the overlay declares {owner}.{member}, which Rhino 7 lacks")
     source = "rhino-stubs-typed and grasshopper-stubs-typed 8.20.25157"
     if RHINO7 is not None:
         source += ",\n// keeping only the members rhino-stubs / grasshopper-stubs 7.x list"
