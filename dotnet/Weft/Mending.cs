@@ -92,23 +92,13 @@ namespace Weft
         /// <summary>Removes every face that has a twin over the same vertices (all copies go); <paramref name="removed"/> counts them.</summary>
         public static WeftMesh CullAdjacent(WeftMesh mesh, out int removed)
         {
-            WeftMeshHandle result;
-            UIntPtr count;
-            uint status = NativeMethods.weft_cull_adjacent(Arguments.Mesh(mesh, "mesh"), out result, out count);
-            WeftMesh culled = WeftMesh.FromCall(status, result);
-            removed = Arguments.ToInt(count);
-            return culled;
+            return WeftMesh.FromCountingCall(NativeMethods.weft_cull_adjacent, mesh, out removed);
         }
 
         /// <summary>Gives each piece one winding, flipping the fewest faces, closed pieces facing out; <paramref name="flipped"/> counts the reversed faces.</summary>
         public static WeftMesh UnifyOrientation(WeftMesh mesh, out int flipped)
         {
-            WeftMeshHandle result;
-            UIntPtr count;
-            uint status = NativeMethods.weft_unify_orientation(Arguments.Mesh(mesh, "mesh"), out result, out count);
-            WeftMesh unified = WeftMesh.FromCall(status, result);
-            flipped = Arguments.ToInt(count);
-            return unified;
+            return WeftMesh.FromCountingCall(NativeMethods.weft_unify_orientation, mesh, out flipped);
         }
 
         /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}).</summary>
