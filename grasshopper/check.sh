@@ -172,7 +172,7 @@ fi
 
 # 4. RhinoMeshes' calls replayed on openNURBS.
 if ! PYTHONPATH="$build/py" python3 -c "import rhino3dm; assert rhino3dm.__version__ == '$rhino3dm_version'" 2>/dev/null; then
-  python3 -m pip install --quiet --disable-pip-version-check --no-deps --upgrade --target "$build/py" "rhino3dm==$rhino3dm_version" \
+  PIP_ROOT_USER_ACTION=ignore python3 -m pip install --quiet --disable-pip-version-check --no-deps --upgrade --target "$build/py" "rhino3dm==$rhino3dm_version" \
     || { fail "install of rhino3dm $rhino3dm_version"; finish; }
 fi
 if PYTHONPATH="$build/py" python3 "$here/tests/replay_rhino_meshes.py" "$here/Weft.Grasshopper/RhinoMeshes.cs"; then
