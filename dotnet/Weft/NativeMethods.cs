@@ -308,6 +308,20 @@ namespace Weft
         [DllImport(Library, CallingConvention = Cdecl)]
         internal static extern uint weft_triangulate(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
 
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_triangulate_ex(WeftMeshHandle mesh, out WeftMeshHandle outMesh, [Out] uint[] outParentFaces);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_as_triangles(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outSplitFaces);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_match_points_to_vertices(
+            WeftMeshHandle mesh, UIntPtr pointCount, double[] points, double tolerance, [Out] uint[] outVertices);
+
+        [DllImport(Library, CallingConvention = Cdecl)]
+        internal static extern uint weft_match_lines_to_edges(
+            WeftMeshHandle mesh, UIntPtr lineCount, double[] lines, double tolerance, [Out] uint[] outVertexPairs);
+
         // ---- the toolbar ----
 
         [DllImport(Library, CallingConvention = Cdecl)]
