@@ -163,6 +163,14 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_sided_solid(uint kind, UIntPtr sides, double radius, double height, out WeftMeshHandle outMesh);
 
+        /// <summary>Finds, for each point, the nearest vertex of the mesh within a tolerance (the lower index when two are equally near), through the spatial hash that <c>weft_weld</c> uses.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_match_points_to_vertices(WeftMeshHandle mesh, UIntPtr pointCount, double[] points, double tolerance, [Out] uint[] outVertices);
+
+        /// <summary>Finds, for each line, the edge of the mesh whose end points lie within a tolerance of the line's, in either direction. When several vertices are within reach of an end, the pair that is an edge wins, the nearest (the smallest sum of the two distances) first.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_match_lines_to_edges(WeftMeshHandle mesh, UIntPtr lineCount, double[] lines, double tolerance, [Out] uint[] outVertexPairs);
+
         /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_join(IntPtr[] meshes, UIntPtr count, out WeftMeshHandle outMesh);
@@ -302,6 +310,14 @@ namespace Weft
         /// <summary>Triangulates every face: triangles stay, a quad is split along its shorter diagonal, an n-gon is ear-clipped in its best-fit plane (concave n-gons included). Vertices keep their indices and positions; the triangles of face f are consecutive, in face order (a face of n corners makes n − 2).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_triangulate(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
+
+        /// <summary>Triangulates every face as <c>weft_triangulate</c> does, and gives the face of the input that each triangle was cut from.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_triangulate_ex(WeftMeshHandle mesh, out WeftMeshHandle outMesh, [Out] uint[] outParentFaces);
+
+        /// <summary>Gives the mesh as triangles, for the operations that need them (Loop, <c>weft_split_triangles</c>): a copy when every face is a triangle, else the triangulation of <c>weft_triangulate</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_as_triangles(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outSplitFaces);
 
         /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, <c>levels</c> times, without smoothing (Weaverbird's Split Polygons: the topology of Catmull-Clark, the surface unchanged, the result welded).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

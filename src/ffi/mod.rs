@@ -7,6 +7,7 @@
 pub mod boundary;
 pub mod creases;
 pub mod make;
+pub mod matching;
 pub mod mend;
 pub mod mesh;
 pub mod refiner;
