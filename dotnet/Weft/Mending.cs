@@ -17,6 +17,37 @@ namespace Weft
             NativeLibraryLoader.EnsureLoaded();
         }
 
+        /// <summary>
+        /// For each point (x, y, z per point), the nearest vertex of <paramref name="mesh"/>
+        /// within <paramref name="tolerance"/> (the lower index on a tie).
+        /// </summary>
+        /// <exception cref="WeftException">A point with no vertex in reach (the message names its index and coordinates), or a bad tolerance.</exception>
+        public static uint[] MatchPointsToVertices(WeftMesh mesh, double[] points, double tolerance)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            Arguments.NotNull(points, "points");
+            if (points.Length % 3 != 0) throw new WeftException(WeftStatus.CountMismatch, "points holds " + points.Length + " doubles, not 3 per point");
+            var vertices = new uint[points.Length / 3];
+            WeftException.Check(NativeMethods.weft_match_points_to_vertices(handle, (UIntPtr)vertices.Length, points, tolerance, vertices));
+            return vertices;
+        }
+
+        /// <summary>
+        /// For each line (start x, y, z, end x, y, z), the two vertices of the edge of
+        /// <paramref name="mesh"/> whose ends lie within <paramref name="tolerance"/> of the
+        /// line's, the one at its start first.
+        /// </summary>
+        /// <exception cref="WeftException">A line that matches no edge (the message names its index, its ends and which end found no vertex), or a bad tolerance.</exception>
+        public static uint[] MatchLinesToEdges(WeftMesh mesh, double[] lines, double tolerance)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            Arguments.NotNull(lines, "lines");
+            if (lines.Length % 6 != 0) throw new WeftException(WeftStatus.CountMismatch, "lines holds " + lines.Length + " doubles, not 6 per line");
+            var pairs = new uint[lines.Length / 3];
+            WeftException.Check(NativeMethods.weft_match_lines_to_edges(handle, (UIntPtr)(lines.Length / 6), lines, tolerance, pairs));
+            return pairs;
+        }
+
         /// <summary>Concatenates meshes in order, offsetting each one's indices; no mesh gives the empty mesh.</summary>
         public static WeftMesh Join(params WeftMesh[] meshes)
         {

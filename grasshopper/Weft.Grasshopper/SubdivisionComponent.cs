@@ -55,38 +55,29 @@ namespace Weft.Grasshopper
         /// </summary>
         protected PolygonArrays PrepareCage(PolygonArrays cage, int levels)
         {
-            if (Scheme == Scheme.Loop)
-            {
-                int others = CountNonTriangles(cage.FaceSizes);
-                if (others > 0)
-                {
-                    // Triangulating keeps the vertices, so creases and corners still name the same ones.
-                    Remark(others + " quad or n-gon face(s) were triangulated before subdividing.");
-                    cage = MeshArrays.Triangulate(cage);
-                }
-            }
             using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
             {
-                FaceBudget.Check(mesh, Scheme, levels, FaceBudget.MaxFaces);
+                if (Scheme != Scheme.Loop)
+                {
+                    FaceBudget.Check(mesh, Scheme, levels, FaceBudget.MaxFaces);
+                    return cage;
+                }
+                int split;
+                using (WeftMesh triangles = Subdivision.AsTriangles(mesh, out split))
+                {
+                    FaceBudget.Check(triangles, Scheme, levels, FaceBudget.MaxFaces);
+                    if (split == 0) return cage;
+                    // Triangulating keeps the vertices, so creases and corners still name the same ones.
+                    Remark(split + " quad or n-gon face(s) were triangulated before subdividing.");
+                    return MeshArrays.FromWeft(triangles);
+                }
             }
-            return cage;
         }
 
         /// <summary>The refiner cache of the branch being solved.</summary>
         protected RefinerCache Refiner(IGH_DataAccess DA)
         {
             return refiners.For(DA.Iteration);
-        }
-
-        /// <summary>Faces that are not triangles.</summary>
-        public static int CountNonTriangles(uint[] faceSizes)
-        {
-            int count = 0;
-            foreach (uint size in faceSizes)
-            {
-                if (size != 3) count++;
-            }
-            return count;
         }
     }
 

@@ -147,7 +147,7 @@ namespace Weft.Grasshopper
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "No mesh or closed polyline to work on.");
                 return null;
             }
-            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
+            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Join(parts);
             if (allColoured && polylines.Count == 0 && partColours.Count * 3 == all.Positions.Length)
             {
                 colours = partColours.ToArray();

@@ -15,9 +15,9 @@ namespace Weft.Tests
             t.Run("Rhino triangle (C == D) becomes a 3-vertex face", RhinoTriangle);
             t.Run("Rhino n-gon becomes one polygon in place of its faces", RhinoNgon);
             t.Run("Weft polygons to Rhino faces and n-gons", WeftToRhino);
-            t.Run("ear clipping of a non-convex polygon", EarClipConcave);
+            t.Run("a concave n-gon becomes Rhino triangles covering it, cut by the library", ConcaveNgonToRhino);
             t.Run("closed polylines share welded corners", Polylines);
-            t.Run("concatenation offsets indices", Concatenate);
+            t.Run("joining offsets indices (weft_join)", Concatenate);
             t.Run("converted arrays make a valid Weft mesh", IntoWeft);
             t.Run("refiner cache: a moved cage re-evaluates, new faces re-plan", RefinerCacheReuse);
             t.Run("refiner cache: a failed plan leaves no refiner and raises the library's error", RefinerCacheError);
@@ -81,18 +81,19 @@ namespace Weft.Tests
             t.Sequence(indices, back.FaceIndices, "indices after the round trip");
         }
 
-        private static void EarClipConcave()
+        private static void ConcaveNgonToRhino()
         {
             // An L shape (counter-clockwise): a fan from vertex 0 would cover the notch.
             double[] p = { 0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0 };
-            int[] polygon = { 0, 1, 2, 3, 4, 5 };
-            List<int[]> triangles = MeshArrays.EarClip(p, polygon);
-            t.Equal(4, triangles.Count, "n - 2 triangles");
+            RhinoArrays r = MeshArrays.ToRhino(p, new uint[] { 6 }, new uint[] { 0, 1, 2, 3, 4, 5 });
+            t.Equal(4, r.Faces.Length / 4, "n - 2 triangles");
+            t.Sequence(new[] { 0, 1, 2, 3 }, r.NgonFaces[0], "all four in the n-gon");
             double area = 0;
-            foreach (int[] tri in triangles)
+            for (int f = 0; f < r.Faces.Length / 4; f++)
             {
-                double signed = ((p[3 * tri[1]] - p[3 * tri[0]]) * (p[3 * tri[2] + 1] - p[3 * tri[0] + 1])
-                                 - (p[3 * tri[1] + 1] - p[3 * tri[0] + 1]) * (p[3 * tri[2]] - p[3 * tri[0]])) / 2;
+                int a = r.Faces[4 * f], b = r.Faces[4 * f + 1], c = r.Faces[4 * f + 2];
+                t.Equal(c, r.Faces[4 * f + 3], "a triangle as Rhino stores it (C == D)");
+                double signed = ((p[3 * b] - p[3 * a]) * (p[3 * c + 1] - p[3 * a + 1]) - (p[3 * b + 1] - p[3 * a + 1]) * (p[3 * c] - p[3 * a])) / 2;
                 t.True(signed > 0, "every triangle counter-clockwise like the polygon");
                 area += signed;
             }
@@ -116,7 +117,7 @@ namespace Weft.Tests
         private static void Concatenate()
         {
             var a = new PolygonArrays { Positions = new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, FaceSizes = new uint[] { 3 }, FaceIndices = new uint[] { 0, 1, 2 } };
-            PolygonArrays both = MeshArrays.Concatenate(new List<PolygonArrays> { a, a });
+            PolygonArrays both = MeshArrays.Join(new List<PolygonArrays> { a, a });
             t.Equal(6, both.Positions.Length / 3, "vertices");
             t.Sequence(new uint[] { 0, 1, 2, 3, 4, 5 }, both.FaceIndices, "offset indices");
         }
@@ -301,7 +302,14 @@ namespace Weft.Tests
                     t.True(e.Message.Contains("face 0 has 4 vertices"), "message names the face: " + e.Message);
                 }
                 t.Equal(0, cache.PlanCount, "nothing planned");
-                PolygonArrays triangles = MeshArrays.Triangulate(new PolygonArrays { Positions = CubePositions, FaceSizes = CubeSizes, FaceIndices = CubeIndices });
+                PolygonArrays triangles;
+                int split;
+                using (WeftMesh cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+                using (WeftMesh asTriangles = Subdivision.AsTriangles(cube, out split))
+                {
+                    triangles = MeshArrays.FromWeft(asTriangles);
+                }
+                t.Equal(6, split, "six quads split");
                 RefinedArrays loop = cache.Subdivide(triangles.Positions, triangles.FaceSizes, triangles.FaceIndices, Scheme.Loop, 1, NakedEdges.Smooth);
                 t.Equal(48, loop.FaceSizes.Length, "Loop after triangulation: 12 × 4 triangles");
             }

@@ -67,29 +67,24 @@ namespace Weft.Grasshopper
 
             var options = new SubdivisionOptions(nakedEdges) { Creasing = rule };
             CreaseItem[] items = ToCreaseItems(creaseItems);
-            if (items.Length > 0)
+            using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
             {
-                uint[] edgePairs = null;
-                if (Array.Exists(items, item => item.Line == null))
+                if (items.Length > 0)
                 {
-                    using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
-                    {
-                        edgePairs = Toolbar.Edges(mesh);
-                    }
+                    uint[] pairs = CreaseInputs.VertexPairs(mesh, items, tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
+                    for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
                 }
-                uint[] pairs = CreaseInputs.VertexPairs(cage.Positions, cage.FaceSizes, cage.FaceIndices, edgePairs, items, tolerance);
-                double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
-                for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
-            }
-            else if (creaseSharpness.Length > 1)
-            {
-                Warn("CS has values but C names no crease.");
-            }
-            if (cornerPoints.Length > 0)
-            {
-                uint[] corners = CreaseInputs.CornerVertices(cage.Positions, RhinoMeshes.FromPoints(cornerPoints), tolerance);
-                double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
-                for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
+                else if (creaseSharpness.Length > 1)
+                {
+                    Warn("CS has values but C names no crease.");
+                }
+                if (cornerPoints.Length > 0)
+                {
+                    uint[] corners = CreaseInputs.CornerVertices(mesh, RhinoMeshes.FromPoints(cornerPoints), tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
+                    for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
+                }
             }
 
             cage = PrepareCage(cage, levels);

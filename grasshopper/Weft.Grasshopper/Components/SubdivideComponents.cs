@@ -47,11 +47,10 @@ namespace Weft.Grasshopper
 
         protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
-            int others = SubdivisionComponent.CountNonTriangles(mesh.GetFaceSizes());
-            if (others == 0) return Toolbar.SplitTriangles(mesh, Get(DA, 1, 1));
-            Remark(others + " quad or n-gon face(s) were triangulated first.");
-            using (WeftMesh triangles = Subdivision.Triangulate(mesh))
+            int split;
+            using (WeftMesh triangles = Subdivision.AsTriangles(mesh, out split))
             {
+                if (split > 0) Remark(split + " quad or n-gon face(s) were triangulated first.");
                 return Toolbar.SplitTriangles(triangles, Get(DA, 1, 1));
             }
         }
