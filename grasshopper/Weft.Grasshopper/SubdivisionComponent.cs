@@ -74,6 +74,14 @@ namespace Weft.Grasshopper
             }
         }
 
+        /// <summary>Registers Weaverbird's first three inputs: the mesh M, the levels L (1) and the naked-edge mode S (1).</summary>
+        protected static void AddSubdivisionInputs(GH_InputParamManager pManager, string meshDescription, string levelsDescription)
+        {
+            AddMeshInput(pManager, "M", meshDescription);
+            pManager.AddIntegerParameter("Level", "L", levelsDescription, GH_ParamAccess.item, 1);
+            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed.", GH_ParamAccess.item, 1);
+        }
+
         /// <summary>The refiner cache of the branch being solved.</summary>
         protected RefinerCache Refiner(IGH_DataAccess DA)
         {
@@ -91,9 +99,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            AddMeshInput(pManager, "M", "The mesh to subdivide.");
-            pManager.AddIntegerParameter("Level", "L", "Subdivision levels (0 returns the input).", GH_ParamAccess.item, 1);
-            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed.", GH_ParamAccess.item, 1);
+            AddSubdivisionInputs(pManager, "The mesh to subdivide.", "Subdivision levels (0 returns the input).");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)

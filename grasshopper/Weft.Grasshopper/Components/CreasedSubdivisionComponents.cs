@@ -23,9 +23,8 @@ namespace Weft.Grasshopper
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            AddMeshInput(pManager, "M", "The mesh to subdivide; its vertex colours, when it has one per vertex, are carried through.");
-            pManager.AddIntegerParameter("Level", "L", "Subdivision levels (0 returns the input, or its limit surface with X).", GH_ParamAccess.item, 1);
-            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed.", GH_ParamAccess.item, 1);
+            AddSubdivisionInputs(pManager, "The mesh to subdivide; its vertex colours, when it has one per vertex, are carried through.",
+                                 "Subdivision levels (0 returns the input, or its limit surface with X).");
             pManager.AddGenericParameter("Creases", "C",
                 "Creased edges: lines whose end points are the edge's vertices (within T), or edge indices as Mesh Edges (wbEdges) lists them.",
                 GH_ParamAccess.list);
