@@ -187,4 +187,15 @@ if python3 "$here/tests/check_packages.py" "$here" "$build/Weft.Grasshopper.gha"
 else
   fail "package.sh lays out the Rhino 7 Windows, Rhino 7 Mac and Rhino 8 packages"
 fi
+# Rhino 7 for Mac runs Mono, and its package puts the native library beside Weft.Interop.dll:
+# load the wrapper from a package-like folder, with no library path, the host program elsewhere.
+probe="$build/probe" host="$build/probe-host"
+rm -rf "$probe" "$host" && mkdir -p "$probe" "$host"
+cp "$build/Weft.Interop.dll" "$build/libweft.so" "$probe/"
+if mcs "${mcs_flags[@]}" -target:exe -out:"$host/LoadProbe.exe" -r:"$probe/Weft.Interop.dll" "$here/tests/LoadProbe.cs" \
+    && loaded=$(cd / && env -u LD_LIBRARY_PATH MONO_PATH="$probe" mono "$host/LoadProbe.exe") && echo "$loaded" | grep -q "$probe/libweft.so"; then
+  pass "loaded from a package folder on Mono, the wrapper finds the native library beside it with no library path ($loaded)"
+else
+  fail "loaded from a package folder on Mono, the wrapper finds the native library beside it with no library path"
+fi
 finish
