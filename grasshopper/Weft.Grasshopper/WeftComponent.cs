@@ -278,21 +278,19 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>
-    /// A component that reads one mesh (input 0, M), applies one operation and
-    /// outputs one mesh (output 0, M): subclasses only register their options
-    /// and call the wrapper.
+    /// A component that reads one mesh (input 0, M), then its options, and
+    /// answers from it: subclasses register their options and outputs and
+    /// implement <see cref="Query"/>.
     /// </summary>
-    public abstract class MeshOperationComponent : WeftComponent
+    public abstract class MeshQueryComponent : WeftComponent
     {
         private readonly string inputDescription;
-        private readonly string outputDescription;
 
-        protected MeshOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
-                                         string inputDescription, string outputDescription)
+        protected MeshQueryComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                     string inputDescription)
             : base(name, nickname, description, subcategory, iconName)
         {
             this.inputDescription = inputDescription;
-            this.outputDescription = outputDescription;
         }
 
         protected sealed override void RegisterInputParams(GH_InputParamManager pManager)
@@ -301,23 +299,50 @@ namespace Weft.Grasshopper
             RegisterOptions(pManager);
         }
 
-        /// <summary>Registers the inputs after M (index 1 on).</summary>
-        protected abstract void RegisterOptions(GH_InputParamManager pManager);
+        /// <summary>Registers the inputs after M (index 1 on); none by default.</summary>
+        protected virtual void RegisterOptions(GH_InputParamManager pManager)
+        {
+        }
+
+        protected sealed override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                Query(mesh, DA);
+            }
+        }
+
+        /// <summary>Reads the options from DA and sets the outputs; the mesh is disposed afterwards.</summary>
+        protected abstract void Query(WeftMesh mesh, IGH_DataAccess DA);
+    }
+
+    /// <summary>
+    /// A component that reads one mesh (input 0, M), applies one operation and
+    /// outputs one mesh (output 0, M): subclasses only register their options
+    /// and call the wrapper.
+    /// </summary>
+    public abstract class MeshOperationComponent : MeshQueryComponent
+    {
+        private readonly string outputDescription;
+
+        protected MeshOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                         string inputDescription, string outputDescription)
+            : base(name, nickname, description, subcategory, iconName, inputDescription)
+        {
+            this.outputDescription = outputDescription;
+        }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
             AddMeshOutput(pManager, outputDescription);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected sealed override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            using (WeftMesh result = Apply(mesh, DA))
             {
-                if (mesh == null) return;
-                using (WeftMesh result = Apply(mesh, DA))
-                {
-                    SetMesh(DA, 0, result);
-                }
+                SetMesh(DA, 0, result);
             }
         }
 

@@ -101,17 +101,12 @@ namespace Weft.Grasshopper
 
     /// <summary>The unique edges as lines and vertex index pairs.</summary>
     [Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b")]
-    public sealed class MeshEdgesComponent : WeftComponent
+    public sealed class MeshEdgesComponent : MeshQueryComponent
     {
         public MeshEdgesComponent()
             : base("Mesh Edges", "wbEdges", "The unique edges of the mesh as lines, sorted by their lower then higher vertex index, with those indices.",
-                   "Extract", "edges")
+                   "Extract", "edges", "The mesh.")
         {
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -121,40 +116,31 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("End", "B", "The higher vertex index of each edge.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            uint[] pairs = Toolbar.Edges(mesh);
+            var starts = new int[pairs.Length / 2];
+            var ends = new int[pairs.Length / 2];
+            for (int e = 0; e < starts.Length; e++)
             {
-                if (mesh == null) return;
-                uint[] pairs = Toolbar.Edges(mesh);
-                var starts = new int[pairs.Length / 2];
-                var ends = new int[pairs.Length / 2];
-                for (int e = 0; e < starts.Length; e++)
-                {
-                    starts[e] = (int)pairs[2 * e];
-                    ends[e] = (int)pairs[2 * e + 1];
-                }
-                DA.SetDataList(0, RhinoMeshes.ToLines(Toolbar.EdgeSegments(mesh)));
-                DA.SetDataList(1, starts);
-                DA.SetDataList(2, ends);
+                starts[e] = (int)pairs[2 * e];
+                ends[e] = (int)pairs[2 * e + 1];
             }
+            DA.SetDataList(0, RhinoMeshes.ToLines(Toolbar.EdgeSegments(mesh)));
+            DA.SetDataList(1, starts);
+            DA.SetDataList(2, ends);
         }
     }
 
     /// <summary>The naked edges chained into polylines.</summary>
     [Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0")]
-    public sealed class NakedBoundaryComponent : WeftComponent
+    public sealed class NakedBoundaryComponent : MeshQueryComponent
     {
         public NakedBoundaryComponent()
             : base("Naked Boundary", "wbNakedBoundary",
                    "The naked edges chained into polylines: each border of a manifold mesh is one closed polyline; polylines stop at vertices with one or three or more naked edges.",
-                   "Extract", "naked_boundary")
+                   "Extract", "naked_boundary", "The mesh.")
         {
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -163,15 +149,11 @@ namespace Weft.Grasshopper
             pManager.AddBooleanParameter("Closed", "C", "Whether each polyline is closed.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                PolylineSet set = Mending.NakedBoundaries(mesh);
-                DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.SplitPolylines(set.Points, set.PointCounts, set.Closed, false)));
-                DA.SetDataList(1, set.Closed);
-            }
+            PolylineSet set = Mending.NakedBoundaries(mesh);
+            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.SplitPolylines(set.Points, set.PointCounts, set.Closed, false)));
+            DA.SetDataList(1, set.Closed);
         }
     }
 
