@@ -45,17 +45,12 @@ namespace Weft.Grasshopper
 
     /// <summary>The vertices of a mesh as points.</summary>
     [Guid("a119335b-605c-4507-8740-0fbda0c60284")]
-    public sealed class VerticesComponent : WeftComponent
+    public sealed class VerticesComponent : MeshQueryComponent
     {
         public VerticesComponent()
             : base("Mesh Vertices", "wbVertices", "The vertices of the mesh as points, in vertex order (n-gon meshes and polylines as Weft reads them).",
-                   "Extract", "vertices")
+                   "Extract", "vertices", "The mesh.")
         {
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -63,27 +58,20 @@ namespace Weft.Grasshopper
             pManager.AddPointParameter("Vertices", "V", "One point per vertex.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            PolygonArrays mesh = GetPolygons(DA, 0);
-            if (mesh == null) return;
-            DA.SetDataList(0, RhinoMeshes.ToPoints(mesh.Positions));
+            DA.SetDataList(0, RhinoMeshes.ToPoints(mesh.GetPositions()));
         }
     }
 
     /// <summary>Each face as a closed polyline.</summary>
     [Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d")]
-    public sealed class FacePolylinesComponent : WeftComponent
+    public sealed class FacePolylinesComponent : MeshQueryComponent
     {
         public FacePolylinesComponent()
             : base("Face Polylines", "wbFacePolylines", "Each face (triangle, quad or n-gon) as a closed polyline, in face order.",
-                   "Extract", "face_polylines")
+                   "Extract", "face_polylines", "The mesh.")
         {
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -91,11 +79,10 @@ namespace Weft.Grasshopper
             pManager.AddCurveParameter("Polylines", "P", "One closed polyline per face.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            PolygonArrays mesh = GetPolygons(DA, 0);
-            if (mesh == null) return;
-            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.FacePolylines(mesh.Positions, mesh.FaceSizes, mesh.FaceIndices)));
+            PolygonArrays arrays = MeshArrays.FromWeft(mesh);
+            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.FacePolylines(arrays.Positions, arrays.FaceSizes, arrays.FaceIndices)));
         }
     }
 
