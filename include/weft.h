@@ -1029,6 +1029,62 @@ WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mes
 WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
 
 /**
+ * Finds, for each point, the nearest vertex of the mesh within a tolerance
+ * (the lower index when two are equally near), through the spatial hash
+ * that `weft_weld` uses.
+ *
+ * `mesh` must not be NULL.
+ * `points` holds `point_count` points of three doubles (x, y, z); it may be
+ * NULL only when `point_count` is 0.
+ * `tolerance` is the largest distance from a point to its vertex, finite
+ * and at least 0.
+ * `out_vertices` must have room for `point_count` values and receives one
+ * vertex index per point on success; it may be NULL only when
+ * `point_count` is 0. Nothing is written on failure.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+ * (naming the point), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
+ * infinite tolerance or for a point with no vertex within reach (naming
+ * the point's index, its coordinates and the tolerance), or
+ * WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `points` is NULL or holds
+ * `3 * point_count` doubles; `out_vertices` is NULL or holds `point_count`
+ * writable values.
+ */
+WeftStatus weft_match_points_to_vertices(const struct WeftMesh *mesh, size_t point_count, const double *points, double tolerance, uint32_t *out_vertices);
+
+/**
+ * Finds, for each line, the edge of the mesh whose end points lie within a
+ * tolerance of the line's, in either direction. When several vertices are
+ * within reach of an end, the pair that is an edge wins, the nearest (the
+ * smallest sum of the two distances) first.
+ *
+ * `mesh` must not be NULL.
+ * `lines` holds `line_count` lines of six doubles (start x, y, z, end x,
+ * y, z); it may be NULL only when `line_count` is 0.
+ * `tolerance` is the largest distance from a line's end to its vertex,
+ * finite and at least 0.
+ * `out_vertex_pairs` must have room for `2 * line_count` values and
+ * receives, on success, the two vertex indices of each line's edge in the
+ * line's direction (the vertex at its start first); it may be NULL only
+ * when `line_count` is 0. Nothing is written on failure.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+ * (naming the line), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
+ * infinite tolerance or for a line that matches no edge (naming the line's
+ * index, its end points, the tolerance and which end found no vertex), or
+ * WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `lines` is NULL or holds
+ * `6 * line_count` doubles; `out_vertex_pairs` is NULL or holds
+ * `2 * line_count` writable values.
+ */
+WeftStatus weft_match_lines_to_edges(const struct WeftMesh *mesh, size_t line_count, const double *lines, double tolerance, uint32_t *out_vertex_pairs);
+
+/**
  * Joins meshes into one: the vertices of each follow those of the meshes
  * before it and its face indices are offset to match; faces keep their order.
  *
@@ -1564,6 +1620,47 @@ WeftStatus weft_subdivision_parent_faces(const struct WeftMesh *cage, uint32_t s
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
  */
 WeftStatus weft_triangulate(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Triangulates every face as `weft_triangulate` does, and gives the face
+ * of the input that each triangle was cut from.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the triangle mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ * `out_parent_faces` can be NULL; otherwise it must have room for the
+ * output's face count, the sum over the input's faces of (size − 2)
+ * values (`weft_mesh_index_count(mesh) - 2 * weft_mesh_face_count(mesh)`),
+ * and receives the parent face of every output face on success.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable;
+ * `out_parent_faces` is NULL or holds as many writable values as the
+ * output has faces.
+ */
+WeftStatus weft_triangulate_ex(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, uint32_t *out_parent_faces);
+
+/**
+ * Gives the mesh as triangles, for the operations that need them (Loop,
+ * `weft_split_triangles`): a copy when every face is a triangle, else the
+ * triangulation of `weft_triangulate`.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the triangle mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ * `out_split_faces` can be NULL; otherwise it receives, on success, the
+ * number of input faces that were not triangles (0 for a copy), so a
+ * front-end can say "triangulated N faces".
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable;
+ * `out_split_faces` is NULL or writable.
+ */
+WeftStatus weft_as_triangles(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_split_faces);
 
 /**
  * Splits each n-gon into n quads through its edge midpoints and centroid,

@@ -54,6 +54,27 @@ pub fn triangulate(mesh: &Mesh) -> Result<Triangulation> {
     })
 }
 
+/// `mesh` as triangles, for the operations that need them (Loop, Split
+/// Triangles): a copy when every face is a triangle, else [`triangulate`].
+/// Returns the triangulation and the number of input faces that were not
+/// triangles, so a front-end can say how many it split.
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`] when the result cannot be reserved.
+pub fn as_triangles(mesh: &Mesh) -> Result<(Triangulation, usize)> {
+    let split_faces = mesh.face_sizes().iter().filter(|&&s| s != 3).count();
+    if split_faces > 0 {
+        return Ok((triangulate(mesh)?, split_faces));
+    }
+    let mut parent_faces = try_vec(mesh.face_count(), "parent faces")?;
+    parent_faces.extend(0..mesh.face_count() as u32);
+    let copy = Triangulation {
+        mesh: mesh.clone(),
+        parent_faces,
+    };
+    Ok((copy, 0))
+}
+
 /// Reusable buffers for ear clipping.
 #[derive(Default)]
 struct EarClipper {

@@ -1091,7 +1091,7 @@ fn toolbar_subdivisions_have_their_counts() {
     let o = weft(&dir, &["split-triangles", "cube.obj", "g.obj"]);
     assert_exit(&o, 0);
     assert!(
-        stderr(&o).contains("triangulated 6 faces into 12"),
+        stderr(&o).contains("triangulated 6 of 6 faces into 12 triangles"),
         "{}",
         stderr(&o)
     );

@@ -6,7 +6,9 @@ use weft::cull::cull_adjacent;
 use weft::orient::{is_orientable, signed_volume, unify_orientation};
 use weft::subdivide::{catmull_clark, NakedEdges};
 use weft::t_nodes::{find_t_nodes, repair_t_nodes};
-use weft::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
+use weft::weld::{
+    join, match_lines_to_edges, match_points_to_vertices, weld, DEFAULT_WELD_TOLERANCE,
+};
 use weft::{shapes, DVec3, Mesh, MeshInfo, Topology};
 
 fn info(mesh: &Mesh) -> MeshInfo {
@@ -346,4 +348,156 @@ fn empty_and_faceless_meshes_pass_through_every_operation() {
         assert!(is_planar(&mesh, 0.0).unwrap());
         assert!(is_orientable(&mesh));
     }
+}
+
+#[test]
+fn points_match_their_nearest_vertex_within_the_tolerance() {
+    let cube = shapes::cube();
+    let corners = cube.positions();
+    // Each point a little off a corner, one nearer to corner 6 than to any other.
+    let points: Vec<DVec3> = [3usize, 0, 6, 5]
+        .iter()
+        .map(|&v| corners[v] + DVec3::new(0.01, -0.02, 0.015))
+        .collect();
+    let found = match_points_to_vertices(&cube, &points, 0.05).unwrap();
+    assert_eq!(found, vec![3, 0, 6, 5]);
+    // Two vertices within reach: the nearer wins whatever its index.
+    let mut close = Mesh::new(
+        vec![
+            DVec3::ZERO,
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(0.3, 0.0, 0.0),
+        ],
+        vec![3, 3],
+        vec![0, 1, 2, 3, 1, 2],
+    )
+    .unwrap();
+    assert_eq!(
+        match_points_to_vertices(&close, &[DVec3::new(0.2, 0.0, 0.0)], 0.5).unwrap(),
+        vec![3]
+    );
+    // Equally near: the lower index.
+    close.positions_mut()[3] = DVec3::new(0.4, 0.0, 0.0);
+    assert_eq!(
+        match_points_to_vertices(&close, &[DVec3::new(0.2, 0.0, 0.0)], 0.5).unwrap(),
+        vec![0]
+    );
+    // Tolerance 0 still finds an exact hit.
+    assert_eq!(
+        match_points_to_vertices(&cube, &[corners[7]], 0.0).unwrap(),
+        vec![7]
+    );
+}
+
+#[test]
+fn a_point_with_no_vertex_in_reach_is_named() {
+    let cube = shapes::cube();
+    let points = [cube.positions()[1], DVec3::new(0.5, 0.5, 3.0)];
+    let error = match_points_to_vertices(&cube, &points, 0.1).unwrap_err();
+    let message = error.to_string();
+    assert!(
+        message.contains("point 1 at (0.5, 0.5, 3) is no vertex of the mesh within 0.1"),
+        "{message}"
+    );
+    for tolerance in [-1.0, f64::NAN, f64::INFINITY] {
+        let message = match_points_to_vertices(&cube, &points, tolerance)
+            .unwrap_err()
+            .to_string();
+        assert!(message.contains("tolerance is"), "{message}");
+    }
+    let message = match_points_to_vertices(&cube, &[DVec3::new(f64::NAN, 0.0, 0.0)], 0.1)
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("point 0 is (NaN, 0, 0)"), "{message}");
+    // A point so far away that its grid cell passes the end of i64 simply
+    // finds nothing.
+    let far = DVec3::new(1e300, -1e300, 1e300);
+    let message = match_points_to_vertices(&cube, &[far], 0.0)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("point 0 at (1000000000000000") && message.contains("is no vertex"),
+        "{message}"
+    );
+}
+
+#[test]
+fn lines_match_edges_in_their_own_direction() {
+    let grid = shapes::quad_grid(2, 2);
+    let p = grid.positions();
+    let topology = Topology::new(&grid);
+    let wobble = DVec3::new(0.01, 0.01, 0.0);
+    let [a, b] = topology.edges()[3];
+    let lines = [
+        [p[a as usize] + wobble, p[b as usize] - wobble],
+        [p[b as usize], p[a as usize]],
+    ];
+    let pairs = match_lines_to_edges(&grid, &lines, 0.05).unwrap();
+    assert_eq!(pairs, vec![[a, b], [b, a]]);
+    for &[u, v] in &pairs {
+        assert!(topology.find_edge(u, v).is_some());
+    }
+}
+
+#[test]
+fn with_several_vertices_in_reach_the_pair_that_is_an_edge_wins() {
+    // Vertices 0 and 3 sit close together at the line's start, but only 3 is
+    // joined to vertex 1 at its end; 0 is nearer to the start.
+    let mesh = Mesh::new(
+        vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(0.05, 0.0, 0.0),
+            DVec3::new(0.0, -1.0, 0.0),
+        ],
+        vec![3, 3],
+        vec![3, 1, 2, 0, 4, 3],
+    )
+    .unwrap();
+    let line = [[DVec3::new(-0.01, 0.0, 0.0), DVec3::new(1.0, 0.0, 0.0)]];
+    assert_eq!(
+        match_lines_to_edges(&mesh, &line, 0.1).unwrap(),
+        vec![[3, 1]]
+    );
+    // Both 0-3 and 3-0 are edges; the nearer pair to the line's ends wins.
+    let line = [[DVec3::new(0.06, 0.0, 0.0), DVec3::new(-0.01, 0.0, 0.0)]];
+    assert_eq!(
+        match_lines_to_edges(&mesh, &line, 0.1).unwrap(),
+        vec![[3, 0]]
+    );
+}
+
+#[test]
+fn a_line_matching_no_edge_is_named_with_its_reason() {
+    let grid = shapes::quad_grid(2, 2);
+    let p = grid.positions();
+    // Vertices 0 and 4 are corners of one quad but not the ends of an edge.
+    let diagonal = [p[0], p[4]];
+    let message = match_lines_to_edges(&grid, &[[p[0], p[1]], diagonal], 0.01)
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("line 1 from"), "{message}");
+    assert!(
+        message.contains("matches no edge of the mesh within 0.01: its ends are vertices but not the ends of one edge"),
+        "{message}"
+    );
+    let off = [p[0], DVec3::new(9.0, 9.0, 9.0)];
+    let message = match_lines_to_edges(&grid, &[off], 0.01)
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("line 0 from"), "{message}");
+    assert!(
+        message.contains("its end is no vertex of the mesh"),
+        "{message}"
+    );
+    let message = match_lines_to_edges(&grid, &[[off[1], off[0]]], 0.01)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("its start is no vertex of the mesh"),
+        "{message}"
+    );
+    assert!(match_lines_to_edges(&grid, &[], -1.0).is_err());
 }

@@ -5,7 +5,7 @@ use weft::subdivide::{
     catmull_clark, loop_subdivision, parent_faces, refined_counts, subdivide, NakedEdges, Refiner,
     Scheme,
 };
-use weft::triangulate::triangulate;
+use weft::triangulate::{as_triangles, triangulate};
 use weft::{DVec3, Error, Mesh, Topology};
 
 const MODES: [NakedEdges; 3] = [
@@ -395,4 +395,24 @@ fn triangulate_keeps_area_and_maps_parents() {
     // Triangles come through unchanged.
     let tri = shapes::icosahedron();
     assert_eq!(triangulate(&tri).unwrap().mesh, tri);
+}
+
+#[test]
+fn as_triangles_copies_a_triangle_mesh_and_triangulates_any_other() {
+    let icosahedron = shapes::icosahedron();
+    let (copy, split) = as_triangles(&icosahedron).unwrap();
+    assert_eq!(split, 0);
+    assert_eq!(copy.mesh, icosahedron);
+    assert_eq!(
+        copy.parent_faces,
+        (0..icosahedron.face_count() as u32).collect::<Vec<_>>()
+    );
+
+    let mixed = shapes::mixed_polygons();
+    let (triangles, split) = as_triangles(&mixed).unwrap();
+    let not_triangles = mixed.face_sizes().iter().filter(|&&s| s != 3).count();
+    assert!(not_triangles > 0);
+    assert_eq!(split, not_triangles);
+    assert_eq!(triangles, triangulate(&mixed).unwrap());
+    assert!(triangles.mesh.is_triangle_mesh());
 }

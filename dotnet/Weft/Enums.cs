@@ -1,13 +1,14 @@
+// Generated from include/weft.h by dotnet/generate.py; do not edit (dotnet/test.sh checks it is current).
 namespace Weft
 {
     /// <summary>How subdivision treats naked (boundary) edges (WEFT_NAKED_EDGES_*).</summary>
     public enum NakedEdges : uint
     {
-        /// <summary>The boundary polyline does not move: boundary vertices stay, new ones are edge midpoints.</summary>
+        /// <summary>Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.</summary>
         Fixed = 0,
-        /// <summary>The boundary tends to a cubic B-spline; every boundary vertex moves.</summary>
+        /// <summary>Naked edges tend to a cubic B-spline; every boundary vertex moves (OpenSubdiv VTX_BOUNDARY_EDGE_ONLY).</summary>
         Smooth = 1,
-        /// <summary>As Smooth, but a boundary vertex with only one face (a corner) stays.</summary>
+        /// <summary>As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).</summary>
         CornerFixed = 2,
     }
 
@@ -23,141 +24,145 @@ namespace Weft
     /// <summary>How semi-sharp creases soften from level to level (WEFT_CREASING_*; OpenSubdiv's crease method).</summary>
     public enum Creasing : uint
     {
-        /// <summary>Every crease loses one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).</summary>
+        /// <summary>Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).</summary>
         Uniform = 0,
-        /// <summary>A crease's sharpness is first averaged with its neighbours along the crease (OpenSubdiv CREASE_CHAIKIN).</summary>
+        /// <summary>Semi-sharp creases are averaged with their neighbours first (OpenSubdiv CREASE_CHAIKIN).</summary>
         Chaikin = 1,
     }
 
     /// <summary>Where face-varying values (UVs) are interpolated linearly (WEFT_FACE_VARYING_*; OpenSubdiv's FVarLinearInterpolation).</summary>
     public enum FaceVaryingLinear : uint
     {
-        /// <summary>Smooth everywhere (FVAR_LINEAR_NONE).</summary>
+        /// <summary>Face-varying values are smooth everywhere (OpenSubdiv FVAR_LINEAR_NONE).</summary>
         Smooth = 0,
-        /// <summary>Linear at their corners only (FVAR_LINEAR_CORNERS_ONLY).</summary>
+        /// <summary>Face-varying values are linear at their corners only (FVAR_LINEAR_CORNERS_ONLY).</summary>
         CornersOnly = 1,
         /// <summary>As corners only, and sharper at junctions of three or more regions (FVAR_LINEAR_CORNERS_PLUS1).</summary>
         CornersPlus1 = 2,
         /// <summary>As corners plus one, and sharper where boundaries meet (FVAR_LINEAR_CORNERS_PLUS2).</summary>
         CornersPlus2 = 3,
-        /// <summary>Linear along every seam and boundary (FVAR_LINEAR_BOUNDARIES).</summary>
+        /// <summary>Face-varying values are linear along every seam and boundary (FVAR_LINEAR_BOUNDARIES).</summary>
         Boundaries = 4,
-        /// <summary>Linear everywhere (FVAR_LINEAR_ALL, OpenSubdiv's default).</summary>
+        /// <summary>Face-varying values are linear everywhere (FVAR_LINEAR_ALL, OpenSubdiv's default).</summary>
         All = 5,
-    }
-
-    /// <summary>How the smoothing operations treat naked edges (WEFT_SMOOTH_NAKED_*).</summary>
-    public enum SmoothNakedEdges : uint
-    {
-        /// <summary>Boundary vertices stay.</summary>
-        Fixed = 0,
-        /// <summary>Boundary vertices move along the boundary, averaged with their boundary neighbours only.</summary>
-        Smooth = 1,
-        /// <summary>As Smooth, but a boundary vertex with a single face (a corner) stays.</summary>
-        CornerFixed = 2,
     }
 
     /// <summary>Which way LaplacianHC lets a vertex move (WEFT_SMOOTH_DIRECTION_*; Weaverbird's orientation input).</summary>
     public enum SmoothDirection : uint
     {
-        /// <summary>Anywhere: the published algorithm.</summary>
+        /// <summary>Smoothing direction: vertices move freely (the published HC algorithm).</summary>
         Free = 0,
-        /// <summary>Only along the line of its original vertex normal: bumps flatten, nothing slides across the surface.</summary>
+        /// <summary>Smoothing direction: each vertex moves only along the line of its original vertex normal, so nothing slides across the surface.</summary>
         AlongNormal = 1,
-        /// <summary>Only within its original tangent plane: the vertices even out while the shape barely changes.</summary>
+        /// <summary>Smoothing direction: each vertex moves only within the plane through its original position across its original normal (relaxation).</summary>
         Tangential = 2,
     }
 
-    /// <summary>How Tile fills a chosen face (WEFT_TILE_FILL_*; Weaverbird's F numbers).</summary>
+    /// <summary>The pattern Tile fills a face with (WEFT_TILE_FILL_*; Weaverbird's numbers).</summary>
     public enum TileFill : uint
     {
-        /// <summary>The face stays as it is.</summary>
+        /// <summary>Tile fill: the chosen faces stay as they are.</summary>
         Skip = 0,
-        /// <summary>The most robust triangulation: shorter diagonal, ear clipping (right for concave faces).</summary>
+        /// <summary>Tile fill: the most robust triangulation (a quad along its shorter diagonal, larger polygons ear-clipped, right for concave faces).</summary>
         Best = 1,
-        /// <summary>A centroid and a triangle from it to each edge.</summary>
+        /// <summary>Tile fill: a centroid and a triangle from it to each edge.</summary>
         TriangleFan = 2,
-        /// <summary>Triangles all sharing the first corner.</summary>
+        /// <summary>Tile fill: triangles all sharing the face's first corner.</summary>
         TriangleHand = 3,
-        /// <summary>The quad stitch with each quad cut the same way.</summary>
+        /// <summary>Tile fill: the quad stitch with each quad cut the same way.</summary>
         TriangleKnit = 4,
-        /// <summary>A strip of triangles from the first corner whose diagonals zigzag.</summary>
+        /// <summary>Tile fill: a strip of triangles from the first corner whose diagonals zigzag.</summary>
         TriangleZigzag = 5,
-        /// <summary>A strip of quads from the first corner; a triangle last when the corner count is odd.</summary>
+        /// <summary>Tile fill: a strip of quads from the first corner, a triangle last when the corner count is odd.</summary>
         QuadStitch = 6,
-        /// <summary>A centroid and a quad from it over every two edges.</summary>
+        /// <summary>Tile fill: a centroid and a quad from it over every two edges.</summary>
         QuadFan = 7,
     }
 
-    /// <summary>Which faces Tile fills (WEFT_TILE_FACES_*; Weaverbird's O numbers).</summary>
+    /// <summary>Which faces Tile fills (WEFT_TILE_FACES_*; Weaverbird's numbers).</summary>
     public enum TileFaces : uint
     {
-        /// <summary>Every face.</summary>
+        /// <summary>Tile faces: every face is filled.</summary>
         All = 0,
-        /// <summary>Every face but triangles.</summary>
+        /// <summary>Tile faces: every face but triangles.</summary>
         QuadsAndMore = 1,
-        /// <summary>Pentagons and larger.</summary>
+        /// <summary>Tile faces: pentagons and larger.</summary>
         PentagonsAndMore = 2,
-        /// <summary>Triangles only.</summary>
+        /// <summary>Tile faces: triangles only (Weaverbird's number 9).</summary>
         Triangles = 9,
-        /// <summary>Quads only.</summary>
+        /// <summary>Tile faces: quads only (Weaverbird's number 16).</summary>
         Quads = 16,
     }
 
-    /// <summary>How Offset Mesh and Mesh Thicken move a vertex (WEFT_OFFSET_*).</summary>
+    /// <summary>How Mesh Offset and Mesh Thicken place the offset vertices (WEFT_OFFSET_*).</summary>
     public enum OffsetType : uint
     {
-        /// <summary>By the distance along the vertex normal.</summary>
+        /// <summary>Offset type: each vertex moves by the distance along its vertex normal.</summary>
         Diagonal = 0,
-        /// <summary>Along the vertex normal by the average of distance / cos of the angle to each face normal.</summary>
+        /// <summary>Offset type: along the vertex normal by the average of distance / cos of the angle to each face normal.</summary>
         HypotenuseAverage = 1,
-        /// <summary>To where the moved face planes meet (least squares for more than three faces).</summary>
+        /// <summary>Offset type: to where the moved face planes meet (least squares for more than three faces).</summary>
         PlanesIntersection = 2,
     }
 
-    /// <summary>How Mesh Window and Picture Frame read their distances (WEFT_INSET_*).</summary>
+    /// <summary>How Mesh Window and Picture Frame measure the inset (WEFT_INSET_*).</summary>
     public enum InsetMode : uint
     {
-        /// <summary>A share of the edges, in [0, 0.5).</summary>
+        /// <summary>Inset mode: the distance is a share of the edges, in [0, 0.5).</summary>
         EdgeFraction = 0,
-        /// <summary>A width in model units (parallelogram rule).</summary>
+        /// <summary>Inset mode: the distance is a width in model units (parallelogram rule).</summary>
         Parallelogram = 1,
     }
 
-    /// <summary>Where the dual's vertices go (WEFT_DUAL_*).</summary>
+    /// <summary>Where the dual mesh puts its vertices (WEFT_DUAL_*).</summary>
     public enum DualMode : uint
     {
-        /// <summary>At each face's centroid.</summary>
+        /// <summary>Dual mode: a vertex at each face's centroid.</summary>
         VertexAverage = 0,
-        /// <summary>As VertexAverage, scaled to the input's bounding box size.</summary>
+        /// <summary>Dual mode: as VERTEX_AVERAGE, scaled to the input's bounding box size.</summary>
         KeepSize = 1,
     }
 
-    /// <summary>The platonic solids (WEFT_PLATONIC_*).</summary>
+    /// <summary>A Platonic solid (WEFT_PLATONIC_*).</summary>
     public enum PlatonicSolid : uint
     {
-        /// <summary>4 triangles.</summary>
+        /// <summary>Platonic solid for <c>weft_platonic</c>: the tetrahedron (4 triangles).</summary>
         Tetrahedron = 0,
-        /// <summary>6 quads (the cube).</summary>
+        /// <summary>Platonic solid for <c>weft_platonic</c>: the cube (6 quads).</summary>
         Hexahedron = 1,
-        /// <summary>8 triangles.</summary>
+        /// <summary>Platonic solid for <c>weft_platonic</c>: the octahedron (8 triangles).</summary>
         Octahedron = 2,
-        /// <summary>12 pentagons.</summary>
+        /// <summary>Platonic solid for <c>weft_platonic</c>: the dodecahedron (12 pentagons).</summary>
         Dodecahedron = 3,
-        /// <summary>20 triangles.</summary>
+        /// <summary>Platonic solid for <c>weft_platonic</c>: the icosahedron (20 triangles).</summary>
         Icosahedron = 4,
     }
 
-    /// <summary>Solids on a regular n-gon (WEFT_SIDED_*).</summary>
+    /// <summary>A solid built on a regular polygon (WEFT_SIDED_*).</summary>
     public enum SidedSolid : uint
     {
-        /// <summary>Two n-gons joined by n quads.</summary>
+        /// <summary>Solid for <c>weft_sided_solid</c>: two n-gons joined by n quads.</summary>
         Prism = 0,
-        /// <summary>Two n-gons, one turned by half a side, joined by 2n triangles.</summary>
+        /// <summary>Solid for <c>weft_sided_solid</c>: two n-gons, one turned by half a side, joined by 2n triangles.</summary>
         Antiprism = 1,
-        /// <summary>An n-gon base and n triangles to the apex.</summary>
+        /// <summary>Solid for <c>weft_sided_solid</c>: an n-gon base and n triangles to the apex.</summary>
         Pyramid = 2,
-        /// <summary>Two pyramids base to base (2n triangles).</summary>
+        /// <summary>Solid for <c>weft_sided_solid</c>: two pyramids base to base (2n triangles).</summary>
         Dipyramid = 3,
+    }
+
+    /// <summary>The header's other constants.</summary>
+    internal static class NativeConstants
+    {
+        /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
+        internal const double SharpnessInfinite = 10.0;
+        /// <summary>The weld tolerance to use when the host has none: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres).</summary>
+        internal const double DefaultWeldTolerance = 0.001;
+        /// <summary>Major version of the library this header belongs to.</summary>
+        internal const uint VersionMajor = 0;
+        /// <summary>Minor version of the library this header belongs to.</summary>
+        internal const uint VersionMinor = 1;
+        /// <summary>Patch version of the library this header belongs to.</summary>
+        internal const uint VersionPatch = 0;
     }
 }

@@ -10,11 +10,42 @@ namespace Weft
     public static class Mending
     {
         /// <summary>The weld tolerance that suits most models (WEFT_DEFAULT_WELD_TOLERANCE).</summary>
-        public const double DefaultWeldTolerance = 0.001;
+        public const double DefaultWeldTolerance = NativeConstants.DefaultWeldTolerance;
 
         static Mending()
         {
             NativeLibraryLoader.EnsureLoaded();
+        }
+
+        /// <summary>
+        /// For each point (x, y, z per point), the nearest vertex of <paramref name="mesh"/>
+        /// within <paramref name="tolerance"/> (the lower index on a tie).
+        /// </summary>
+        /// <exception cref="WeftException">A point with no vertex in reach (the message names its index and coordinates), or a bad tolerance.</exception>
+        public static uint[] MatchPointsToVertices(WeftMesh mesh, double[] points, double tolerance)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            Arguments.NotNull(points, "points");
+            if (points.Length % 3 != 0) throw new WeftException(WeftStatus.CountMismatch, "points holds " + points.Length + " doubles, not 3 per point");
+            var vertices = new uint[points.Length / 3];
+            WeftException.Check(NativeMethods.weft_match_points_to_vertices(handle, (UIntPtr)vertices.Length, points, tolerance, vertices));
+            return vertices;
+        }
+
+        /// <summary>
+        /// For each line (start x, y, z, end x, y, z), the two vertices of the edge of
+        /// <paramref name="mesh"/> whose ends lie within <paramref name="tolerance"/> of the
+        /// line's, the one at its start first.
+        /// </summary>
+        /// <exception cref="WeftException">A line that matches no edge (the message names its index, its ends and which end found no vertex), or a bad tolerance.</exception>
+        public static uint[] MatchLinesToEdges(WeftMesh mesh, double[] lines, double tolerance)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            Arguments.NotNull(lines, "lines");
+            if (lines.Length % 6 != 0) throw new WeftException(WeftStatus.CountMismatch, "lines holds " + lines.Length + " doubles, not 6 per line");
+            var pairs = new uint[lines.Length / 3];
+            WeftException.Check(NativeMethods.weft_match_lines_to_edges(handle, (UIntPtr)(lines.Length / 6), lines, tolerance, pairs));
+            return pairs;
         }
 
         /// <summary>Concatenates meshes in order, offsetting each one's indices; no mesh gives the empty mesh.</summary>
@@ -92,23 +123,13 @@ namespace Weft
         /// <summary>Removes every face that has a twin over the same vertices (all copies go); <paramref name="removed"/> counts them.</summary>
         public static WeftMesh CullAdjacent(WeftMesh mesh, out int removed)
         {
-            WeftMeshHandle result;
-            UIntPtr count;
-            uint status = NativeMethods.weft_cull_adjacent(Arguments.Mesh(mesh, "mesh"), out result, out count);
-            WeftMesh culled = WeftMesh.FromCall(status, result);
-            removed = Arguments.ToInt(count);
-            return culled;
+            return WeftMesh.FromCountingCall(NativeMethods.weft_cull_adjacent, mesh, out removed);
         }
 
         /// <summary>Gives each piece one winding, flipping the fewest faces, closed pieces facing out; <paramref name="flipped"/> counts the reversed faces.</summary>
         public static WeftMesh UnifyOrientation(WeftMesh mesh, out int flipped)
         {
-            WeftMeshHandle result;
-            UIntPtr count;
-            uint status = NativeMethods.weft_unify_orientation(Arguments.Mesh(mesh, "mesh"), out result, out count);
-            WeftMesh unified = WeftMesh.FromCall(status, result);
-            flipped = Arguments.ToInt(count);
-            return unified;
+            return WeftMesh.FromCountingCall(NativeMethods.weft_unify_orientation, mesh, out flipped);
         }
 
         /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}).</summary>

@@ -21,6 +21,7 @@ namespace Weft
     public static class NativeLibraryLoader
     {
         private static readonly object Gate = new object();
+        private static readonly List<string> extraFolders = new List<string>();
         private static bool attempted;
 
         /// <summary>The full path the library was loaded from, or null when the default search was left to find it.</summary>
@@ -40,6 +41,23 @@ namespace Weft
                 NativeLibrary.SetDllImportResolver(typeof(NativeLibraryLoader).Assembly, Resolve);
 #else
                 Preload();
+#endif
+            }
+        }
+
+        /// <summary>
+        /// Adds a folder to look in after the assembly's own: the host's word for where the
+        /// plug-in lives, for when the assembly was loaded from bytes and has no location
+        /// (Grasshopper's COFF loading). Retries the preload if it found nothing before.
+        /// </summary>
+        public static void AddSearchFolder(string folder)
+        {
+            if (string.IsNullOrEmpty(folder)) return;
+            lock (Gate)
+            {
+                if (!extraFolders.Contains(folder)) extraFolders.Add(folder);
+#if !NETCOREAPP
+                if (attempted && LoadedFrom == null) Preload();
 #endif
             }
         }
@@ -78,19 +96,29 @@ namespace Weft
             return "libweft.so";
         }
 
-        /// <summary>Where to look, best first: the per-platform runtimes folder, then beside the assembly.</summary>
+        /// <summary>
+        /// Where to look, best first: the per-platform runtimes folder, then beside the
+        /// assembly, then the same two in each folder given to <see cref="AddSearchFolder"/>.
+        /// </summary>
         public static IList<string> CandidatePaths()
         {
-            var paths = new List<string>();
+            var folders = new List<string>();
             string location = typeof(NativeLibraryLoader).Assembly.Location;
-            if (string.IsNullOrEmpty(location))
+            if (!string.IsNullOrEmpty(location))
             {
-                return paths;
+                folders.Add(Path.GetDirectoryName(location));
             }
-            string folder = Path.GetDirectoryName(location);
+            lock (Gate)
+            {
+                folders.AddRange(extraFolders);
+            }
+            var paths = new List<string>();
             string file = FileName();
-            paths.Add(Path.Combine(Path.Combine(Path.Combine(Path.Combine(folder, "runtimes"), RuntimeIdentifier()), "native"), file));
-            paths.Add(Path.Combine(folder, file));
+            foreach (string folder in folders)
+            {
+                paths.Add(Path.Combine(Path.Combine(Path.Combine(Path.Combine(folder, "runtimes"), RuntimeIdentifier()), "native"), file));
+                paths.Add(Path.Combine(folder, file));
+            }
             return paths;
         }
 

@@ -40,6 +40,31 @@ namespace Weft
             return WeftMesh.FromCall(status, result);
         }
 
+        /// <summary>
+        /// Triangulates as <see cref="Triangulate(WeftMesh)"/> and gives, for each triangle, the index
+        /// of the face of <paramref name="mesh"/> it was cut from.
+        /// </summary>
+        public static WeftMesh Triangulate(WeftMesh mesh, out uint[] parentFaces)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            var parents = new uint[checked(mesh.IndexCount - 2 * mesh.FaceCount)];
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_triangulate_ex(handle, out result, parents);
+            WeftMesh triangles = WeftMesh.FromCall(status, result);
+            parentFaces = parents;
+            return triangles;
+        }
+
+        /// <summary>
+        /// The mesh as triangles, for Loop and Split Triangles: a copy when every face is a
+        /// triangle, else <see cref="Triangulate(WeftMesh)"/>. <paramref name="splitFaces"/> is
+        /// the number of faces that were not triangles.
+        /// </summary>
+        public static WeftMesh AsTriangles(WeftMesh mesh, out int splitFaces)
+        {
+            return WeftMesh.FromCountingCall(NativeMethods.weft_as_triangles, mesh, out splitFaces);
+        }
+
         /// <summary>The number of faces <paramref name="levels"/> steps of <paramref name="scheme"/> make from <paramref name="cage"/>, without subdividing.</summary>
         public static int FaceCount(WeftMesh cage, Scheme scheme, int levels)
         {

@@ -23,7 +23,7 @@ namespace Weft
     public sealed class SubdivisionOptions
     {
         /// <summary>The sharpness at and above which a crease or corner never softens (WEFT_SHARPNESS_INFINITE).</summary>
-        public const double SharpnessInfinite = 10.0;
+        public const double SharpnessInfinite = NativeConstants.SharpnessInfinite;
 
         private readonly List<uint> creasePairs = new List<uint>();
         private readonly List<double> creaseSharpness = new List<double>();

@@ -15,52 +15,70 @@ namespace Weft
             NativeLibraryLoader.EnsureLoaded();
         }
 
+        private delegate uint LevelsCall(WeftMeshHandle mesh, uint levels, out WeftMeshHandle result);
+        private delegate uint OffsetCall(WeftMeshHandle mesh, double distance, uint offsetType, out WeftMeshHandle result);
+        private delegate uint InsetCall(WeftMeshHandle mesh, double[] distances, UIntPtr distanceCount, uint insetMode, out WeftMeshHandle result);
+
+        /// <summary>One of the exports that take a mesh and a level count and make a mesh.</summary>
+        private static WeftMesh Levels(LevelsCall call, WeftMesh mesh, int levels)
+        {
+            WeftMeshHandle result;
+            uint status = call(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>Mesh Offset or Mesh Thicken.</summary>
+        private static WeftMesh Offset(OffsetCall call, WeftMesh mesh, double distance, OffsetType offsetType)
+        {
+            WeftMeshHandle result;
+            uint status = call(Arguments.Mesh(mesh, "mesh"), distance, (uint)offsetType, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>Mesh Window or Picture Frame.</summary>
+        private static WeftMesh Inset(InsetCall call, WeftMesh mesh, double[] distances, InsetMode insetMode)
+        {
+            WeftMeshHandle h = Arguments.Mesh(mesh, "mesh");
+            Arguments.NotNull(distances, "distances");
+            WeftMeshHandle result;
+            uint status = call(h, distances, (UIntPtr)distances.Length, (uint)insetMode, out result);
+            return WeftMesh.FromCall(status, result);
+        }
+
         /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing (Weaverbird's Split Polygons: Catmull-Clark's topology, welded). <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh SplitPolygons(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_split_polygons(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_split_polygons, mesh, levels);
         }
 
         /// <summary>Splits each triangle into four through its edge midpoints, without smoothing (fails with <see cref="WeftStatus.NotTriangles"/> on other faces). <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh SplitTriangles(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_split_triangles(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_split_triangles, mesh, levels);
         }
 
         /// <summary>Splits quads into four quads, triangles into four triangles and larger polygons into quads around their centroid, without smoothing. <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh ConstantQuadsSplit(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_constant_quads_split(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_constant_quads_split, mesh, levels);
         }
 
         /// <summary>The mid-edge subdivision (Peters and Reif): a face of edge midpoints per face and per vertex; boundary vertices stay. <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh Midedge(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_midedge(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_midedge, mesh, levels);
         }
 
         /// <summary>Places a triangle in each corner of each face and leaves the middle open: one new hole per face and level. <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh SierpinskiTriangles(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_sierpinski_triangles(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_sierpinski_triangles, mesh, levels);
         }
 
         /// <summary>Cuts each quad into 3 × 3 quads and removes the middle one (quads only). <paramref name="levels"/> is 0 to 20.</summary>
         public static WeftMesh SierpinskiCarpet(WeftMesh mesh, int levels)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_sierpinski_carpet(Arguments.Mesh(mesh, "mesh"), Arguments.Unsigned(levels, "levels"), out result);
-            return WeftMesh.FromCall(status, result);
+            return Levels(NativeMethods.weft_sierpinski_carpet, mesh, levels);
         }
 
         /// <summary>Gives each face an inner face pulled towards its centroid by <paramref name="pull"/> (strictly between 0 and 1), joined by a quad per edge, <paramref name="levels"/> times.</summary>
@@ -141,37 +159,25 @@ namespace Weft
         /// <summary>Moves every vertex by <paramref name="distance"/> along the surface normal (positive: to the front); faces are kept.</summary>
         public static WeftMesh OffsetMesh(WeftMesh mesh, double distance, OffsetType offsetType)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_offset_mesh(Arguments.Mesh(mesh, "mesh"), distance, (uint)offsetType, out result);
-            return WeftMesh.FromCall(status, result);
+            return Offset(NativeMethods.weft_offset_mesh, mesh, distance, offsetType);
         }
 
         /// <summary>A solid of a surface: the input, its offset (vertex v's is vertex VertexCount + v) and a quad along every naked edge.</summary>
         public static WeftMesh ThickenMesh(WeftMesh mesh, double distance, OffsetType offsetType)
         {
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_thicken_mesh(Arguments.Mesh(mesh, "mesh"), distance, (uint)offsetType, out result);
-            return WeftMesh.FromCall(status, result);
+            return Offset(NativeMethods.weft_thicken_mesh, mesh, distance, offsetType);
         }
 
         /// <summary>Insets each face and keeps the frame of quads and the inner face; one distance for all faces or one per face.</summary>
         public static WeftMesh MeshWindow(WeftMesh mesh, double[] distances, InsetMode insetMode)
         {
-            WeftMeshHandle h = Arguments.Mesh(mesh, "mesh");
-            Arguments.NotNull(distances, "distances");
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_mesh_window(h, distances, (UIntPtr)distances.Length, (uint)insetMode, out result);
-            return WeftMesh.FromCall(status, result);
+            return Inset(NativeMethods.weft_mesh_window, mesh, distances, insetMode);
         }
 
         /// <summary>Insets each face and keeps only the frame of quads: each face becomes a ring around a hole.</summary>
         public static WeftMesh PictureFrame(WeftMesh mesh, double[] distances, InsetMode insetMode)
         {
-            WeftMeshHandle h = Arguments.Mesh(mesh, "mesh");
-            Arguments.NotNull(distances, "distances");
-            WeftMeshHandle result;
-            uint status = NativeMethods.weft_picture_frame(h, distances, (UIntPtr)distances.Length, (uint)insetMode, out result);
-            return WeftMesh.FromCall(status, result);
+            return Inset(NativeMethods.weft_picture_frame, mesh, distances, insetMode);
         }
 
         /// <summary>Bevels every edge (Conway's expansion): faces shrink by <paramref name="fraction"/> (strictly between 0 and 1).</summary>

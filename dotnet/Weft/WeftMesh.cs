@@ -84,6 +84,20 @@ namespace Weft
             return FromCall(status, created);
         }
 
+        /// <summary>An export that makes a mesh from a mesh and counts something it did.</summary>
+        internal delegate uint CountingCall(WeftMeshHandle mesh, out WeftMeshHandle result, out UIntPtr count);
+
+        /// <summary>Runs a <see cref="CountingCall"/>: the new mesh, and the count in <paramref name="count"/>.</summary>
+        internal static WeftMesh FromCountingCall(CountingCall call, WeftMesh mesh, out int count)
+        {
+            WeftMeshHandle result;
+            UIntPtr counted;
+            uint status = call(Arguments.Mesh(mesh, "mesh"), out result, out counted);
+            WeftMesh made = FromCall(status, result);
+            count = Arguments.ToInt(counted);
+            return made;
+        }
+
         /// <summary>
         /// Wraps the handle an operation produced, or disposes it and throws
         /// when the call failed.

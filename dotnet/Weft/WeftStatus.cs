@@ -1,9 +1,9 @@
+// Generated from include/weft.h by dotnet/generate.py; do not edit (dotnet/test.sh checks it is current).
 namespace Weft
 {
     /// <summary>
-    /// The outcome of every Weft call, mirroring <c>WeftStatus</c> in
-    /// <c>include/weft.h</c> value for value. New values are only ever added
-    /// at the end.
+    /// The outcome of every Weft call, <c>WeftStatus</c> in <c>include/weft.h</c> value for
+    /// value. New values are only ever added at the end.
     /// </summary>
     public enum WeftStatus : uint
     {
@@ -33,7 +33,7 @@ namespace Weft
         OutOfMemory = 11,
         /// <summary>A caller buffer is too small for what is to be copied into it.</summary>
         BufferTooSmall = 12,
-        /// <summary>The input is geometrically degenerate for the operation.</summary>
+        /// <summary>The input is geometrically degenerate for the operation (collinear points, fewer points than needed, a zero-length axis).</summary>
         DegenerateInput = 13,
         /// <summary>A bug inside Weft was caught at the boundary; the host keeps running.</summary>
         InternalPanic = 14,

@@ -14,6 +14,8 @@ namespace Weft.Tests
             t.Run("join refuses a null or disposed mesh", JoinErrors);
             t.Run("weld two touching cubes, with a report", WeldCubes);
             t.Run("weld refuses a negative tolerance", WeldErrors);
+            t.Run("points matched to the nearest vertex within the tolerance", MatchPoints);
+            t.Run("lines matched to edges within the tolerance, in the line's direction", MatchLines);
             t.Run("find and repair a T-node", TNodes);
             t.Run("T-nodes refuse a negative tolerance", TNodeErrors);
             t.Run("cull the wall between two welded cubes", CullAdjacent);
@@ -23,6 +25,47 @@ namespace Weft.Tests
             t.Run("planarity of a twisted quad", Planarity);
             t.Run("naked boundaries of a grid and a cube", NakedBoundaries);
             t.Run("normals, planarity and boundaries refuse a disposed mesh", QueryErrors);
+        }
+
+        private static void MatchPoints()
+        {
+            using (var cube = Shapes.Cube())
+            {
+                double[] corners = cube.GetPositions();
+                var points = new[] { corners[21] + 0.004, corners[22], corners[23], corners[0], corners[1], corners[2] - 0.004 };
+                t.Sequence(new uint[] { 7, 0 }, Mending.MatchPointsToVertices(cube, points, 0.01), "vertices 7 and 0");
+                t.Equal(0, Mending.MatchPointsToVertices(cube, new double[0], 0.01).Length, "no points, no vertices");
+                var far = new[] { corners[0], corners[1], corners[2], corners[0] + 0.5, corners[1], corners[2] };
+                var e = t.Throws<WeftException>(() => Mending.MatchPointsToVertices(cube, far, 0.01), "a point far from every vertex");
+                if (e != null)
+                {
+                    t.Equal(WeftStatus.InvalidArgument, e.Status, "status");
+                    t.True(e.Message.Contains("point 1"), "names the point: " + e.Message);
+                }
+                t.Throws<WeftException>(() => Mending.MatchPointsToVertices(cube, new double[] { 0, 0 }, 0.01), "not three doubles per point");
+                t.Throws<WeftException>(() => Mending.MatchPointsToVertices(cube, points, -1), "a negative tolerance");
+            }
+        }
+
+        private static void MatchLines()
+        {
+            using (var cube = Shapes.Cube())
+            {
+                uint[] edges = Toolbar.Edges(cube);
+                double[] p = cube.GetPositions();
+                uint a = edges[2], b = edges[3];
+                // Edge 1 given backwards, its ends 0.004 off.
+                var lines = new[] { p[3 * b], p[3 * b + 1], p[3 * b + 2] + 0.004, p[3 * a], p[3 * a + 1], p[3 * a + 2] };
+                t.Sequence(new[] { b, a }, Mending.MatchLinesToEdges(cube, lines, 0.01), "the edge, in the line's direction");
+                var diagonal = new[] { p[0], p[1], p[2], p[21], p[22], p[23] };
+                var e = t.Throws<WeftException>(() => Mending.MatchLinesToEdges(cube, diagonal, 0.01), "a line through the cube");
+                if (e != null)
+                {
+                    t.Equal(WeftStatus.InvalidArgument, e.Status, "status");
+                    t.True(e.Message.Contains("line 0") && e.Message.Contains("matches no edge"), "names the line: " + e.Message);
+                }
+                t.Throws<WeftException>(() => Mending.MatchLinesToEdges(cube, new double[] { 0, 0, 0 }, 0.01), "not six doubles per line");
+            }
         }
 
         private static void JoinCubes()

@@ -15,6 +15,8 @@ namespace Weft.Tests
             t.Run("Loop of an octahedron", LoopOctahedron);
             t.Run("Loop needs triangles", LoopNeedsTriangles);
             t.Run("triangulate a cube", TriangulateCube);
+            t.Run("triangulate with parent faces: a quad, a hexagon and a triangle", TriangulateWithParents);
+            t.Run("as triangles: a copy of a triangle mesh, the triangulation of others, with the split count", AsTriangles);
             t.Run("triangulate a disposed mesh is refused", TriangulateDisposed);
             t.Run("subdivision face count and parent faces", FaceCountAndParents);
             t.Run("face count refuses an unknown scheme", FaceCountUnknownScheme);
@@ -74,6 +76,51 @@ namespace Weft.Tests
                 t.Equal(8, triangles.VertexCount, "vertices kept");
                 t.Sequence(Shapes.Repeat(3, 12), triangles.GetFaceSizes(), "all triangles");
                 t.True(triangles.Info().IsClosed, "closed");
+            }
+        }
+
+        private static void TriangulateWithParents()
+        {
+            // A quad, a regular hexagon and a triangle: 2 + 4 + 1 triangles.
+            var positions = new System.Collections.Generic.List<double> { 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 };
+            for (int i = 0; i < 6; i++) positions.AddRange(new[] { 5 + Math.Cos(i * Math.PI / 3), Math.Sin(i * Math.PI / 3), 0 });
+            positions.AddRange(new double[] { 0, 0, 3, 1, 0, 3, 0, 1, 3 });
+            using (var mesh = WeftMesh.Create(positions.ToArray(), new uint[] { 4, 6, 3 }, new uint[] { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12 }))
+            {
+                uint[] parents;
+                using (var triangles = Subdivision.Triangulate(mesh, out parents))
+                {
+                    t.Equal(7, triangles.FaceCount, "2 + 4 + 1 triangles");
+                    t.Sequence(new uint[] { 0, 0, 1, 1, 1, 1, 2 }, parents, "each triangle's face");
+                    uint[] indices = triangles.GetFaceIndices();
+                    for (int f = 0; f < parents.Length; f++)
+                    {
+                        for (int k = 0; k < 3; k++)
+                        {
+                            uint v = indices[3 * f + k];
+                            bool inParent = parents[f] == 0 ? v < 4 : parents[f] == 1 ? v >= 4 && v < 10 : v >= 10;
+                            t.True(inParent, "triangle " + f + "'s corner " + v + " is a corner of face " + parents[f]);
+                        }
+                    }
+                }
+            }
+        }
+
+        private static void AsTriangles()
+        {
+            int split;
+            using (var octahedron = Shapes.Octahedron())
+            using (var copy = Subdivision.AsTriangles(octahedron, out split))
+            {
+                t.Equal(0, split, "nothing split on a triangle mesh");
+                t.Sequence(octahedron.GetFaceIndices(), copy.GetFaceIndices(), "the same triangles");
+            }
+            using (var cube = Shapes.Cube())
+            using (var triangles = Subdivision.AsTriangles(cube, out split))
+            using (var expected = Subdivision.Triangulate(cube))
+            {
+                t.Equal(6, split, "six quads split");
+                t.Sequence(expected.GetFaceIndices(), triangles.GetFaceIndices(), "as weft_triangulate cuts them");
             }
         }
 

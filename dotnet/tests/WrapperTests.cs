@@ -36,6 +36,7 @@ namespace Weft.Tests
         {
             t = new Runner();
             t.Run("version is the crate's", Version);
+            t.Run("a folder named by the host is searched after the assembly's", SearchFolderFallback);
             t.Run("round trip of mixed polygons", RoundTrip);
             t.Run("empty mesh", EmptyMesh);
             t.Run("info on a cube", InfoOnCube);
@@ -288,6 +289,23 @@ namespace Weft.Tests
             // On this machine the library sits beside the assembly (test.sh copies it), so the preload path is the one Rhino uses.
             string from = NativeLibraryLoader.LoadedFrom;
             t.True(from != null && from.EndsWith(NativeLibraryLoader.FileName()), "the library loaded by full path, got \"" + from + "\"");
+        }
+
+        private static void SearchFolderFallback()
+        {
+            // Grasshopper's COFF loading leaves Assembly.Location empty; the host then names the plug-in's folder.
+            string folder = System.IO.Path.Combine(System.IO.Path.GetTempPath(), "weft-plugin-folder");
+            string file = NativeLibraryLoader.FileName();
+            t.False(NativeLibraryLoader.CandidatePaths().Contains(System.IO.Path.Combine(folder, file)), "not searched before it is added");
+            NativeLibraryLoader.AddSearchFolder(folder);
+            NativeLibraryLoader.AddSearchFolder(folder);
+            NativeLibraryLoader.AddSearchFolder("");
+            System.Collections.Generic.IList<string> paths = NativeLibraryLoader.CandidatePaths();
+            string runtimes = System.IO.Path.Combine(System.IO.Path.Combine(System.IO.Path.Combine(System.IO.Path.Combine(folder, "runtimes"), NativeLibraryLoader.RuntimeIdentifier()), "native"), file);
+            int beside = paths.IndexOf(System.IO.Path.Combine(folder, file));
+            t.True(beside > 0 && paths.IndexOf(runtimes) == beside - 1, "the added folder's runtimes path, then beside: " + string.Join(", ", paths));
+            t.Equal(1, System.Linq.Enumerable.Count(paths, p => p == runtimes), "a folder added twice is searched once");
+            t.True(paths.IndexOf(runtimes) >= 2, "after the assembly's own folder");
         }
     }
 }

@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Globalization;
+using System.Text.RegularExpressions;
 
 namespace Weft.Grasshopper
 {
@@ -42,101 +43,106 @@ namespace Weft.Grasshopper
         public const double DefaultSharpness = SubdivisionOptions.SharpnessInfinite;
 
         /// <summary>
-        /// Two vertex indices per crease item. A line matches the cage edge
-        /// whose end points lie within <paramref name="tolerance"/> of the
-        /// line's, in either direction (with several vertices in reach, any
-        /// pair that is an edge). An edge index counts in
-        /// <paramref name="edgePairs"/> (two vertices per edge, the order of
-        /// <c>Toolbar.Edges</c> and Mesh Edges); it may be null when no item is
-        /// an index.
+        /// Two vertex indices per crease item. Lines are matched to cage edges by the library
+        /// (<c>weft_match_lines_to_edges</c>: the edge whose ends lie within
+        /// <paramref name="tolerance"/> of the line's, in either direction); an edge index
+        /// counts in the order of <c>Toolbar.Edges</c> and Mesh Edges.
         /// </summary>
         /// <exception cref="WeftException">An item matches no edge, or an index is out of range; the message names the item as <c>C[i]</c>.</exception>
-        public static uint[] VertexPairs(double[] positions, uint[] faceSizes, uint[] faceIndices, uint[] edgePairs,
-                                         IList<CreaseItem> items, double tolerance)
+        public static uint[] VertexPairs(WeftMesh cage, IList<CreaseItem> items, double tolerance)
         {
             var pairs = new uint[2 * items.Count];
-            VertexGrid grid = null;
-            HashSet<ulong> edges = null;
+            var lineItems = new List<int>();
+            uint[] edgePairs = null;
             for (int i = 0; i < items.Count; i++)
             {
                 CreaseItem item = items[i];
-                if (item.Line == null)
+                if (item.Line != null)
                 {
-                    int edgeCount = edgePairs == null ? 0 : edgePairs.Length / 2;
-                    if (item.EdgeIndex < 0 || item.EdgeIndex >= edgeCount)
-                    {
-                        throw new WeftException(WeftStatus.IndexOutOfRange, "C[" + i + "] is edge " + item.EdgeIndex + ", but the mesh has "
-                            + edgeCount + " edges (numbered 0 to " + (edgeCount - 1) + " as Mesh Edges lists them)");
-                    }
-                    pairs[2 * i] = edgePairs[2 * item.EdgeIndex];
-                    pairs[2 * i + 1] = edgePairs[2 * item.EdgeIndex + 1];
+                    lineItems.Add(i);
                     continue;
                 }
-                if (grid == null)
+                if (edgePairs == null) edgePairs = Toolbar.Edges(cage);
+                int edgeCount = edgePairs.Length / 2;
+                if (item.EdgeIndex < 0 || item.EdgeIndex >= edgeCount)
                 {
-                    grid = new VertexGrid(positions, tolerance);
-                    edges = EdgeKeys(faceSizes, faceIndices);
+                    throw new WeftException(WeftStatus.IndexOutOfRange, "C[" + i + "] is edge " + item.EdgeIndex + ", but the mesh has "
+                        + edgeCount + " edges (numbered 0 to " + (edgeCount - 1) + " as Mesh Edges lists them)");
                 }
-                double[] l = item.Line;
-                List<int> starts = grid.Near(l[0], l[1], l[2]);
-                List<int> ends = grid.Near(l[3], l[4], l[5]);
-                bool found = false;
-                for (int a = 0; a < starts.Count && !found; a++)
-                {
-                    for (int b = 0; b < ends.Count && !found; b++)
-                    {
-                        if (starts[a] != ends[b] && edges.Contains(Key((uint)starts[a], (uint)ends[b])))
-                        {
-                            pairs[2 * i] = (uint)starts[a];
-                            pairs[2 * i + 1] = (uint)ends[b];
-                            found = true;
-                        }
-                    }
-                }
-                if (!found)
-                {
-                    string why = starts.Count == 0 || ends.Count == 0
-                        ? (starts.Count == 0 ? "its start" : "its end") + " is no vertex of the mesh"
-                        : "its ends are vertices but not the ends of one edge";
-                    throw new WeftException(WeftStatus.InvalidArgument, "C[" + i + "], the line from " + Point(l, 0) + " to " + Point(l, 3)
-                        + ", matches no edge of the mesh within " + Number(tolerance) + ": " + why
-                        + " (raise T, or give edge indices as Mesh Edges lists them)");
-                }
+                pairs[2 * i] = edgePairs[2 * item.EdgeIndex];
+                pairs[2 * i + 1] = edgePairs[2 * item.EdgeIndex + 1];
+            }
+            if (lineItems.Count == 0) return pairs;
+            var lines = new double[6 * lineItems.Count];
+            for (int j = 0; j < lineItems.Count; j++) Array.Copy(items[lineItems[j]].Line, 0, lines, 6 * j, 6);
+            uint[] matched;
+            try
+            {
+                matched = Mending.MatchLinesToEdges(cage, lines, tolerance);
+            }
+            catch (WeftException)
+            {
+                throw FirstRefusal(lineItems, j => Mending.MatchLinesToEdges(cage, Slice(lines, 6 * j, 6), tolerance), "C", "line",
+                                   " (raise T, or give edge indices as Mesh Edges lists them)");
+            }
+            for (int j = 0; j < lineItems.Count; j++)
+            {
+                pairs[2 * lineItems[j]] = matched[2 * j];
+                pairs[2 * lineItems[j] + 1] = matched[2 * j + 1];
             }
             return pairs;
         }
 
         /// <summary>
-        /// The vertex nearest each point (x, y, z per point) within
-        /// <paramref name="tolerance"/>.
+        /// The vertex nearest each point (x, y, z per point) within <paramref name="tolerance"/>,
+        /// found by the library (<c>weft_match_points_to_vertices</c>).
         /// </summary>
         /// <exception cref="WeftException">A point with no vertex in reach; the message names it as <c>P[i]</c>.</exception>
-        public static uint[] CornerVertices(double[] positions, double[] points, double tolerance)
+        public static uint[] CornerVertices(WeftMesh cage, double[] points, double tolerance)
         {
-            var grid = new VertexGrid(positions, tolerance);
-            var corners = new uint[points.Length / 3];
-            for (int i = 0; i < corners.Length; i++)
+            try
             {
-                List<int> near = grid.Near(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
-                if (near.Count == 0)
-                {
-                    throw new WeftException(WeftStatus.InvalidArgument, "P[" + i + "] at " + Point(points, 3 * i)
-                        + " is no vertex of the mesh within " + Number(tolerance) + " (raise T, or place the point on a vertex)");
-                }
-                int best = near[0];
-                double bestDistance = double.MaxValue;
-                foreach (int v in near)
-                {
-                    double d = Distance2(positions, v, points[3 * i], points[3 * i + 1], points[3 * i + 2]);
-                    if (d < bestDistance)
-                    {
-                        bestDistance = d;
-                        best = v;
-                    }
-                }
-                corners[i] = (uint)best;
+                return Mending.MatchPointsToVertices(cage, points, tolerance);
             }
-            return corners;
+            catch (WeftException)
+            {
+                var all = new List<int>();
+                for (int i = 0; i < points.Length / 3; i++) all.Add(i);
+                throw FirstRefusal(all, i => Mending.MatchPointsToVertices(cage, Slice(points, 3 * i, 3), tolerance), "P", "point",
+                                   " (raise T, or place the point on a vertex)");
+            }
+        }
+
+        /// <summary>
+        /// After the library refused a batch: matches the items one by one to find the first it
+        /// refuses, and gives its refusal naming the input item (C[i], P[i]) instead of the
+        /// position in the batch. Runs only on the error path.
+        /// </summary>
+        private static WeftException FirstRefusal(List<int> inputIndices, Action<int> matchOne, string nickname, string noun, string hint)
+        {
+            for (int j = 0; j < inputIndices.Count; j++)
+            {
+                try
+                {
+                    matchOne(j);
+                }
+                catch (WeftException e)
+                {
+                    // The library's "invalid argument: line 0 from ..." becomes "C[i]: the line from ...".
+                    string status = Regex.Replace(e.Status.ToString(), "(?<!^)([A-Z])", " $1").ToLowerInvariant() + ": ";
+                    string message = e.Message.StartsWith(status, StringComparison.Ordinal) ? e.Message.Substring(status.Length) : e.Message;
+                    message = Regex.Replace(message, @"\b" + noun + @" 0\b", "the " + noun);
+                    return new WeftException(e.Status, nickname + "[" + inputIndices[j] + "]: " + message + hint);
+                }
+            }
+            return new WeftException(WeftStatus.InvalidArgument, nickname + ": the library refused the " + noun + "s together but none alone" + hint);
+        }
+
+        private static double[] Slice(double[] values, int start, int count)
+        {
+            var slice = new double[count];
+            Array.Copy(values, start, slice, 0, count);
+            return slice;
         }
 
         /// <summary>
@@ -244,101 +250,9 @@ namespace Weft.Grasshopper
             return (uint)Math.Round(value);
         }
 
-        /// <summary>The keys of every edge of the faces, either direction.</summary>
-        private static HashSet<ulong> EdgeKeys(uint[] faceSizes, uint[] faceIndices)
-        {
-            var keys = new HashSet<ulong>();
-            int start = 0;
-            foreach (uint size in faceSizes)
-            {
-                for (int k = 0; k < size; k++)
-                {
-                    keys.Add(Key(faceIndices[start + k], faceIndices[start + (int)((k + 1) % size)]));
-                }
-                start += (int)size;
-            }
-            return keys;
-        }
-
-        private static ulong Key(uint a, uint b)
-        {
-            uint low = Math.Min(a, b), high = Math.Max(a, b);
-            return ((ulong)low << 32) | high;
-        }
-
-        private static double Distance2(double[] positions, int v, double x, double y, double z)
-        {
-            double dx = positions[3 * v] - x, dy = positions[3 * v + 1] - y, dz = positions[3 * v + 2] - z;
-            return dx * dx + dy * dy + dz * dz;
-        }
-
-        private static string Point(double[] xyz, int at)
-        {
-            return "(" + Number(xyz[at]) + ", " + Number(xyz[at + 1]) + ", " + Number(xyz[at + 2]) + ")";
-        }
-
         private static string Number(double value)
         {
             return value.ToString("G6", CultureInfo.InvariantCulture);
-        }
-
-        /// <summary>The cage's vertices hashed into cells of the tolerance, for finding those near a point.</summary>
-        private sealed class VertexGrid
-        {
-            private readonly double[] positions;
-            private readonly double tolerance;
-            private readonly double cell;
-            private readonly Dictionary<long, List<int>> cells = new Dictionary<long, List<int>>();
-
-            internal VertexGrid(double[] positions, double tolerance)
-            {
-                this.positions = positions;
-                this.tolerance = tolerance > 0 ? tolerance : 0;
-                cell = tolerance > 0 ? tolerance : 1e-9;
-                for (int v = 0; v < positions.Length / 3; v++)
-                {
-                    long key = Key(Cell(positions[3 * v]), Cell(positions[3 * v + 1]), Cell(positions[3 * v + 2]));
-                    List<int> bucket;
-                    if (!cells.TryGetValue(key, out bucket))
-                    {
-                        bucket = new List<int>();
-                        cells[key] = bucket;
-                    }
-                    bucket.Add(v);
-                }
-            }
-
-            /// <summary>The vertices within the tolerance of (x, y, z), nearest first is not promised.</summary>
-            internal List<int> Near(double x, double y, double z)
-            {
-                var found = new List<int>();
-                long cx = Cell(x), cy = Cell(y), cz = Cell(z);
-                for (long i = cx - 1; i <= cx + 1; i++)
-                for (long j = cy - 1; j <= cy + 1; j++)
-                for (long k = cz - 1; k <= cz + 1; k++)
-                {
-                    List<int> bucket;
-                    if (!cells.TryGetValue(Key(i, j, k), out bucket)) continue;
-                    foreach (int v in bucket)
-                    {
-                        if (Distance2(positions, v, x, y, z) <= tolerance * tolerance) found.Add(v);
-                    }
-                }
-                return found;
-            }
-
-            private long Cell(double value)
-            {
-                double c = Math.Floor(value / cell);
-                // Far-off or non-finite coordinates share a cell; the distance test still decides.
-                if (double.IsNaN(c) || c > 1e15 || c < -1e15) return 0;
-                return (long)c;
-            }
-
-            private static long Key(long i, long j, long k)
-            {
-                return ((i & 0x1FFFFF) << 42) | ((j & 0x1FFFFF) << 21) | (k & 0x1FFFFF);
-            }
         }
     }
 }

@@ -92,13 +92,15 @@ namespace Weft.Grasshopper
         /// <summary>
         /// Turns Weft polygons into Rhino faces: triangles as (a, b, c, c),
         /// quads as they are, and each larger polygon split into triangles by
-        /// ear clipping in its best-fit plane, registered as one n-gon.
+        /// the library (<c>weft_triangulate_ex</c>, ear clipping in its
+        /// best-fit plane), registered as one n-gon.
         /// </summary>
         public static RhinoArrays ToRhino(double[] positions, uint[] faceSizes, uint[] faceIndices)
         {
+            List<int[]>[] ngonTriangles = TriangulateNgons(positions, faceSizes, faceIndices);
             var result = new RhinoArrays();
             var faces = new List<int>(faceIndices.Length + faceSizes.Length);
-            int start = 0;
+            int start = 0, ngon = 0;
             foreach (uint size in faceSizes)
             {
                 int n = (int)size;
@@ -112,7 +114,7 @@ namespace Weft.Grasshopper
                     var polygon = new int[n];
                     for (int k = 0; k < n; k++) polygon[k] = (int)faceIndices[start + k];
                     var members = new List<int>();
-                    foreach (int[] t in EarClip(positions, polygon))
+                    foreach (int[] t in ngonTriangles[ngon++])
                     {
                         members.Add(faces.Count / 4);
                         faces.Add(t[0]);
@@ -129,81 +131,52 @@ namespace Weft.Grasshopper
             return result;
         }
 
-        /// <summary>
-        /// Triangles (n − 2 of them, same winding) covering a simple polygon,
-        /// found by ear clipping in the plane of its Newell normal; falls back
-        /// to a fan when no ear is found (a self-intersecting polygon).
-        /// </summary>
-        public static List<int[]> EarClip(double[] positions, int[] polygon)
+        /// <summary>The triangles of each face of more than four corners, in face order, cut by the library.</summary>
+        private static List<int[]>[] TriangulateNgons(double[] positions, uint[] faceSizes, uint[] faceIndices)
         {
-            int n = polygon.Length;
-            // Newell normal, then drop its largest axis to work in 2-D.
-            double nx = 0, ny = 0, nz = 0;
-            for (int i = 0; i < n; i++)
+            var sizes = new List<uint>();
+            var indices = new List<uint>();
+            int start = 0;
+            foreach (uint size in faceSizes)
             {
-                int a = 3 * polygon[i], b = 3 * polygon[(i + 1) % n];
-                nx += (positions[a + 1] - positions[b + 1]) * (positions[a + 2] + positions[b + 2]);
-                ny += (positions[a + 2] - positions[b + 2]) * (positions[a] + positions[b]);
-                nz += (positions[a] - positions[b]) * (positions[a + 1] + positions[b + 1]);
-            }
-            int u = 0, v = 1;
-            double sign = nz;
-            if (Math.Abs(nx) >= Math.Abs(ny) && Math.Abs(nx) >= Math.Abs(nz)) { u = 1; v = 2; sign = nx; }
-            else if (Math.Abs(ny) >= Math.Abs(nz)) { u = 2; v = 0; sign = ny; }
-            double orientation = sign >= 0 ? 1 : -1;
-
-            var remaining = new List<int>(polygon);
-            var triangles = new List<int[]>(n - 2);
-            while (remaining.Count > 3)
-            {
-                int m = remaining.Count;
-                int ear = -1;
-                for (int i = 0; i < m && ear < 0; i++)
+                if (size > 4)
                 {
-                    int p = remaining[(i + m - 1) % m], c = remaining[i], q = remaining[(i + 1) % m];
-                    if (orientation * Cross(positions, u, v, p, c, q) <= 0) continue; // reflex or flat
-                    bool empty = true;
-                    for (int j = 0; j < m && empty; j++)
-                    {
-                        int w = remaining[j];
-                        if (w == p || w == c || w == q) continue;
-                        if (orientation * Cross(positions, u, v, p, c, w) >= 0
-                            && orientation * Cross(positions, u, v, c, q, w) >= 0
-                            && orientation * Cross(positions, u, v, q, p, w) >= 0)
-                        {
-                            empty = false;
-                        }
-                    }
-                    if (empty) ear = i;
+                    sizes.Add(size);
+                    for (int k = 0; k < size; k++) indices.Add(faceIndices[start + k]);
                 }
-                if (ear < 0) ear = 1; // no ear: cut a fan corner so the loop ends
-                int mm = remaining.Count;
-                triangles.Add(new[] { remaining[(ear + mm - 1) % mm], remaining[ear], remaining[(ear + 1) % mm] });
-                remaining.RemoveAt(ear);
+                start += (int)size;
             }
-            triangles.Add(new[] { remaining[0], remaining[1], remaining[2] });
-            return triangles;
-        }
-
-        private static double Cross(double[] p, int u, int v, int a, int b, int c)
-        {
-            double abu = p[3 * b + u] - p[3 * a + u], abv = p[3 * b + v] - p[3 * a + v];
-            double acu = p[3 * c + u] - p[3 * a + u], acv = p[3 * c + v] - p[3 * a + v];
-            return abu * acv - abv * acu;
+            var groups = new List<int[]>[sizes.Count];
+            for (int i = 0; i < groups.Length; i++) groups[i] = new List<int[]>();
+            if (groups.Length == 0) return groups;
+            // Only the n-gons, over all the vertices: triangulation keeps vertex indices.
+            using (WeftMesh ngons = WeftMesh.Create(positions, sizes.ToArray(), indices.ToArray()))
+            {
+                uint[] parents;
+                using (WeftMesh triangles = Subdivision.Triangulate(ngons, out parents))
+                {
+                    uint[] triangleSizes, corners;
+                    triangles.GetFaces(out triangleSizes, out corners);
+                    for (int t = 0; t < parents.Length; t++)
+                    {
+                        groups[parents[t]].Add(new[] { (int)corners[3 * t], (int)corners[3 * t + 1], (int)corners[3 * t + 2] });
+                    }
+                }
+            }
+            return groups;
         }
 
         /// <summary>
-        /// Builds polygons from closed polylines (each a list of x, y, z
-        /// corners, with or without the closing point repeated), merging
-        /// corners closer than <paramref name="tolerance"/> through a grid
-        /// hash, so neighbouring polygons share vertices.
+        /// Builds one mesh from closed polylines (each a list of x, y, z
+        /// corners, with or without the closing point repeated): each polyline
+        /// becomes a face of its own corners (<c>weft_mesh_new</c>), then the
+        /// library welds corners closer than <paramref name="tolerance"/>
+        /// (<c>weft_weld</c>), so neighbouring polygons share vertices.
         /// </summary>
         public static PolygonArrays FromPolylines(IList<double[]> polylines, double tolerance)
         {
-            double cell = tolerance > 0 ? tolerance : 1e-9;
-            var grid = new Dictionary<long, List<int>>();
             var positions = new List<double>();
-            var sizes = new List<uint>();
+            var sizes = new List<uint>(polylines.Count);
             var indices = new List<uint>();
             foreach (double[] line in polylines)
             {
@@ -212,80 +185,48 @@ namespace Weft.Grasshopper
                 {
                     count--; // closing point repeated
                 }
-                var face = new List<uint>(count);
-                for (int i = 0; i < count; i++)
+                uint first = (uint)(positions.Count / 3);
+                for (int i = 0; i < 3 * count; i++) positions.Add(line[i]);
+                for (int i = 0; i < count; i++) indices.Add(first + (uint)i);
+                sizes.Add((uint)count);
+            }
+            using (WeftMesh separate = WeftMesh.Create(positions.ToArray(), sizes.ToArray(), indices.ToArray()))
+            using (WeftMesh welded = Mending.Weld(separate, tolerance))
+            {
+                return FromWeft(welded);
+            }
+        }
+
+        /// <summary>Joins several polygon sets into one mesh (<c>weft_join</c>: each set's vertices after the ones before).</summary>
+        public static PolygonArrays Join(IList<PolygonArrays> parts)
+        {
+            var meshes = new WeftMesh[parts.Count];
+            try
+            {
+                for (int i = 0; i < parts.Count; i++)
                 {
-                    uint vertex = FindOrAdd(grid, positions, line[3 * i], line[3 * i + 1], line[3 * i + 2], cell, tolerance);
-                    if (face.Count == 0 || face[face.Count - 1] != vertex) face.Add(vertex);
+                    meshes[i] = WeftMesh.Create(parts[i].Positions, parts[i].FaceSizes, parts[i].FaceIndices);
                 }
-                if (face.Count > 1 && face[0] == face[face.Count - 1]) face.RemoveAt(face.Count - 1);
-                sizes.Add((uint)face.Count);
-                indices.AddRange(face);
-            }
-            return new PolygonArrays { Positions = positions.ToArray(), FaceSizes = sizes.ToArray(), FaceIndices = indices.ToArray() };
-        }
-
-        private static uint FindOrAdd(Dictionary<long, List<int>> grid, List<double> positions, double x, double y, double z, double cell, double tolerance)
-        {
-            long cx = (long)Math.Floor(x / cell), cy = (long)Math.Floor(y / cell), cz = (long)Math.Floor(z / cell);
-            for (long i = cx - 1; i <= cx + 1; i++)
-            for (long j = cy - 1; j <= cy + 1; j++)
-            for (long k = cz - 1; k <= cz + 1; k++)
-            {
-                List<int> bucket;
-                if (!grid.TryGetValue(Key(i, j, k), out bucket)) continue;
-                foreach (int v in bucket)
+                using (WeftMesh joined = Mending.Join(meshes))
                 {
-                    double dx = positions[3 * v] - x, dy = positions[3 * v + 1] - y, dz = positions[3 * v + 2] - z;
-                    if (dx * dx + dy * dy + dz * dz <= tolerance * tolerance) return (uint)v;
+                    return FromWeft(joined);
                 }
             }
-            int index = positions.Count / 3;
-            positions.Add(x);
-            positions.Add(y);
-            positions.Add(z);
-            List<int> own;
-            long key = Key(cx, cy, cz);
-            if (!grid.TryGetValue(key, out own))
+            finally
             {
-                own = new List<int>();
-                grid[key] = own;
+                foreach (WeftMesh mesh in meshes)
+                {
+                    if (mesh != null) mesh.Dispose();
+                }
             }
-            own.Add(index);
-            return (uint)index;
         }
 
-        private static long Key(long i, long j, long k)
+        /// <summary>A Weft mesh's arrays.</summary>
+        public static PolygonArrays FromWeft(WeftMesh mesh)
         {
-            // 21 bits per axis is plenty to keep distinct neighbouring cells apart.
-            return ((i & 0x1FFFFF) << 42) | ((j & 0x1FFFFF) << 21) | (k & 0x1FFFFF);
-        }
-        /// <summary>Puts several polygon sets into one, offsetting each set's indices past the vertices before it.</summary>
-        public static PolygonArrays Concatenate(IList<PolygonArrays> parts)
-        {
-            var positions = new List<double>();
-            var sizes = new List<uint>();
-            var indices = new List<uint>();
-            foreach (PolygonArrays part in parts)
-            {
-                uint offset = (uint)(positions.Count / 3);
-                positions.AddRange(part.Positions);
-                sizes.AddRange(part.FaceSizes);
-                foreach (uint i in part.FaceIndices) indices.Add(i + offset);
-            }
-            return new PolygonArrays { Positions = positions.ToArray(), FaceSizes = sizes.ToArray(), FaceIndices = indices.ToArray() };
-        }
-
-        /// <summary>The arrays of the triangulated mesh (quads split along the shorter diagonal, n-gons ear-clipped in Weft); positions are shared.</summary>
-        public static PolygonArrays Triangulate(PolygonArrays polygons)
-        {
-            using (WeftMesh mesh = WeftMesh.Create(polygons.Positions, polygons.FaceSizes, polygons.FaceIndices))
-            using (WeftMesh triangles = Subdivision.Triangulate(mesh))
-            {
-                var result = new PolygonArrays { Positions = polygons.Positions };
-                triangles.GetFaces(out result.FaceSizes, out result.FaceIndices);
-                return result;
-            }
+            var result = new PolygonArrays { Positions = mesh.GetPositions() };
+            mesh.GetFaces(out result.FaceSizes, out result.FaceIndices);
+            return result;
         }
     }
 }

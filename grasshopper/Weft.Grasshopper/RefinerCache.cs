@@ -135,3 +135,57 @@ namespace Weft.Grasshopper
         }
     }
 }
+
+namespace Weft.Grasshopper
+{
+    /// <summary>
+    /// One <see cref="RefinerCache"/> per branch of a data tree (per solve
+    /// iteration), so a tree of cages with different topologies does not
+    /// re-plan every branch on every solution. Caches of branches the last
+    /// solution no longer had are freed when it ends.
+    /// </summary>
+    public sealed class RefinerPool : IDisposable
+    {
+        private readonly System.Collections.Generic.List<RefinerCache> caches = new System.Collections.Generic.List<RefinerCache>();
+        private int used;
+
+        /// <summary>How many branch caches are alive.</summary>
+        public int Count
+        {
+            get { return caches.Count; }
+        }
+
+        /// <summary>The cache of branch (iteration) <paramref name="branch"/>, created on first use.</summary>
+        public RefinerCache For(int branch)
+        {
+            if (branch < 0) throw new ArgumentOutOfRangeException("branch", branch, "a branch index is 0 or more");
+            while (caches.Count <= branch) caches.Add(new RefinerCache());
+            used = Math.Max(used, branch + 1);
+            return caches[branch];
+        }
+
+        /// <summary>Call before a solution's first branch.</summary>
+        public void BeginSolution()
+        {
+            used = 0;
+        }
+
+        /// <summary>Call after a solution's last branch: frees the caches of branches it did not use.</summary>
+        public void EndSolution()
+        {
+            for (int i = caches.Count - 1; i >= used; i--)
+            {
+                caches[i].Dispose();
+                caches.RemoveAt(i);
+            }
+        }
+
+        /// <summary>Frees every native refiner (the component left its document, or the document closed).</summary>
+        public void Dispose()
+        {
+            foreach (RefinerCache cache in caches) cache.Dispose();
+            caches.Clear();
+            used = 0;
+        }
+    }
+}

@@ -10,6 +10,14 @@ namespace Weft.Grasshopper
     /// cross here (through <c>GetUnsafeLock</c>, no per-element native calls);
     /// the face layout conversion is in <see cref="MeshArrays"/>.
     /// </summary>
+    /// <remarks>
+    /// grasshopper/tests/replay_rhino_meshes.py replays every call this class
+    /// makes on a Rhino mesh, in the same order, on openNURBS (rhino3dm), and
+    /// fails when a mesh member used here is missing from its list: change
+    /// both together. openNURBS keeps double-precision vertices only on a
+    /// mesh that has vertices, and the unsafe lock throws for arrays a mesh
+    /// does not have, so counts come first and empty arrays are never locked.
+    /// </remarks>
     public static class RhinoMeshes
     {
         /// <summary>
@@ -20,46 +28,52 @@ namespace Weft.Grasshopper
         {
             double[] positions;
             int[] faces;
-            MeshUnsafeLock data = mesh.GetUnsafeLock(false);
-            try
+            int vertexCount = mesh.Vertices.Count;
+            int faceCount = mesh.Faces.Count;
+            positions = new double[3 * vertexCount];
+            faces = new int[4 * faceCount];
+            if (vertexCount > 0 || faceCount > 0)
             {
-                int vertexCount;
-                if (mesh.Vertices.UseDoublePrecisionVertices)
+                MeshUnsafeLock data = mesh.GetUnsafeLock(false);
+                try
                 {
-                    Point3d* points = data.VertexPoint3dArray(out vertexCount);
-                    positions = new double[3 * vertexCount];
-                    for (int i = 0; i < vertexCount; i++)
+                    int length;
+                    if (vertexCount > 0 && mesh.Vertices.UseDoublePrecisionVertices)
                     {
-                        positions[3 * i] = points[i].X;
-                        positions[3 * i + 1] = points[i].Y;
-                        positions[3 * i + 2] = points[i].Z;
+                        Point3d* points = data.VertexPoint3dArray(out length);
+                        for (int i = 0; i < vertexCount; i++)
+                        {
+                            positions[3 * i] = points[i].X;
+                            positions[3 * i + 1] = points[i].Y;
+                            positions[3 * i + 2] = points[i].Z;
+                        }
+                    }
+                    else if (vertexCount > 0)
+                    {
+                        Point3f* points = data.VertexPoint3fArray(out length);
+                        for (int i = 0; i < vertexCount; i++)
+                        {
+                            positions[3 * i] = points[i].X;
+                            positions[3 * i + 1] = points[i].Y;
+                            positions[3 * i + 2] = points[i].Z;
+                        }
+                    }
+                    if (faceCount > 0)
+                    {
+                        MeshFace* rhinoFaces = data.FacesArray(out length);
+                        for (int f = 0; f < faceCount; f++)
+                        {
+                            faces[4 * f] = rhinoFaces[f].A;
+                            faces[4 * f + 1] = rhinoFaces[f].B;
+                            faces[4 * f + 2] = rhinoFaces[f].C;
+                            faces[4 * f + 3] = rhinoFaces[f].D;
+                        }
                     }
                 }
-                else
+                finally
                 {
-                    Point3f* points = data.VertexPoint3fArray(out vertexCount);
-                    positions = new double[3 * vertexCount];
-                    for (int i = 0; i < vertexCount; i++)
-                    {
-                        positions[3 * i] = points[i].X;
-                        positions[3 * i + 1] = points[i].Y;
-                        positions[3 * i + 2] = points[i].Z;
-                    }
+                    mesh.ReleaseUnsafeLock(data);
                 }
-                int faceCount;
-                MeshFace* rhinoFaces = data.FacesArray(out faceCount);
-                faces = new int[4 * faceCount];
-                for (int f = 0; f < faceCount; f++)
-                {
-                    faces[4 * f] = rhinoFaces[f].A;
-                    faces[4 * f + 1] = rhinoFaces[f].B;
-                    faces[4 * f + 2] = rhinoFaces[f].C;
-                    faces[4 * f + 3] = rhinoFaces[f].D;
-                }
-            }
-            finally
-            {
-                mesh.ReleaseUnsafeLock(data);
             }
             var boundaries = new List<int[]>();
             var members = new List<int[]>();
@@ -99,35 +113,54 @@ namespace Weft.Grasshopper
         public static unsafe Mesh FromArrays(double[] positions, RhinoArrays rhino)
         {
             var mesh = new Mesh();
-            mesh.Vertices.UseDoublePrecisionVertices = true;
             int vertexCount = positions.Length / 3;
             int faceCount = rhino.Faces.Length / 4;
-            mesh.Vertices.Count = vertexCount;
-            mesh.Faces.Count = faceCount;
-            MeshUnsafeLock data = mesh.GetUnsafeLock(true);
-            try
+            if (vertexCount > 0)
             {
-                int length;
-                Point3d* points = data.VertexPoint3dArray(out length);
-                for (int i = 0; i < vertexCount; i++)
-                {
-                    points[i] = new Point3d(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
-                }
-                MeshFace* faces = data.FacesArray(out length);
-                for (int f = 0; f < faceCount; f++)
-                {
-                    faces[f] = new MeshFace(rhino.Faces[4 * f], rhino.Faces[4 * f + 1], rhino.Faces[4 * f + 2], rhino.Faces[4 * f + 3]);
-                }
+                // Count first: on an empty mesh openNURBS drops the double-precision flag.
+                mesh.Vertices.Count = vertexCount;
+                mesh.Vertices.UseDoublePrecisionVertices = true;
             }
-            finally
+            if (faceCount > 0)
             {
-                mesh.ReleaseUnsafeLock(data);
+                mesh.Faces.Count = faceCount;
+            }
+            if (vertexCount > 0 || faceCount > 0)
+            {
+                MeshUnsafeLock data = mesh.GetUnsafeLock(true);
+                try
+                {
+                    int length;
+                    if (vertexCount > 0)
+                    {
+                        Point3d* points = data.VertexPoint3dArray(out length);
+                        for (int i = 0; i < vertexCount; i++)
+                        {
+                            points[i] = new Point3d(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]);
+                        }
+                    }
+                    if (faceCount > 0)
+                    {
+                        MeshFace* faces = data.FacesArray(out length);
+                        for (int f = 0; f < faceCount; f++)
+                        {
+                            faces[f] = new MeshFace(rhino.Faces[4 * f], rhino.Faces[4 * f + 1], rhino.Faces[4 * f + 2], rhino.Faces[4 * f + 3]);
+                        }
+                    }
+                }
+                finally
+                {
+                    mesh.ReleaseUnsafeLock(data);
+                }
             }
             for (int n = 0; n < rhino.NgonBoundaries.Count; n++)
             {
                 mesh.Ngons.AddNgon(MeshNgon.Create(rhino.NgonBoundaries[n], rhino.NgonFaces[n]));
             }
-            mesh.Normals.ComputeNormals();
+            if (faceCount > 0)
+            {
+                mesh.Normals.ComputeNormals();
+            }
             return mesh;
         }
 

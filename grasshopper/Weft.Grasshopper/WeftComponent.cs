@@ -1,6 +1,7 @@
 using System;
 using System.Collections.Generic;
 using System.Drawing;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
 
@@ -27,6 +28,17 @@ namespace Weft.Grasshopper
         protected override Bitmap Icon
         {
             get { return Icons.Load(iconName); }
+        }
+
+        /// <summary>The component class's <c>[Guid]</c>: fixed forever and never shared (check.sh checks both).</summary>
+        public sealed override Guid ComponentGuid
+        {
+            get
+            {
+                var id = (GuidAttribute)Attribute.GetCustomAttribute(GetType(), typeof(GuidAttribute));
+                if (id == null) throw new InvalidOperationException(GetType().Name + " has no [Guid]; every component needs a fixed one");
+                return new Guid(id.Value);
+            }
         }
 
         /// <summary>Runs <see cref="Solve"/>, turning every failure into an error message on the component.</summary>
@@ -128,19 +140,56 @@ namespace Weft.Grasshopper
             }
             if (polylines.Count > 0)
             {
-                parts.Add(MeshArrays.FromPolylines(polylines, DocumentTolerance()));
+                parts.Add(MeshArrays.FromPolylines(polylines, Tolerance()));
             }
             if (parts.Count == 0)
             {
                 AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "No mesh or closed polyline to work on.");
                 return null;
             }
-            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Concatenate(parts);
+            PolygonArrays all = parts.Count == 1 ? parts[0] : MeshArrays.Join(parts);
             if (allColoured && polylines.Count == 0 && partColours.Count * 3 == all.Positions.Length)
             {
                 colours = partColours.ToArray();
             }
             return all;
+        }
+
+        /// <summary>
+        /// The active Rhino document's absolute tolerance; without a document (Rhino.Compute,
+        /// headless Rhino) <see cref="Tolerances.Default"/>, with a remark saying so.
+        /// </summary>
+        protected double Tolerance()
+        {
+            bool fellBack;
+            double tolerance = Tolerances.Choose(Rhino.RhinoDoc.ActiveDoc == null ? double.NaN : DocumentTolerance(), out fellBack);
+            if (fellBack)
+            {
+                Remark("No Rhino document gives a tolerance: " + Tolerances.Default + " is used where one is needed and T is empty.");
+            }
+            return tolerance;
+        }
+
+        /// <summary>Registers an optional tolerance input T; <paramref name="what"/> says what it measures.</summary>
+        protected static void AddToleranceInput(GH_InputParamManager pManager, string what)
+        {
+            int index = pManager.AddNumberParameter("Tolerance", "T", what + "; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            pManager[index].Optional = true;
+        }
+
+        /// <summary>
+        /// The tolerance input at <paramref name="index"/>, or <see cref="Tolerance"/> when it is
+        /// empty; a negative or NaN value is refused, naming T.
+        /// </summary>
+        protected double GetTolerance(IGH_DataAccess DA, int index)
+        {
+            double tolerance = 0;
+            if (!DA.GetData(index, ref tolerance)) return Tolerance();
+            if (double.IsNaN(tolerance) || tolerance < 0)
+            {
+                throw new WeftException(WeftStatus.InvalidArgument, "T is " + tolerance + "; the tolerance must be 0 or more");
+            }
+            return tolerance;
         }
 
         /// <summary>The value of an item input, or <paramref name="fallback"/> when it is empty.</summary>
@@ -229,21 +278,19 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>
-    /// A component that reads one mesh (input 0, M), applies one operation and
-    /// outputs one mesh (output 0, M): subclasses only register their options
-    /// and call the wrapper.
+    /// A component that reads one mesh (input 0, M), then its options, and
+    /// answers from it: subclasses register their options and outputs and
+    /// implement <see cref="Query"/>.
     /// </summary>
-    public abstract class MeshOperationComponent : WeftComponent
+    public abstract class MeshQueryComponent : WeftComponent
     {
         private readonly string inputDescription;
-        private readonly string outputDescription;
 
-        protected MeshOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
-                                         string inputDescription, string outputDescription)
+        protected MeshQueryComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                     string inputDescription)
             : base(name, nickname, description, subcategory, iconName)
         {
             this.inputDescription = inputDescription;
-            this.outputDescription = outputDescription;
         }
 
         protected sealed override void RegisterInputParams(GH_InputParamManager pManager)
@@ -252,27 +299,105 @@ namespace Weft.Grasshopper
             RegisterOptions(pManager);
         }
 
-        /// <summary>Registers the inputs after M (index 1 on).</summary>
-        protected abstract void RegisterOptions(GH_InputParamManager pManager);
+        /// <summary>Registers the inputs after M (index 1 on); none by default.</summary>
+        protected virtual void RegisterOptions(GH_InputParamManager pManager)
+        {
+        }
+
+        protected sealed override void Solve(IGH_DataAccess DA)
+        {
+            using (WeftMesh mesh = GetMesh(DA, 0))
+            {
+                if (mesh == null) return;
+                Query(mesh, DA);
+            }
+        }
+
+        /// <summary>Reads the options from DA and sets the outputs; the mesh is disposed afterwards.</summary>
+        protected abstract void Query(WeftMesh mesh, IGH_DataAccess DA);
+    }
+
+    /// <summary>
+    /// A component that reads one mesh (input 0, M), applies one operation and
+    /// outputs one mesh (output 0, M): subclasses only register their options
+    /// and call the wrapper.
+    /// </summary>
+    public abstract class MeshOperationComponent : MeshQueryComponent
+    {
+        private readonly string outputDescription;
+
+        protected MeshOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                         string inputDescription, string outputDescription)
+            : base(name, nickname, description, subcategory, iconName, inputDescription)
+        {
+            this.outputDescription = outputDescription;
+        }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
             AddMeshOutput(pManager, outputDescription);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected sealed override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            using (WeftMesh result = Apply(mesh, DA))
             {
-                if (mesh == null) return;
-                using (WeftMesh result = Apply(mesh, DA))
-                {
-                    SetMesh(DA, 0, result);
-                }
+                SetMesh(DA, 0, result);
             }
         }
 
         /// <summary>The operation: reads its options from DA and returns the new mesh.</summary>
         protected abstract WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA);
+    }
+}
+
+namespace Weft.Grasshopper
+{
+    /// <summary>A mesh operation whose only option is the levels input L (default 1).</summary>
+    public abstract class LevelsOperationComponent : MeshOperationComponent
+    {
+        private readonly Func<WeftMesh, int, WeftMesh> operation;
+
+        protected LevelsOperationComponent(string name, string nickname, string description, string subcategory, string iconName,
+                                           Func<WeftMesh, int, WeftMesh> operation)
+            : base(name, nickname, description, subcategory, iconName, "The mesh to split.", "The split mesh.")
+        {
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            AddLevelsInput(pManager);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, Get(DA, 1, 1));
+        }
+    }
+
+    /// <summary>A mesh operation whose only option is the fraction input F (default 0.25).</summary>
+    public abstract class FractionOperationComponent : MeshOperationComponent
+    {
+        private readonly string fractionDescription;
+        private readonly Func<WeftMesh, double, WeftMesh> operation;
+
+        protected FractionOperationComponent(string name, string nickname, string description, string iconName, string fractionDescription,
+                                             Func<WeftMesh, double, WeftMesh> operation)
+            : base(name, nickname, description, "Transform", iconName, "The mesh to bevel.", "The bevelled mesh.")
+        {
+            this.fractionDescription = fractionDescription;
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            pManager.AddNumberParameter("Fraction", "F", fractionDescription, GH_ParamAccess.item, 0.25);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, Get(DA, 1, 0.25));
+        }
     }
 }

@@ -4,6 +4,10 @@ using System.IO;
 using System.Reflection;
 using Grasshopper.Kernel;
 
+// A normal load from the file, so Assembly.Location names the plug-in's folder
+// (Grasshopper's COFF option loads from bytes and leaves it empty).
+[assembly: GH_Loading(GH_LoadingDemand.ForceDirect)]
+
 namespace Weft.Grasshopper
 {
     /// <summary>The plug-in's identity in Grasshopper.</summary>
@@ -19,9 +23,12 @@ namespace Weft.Grasshopper
             get { return "Subdivision surfaces (Catmull-Clark, Loop) and mesh making and mending, in native code."; }
         }
 
+        /// <summary>The plug-in's id; never changes.</summary>
+        public static readonly Guid PluginId = new Guid("545d14d6-68b0-4670-a93e-78b63feb4f98");
+
         public override Guid Id
         {
-            get { return new Guid("545d14d6-68b0-4670-a93e-78b63feb4f98"); }
+            get { return PluginId; }
         }
 
         public override string AuthorName
@@ -53,6 +60,13 @@ namespace Weft.Grasshopper
     {
         public override GH_LoadingInstruction PriorityLoad()
         {
+            // Should the assembly still have been loaded from bytes, Grasshopper knows the .gha's path.
+            GH_ComponentServer server = global::Grasshopper.Instances.ComponentServer;
+            GH_AssemblyInfo info = server == null ? null : server.FindAssembly(WeftInfo.PluginId);
+            if (info != null && !string.IsNullOrEmpty(info.Location))
+            {
+                NativeLibraryLoader.AddSearchFolder(Path.GetDirectoryName(info.Location));
+            }
             NativeLibraryLoader.EnsureLoaded();
             return GH_LoadingInstruction.Proceed;
         }

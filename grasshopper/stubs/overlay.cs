@@ -22,6 +22,9 @@ namespace Grasshopper.Kernel
         public virtual GH_Exposure Exposure { get { throw null; } }
         protected virtual Bitmap Icon { get { throw null; } }
 
+        public virtual void RemovedFromDocument(GH_Document document) { throw null; }
+        public virtual void DocumentContextChanged(GH_Document document, GH_DocumentContext context) { throw null; }
+
         protected static double DocumentTolerance() { throw null; }
         protected static double DocumentAngleTolerance() { throw null; }
 
@@ -82,6 +85,13 @@ namespace Grasshopper.Kernel
         public virtual string AuthorName { get { throw null; } }
         public virtual string AuthorContact { get { throw null; } }
         public virtual string Version { get { throw null; } }
+    }
+
+    /// <summary>How Grasshopper loads the assembly (an attribute, so written here; Grasshopper 1.0 and later).</summary>
+    [AttributeUsage(AttributeTargets.Assembly)]
+    public sealed class GH_LoadingAttribute : Attribute
+    {
+        public GH_LoadingAttribute(GH_LoadingDemand demand) { throw null; }
     }
 
     public abstract partial class GH_AssemblyPriority

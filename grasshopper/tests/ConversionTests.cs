@@ -15,12 +15,16 @@ namespace Weft.Tests
             t.Run("Rhino triangle (C == D) becomes a 3-vertex face", RhinoTriangle);
             t.Run("Rhino n-gon becomes one polygon in place of its faces", RhinoNgon);
             t.Run("Weft polygons to Rhino faces and n-gons", WeftToRhino);
-            t.Run("ear clipping of a non-convex polygon", EarClipConcave);
+            t.Run("a concave n-gon becomes Rhino triangles covering it, cut by the library", ConcaveNgonToRhino);
             t.Run("closed polylines share welded corners", Polylines);
-            t.Run("concatenation offsets indices", Concatenate);
+            t.Run("joining offsets indices (weft_join)", Concatenate);
             t.Run("converted arrays make a valid Weft mesh", IntoWeft);
             t.Run("refiner cache: a moved cage re-evaluates, new faces re-plan", RefinerCacheReuse);
             t.Run("refiner cache: a failed plan leaves no refiner and raises the library's error", RefinerCacheError);
+            t.Run("refiner pool: one refiner per branch, so alternating topologies plan once each", RefinerPoolPerBranch);
+            t.Run("refiner pool: branches a solution no longer has are freed, Dispose frees all", RefinerPoolFrees);
+            t.Run("face budget: a level too many is refused, naming the level that fits", FaceBudgetRefuses);
+            t.Run("tolerance: no document or a broken one falls back to the stated default", ToleranceFallback);
             t.Run("face polylines are closed rings of the face corners", FacePolylines);
             t.Run("split polylines: closed ones repeat their first point, empty ones skipped", SplitPolylines);
             t.Run("planarity flags and open rings", PlanarityAndRings);
@@ -77,18 +81,19 @@ namespace Weft.Tests
             t.Sequence(indices, back.FaceIndices, "indices after the round trip");
         }
 
-        private static void EarClipConcave()
+        private static void ConcaveNgonToRhino()
         {
             // An L shape (counter-clockwise): a fan from vertex 0 would cover the notch.
             double[] p = { 0, 0, 0, 2, 0, 0, 2, 1, 0, 1, 1, 0, 1, 2, 0, 0, 2, 0 };
-            int[] polygon = { 0, 1, 2, 3, 4, 5 };
-            List<int[]> triangles = MeshArrays.EarClip(p, polygon);
-            t.Equal(4, triangles.Count, "n - 2 triangles");
+            RhinoArrays r = MeshArrays.ToRhino(p, new uint[] { 6 }, new uint[] { 0, 1, 2, 3, 4, 5 });
+            t.Equal(4, r.Faces.Length / 4, "n - 2 triangles");
+            t.Sequence(new[] { 0, 1, 2, 3 }, r.NgonFaces[0], "all four in the n-gon");
             double area = 0;
-            foreach (int[] tri in triangles)
+            for (int f = 0; f < r.Faces.Length / 4; f++)
             {
-                double signed = ((p[3 * tri[1]] - p[3 * tri[0]]) * (p[3 * tri[2] + 1] - p[3 * tri[0] + 1])
-                                 - (p[3 * tri[1] + 1] - p[3 * tri[0] + 1]) * (p[3 * tri[2]] - p[3 * tri[0]])) / 2;
+                int a = r.Faces[4 * f], b = r.Faces[4 * f + 1], c = r.Faces[4 * f + 2];
+                t.Equal(c, r.Faces[4 * f + 3], "a triangle as Rhino stores it (C == D)");
+                double signed = ((p[3 * b] - p[3 * a]) * (p[3 * c + 1] - p[3 * a + 1]) - (p[3 * b + 1] - p[3 * a + 1]) * (p[3 * c] - p[3 * a])) / 2;
                 t.True(signed > 0, "every triangle counter-clockwise like the polygon");
                 area += signed;
             }
@@ -112,7 +117,7 @@ namespace Weft.Tests
         private static void Concatenate()
         {
             var a = new PolygonArrays { Positions = new double[] { 0, 0, 0, 1, 0, 0, 0, 1, 0 }, FaceSizes = new uint[] { 3 }, FaceIndices = new uint[] { 0, 1, 2 } };
-            PolygonArrays both = MeshArrays.Concatenate(new List<PolygonArrays> { a, a });
+            PolygonArrays both = MeshArrays.Join(new List<PolygonArrays> { a, a });
             t.Equal(6, both.Positions.Length / 3, "vertices");
             t.Sequence(new uint[] { 0, 1, 2, 3, 4, 5 }, both.FaceIndices, "offset indices");
         }
@@ -185,6 +190,103 @@ namespace Weft.Tests
             }
         }
 
+        private static void RefinerPoolPerBranch()
+        {
+            var flipped = (uint[])CubeIndices.Clone();
+            Array.Reverse(flipped, 0, 4);
+            // One cache for a two-branch tree (the old way) re-plans on every branch.
+            using (var single = new RefinerCache())
+            {
+                for (int solution = 0; solution < 2; solution++)
+                {
+                    single.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    single.Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                }
+                t.Equal(4, single.PlanCount, "one shared cache plans every branch of every solution");
+            }
+            using (var pool = new RefinerPool())
+            {
+                for (int solution = 0; solution < 3; solution++)
+                {
+                    pool.BeginSolution();
+                    pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.For(1).Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.EndSolution();
+                }
+                t.Equal(1, pool.For(0).PlanCount, "branch 0 planned once in three solutions");
+                t.Equal(1, pool.For(1).PlanCount, "branch 1 planned once in three solutions");
+                t.True(pool.For(1).LastReused, "branch 1 reused its refiner");
+            }
+        }
+
+        private static void RefinerPoolFrees()
+        {
+            var pool = new RefinerPool();
+            pool.BeginSolution();
+            for (int branch = 0; branch < 3; branch++) pool.For(branch).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            pool.EndSolution();
+            t.Equal(3, pool.Count, "three branches, three caches");
+            pool.BeginSolution();
+            pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            pool.EndSolution();
+            t.Equal(1, pool.Count, "a one-branch solution frees the other two");
+            t.True(pool.For(0).LastReused, "the remaining branch keeps its refiner");
+            pool.Dispose();
+            t.Equal(0, pool.Count, "Dispose frees every refiner");
+            try
+            {
+                pool.For(-1);
+                t.Fail("a negative branch was accepted");
+            }
+            catch (ArgumentOutOfRangeException e)
+            {
+                t.True(e.Message.Contains("branch"), "the error names the branch: " + e.Message);
+            }
+        }
+
+        private static void FaceBudgetRefuses()
+        {
+            using (var cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+            {
+                // 6 quads: 24 faces at L = 1, 6 * 4^L after that.
+                t.Equal(96L, FaceBudget.FacesAt(cube, Scheme.CatmullClark, 2), "faces at L = 2");
+                FaceBudget.Check(cube, Scheme.CatmullClark, 5, 6144);
+                try
+                {
+                    FaceBudget.Check(cube, Scheme.CatmullClark, 9, 6144);
+                    t.Fail("L = 9 (1,572,864 faces) passed a budget of 6,144");
+                }
+                catch (WeftException e)
+                {
+                    t.Equal(WeftStatus.ResultTooLarge, e.Status, "status");
+                    t.True(e.Message.Contains("L = 9") && e.Message.Contains("L = 5 is the highest level that fits"), e.Message);
+                }
+                // 20 levels overflow every count: refused, not crashed.
+                try
+                {
+                    FaceBudget.Check(cube, Scheme.CatmullClark, 20, FaceBudget.MaxFaces);
+                    t.Fail("L = 20 passed the default budget");
+                }
+                catch (WeftException e)
+                {
+                    t.True(e.Message.Contains("L = 9 is the highest level that fits"), e.Message);
+                }
+            }
+        }
+
+        private static void ToleranceFallback()
+        {
+            bool fellBack;
+            t.Equal(0.01, Tolerances.Choose(0.01, out fellBack), "a document tolerance is used");
+            t.False(fellBack, "no fallback with a document");
+            foreach (double broken in new[] { double.NaN, 0.0, -1.0, double.PositiveInfinity })
+            {
+                t.Equal(Tolerances.Default, Tolerances.Choose(broken, out fellBack), "fallback for " + broken);
+                t.True(fellBack, "fell back for " + broken);
+            }
+            t.True(Tolerances.Default > 0, "the default is a positive tolerance");
+        }
+
         private static void RefinerCacheError()
         {
             using (var cache = new RefinerCache())
@@ -200,7 +302,14 @@ namespace Weft.Tests
                     t.True(e.Message.Contains("face 0 has 4 vertices"), "message names the face: " + e.Message);
                 }
                 t.Equal(0, cache.PlanCount, "nothing planned");
-                PolygonArrays triangles = MeshArrays.Triangulate(new PolygonArrays { Positions = CubePositions, FaceSizes = CubeSizes, FaceIndices = CubeIndices });
+                PolygonArrays triangles;
+                int split;
+                using (WeftMesh cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+                using (WeftMesh asTriangles = Subdivision.AsTriangles(cube, out split))
+                {
+                    triangles = MeshArrays.FromWeft(asTriangles);
+                }
+                t.Equal(6, split, "six quads split");
                 RefinedArrays loop = cache.Subdivide(triangles.Positions, triangles.FaceSizes, triangles.FaceIndices, Scheme.Loop, 1, NakedEdges.Smooth);
                 t.Equal(48, loop.FaceSizes.Length, "Loop after triangulation: 12 × 4 triangles");
             }

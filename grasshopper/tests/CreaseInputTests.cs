@@ -31,9 +31,23 @@ namespace Weft.Tests
 
         private static uint[] Edges()
         {
-            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            using (WeftMesh cube = CubeMesh())
             {
                 return Toolbar.Edges(cube);
+            }
+        }
+
+        private static WeftMesh CubeMesh()
+        {
+            return WeftMesh.Create(Cube, CubeSizes, CubeIndices);
+        }
+
+        /// <summary>Crease items matched on the cube.</summary>
+        private static uint[] Pairs(IList<CreaseItem> items, double tolerance)
+        {
+            using (WeftMesh cube = CubeMesh())
+            {
+                return CreaseInputs.VertexPairs(cube, items, tolerance);
             }
         }
 
@@ -46,7 +60,7 @@ namespace Weft.Tests
                 CreaseItem.FromEdge(2),
             };
             uint[] edges = Edges();
-            uint[] pairs = CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, items, 0.01);
+            uint[] pairs = Pairs(items, 0.01);
             t.Sequence(new uint[] { 0, 1, 7, 3, edges[4], edges[5] }, pairs, "vertex pairs");
             // The pairs are accepted by the library as edges.
             using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
@@ -61,16 +75,18 @@ namespace Weft.Tests
 
         private static void LineMatchesNothing()
         {
-            uint[] edges = Edges();
             var diagonal = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0), CreaseItem.FromLine(0, 0, 0, 1, 1, 0) };
-            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, diagonal, 0.01), WeftStatus.InvalidArgument,
-                "C[1], the line from (0, 0, 0) to (1, 1, 0), matches no edge of the mesh within 0.01: its ends are vertices but not the ends of one edge");
+            Fails(() => Pairs(diagonal, 0.01), WeftStatus.InvalidArgument,
+                "C[1]: the line from (0, 0, 0) to (1, 1, 0) matches no edge of the mesh within 0.01");
             var far = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0.02) };
-            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, far, 0.01), WeftStatus.InvalidArgument,
-                "C[0], the line from (0, 0, 0) to (1, 0, 0.02), matches no edge of the mesh within 0.01: its end is no vertex of the mesh");
+            Fails(() => Pairs(far, 0.01), WeftStatus.InvalidArgument,
+                "C[0]: the line from (0, 0, 0) to (1, 0, 0.02) matches no edge of the mesh within 0.01");
+            // Edge indices and lines mixed: the refused line is named by its place in C, not among the lines.
+            var mixed = new List<CreaseItem> { CreaseItem.FromEdge(0), CreaseItem.FromLine(0, 0, 0, 1, 0, 0), CreaseItem.FromEdge(1), CreaseItem.FromLine(0, 0, 0, 1, 1, 1) };
+            Fails(() => Pairs(mixed, 0.01), WeftStatus.InvalidArgument, "C[3]: the line from (0, 0, 0) to (1, 1, 1)");
             // Tolerance 0 matches exact end points only.
             var exact = new List<CreaseItem> { CreaseItem.FromLine(0, 0, 0, 1, 0, 0) };
-            t.Sequence(new uint[] { 0, 1 }, CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, exact, 0), "exact match");
+            t.Sequence(new uint[] { 0, 1 }, Pairs(exact, 0), "exact match");
         }
 
         private static void EdgeIndices()
@@ -79,22 +95,25 @@ namespace Weft.Tests
             t.Equal(24, edges.Length, "12 edges");
             var items = new List<CreaseItem> { CreaseItem.FromEdge(11), CreaseItem.FromEdge(0) };
             t.Sequence(new[] { edges[22], edges[23], edges[0], edges[1] },
-                CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, items, 0.01), "pairs of edges 11 and 0");
+                Pairs(items, 0.01), "pairs of edges 11 and 0");
             var bad = new List<CreaseItem> { CreaseItem.FromEdge(0), CreaseItem.FromEdge(12) };
-            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, bad, 0.01), WeftStatus.IndexOutOfRange,
+            Fails(() => Pairs(bad, 0.01), WeftStatus.IndexOutOfRange,
                 "C[1] is edge 12, but the mesh has 12 edges (numbered 0 to 11");
             var negative = new List<CreaseItem> { CreaseItem.FromEdge(-1) };
-            Fails(() => CreaseInputs.VertexPairs(Cube, CubeSizes, CubeIndices, edges, negative, 0.01), WeftStatus.IndexOutOfRange, "C[0] is edge -1");
+            Fails(() => Pairs(negative, 0.01), WeftStatus.IndexOutOfRange, "C[0] is edge -1");
         }
 
         private static void CornerPoints()
         {
             // Two vertices 0.004 apart: the nearer one wins.
             double[] positions = { 0, 0, 0, 0.004, 0, 0, 1, 0, 0 };
-            t.Sequence(new uint[] { 1, 2, 0 },
-                CreaseInputs.CornerVertices(positions, new[] { 0.003, 0, 0, 1, 0.005, 0, -0.001, 0, 0 }, 0.01), "nearest vertices");
-            Fails(() => CreaseInputs.CornerVertices(positions, new[] { 0.0, 0, 0, 0.5, 0, 0 }, 0.01), WeftStatus.InvalidArgument,
-                "P[1] at (0.5, 0, 0) is no vertex of the mesh within 0.01");
+            using (WeftMesh points = WeftMesh.Create(positions, new uint[0], new uint[0]))
+            {
+                t.Sequence(new uint[] { 1, 2, 0 },
+                    CreaseInputs.CornerVertices(points, new[] { 0.003, 0, 0, 1, 0.005, 0, -0.001, 0, 0 }, 0.01), "nearest vertices");
+                Fails(() => CreaseInputs.CornerVertices(points, new[] { 0.0, 0, 0, 0.5, 0, 0 }, 0.01), WeftStatus.InvalidArgument,
+                    "P[1]: the point at (0.5, 0, 0) is no vertex of the mesh within 0.01");
+            }
         }
 
         private static void SharpnessLists()

@@ -492,12 +492,13 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 );
             }
             if scheme == Scheme::Loop {
-                if let Some((face, size)) = file.mesh.first_non_triangle() {
-                    let before = file.mesh.face_count();
-                    file = carry::triangulate(&file)
-                        .map_err(|e| operation_failed(input, "triangulate", e))?;
+                let before = file.mesh.face_count();
+                let split;
+                (file, split) = carry::as_triangles(&file)
+                    .map_err(|e| operation_failed(input, "triangulate", e))?;
+                if split > 0 {
                     eprintln!(
-                        "{}: Loop needs triangles (face {face} has {size} corners): triangulated {before} faces into {}",
+                        "{}: Loop needs triangles: triangulated {split} of {before} faces into {} triangles",
                         input.display(),
                         file.mesh.face_count()
                     );
@@ -630,7 +631,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         }
         Command::Triangulate { input, output } => {
             let file = read_file(cli, input)?;
-            let triangles = with_progress("triangulating", || carry::triangulate(&file))
+            let (triangles, _) = with_progress("triangulating", || carry::as_triangles(&file))
                 .map_err(|e| operation_failed(input, "triangulate", e))?;
             write_file(output, &triangles, &io::WriteOptions::default())
         }

@@ -88,7 +88,11 @@ fn point_count_arg(count: usize, name: &str) -> Result<usize, Failure> {
 ///
 /// # Safety
 /// `points` is NULL or holds `3 * count` doubles.
-unsafe fn points_arg(points: *const f64, count: usize, name: &str) -> Result<Vec<DVec3>, Failure> {
+pub(crate) unsafe fn points_arg(
+    points: *const f64,
+    count: usize,
+    name: &str,
+) -> Result<Vec<DVec3>, Failure> {
     let length = point_count_arg(count, name)?;
     let flat = input_slice(points, length, name)?;
     let mut out = Vec::new();

@@ -8,6 +8,7 @@ pub mod boundary;
 pub mod creases;
 pub mod files;
 pub mod make;
+pub mod matching;
 pub mod mend;
 pub mod mesh;
 pub mod refiner;

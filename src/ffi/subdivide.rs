@@ -6,7 +6,7 @@ use crate::ffi::boundary::{
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::subdivide::{self, NakedEdges, Scheme};
-use crate::triangulate::triangulate;
+use crate::triangulate::{as_triangles, triangulate};
 
 /// Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
 pub const WEFT_NAKED_EDGES_FIXED: u32 = 0;
@@ -199,6 +199,80 @@ pub unsafe extern "C" fn weft_triangulate(
         let out = out_param(out_mesh, "out_mesh")?;
         let mesh = mesh_ref(mesh, "mesh")?;
         let result = triangulate(mesh)?;
+        WeftMesh::write(out, result.mesh);
+        Ok(())
+    })
+}
+
+/// Triangulates every face as `weft_triangulate` does, and gives the face
+/// of the input that each triangle was cut from.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the triangle mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+/// `out_parent_faces` can be NULL; otherwise it must have room for the
+/// output's face count, the sum over the input's faces of (size − 2)
+/// values (`weft_mesh_index_count(mesh) - 2 * weft_mesh_face_count(mesh)`),
+/// and receives the parent face of every output face on success.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable;
+/// `out_parent_faces` is NULL or holds as many writable values as the
+/// output has faces.
+#[no_mangle]
+pub unsafe extern "C" fn weft_triangulate_ex(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_parent_faces: *mut u32,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let result = triangulate(mesh)?;
+        if !out_parent_faces.is_null() {
+            let parents = output_slice(
+                out_parent_faces,
+                result.parent_faces.len(),
+                "out_parent_faces",
+            )?;
+            parents.copy_from_slice(&result.parent_faces);
+        }
+        WeftMesh::write(out, result.mesh);
+        Ok(())
+    })
+}
+
+/// Gives the mesh as triangles, for the operations that need them (Loop,
+/// `weft_split_triangles`): a copy when every face is a triangle, else the
+/// triangulation of `weft_triangulate`.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the triangle mesh on success (free it with
+/// `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+/// `out_split_faces` can be NULL; otherwise it receives, on success, the
+/// number of input faces that were not triangles (0 for a copy), so a
+/// front-end can say "triangulated N faces".
+///
+/// Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable;
+/// `out_split_faces` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_as_triangles(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_split_faces: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (result, split_faces) = as_triangles(mesh)?;
+        if !out_split_faces.is_null() {
+            *out_split_faces = split_faces;
+        }
         WeftMesh::write(out, result.mesh);
         Ok(())
     })

@@ -422,10 +422,57 @@ static void test_bad_arguments(void) {
   weft_mesh_free(mesh);
 }
 
+/* A quad, a triangle and a pentagon: 2 + 1 + 3 triangles. */
+static void test_triangulate_with_parents_and_as_triangles(void) {
+  const double positions[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, 0, 2, 1, 0, 3, 1, 0, 2.5, 2, 0};
+  const uint32_t sizes[] = {4, 3, 5};
+  const uint32_t indices[] = {0, 1, 2, 3, 1, 4, 5, 2, 1, 5, 6, 7};
+  const uint32_t expected_parents[] = {0, 0, 1, 2, 2, 2};
+  WeftMesh *mesh = make(positions, 8, sizes, 3, indices, 12), *triangles = NULL, *again = NULL, *copy = NULL;
+  uint32_t parents[7] = {99, 99, 99, 99, 99, 99, 99};
+  size_t split = 99;
+
+  CHECK_STATUS(weft_triangulate_ex(mesh, &triangles, parents), WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(triangles) == weft_mesh_index_count(mesh) - 2 * weft_mesh_face_count(mesh));
+  CHECK(memcmp(parents, expected_parents, sizeof expected_parents) == 0 && parents[6] == 99);
+  CHECK_STATUS(weft_triangulate(mesh, &again), WEFT_STATUS_OK);
+  CHECK(identical(triangles, again));
+  weft_mesh_free(again);
+  again = NULL;
+  CHECK_STATUS(weft_triangulate_ex(mesh, &again, NULL), WEFT_STATUS_OK);
+  CHECK(identical(triangles, again));
+  weft_mesh_free(again);
+  again = NULL;
+  parents[0] = 99;
+  CHECK_STATUS(weft_triangulate_ex(mesh, NULL, parents), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("out_mesh is NULL");
+  CHECK_STATUS(weft_triangulate_ex(NULL, &again, parents), WEFT_STATUS_NULL_POINTER);
+  CHECK(again == NULL && parents[0] == 99);
+
+  CHECK_STATUS(weft_as_triangles(mesh, &again, &split), WEFT_STATUS_OK);
+  CHECK(split == 2 && identical(triangles, again));
+  CHECK_STATUS(weft_as_triangles(triangles, &copy, &split), WEFT_STATUS_OK);
+  CHECK(split == 0 && identical(triangles, copy));
+  weft_mesh_free(copy);
+  copy = NULL;
+  CHECK_STATUS(weft_as_triangles(triangles, &copy, NULL), WEFT_STATUS_OK);
+  CHECK(identical(triangles, copy));
+  split = 99;
+  CHECK_STATUS(weft_as_triangles(NULL, &copy, &split), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("mesh is NULL");
+  CHECK_STATUS(weft_as_triangles(mesh, NULL, &split), WEFT_STATUS_NULL_POINTER);
+  CHECK(split == 99);
+  weft_mesh_free(copy);
+  weft_mesh_free(again);
+  weft_mesh_free(triangles);
+  weft_mesh_free(mesh);
+}
+
 int main(void) {
   test_cube();
   test_grid_modes();
   test_loop_and_triangulate();
+  test_triangulate_with_parents_and_as_triangles();
   test_loop_closed();
   test_loop_open_modes();
   test_level_zero_is_a_copy();

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -13,24 +14,17 @@ namespace Weft.Grasshopper
     /// sharpness, P corner points, PS their sharpness, R the creasing rule,
     /// T the matching tolerance, X the limit switch.
     /// </summary>
-    public abstract class CreasedSubdivisionComponent : WeftComponent
+    public abstract class CreasedSubdivisionComponent : SubdivisionComponent
     {
-        private readonly Scheme scheme;
-
-        // One plan per cage topology and crease set: moving the cage only re-evaluates positions.
-        private readonly RefinerCache cache = new RefinerCache();
-
         protected CreasedSubdivisionComponent(Scheme scheme, string name, string nickname, string description, string iconName)
-            : base(name, nickname, description, "Subdivide", iconName)
+            : base(scheme, name, nickname, description, iconName)
         {
-            this.scheme = scheme;
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
-            AddMeshInput(pManager, "M", "The mesh to subdivide; its vertex colours, when it has one per vertex, are carried through.");
-            pManager.AddIntegerParameter("Level", "L", "Subdivision levels (0 returns the input, or its limit surface with X).", GH_ParamAccess.item, 1);
-            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed.", GH_ParamAccess.item, 1);
+            AddSubdivisionInputs(pManager, "The mesh to subdivide; its vertex colours, when it has one per vertex, are carried through.",
+                                 "Subdivision levels (0 returns the input, or its limit surface with X).");
             pManager.AddGenericParameter("Creases", "C",
                 "Creased edges: lines whose end points are the edge's vertices (within T), or edge indices as Mesh Edges (wbEdges) lists them.",
                 GH_ParamAccess.list);
@@ -42,7 +36,7 @@ namespace Weft.Grasshopper
                 "One sharpness for all corners or one per corner, as for creases; 10 or more (the default) pins the vertex where it is.",
                 GH_ParamAccess.list);
             pManager.AddIntegerParameter("Rule", "R", "How semi-sharp creases soften: 0 uniform, 1 Chaikin (averaged along the crease).", GH_ParamAccess.item, 0);
-            pManager.AddNumberParameter("Tolerance", "T", "How far a crease line's ends or a corner point may be from a vertex; the document's absolute tolerance when empty.", GH_ParamAccess.item);
+            AddToleranceInput(pManager, "How far a crease line's ends or a corner point may be from a vertex");
             pManager.AddBooleanParameter("Limit", "X", "Project the vertices onto the limit surface and use its normals (smooth shading, offsets).", GH_ParamAccess.item, false);
             for (int i = 3; i <= 8; i++) pManager[i].Optional = true;
         }
@@ -63,12 +57,8 @@ namespace Weft.Grasshopper
             Point3d[] cornerPoints = GetList<Point3d>(DA, 5);
             double[] cornerSharpness = GetList<double>(DA, 6);
             var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
-            double tolerance = Get(DA, 8, DocumentTolerance());
+            double tolerance = GetTolerance(DA, 8);
             bool limit = Get(DA, 9, false);
-            if (double.IsNaN(tolerance) || tolerance < 0)
-            {
-                throw new WeftException(WeftStatus.InvalidArgument, "T is " + tolerance + "; the tolerance must be 0 or more");
-            }
 
             int[] colours;
             PolygonArrays cage = GetPolygons(DA, 0, out colours);
@@ -76,43 +66,29 @@ namespace Weft.Grasshopper
 
             var options = new SubdivisionOptions(nakedEdges) { Creasing = rule };
             CreaseItem[] items = ToCreaseItems(creaseItems);
-            if (items.Length > 0)
+            using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
             {
-                uint[] edgePairs = null;
-                if (Array.Exists(items, item => item.Line == null))
+                if (items.Length > 0)
                 {
-                    using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
-                    {
-                        edgePairs = Toolbar.Edges(mesh);
-                    }
+                    uint[] pairs = CreaseInputs.VertexPairs(mesh, items, tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
+                    for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
                 }
-                uint[] pairs = CreaseInputs.VertexPairs(cage.Positions, cage.FaceSizes, cage.FaceIndices, edgePairs, items, tolerance);
-                double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
-                for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
-            }
-            else if (creaseSharpness.Length > 1)
-            {
-                Warn("CS has values but C names no crease.");
-            }
-            if (cornerPoints.Length > 0)
-            {
-                uint[] corners = CreaseInputs.CornerVertices(cage.Positions, RhinoMeshes.FromPoints(cornerPoints), tolerance);
-                double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
-                for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
-            }
-
-            if (scheme == Scheme.Loop)
-            {
-                int others = LoopComponent.CountNonTriangles(cage.FaceSizes);
-                if (others > 0)
+                else if (creaseSharpness.Length > 1)
                 {
-                    // Triangulating keeps the vertices, so creases and corners still name the same ones.
-                    Remark(others + " quad or n-gon face(s) were triangulated before subdividing.");
-                    cage = MeshArrays.Triangulate(cage);
+                    Warn("CS has values but C names no crease.");
+                }
+                if (cornerPoints.Length > 0)
+                {
+                    uint[] corners = CreaseInputs.CornerVertices(mesh, RhinoMeshes.FromPoints(cornerPoints), tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
+                    for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
                 }
             }
 
-            RefinedArrays refined = cache.Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, scheme, levels, options);
+            cage = PrepareCage(cage, levels);
+
+            RefinedArrays refined = Refiner(DA).Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, Scheme, levels, options);
             double[] positions = refined.Positions;
             LimitSurface surface = null;
             int[] refinedColours = null;
@@ -122,12 +98,12 @@ namespace Weft.Grasshopper
                 {
                     if (limit)
                     {
-                        surface = Subdivision.SubdivideLimit(mesh, scheme, levels, options);
+                        surface = Subdivision.SubdivideLimit(mesh, Scheme, levels, options);
                         positions = surface.Positions;
                     }
                     if (colours != null)
                     {
-                        double[] values = Subdivision.SubdivideVertexData(mesh, scheme, levels, options, CreaseInputs.ColoursToValues(colours), 4);
+                        double[] values = Subdivision.SubdivideVertexData(mesh, Scheme, levels, options, CreaseInputs.ColoursToValues(colours), 4);
                         refinedColours = CreaseInputs.ValuesToColours(values);
                     }
                 }
@@ -151,7 +127,7 @@ namespace Weft.Grasshopper
                 {
                     result[i] = CreaseItem.FromLine(line.FromX, line.FromY, line.FromZ, line.ToX, line.ToY, line.ToZ);
                 }
-                else if (GH_Convert.ToDouble(items[i], GH_Conversion.Primary, out number) && number == Math.Floor(number)
+                else if (GH_Convert.ToDouble(items[i], out number, GH_Conversion.Primary) && number == Math.Floor(number)
                          && number >= int.MinValue && number <= int.MaxValue)
                 {
                     result[i] = CreaseItem.FromEdge((int)number);
@@ -167,6 +143,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Catmull-Clark subdivision with creases, corners, carried vertex colours and the limit surface.</summary>
+    [Guid("9c520a22-89ba-426d-b4f9-492aafbe20e4")]
     public sealed class CreasedCatmullClarkComponent : CreasedSubdivisionComponent
     {
         public CreasedCatmullClarkComponent()
@@ -175,14 +152,10 @@ namespace Weft.Grasshopper
                    "creased_catmull_clark")
         {
         }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("9c520a22-89ba-426d-b4f9-492aafbe20e4"); }
-        }
     }
 
     /// <summary>Loop subdivision with creases, corners, carried vertex colours and the limit surface; quads and n-gons are triangulated first.</summary>
+    [Guid("51ceb365-5b0c-4e44-9fea-d6d16c374538")]
     public sealed class CreasedLoopComponent : CreasedSubdivisionComponent
     {
         public CreasedLoopComponent()
@@ -191,14 +164,10 @@ namespace Weft.Grasshopper
                    "creased_loop")
         {
         }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("51ceb365-5b0c-4e44-9fea-d6d16c374538"); }
-        }
     }
 
     /// <summary>Welds a mesh's unwelded seams and finds its sharp folds, as creases for the creased subdivisions (as Rhino's ToSubD does).</summary>
+    [Guid("e3eefc28-e467-4442-912b-a7c25348b2c1")]
     public sealed class CreaseEdgesFromMeshComponent : WeftComponent
     {
         public CreaseEdgesFromMeshComponent()
@@ -206,11 +175,6 @@ namespace Weft.Grasshopper
                    "Prepares a mesh for creased subdivision as Rhino's ToSubD does: welds vertices at exactly the same position and gives as creases every edge that was unwelded (naked) before and every fold whose faces' normals differ by more than A degrees. Connect M and C to a creased subdivision.",
                    "Subdivide", "crease_edges")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("e3eefc28-e467-4442-912b-a7c25348b2c1"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

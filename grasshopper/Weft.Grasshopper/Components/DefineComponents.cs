@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
@@ -29,16 +30,12 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>A flat grid of quads.</summary>
+    [Guid("3425c242-7c05-42d5-9ceb-5de592193404")]
     public sealed class MeshPlaneComponent : PrimitiveComponent
     {
         public MeshPlaneComponent()
             : base("Mesh Plane", "wbPlane", "A flat rectangle of U x V quads on the XY plane, centred on the origin and facing +z.", "plane")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("3425c242-7c05-42d5-9ceb-5de592193404"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -56,16 +53,12 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>A closed, welded box of quads.</summary>
+    [Guid("5805bc68-165f-445c-9a1c-5e4ab6e8a771")]
     public sealed class MeshBoxComponent : PrimitiveComponent
     {
         public MeshBoxComponent()
             : base("Mesh Box", "wbBox", "A closed, welded box centred on the origin whose sides are divided into quads.", "box")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("5805bc68-165f-445c-9a1c-5e4ab6e8a771"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -85,16 +78,12 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>A UV sphere.</summary>
+    [Guid("fd9f3268-0f3a-4b61-a0b8-f50aad87eb9f")]
     public sealed class MeshSphereComponent : PrimitiveComponent
     {
         public MeshSphereComponent()
             : base("Mesh Sphere", "wbSphere", "A sphere centred on the origin: U segments around z, V from pole to pole; each pole is one vertex with a fan of triangles, the rest are quads.", "sphere")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("fd9f3268-0f3a-4b61-a0b8-f50aad87eb9f"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -111,17 +100,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>The five platonic solids.</summary>
+    [Guid("af0efa6e-c6e2-4e6a-ada7-9be3023a34c9")]
     public sealed class PlatonicComponent : PrimitiveComponent
     {
         public PlatonicComponent()
             : base("Platonic Solid", "wbPlatonic",
                    "A platonic solid centred on the origin with its vertices on the sphere of radius R. K: 0 tetrahedron, 1 cube, 2 octahedron, 3 dodecahedron, 4 icosahedron.", "platonic")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("af0efa6e-c6e2-4e6a-ada7-9be3023a34c9"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -138,17 +123,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Prisms, antiprisms, pyramids and dipyramids.</summary>
+    [Guid("e3954003-def5-4eee-b4c6-6c71c23a317e")]
     public sealed class SidedSolidComponent : PrimitiveComponent
     {
         public SidedSolidComponent()
             : base("Prism and Pyramid", "wbPrism",
                    "A prism, antiprism, pyramid or dipyramid on a regular n-gon of radius R about the z axis, H tall, centred on the origin.", "prism")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("e3954003-def5-4eee-b4c6-6c71c23a317e"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

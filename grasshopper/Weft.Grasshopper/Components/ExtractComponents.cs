@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>The dual mesh: a vertex at each face centroid, a face per interior vertex joining the faces around it; vertices on naked edges get no face.</summary>
+    [Guid("d4a2bb2b-bd31-4737-ba82-83eb3e6ecd54")]
     public sealed class DualComponent : MeshOperationComponent
     {
         public DualComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "The dual mesh: a vertex at each face centroid, a face per interior vertex joining the faces around it; vertices on naked edges get no face.",
                    "Extract", "dual", "The mesh.", "The dual mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("d4a2bb2b-bd31-4737-ba82-83eb3e6ecd54"); }
         }
 
         protected override void RegisterOptions(GH_InputParamManager pManager)
@@ -30,6 +27,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Rotates every face's corner list so it starts Shift corners later (negative goes back); winding and vertices are unchanged.</summary>
+    [Guid("ab3b0057-745e-45f1-b503-104957dda0c9")]
     public sealed class RerouteFacesComponent : MeshOperationComponent
     {
         public RerouteFacesComponent()
@@ -37,11 +35,6 @@ namespace Weft.Grasshopper
                    "Rotates every face's corner list so it starts Shift corners later (negative goes back); winding and vertices are unchanged.",
                    "Extract", "reroute", "The mesh.", "The mesh with rotated faces.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("ab3b0057-745e-45f1-b503-104957dda0c9"); }
         }
 
         protected override void RegisterOptions(GH_InputParamManager pManager)

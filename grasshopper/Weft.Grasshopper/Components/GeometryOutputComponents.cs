@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -6,6 +7,7 @@ using Rhino.Geometry;
 namespace Weft.Grasshopper
 {
     /// <summary>Blurs per-vertex values over the mesh (Weaverbird's wbBlur blurs vertex colours; here any values, e.g. colour channels).</summary>
+    [Guid("440c78b1-633d-4b19-a675-8e41bd51c69d")]
     public sealed class BlurComponent : WeftComponent
     {
         public BlurComponent()
@@ -13,11 +15,6 @@ namespace Weft.Grasshopper
                    "Blurs per-vertex values over the mesh: each iteration moves every value Blend of the way towards its neighbours' average. C values per vertex, vertex after vertex (3 for R, G, B). The mesh is unchanged.",
                    "Smooth", "blur")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("440c78b1-633d-4b19-a675-8e41bd51c69d"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -47,22 +44,13 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>The vertices of a mesh as points.</summary>
-    public sealed class VerticesComponent : WeftComponent
+    [Guid("a119335b-605c-4507-8740-0fbda0c60284")]
+    public sealed class VerticesComponent : MeshQueryComponent
     {
         public VerticesComponent()
             : base("Mesh Vertices", "wbVertices", "The vertices of the mesh as points, in vertex order (n-gon meshes and polylines as Weft reads them).",
-                   "Extract", "vertices")
+                   "Extract", "vertices", "The mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("a119335b-605c-4507-8740-0fbda0c60284"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -70,31 +58,20 @@ namespace Weft.Grasshopper
             pManager.AddPointParameter("Vertices", "V", "One point per vertex.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            PolygonArrays mesh = GetPolygons(DA, 0);
-            if (mesh == null) return;
-            DA.SetDataList(0, RhinoMeshes.ToPoints(mesh.Positions));
+            DA.SetDataList(0, RhinoMeshes.ToPoints(mesh.GetPositions()));
         }
     }
 
     /// <summary>Each face as a closed polyline.</summary>
-    public sealed class FacePolylinesComponent : WeftComponent
+    [Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d")]
+    public sealed class FacePolylinesComponent : MeshQueryComponent
     {
         public FacePolylinesComponent()
             : base("Face Polylines", "wbFacePolylines", "Each face (triangle, quad or n-gon) as a closed polyline, in face order.",
-                   "Extract", "face_polylines")
+                   "Extract", "face_polylines", "The mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("d31d61fb-8a2d-4e99-9246-8e709e6c6e8d"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -102,31 +79,21 @@ namespace Weft.Grasshopper
             pManager.AddCurveParameter("Polylines", "P", "One closed polyline per face.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            PolygonArrays mesh = GetPolygons(DA, 0);
-            if (mesh == null) return;
-            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.FacePolylines(mesh.Positions, mesh.FaceSizes, mesh.FaceIndices)));
+            PolygonArrays arrays = MeshArrays.FromWeft(mesh);
+            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.FacePolylines(arrays.Positions, arrays.FaceSizes, arrays.FaceIndices)));
         }
     }
 
     /// <summary>The unique edges as lines and vertex index pairs.</summary>
-    public sealed class MeshEdgesComponent : WeftComponent
+    [Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b")]
+    public sealed class MeshEdgesComponent : MeshQueryComponent
     {
         public MeshEdgesComponent()
             : base("Mesh Edges", "wbEdges", "The unique edges of the mesh as lines, sorted by their lower then higher vertex index, with those indices.",
-                   "Extract", "edges")
+                   "Extract", "edges", "The mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("05435dfc-e4c5-4ecf-a185-477ae2958e5b"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -136,44 +103,31 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("End", "B", "The higher vertex index of each edge.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            uint[] pairs = Toolbar.Edges(mesh);
+            var starts = new int[pairs.Length / 2];
+            var ends = new int[pairs.Length / 2];
+            for (int e = 0; e < starts.Length; e++)
             {
-                if (mesh == null) return;
-                uint[] pairs = Toolbar.Edges(mesh);
-                var starts = new int[pairs.Length / 2];
-                var ends = new int[pairs.Length / 2];
-                for (int e = 0; e < starts.Length; e++)
-                {
-                    starts[e] = (int)pairs[2 * e];
-                    ends[e] = (int)pairs[2 * e + 1];
-                }
-                DA.SetDataList(0, RhinoMeshes.ToLines(Toolbar.EdgeSegments(mesh)));
-                DA.SetDataList(1, starts);
-                DA.SetDataList(2, ends);
+                starts[e] = (int)pairs[2 * e];
+                ends[e] = (int)pairs[2 * e + 1];
             }
+            DA.SetDataList(0, RhinoMeshes.ToLines(Toolbar.EdgeSegments(mesh)));
+            DA.SetDataList(1, starts);
+            DA.SetDataList(2, ends);
         }
     }
 
     /// <summary>The naked edges chained into polylines.</summary>
-    public sealed class NakedBoundaryComponent : WeftComponent
+    [Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0")]
+    public sealed class NakedBoundaryComponent : MeshQueryComponent
     {
         public NakedBoundaryComponent()
             : base("Naked Boundary", "wbNakedBoundary",
                    "The naked edges chained into polylines: each border of a manifold mesh is one closed polyline; polylines stop at vertices with one or three or more naked edges.",
-                   "Extract", "naked_boundary")
+                   "Extract", "naked_boundary", "The mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("85083928-29d2-4fd6-aa5f-bc6b84a0e2e0"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh.");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -182,19 +136,16 @@ namespace Weft.Grasshopper
             pManager.AddBooleanParameter("Closed", "C", "Whether each polyline is closed.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                PolylineSet set = Mending.NakedBoundaries(mesh);
-                DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.SplitPolylines(set.Points, set.PointCounts, set.Closed, false)));
-                DA.SetDataList(1, set.Closed);
-            }
+            PolylineSet set = Mending.NakedBoundaries(mesh);
+            DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(FlatGeometry.SplitPolylines(set.Points, set.PointCounts, set.Closed, false)));
+            DA.SetDataList(1, set.Closed);
         }
     }
 
     /// <summary>Faces from lines.</summary>
+    [Guid("cc07b8b1-5e40-4bd9-bf7e-de3149a6332b")]
     public sealed class MeshFromLinesComponent : WeftComponent
     {
         public MeshFromLinesComponent()
@@ -204,16 +155,10 @@ namespace Weft.Grasshopper
         {
         }
 
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("cc07b8b1-5e40-4bd9-bf7e-de3149a6332b"); }
-        }
-
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             pManager.AddLineParameter("Lines", "L", "The lines.", GH_ParamAccess.list);
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Welding distance");
             pManager.AddIntegerParameter("Max Valence", "V", "The largest face size kept, at least 3.", GH_ParamAccess.item, 4);
         }
 
@@ -226,7 +171,7 @@ namespace Weft.Grasshopper
         {
             Line[] lines = GetList<Line>(DA, 0);
             if (lines.Length == 0) return;
-            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), Get(DA, 1, DocumentTolerance()), Get(DA, 2, 4)))
+            using (WeftMesh mesh = Toolbar.MeshFromLines(RhinoMeshes.FromLines(lines), GetTolerance(DA, 1), Get(DA, 2, 4)))
             {
                 if (mesh.FaceCount == 0) Warn("The lines enclose no face.");
                 SetMesh(DA, 0, mesh);

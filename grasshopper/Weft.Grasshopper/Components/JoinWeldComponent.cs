@@ -1,10 +1,12 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Joins meshes and optionally welds them (Weaverbird's wbJoin).</summary>
+    [Guid("925c212d-9b67-4d93-b7dd-e07cda6ad9c5")]
     public sealed class JoinWeldComponent : WeftComponent
     {
         public JoinWeldComponent()
@@ -14,17 +16,11 @@ namespace Weft.Grasshopper
         {
         }
 
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("925c212d-9b67-4d93-b7dd-e07cda6ad9c5"); }
-        }
-
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             AddMeshInput(pManager, "M+", "The meshes to join.");
             pManager.AddBooleanParameter("Weld", "W", "Merge vertices closer than the tolerance.", GH_ParamAccess.item, true);
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[2].Optional = true;
+            AddToleranceInput(pManager, "Welding distance");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -34,10 +30,8 @@ namespace Weft.Grasshopper
 
         protected override void Solve(IGH_DataAccess DA)
         {
-            bool weld = true;
-            double tolerance = DocumentTolerance();
-            DA.GetData(1, ref weld);
-            DA.GetData(2, ref tolerance);
+            bool weld = Get(DA, 1, true);
+            double tolerance = weld ? GetTolerance(DA, 2) : 0;
             using (WeftMesh joined = GetMesh(DA, 0))
             {
                 if (joined == null) return;

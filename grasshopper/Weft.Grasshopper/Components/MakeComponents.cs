@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -6,6 +7,7 @@ using Rhino.Geometry;
 namespace Weft.Grasshopper
 {
     /// <summary>Delaunay triangulation of points on a plane.</summary>
+    [Guid("13ce556e-0ddf-4345-9979-16f3cfac83a8")]
     public sealed class DelaunayMeshComponent : WeftComponent
     {
         public DelaunayMeshComponent()
@@ -13,11 +15,6 @@ namespace Weft.Grasshopper
                    "Triangulates points by the Delaunay criterion of their projections onto a plane; the vertices are the original 3-D points (repeats merged), the triangles face the plane's normal.",
                    "Make", "delaunay")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("13ce556e-0ddf-4345-9979-16f3cfac83a8"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -48,6 +45,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Voronoi cells of points on a plane.</summary>
+    [Guid("2bbae6ac-d726-4757-8bf9-97673baf061b")]
     public sealed class VoronoiComponent : WeftComponent
     {
         public VoronoiComponent()
@@ -55,11 +53,6 @@ namespace Weft.Grasshopper
                    "The Voronoi cell of each point on a plane, clipped to a boundary polygon and, when R is positive, to a circle of that radius around the point. A point outside the boundary gets no cell.",
                    "Make", "voronoi")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("2bbae6ac-d726-4757-8bf9-97673baf061b"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)
@@ -98,7 +91,7 @@ namespace Weft.Grasshopper
                 List<double[]> rings = FlatGeometry.SplitPolylines(cells.GetCorners(), FlatGeometry.ToInts(sizes), Closed(sizes.Length), true);
                 DA.SetDataList(0, RhinoMeshes.ToPolylineCurves(rings));
                 using (WeftMesh separate = cells.ToMesh())
-                using (WeftMesh welded = Mending.Weld(separate, DocumentTolerance()))
+                using (WeftMesh welded = Mending.Weld(separate, Tolerance()))
                 {
                     SetMesh(DA, 1, welded);
                 }
@@ -115,6 +108,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>A mesh from a grid of points.</summary>
+    [Guid("c020b000-bc6d-4dfa-90f0-57b79e0466a7")]
     public sealed class MeshFromGridComponent : WeftComponent
     {
         public MeshFromGridComponent()
@@ -122,11 +116,6 @@ namespace Weft.Grasshopper
                    "Connects a grid of points (a sampled surface, U points per row, rows one after another) into quads, or triangles along the shorter diagonal; a closed direction wraps around without repeating its first point.",
                    "Make", "mesh_grid")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("c020b000-bc6d-4dfa-90f0-57b79e0466a7"); }
         }
 
         protected override void RegisterInputParams(GH_InputParamManager pManager)

@@ -1,4 +1,5 @@
 using System;
+using System.Runtime.InteropServices;
 using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -6,25 +7,19 @@ using Rhino.Geometry;
 namespace Weft.Grasshopper
 {
     /// <summary>Finds and repairs T-nodes.</summary>
-    public sealed class TNodesComponent : WeftComponent
+    [Guid("670ccfc8-ec80-4d89-a198-5e0a31845f0f")]
+    public sealed class TNodesComponent : MeshQueryComponent
     {
         public TNodesComponent()
             : base("T-Nodes", "TNodes",
                    "Finds the vertices that lie inside another face's naked edge (T-nodes) and repairs them by inserting each into that edge, so both sides share the seam.",
-                   "Mend", "t_nodes")
+                   "Mend", "t_nodes", "The mesh to check.")
         {
         }
 
-        public override Guid ComponentGuid
+        protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            get { return new Guid("670ccfc8-ec80-4d89-a198-5e0a31845f0f"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh to check.");
-            pManager.AddNumberParameter("Tolerance", "T", "Distance from the edge; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Distance from the edge");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -34,53 +29,43 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("Faces", "F", "The face whose edge each T-node lies on.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, DocumentTolerance());
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            double tolerance = GetTolerance(DA, 1);
+            WeftTNode[] nodes = Mending.FindTNodes(mesh, tolerance);
+            double[] positions = mesh.GetPositions();
+            var points = new List<Point3d>(nodes.Length);
+            var faces = new List<int>(nodes.Length);
+            foreach (WeftTNode node in nodes)
             {
-                if (mesh == null) return;
-                WeftTNode[] nodes = Mending.FindTNodes(mesh, tolerance);
-                double[] positions = mesh.GetPositions();
-                var points = new List<Point3d>(nodes.Length);
-                var faces = new List<int>(nodes.Length);
-                foreach (WeftTNode node in nodes)
-                {
-                    points.Add(new Point3d(positions[3 * node.Vertex], positions[3 * node.Vertex + 1], positions[3 * node.Vertex + 2]));
-                    faces.Add((int)node.Face);
-                }
-                int inserted;
-                using (WeftMesh repaired = Mending.RepairTNodes(mesh, tolerance, out inserted))
-                {
-                    SetMesh(DA, 0, repaired);
-                }
-                DA.SetDataList(1, points);
-                DA.SetDataList(2, faces);
-                if (inserted > 0) Remark(inserted + " T-node(s) inserted into their edges.");
+                points.Add(new Point3d(positions[3 * node.Vertex], positions[3 * node.Vertex + 1], positions[3 * node.Vertex + 2]));
+                faces.Add((int)node.Face);
             }
+            int inserted;
+            using (WeftMesh repaired = Mending.RepairTNodes(mesh, tolerance, out inserted))
+            {
+                SetMesh(DA, 0, repaired);
+            }
+            DA.SetDataList(1, points);
+            DA.SetDataList(2, faces);
+            if (inserted > 0) Remark(inserted + " T-node(s) inserted into their edges.");
         }
     }
 
     /// <summary>Per-face planarity.</summary>
-    public sealed class PlanarityComponent : WeftComponent
+    [Guid("d5dd8f4e-d687-4cf8-84eb-52e3beb7f54f")]
+    public sealed class PlanarityComponent : MeshQueryComponent
     {
         public PlanarityComponent()
             : base("Planarity", "Planarity",
                    "Per face, the largest distance of a corner from the face's best-fit plane (0 for triangles), and whether it is within the tolerance: the planar-quad check for glass and panels.",
-                   "Mend", "planarity")
+                   "Mend", "planarity", "The mesh to check.")
         {
         }
 
-        public override Guid ComponentGuid
+        protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            get { return new Guid("d5dd8f4e-d687-4cf8-84eb-52e3beb7f54f"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh to check.");
-            pManager.AddNumberParameter("Tolerance", "T", "Largest deviation counted as planar; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
+            AddToleranceInput(pManager, "Largest deviation counted as planar");
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -90,19 +75,15 @@ namespace Weft.Grasshopper
             pManager.AddNumberParameter("Maximum", "X", "The largest deviation of all faces.", GH_ParamAccess.item);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            double tolerance = Get(DA, 1, DocumentTolerance());
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                double[] deviations = Mending.Planarity(mesh);
-                double max = 0;
-                foreach (double d in deviations) max = Math.Max(max, d);
-                DA.SetDataList(0, deviations);
-                DA.SetDataList(1, FlatGeometry.WithinTolerance(deviations, tolerance));
-                DA.SetData(2, max);
-            }
+            double tolerance = GetTolerance(DA, 1);
+            double[] deviations = Mending.Planarity(mesh);
+            double max = 0;
+            foreach (double d in deviations) max = Math.Max(max, d);
+            DA.SetDataList(0, deviations);
+            DA.SetDataList(1, FlatGeometry.WithinTolerance(deviations, tolerance));
+            DA.SetData(2, max);
         }
     }
 }

@@ -1,26 +1,22 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Unifies the winding of each connected piece, or flips every face.</summary>
-    public sealed class OrientComponent : WeftComponent
+    [Guid("b8b331ec-ddfe-459f-be4b-e146759fce39")]
+    public sealed class OrientComponent : MeshQueryComponent
     {
         public OrientComponent()
             : base("Unify or Flip", "Orient",
                    "Gives each connected piece one winding (flipping the fewest faces), or flips every face.",
-                   "Mend", "orient")
+                   "Mend", "orient", "The mesh to orient.")
         {
         }
 
-        public override Guid ComponentGuid
+        protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            get { return new Guid("b8b331ec-ddfe-459f-be4b-e146759fce39"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh to orient.");
             pManager.AddBooleanParameter("Flip", "F", "Flip every face instead of unifying.", GH_ParamAccess.item, false);
         }
 
@@ -30,28 +26,14 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("Flipped", "N", "How many faces changed direction.", GH_ParamAccess.item);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
-            bool flipAll = false;
-            DA.GetData(1, ref flipAll);
-            using (WeftMesh mesh = GetMesh(DA, 0))
+            bool flipAll = Get(DA, 1, false);
+            int flipped = 0;
+            using (WeftMesh result = flipAll ? Mending.Flip(mesh) : Mending.UnifyOrientation(mesh, out flipped))
             {
-                if (mesh == null) return;
-                if (flipAll)
-                {
-                    using (WeftMesh result = Mending.Flip(mesh))
-                    {
-                        SetMesh(DA, 0, result);
-                        DA.SetData(1, result.FaceCount);
-                    }
-                    return;
-                }
-                int flipped;
-                using (WeftMesh result = Mending.UnifyOrientation(mesh, out flipped))
-                {
-                    SetMesh(DA, 0, result);
-                    DA.SetData(1, (int)flipped);
-                }
+                SetMesh(DA, 0, result);
+                DA.SetData(1, flipAll ? result.FaceCount : flipped);
             }
         }
     }

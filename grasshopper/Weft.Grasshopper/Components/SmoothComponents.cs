@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Moves every vertex towards the average of its neighbours, Thin of the way per iteration; the faces do not change.</summary>
+    [Guid("7bfc3f38-9b17-4463-8c90-62030e52c82a")]
     public sealed class LaplacianComponent : MeshOperationComponent
     {
         public LaplacianComponent()
@@ -11,11 +13,6 @@ namespace Weft.Grasshopper
                    "Moves every vertex towards the average of its neighbours, Thin of the way per iteration; the faces do not change.",
                    "Smooth", "laplacian", "The mesh to smooth.", "The smoothed mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("7bfc3f38-9b17-4463-8c90-62030e52c82a"); }
         }
 
         protected override void RegisterOptions(GH_InputParamManager pManager)
@@ -32,6 +29,7 @@ namespace Weft.Grasshopper
     }
 
     /// <summary>Volume-preserving Laplacian smoothing (the HC algorithm of Vollmer, Mann and Mueller 1999), with an orientation (which way vertices may move) and a per-vertex activation.</summary>
+    [Guid("2626e086-368f-4fc4-9b2e-f349dfec0d3b")]
     public sealed class LaplacianHcComponent : MeshOperationComponent
     {
         public LaplacianHcComponent()
@@ -39,11 +37,6 @@ namespace Weft.Grasshopper
                    "Volume-preserving Laplacian smoothing (the HC algorithm of Vollmer, Mann and Mueller 1999): each iteration averages, then pushes every vertex back by Beta of its own displacement and 1 - Beta of its neighbours' displacement. Orientation O: 0 vertices move freely, 1 only along their original normal (bumps flatten, nothing slides across the surface), 2 only in their original tangent plane (the vertices even out, the shape stays). Activation V: one weight per vertex, 0 to 1 or true/false (0 stays and anchors its neighbours); empty moves every vertex.",
                    "Smooth", "laplacian_hc", "The mesh to smooth.", "The smoothed mesh.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("2626e086-368f-4fc4-9b2e-f349dfec0d3b"); }
         }
 
         protected override void RegisterOptions(GH_InputParamManager pManager)

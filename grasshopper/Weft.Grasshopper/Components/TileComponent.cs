@@ -1,9 +1,11 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Re-fills chosen faces by a pattern of triangles or quads (Weaverbird's Tile, with its F and O numbers).</summary>
+    [Guid("290dc0bc-489c-40a8-8bf0-ccf792d4a8c6")]
     public sealed class TileComponent : MeshOperationComponent
     {
         public TileComponent()
@@ -14,11 +16,6 @@ namespace Weft.Grasshopper
                    "7 quad fan (from the centroid over every two edges). O: 0 all faces, 1 quads and more, 2 pentagons and more, 9 triangles, 16 quads.",
                    "Define", "tile", "The mesh whose faces to fill.", "The mesh after filling.")
         {
-        }
-
-        public override Guid ComponentGuid
-        {
-            get { return new Guid("290dc0bc-489c-40a8-8bf0-ccf792d4a8c6"); }
         }
 
         protected override void RegisterOptions(GH_InputParamManager pManager)

@@ -1,43 +1,23 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Splits quads along the shorter diagonal and n-gons by ear clipping.</summary>
-    public sealed class TriangulateComponent : WeftComponent
+    [Guid("09a3b686-debf-4bac-a987-93bbb3c72184")]
+    public sealed class TriangulateComponent : MeshOperationComponent
     {
         public TriangulateComponent()
             : base("Triangulate", "Triangulate",
                    "Splits every quad along its shorter diagonal and every n-gon into triangles.",
-                   "Mend", "triangulate")
+                   "Mend", "triangulate", "The mesh to triangulate.", "The triangle mesh.")
         {
         }
 
-        public override Guid ComponentGuid
+        protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
-            get { return new Guid("09a3b686-debf-4bac-a987-93bbb3c72184"); }
-        }
-
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
-        {
-            AddMeshInput(pManager, "M", "The mesh to triangulate.");
-        }
-
-        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
-        {
-            pManager.AddMeshParameter("Mesh", "M", "The triangle mesh.", GH_ParamAccess.item);
-        }
-
-        protected override void Solve(IGH_DataAccess DA)
-        {
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                using (WeftMesh result = Subdivision.Triangulate(mesh))
-                {
-                    SetMesh(DA, 0, result);
-                }
-            }
+            return Subdivision.Triangulate(mesh);
         }
     }
 }

@@ -1,47 +1,28 @@
 using System;
+using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
     /// <summary>Merges vertices closer than a tolerance.</summary>
-    public sealed class WeldComponent : WeftComponent
+    [Guid("0eff4233-4741-4c91-8cfc-8b88979bddb7")]
+    public sealed class WeldComponent : MeshOperationComponent
     {
         public WeldComponent()
             : base("Weld", "Weld",
                    "Merges vertices closer than the tolerance; faces that collapse below three vertices are removed.",
-                   "Mend", "weld")
+                   "Mend", "weld", "The mesh to weld.", "The welded mesh.")
         {
         }
 
-        public override Guid ComponentGuid
+        protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            get { return new Guid("0eff4233-4741-4c91-8cfc-8b88979bddb7"); }
+            AddToleranceInput(pManager, "Welding distance");
         }
 
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
-            AddMeshInput(pManager, "M", "The mesh to weld.");
-            pManager.AddNumberParameter("Tolerance", "T", "Welding distance; the document's absolute tolerance when empty.", GH_ParamAccess.item);
-            pManager[1].Optional = true;
-        }
-
-        protected override void RegisterOutputParams(GH_OutputParamManager pManager)
-        {
-            pManager.AddMeshParameter("Mesh", "M", "The welded mesh.", GH_ParamAccess.item);
-        }
-
-        protected override void Solve(IGH_DataAccess DA)
-        {
-            double tolerance = DocumentTolerance();
-            DA.GetData(1, ref tolerance);
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                using (WeftMesh result = Mending.Weld(mesh, tolerance))
-                {
-                    SetMesh(DA, 0, result);
-                }
-            }
+            return Mending.Weld(mesh, GetTolerance(DA, 1));
         }
     }
 }

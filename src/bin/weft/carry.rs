@@ -9,10 +9,11 @@ use weft::subdivide::{
     creases_from_mesh, CreasedMesh, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions,
 };
 
-/// Triangulates `file`'s mesh; colours and creases keep their vertices, UVs
+/// `file` as triangles (see [`weft::triangulate::as_triangles`]) and the
+/// number of faces that were split; colours and creases keep their vertices, UVs
 /// follow each triangle's corners back to its polygon's.
-pub fn triangulate(file: &MeshFile) -> weft::Result<MeshFile> {
-    let triangulation = weft::triangulate::triangulate(&file.mesh)?;
+pub fn as_triangles(file: &MeshFile) -> weft::Result<(MeshFile, usize)> {
+    let (triangulation, split) = weft::triangulate::as_triangles(&file.mesh)?;
     let uvs = file.uvs.as_ref().map(|uvs| {
         let offsets = file.mesh.face_offsets();
         let mut indices = Vec::with_capacity(triangulation.mesh.index_count());
@@ -30,11 +31,12 @@ pub fn triangulate(file: &MeshFile) -> weft::Result<MeshFile> {
             indices,
         }
     });
-    Ok(MeshFile {
+    let file = MeshFile {
         mesh: triangulation.mesh,
         uvs,
         ..file.clone()
-    })
+    };
+    Ok((file, split))
 }
 
 /// Welds vertices at identical positions and adds a hard crease on every

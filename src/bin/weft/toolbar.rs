@@ -427,20 +427,19 @@ fn apply(
     write(&files.output, &result, &io::WriteOptions::default())
 }
 
-/// Triangulates a mesh that has other faces, saying so, for the commands
-/// that need triangles.
-fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Option<Mesh>> {
-    let Some((face, size)) = mesh.first_non_triangle() else {
-        return Ok(None);
-    };
-    let triangulated = weft::triangulate::triangulate(mesh)?.mesh;
-    eprintln!(
-        "{}: splitting triangles needs triangles (face {face} has {size} corners): triangulated {} faces into {}",
-        input.display(),
-        mesh.face_count(),
-        triangulated.face_count()
-    );
-    Ok(Some(triangulated))
+/// The mesh as triangles for the commands that need them, saying how many
+/// faces were triangulated when there were any.
+fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Mesh> {
+    let (triangles, split) = weft::triangulate::as_triangles(mesh)?;
+    if split > 0 {
+        eprintln!(
+            "{}: splitting triangles needs triangles: triangulated {split} of {} faces into {} triangles",
+            input.display(),
+            mesh.face_count(),
+            triangles.mesh.face_count()
+        );
+    }
+    Ok(triangles.mesh)
 }
 
 impl ToolbarCommand {
@@ -481,10 +480,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
         }
         ToolbarCommand::SplitTriangles { files, levels } => {
             apply(cli, files, "split triangles", |m| {
-                match triangles(&files.input, m)? {
-                    Some(t) => split::split_triangles(&t, levels.levels),
-                    None => split::split_triangles(m, levels.levels),
-                }
+                split::split_triangles(&triangles(&files.input, m)?, levels.levels)
             })
         }
         ToolbarCommand::QuadSplit { files, levels } => apply(cli, files, "quad split", |m| {
