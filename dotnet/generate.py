@@ -41,7 +41,9 @@ ELEMENT_STRUCTS = {"WeftTNode"}
 # size_t * parameters that are caller buffers rather than one count.
 SIZE_ARRAYS = {("weft_naked_boundaries", "out_point_counts")}
 SCALARS = {"uint32_t": "uint", "int32_t": "int", "int64_t": "long", "uint64_t": "ulong", "size_t": "UIntPtr",
-           "double": "double", "float": "float", "bool": "bool", "WeftStatus": "uint"}
+           "double": "double", "float": "float", "bool": "bool", "WeftStatus": "uint",
+           # const char * is a NUL-terminated UTF-8 path: byte[] from Encoding.UTF8 plus a 0.
+           "char": "byte"}
 BOOL = "[MarshalAs(UnmanagedType.U1)] bool"
 
 # Families of WEFT_* constants and the enum each becomes.

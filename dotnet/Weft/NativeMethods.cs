@@ -99,6 +99,14 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh_ex(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount, [Out] uint[] outVertexMap, UIntPtr vertexMapCapacity);
 
+        /// <summary>Reads a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does. STL corners come unwelded, one vertex per triangle corner (<c>weft_weld</c> with tolerance 0 joins them); vertex colours, UVs and creases are not read.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_read_mesh_file(byte[] path, out WeftMeshHandle outMesh);
+
+        /// <summary>Writes a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does: PLY as binary little endian, STL as binary with polygons written as triangle fans. The file is written beside its destination under a temporary name and renamed into place, so a failed write leaves no partial file and an existing file as it was.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_write_mesh_file(WeftMeshHandle mesh, byte[] path);
+
         /// <summary>Triangulates points by the Delaunay criterion of their projections onto a plane; the mesh's vertices are the original 3-D points, its triangles front-facing along the plane's normal.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_delaunay(double[] points, UIntPtr pointCount, WeftPlane[] plane, out WeftMeshHandle outMesh, out UIntPtr outMerged);

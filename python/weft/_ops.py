@@ -773,13 +773,74 @@ def mesh_from_lines(segments, tolerance=DEFAULT_WELD_TOLERANCE, max_valence=4):
 
 # The toolbar ---------------------------------------------------------------
 
-def triangulate(mesh):
-    """Splits quads along the shorter diagonal and ear-clips n-gons; vertices are kept::
+def triangulate(mesh, parent_faces=False):
+    """Splits quads along the shorter diagonal and ear-clips n-gons; vertices
+    are kept. With ``parent_faces=True`` returns ``(mesh, parents)``, the
+    face each triangle was cut from (a uint32 array)::
 
         >>> weft.triangulate(weft.box()).face_count
         12
+        >>> weft.triangulate(weft.box(), parent_faces=True)[1][:4]
+        array([0, 0, 1, 1], dtype=uint32)
     """
-    return _mesh_op(lib.weft_triangulate, mesh)
+    if not parent_faces:
+        return _mesh_op(lib.weft_triangulate, mesh)
+    handle = check_mesh(mesh)
+    parents = np.empty(int((mesh.face_sizes.astype(np.int64) - 2).sum()), dtype=np.uint32)
+    out = _out()
+    lib.weft_triangulate_ex(handle, ctypes.byref(out), _arrays.address(parents))
+    return take_mesh(out), parents
+
+
+def as_triangles(mesh, report=False):
+    """The mesh as triangles, as Loop and Split Triangles need it: the same
+    mesh when every face is a triangle, else its triangulation. With
+    ``report=True`` returns ``(mesh, split_faces)``, the number of faces
+    that were not triangles::
+
+        >>> weft.as_triangles(weft.box(), report=True)[1]
+        6
+    """
+    split = ctypes.c_size_t()
+    out = _out()
+    lib.weft_as_triangles(check_mesh(mesh), ctypes.byref(out), ctypes.byref(split))
+    result = take_mesh(out)
+    return (result, split.value) if report else result
+
+
+def match_points_to_vertices(mesh, points, tolerance):
+    """The nearest vertex within ``tolerance`` of each point (an (n, 3)
+    array-like): a uint32 array. A point with no vertex in reach raises
+    :class:`WeftError` naming it::
+
+        >>> weft.match_points_to_vertices(weft.box(), [(0.5, 0.5, 0.5)], 1e-6)
+        array([6], dtype=uint32)
+    """
+    handle = check_mesh(mesh)
+    flat = _arrays.float_array(points, "points", width=3)
+    out = np.empty(flat.shape[0], dtype=np.uint32)
+    lib.weft_match_points_to_vertices(handle, flat.shape[0], _arrays.address(flat), _number(tolerance, "tolerance"), _arrays.address(out))
+    return out
+
+
+def match_lines_to_edges(mesh, lines, tolerance):
+    """The edge of the mesh each line (two end points, an (l, 6) or
+    (l, 2, 3) array-like) lies on, within ``tolerance`` at both ends: an
+    (l, 2) uint32 array of vertex pairs in the lines' direction::
+
+        >>> weft.match_lines_to_edges(weft.box(), [[(-0.5, -0.5, -0.5), (0.5, -0.5, -0.5)]], 1e-6)
+        array([[0, 4]], dtype=uint32)
+    """
+    handle = check_mesh(mesh)
+    array = _arrays._as_numeric(lines, "lines")
+    if array.ndim == 3:
+        if array.shape[1:] != (2, 3):
+            raise ValueError(f"lines must have shape (l, 2, 3) or (l, 6), not {array.shape}")
+        array = array.reshape(-1, 6)
+    flat = _arrays.float_array(array, "lines", width=6)
+    out = np.empty((flat.shape[0], 2), dtype=np.uint32)
+    lib.weft_match_lines_to_edges(handle, flat.shape[0], _arrays.address(flat), _number(tolerance, "tolerance"), _arrays.address(out))
+    return out
 
 
 def split_polygons(mesh, levels=1):
