@@ -12,8 +12,10 @@ use crate::orient;
 use crate::t_nodes;
 use crate::weld;
 
-/// The weld tolerance to use when the host has none: 0.001 model units,
-/// Rhino's default absolute tolerance (a millimetre in a model in metres).
+/// An absolute weld tolerance: 0.001 model units, Rhino's default absolute
+/// tolerance (a millimetre in a model in metres). It can collapse the faces
+/// of small or dense meshes: without a tolerance of the host's own, prefer
+/// `weft_weld_relative_tolerance`.
 pub const WEFT_DEFAULT_WELD_TOLERANCE: f64 = 0.001;
 
 /// What `weft_weld` changed.
@@ -88,6 +90,34 @@ pub unsafe extern "C" fn weft_join(
     })
 }
 
+/// The tolerance to weld `mesh` with when the host has none of its own: a
+/// millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
+/// single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
+/// collapses the faces of a small part or a dense scan, whatever the units.
+/// The command line's `weld` and `t-nodes` use it when no tolerance is given.
+///
+/// `mesh` must not be NULL.
+/// `out_tolerance` receives the tolerance; it must not be NULL and is
+/// written on success only.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_tolerance` is writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_weld_relative_tolerance(
+    mesh: *const WeftMesh,
+    out_tolerance: *mut f64,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_tolerance, "out_tolerance")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        // SAFETY: `out_param` refused NULL; the caller guarantees the rest.
+        unsafe { out.write(weld::relative_tolerance(mesh)) };
+        Ok(())
+    })
+}
+
 /// Welds vertices: every two vertices at most `tolerance` apart become one,
 /// transitively. The merged vertex keeps the position of its cluster's
 /// lowest-index vertex (seams stay where the surface put them, and welding
@@ -97,8 +127,9 @@ pub unsafe extern "C" fn weft_join(
 ///
 /// `mesh` must not be NULL.
 /// `tolerance` is a distance in model units, finite and not negative; 0
-/// merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
-/// most models.
+/// merges exact duplicates only; `weft_weld_relative_tolerance` gives one
+/// that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
+/// 0.001, suits models of ordinary size in metres or millimetres).
 /// `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
 /// must not be NULL and is written on success only.
 /// `out_report` receives what changed; it may be NULL.

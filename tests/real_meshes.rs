@@ -1,0 +1,105 @@
+//! What real files showed: failures reproduced on meshes built here.
+
+use weft::io::render::{render, RenderOptions, Up, View};
+use weft::io::{parse_mesh, Format};
+use weft::primitives::uv_sphere;
+use weft::weld::{relative_tolerance, weld, DEFAULT_WELD_TOLERANCE};
+use weft::{shapes, DVec3, Mesh};
+
+#[test]
+fn the_relative_tolerance_keeps_every_face_of_a_small_dense_sphere() {
+    // A 5 cm sphere of 2048 faces: near its poles, vertices lie closer than
+    // the absolute 0.001, which collapses faces there.
+    let sphere = uv_sphere(0.025, 64, 32).unwrap();
+    assert_eq!(sphere.face_count(), 2048);
+    let (_, absolute) = weld(&sphere, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert!(absolute.removed_face_count > 0, "{absolute:?}");
+
+    let tolerance = relative_tolerance(&sphere);
+    let diagonal = 0.05 * 3f64.sqrt();
+    assert!((tolerance - diagonal * 1e-6).abs() < 1e-12, "{tolerance}");
+    let (welded, relative) = weld(&sphere, tolerance).unwrap();
+    assert_eq!(relative.removed_face_count, 0, "{relative:?}");
+    assert_eq!(welded.face_count(), sphere.face_count());
+}
+
+#[test]
+fn the_relative_tolerance_still_joins_split_corners() {
+    // Each face of a grid with its own corners, 1e-9 apart from its
+    // neighbours': a file's round-off, which the relative tolerance merges.
+    let grid = shapes::quad_grid(20, 20);
+    let mut positions = Vec::new();
+    for (k, &v) in grid.face_indices().iter().enumerate() {
+        positions.push(grid.positions()[v as usize] + DVec3::splat((k % 3) as f64 * 1e-9));
+    }
+    let indices = (0..grid.index_count() as u32).collect();
+    let loose = Mesh::new(positions, grid.face_sizes().to_vec(), indices).unwrap();
+    let (welded, report) = weld(&loose, relative_tolerance(&loose)).unwrap();
+    assert_eq!(welded.vertex_count(), grid.vertex_count());
+    assert_eq!(report.removed_face_count, 0);
+    assert_eq!(relative_tolerance(&Mesh::default()), 0.0);
+}
+
+#[test]
+fn a_ply_whose_magic_is_in_capitals_is_read() {
+    let text = "PLY\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+                property float z\nelement face 1\nproperty list uchar int vertex_indices\n\
+                end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+    let mesh = parse_mesh(Format::Ply, text.as_bytes()).unwrap();
+    assert_eq!((mesh.vertex_count(), mesh.face_count()), (3, 1));
+    let wrong = parse_mesh(Format::Ply, text.replacen("PLY", "PLX", 1).as_bytes());
+    assert!(wrong.unwrap_err().to_string().contains("\"ply\""));
+}
+
+/// One square facing +z (or +y with `y_up`), seen in the middle of the picture.
+fn centre_of_square(view: View, up: Up, y_up: bool) -> [u8; 3] {
+    let p = |x: f64, y: f64| if y_up { [x, 0.0, -y] } else { [x, y, 0.0] };
+    let corners = [p(0.0, 0.0), p(1.0, 0.0), p(1.0, 1.0), p(0.0, 1.0)];
+    let square = Mesh::new(
+        corners.iter().map(|&c| DVec3::from_array(c)).collect(),
+        vec![4],
+        vec![0, 1, 2, 3],
+    )
+    .unwrap();
+    let options = RenderOptions {
+        width: 60,
+        height: 60,
+        edges: Some(false),
+        view,
+        up,
+    };
+    render(&square, &options).unwrap().pixel(30, 30)
+}
+
+/// Front faces are blue-grey (blue above red), back faces orange.
+fn is_front(rgb: [u8; 3]) -> bool {
+    rgb[2] > rgb[0]
+}
+
+#[test]
+fn the_camera_looks_from_the_view_asked_for_with_either_axis_up() {
+    assert!(is_front(centre_of_square(View::Top, Up::Z, false)));
+    assert!(!is_front(centre_of_square(View::Bottom, Up::Z, false)));
+    assert!(is_front(centre_of_square(View::Iso, Up::Z, false)));
+    // A Y-up scan seen with z up is seen from its side; with y up, from above.
+    assert!(is_front(centre_of_square(View::Top, Up::Y, true)));
+    assert!(!is_front(centre_of_square(View::Bottom, Up::Y, true)));
+    assert!(is_front(centre_of_square(View::Iso, Up::Y, true)));
+}
+
+#[test]
+fn face_edges_are_drawn_by_default_only_where_faces_have_room() {
+    let options = |edges| RenderOptions {
+        edges,
+        ..RenderOptions::default()
+    };
+    // 800 × 600 with 2500 faces: 192 pixels a face, too few for edges.
+    let dense = shapes::quad_grid(50, 50);
+    let by_default = render(&dense, &options(None)).unwrap();
+    assert!(by_default == render(&dense, &options(Some(false))).unwrap());
+    assert!(by_default != render(&dense, &options(Some(true))).unwrap());
+    // 400 faces: 1200 pixels a face.
+    let coarse = shapes::quad_grid(20, 20);
+    let by_default = render(&coarse, &options(None)).unwrap();
+    assert!(by_default == render(&coarse, &options(Some(true))).unwrap());
+}
