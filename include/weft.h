@@ -100,8 +100,10 @@
 #define WEFT_SIDED_DIPYRAMID 3
 
 /**
- * The weld tolerance to use when the host has none: 0.001 model units,
- * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
+ * tolerance (a millimetre in a model in metres). It can collapse the faces
+ * of small or dense meshes: without a tolerance of the host's own, prefer
+ * `weft_weld_relative_tolerance`.
  */
 #define WEFT_DEFAULT_WELD_TOLERANCE 0.001
 
@@ -1004,6 +1006,24 @@ WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double h
 WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
 
 /**
+ * The tolerance to weld `mesh` with when the host has none of its own: a
+ * millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
+ * single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
+ * collapses the faces of a small part or a dense scan, whatever the units.
+ * The command line's `weld` and `t-nodes` use it when no tolerance is given.
+ *
+ * `mesh` must not be NULL.
+ * `out_tolerance` receives the tolerance; it must not be NULL and is
+ * written on success only.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_tolerance` is writable.
+ */
+WeftStatus weft_weld_relative_tolerance(const struct WeftMesh *mesh, double *out_tolerance);
+
+/**
  * Welds vertices: every two vertices at most `tolerance` apart become one,
  * transitively. The merged vertex keeps the position of its cluster's
  * lowest-index vertex (seams stay where the surface put them, and welding
@@ -1013,8 +1033,9 @@ WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct 
  *
  * `mesh` must not be NULL.
  * `tolerance` is a distance in model units, finite and not negative; 0
- * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
- * most models.
+ * merges exact duplicates only; `weft_weld_relative_tolerance` gives one
+ * that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
+ * 0.001, suits models of ordinary size in metres or millimetres).
  * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
  * must not be NULL and is written on success only.
  * `out_report` receives what changed; it may be NULL.
