@@ -103,3 +103,27 @@ fn face_edges_are_drawn_by_default_only_where_faces_have_room() {
     let by_default = render(&coarse, &options(None)).unwrap();
     assert!(by_default == render(&coarse, &options(Some(true))).unwrap());
 }
+
+#[test]
+fn an_inset_wider_than_a_face_is_refused_naming_the_face() {
+    use weft::transform::{picture_frame, window, InsetMode};
+    // A triangle's inset turns over past a third of its edges.
+    let triangle = Mesh::new(
+        vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+        vec![3],
+        vec![0, 1, 2],
+    )
+    .unwrap();
+    assert!(picture_frame(&triangle, &[0.3], InsetMode::EdgeFraction).is_ok());
+    let error = picture_frame(&triangle, &[0.4], InsetMode::EdgeFraction).unwrap_err();
+    let message = error.to_string();
+    assert!(message.contains("face 0"), "{message}");
+    assert!(message.contains("at most 0.333"), "{message}");
+    // A unit square takes a frame of width up to half its side.
+    let square = shapes::quad_grid(1, 1);
+    assert!(window(&square, &[0.45], InsetMode::Parallelogram).is_ok());
+    let message = window(&square, &[0.6], InsetMode::Parallelogram)
+        .unwrap_err()
+        .to_string();
+    assert!(message.contains("at most 0.5"), "{message}");
+}
