@@ -483,6 +483,34 @@ typedef struct WeftTNode {
 } WeftTNode;
 
 /**
+ * What `weft_orient_outward` found and changed; a piece is a set of faces
+ * connected through shared edges.
+ */
+typedef struct WeftOrientReport {
+  /**
+   * Faces reversed.
+   */
+  size_t flipped_faces;
+  /**
+   * Connected pieces.
+   */
+  size_t pieces;
+  /**
+   * Closed pieces that enclosed a negative volume and were turned outward.
+   */
+  size_t turned_outward;
+  /**
+   * Pieces with a naked or non-manifold edge: unified, with no inside to
+   * face away from.
+   */
+  size_t open_pieces;
+  /**
+   * Pieces that no winding makes consistent (a Möbius strip).
+   */
+  size_t non_orientable_pieces;
+} WeftOrientReport;
+
+/**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
  */
 typedef struct WeftMeshInfo {
@@ -1122,6 +1150,22 @@ WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out
  * `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
  */
 WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * As `weft_unify_orientation` (one consistent winding per piece, closed
+ * pieces turned to enclose a positive volume), reporting the pieces. The
+ * triangles of an STL file share no vertices: weld them first
+ * (`weft_weld`), or every triangle is an open piece of its own.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_report` receives the pieces found and changed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
 
 /**
  * Reverses every face, keeping its first corner first ({a, b, c, d}

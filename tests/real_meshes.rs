@@ -131,14 +131,18 @@ fn an_inset_wider_than_a_face_is_refused_naming_the_face() {
 /// `count` unit cubes in a row, every third inside out, as one mesh with
 /// each triangle's corners of its own (as STL stores them).
 fn boxes_as_stl_triangles(count: usize) -> Mesh {
-    let cube = weft::triangulate::triangulate(&shapes::cube()).unwrap().mesh;
+    let cube = weft::triangulate::triangulate(&shapes::cube())
+        .unwrap()
+        .mesh;
     let mut positions = Vec::new();
     let mut sizes = Vec::new();
     for b in 0..count {
         let offset = DVec3::new(2.0 * b as f64, 0.0, 0.0);
         for face in cube.faces() {
-            let mut corners: Vec<DVec3> =
-                face.iter().map(|&v| cube.positions()[v as usize] + offset).collect();
+            let mut corners: Vec<DVec3> = face
+                .iter()
+                .map(|&v| cube.positions()[v as usize] + offset)
+                .collect();
             if b % 3 == 1 {
                 corners.reverse();
             }
@@ -156,7 +160,14 @@ fn welded_boxes_some_inside_out_are_all_turned_outward() {
     let stl = boxes_as_stl_triangles(9);
     // Unwelded, every triangle is an open piece of its own: nothing to turn.
     let (_, unwelded) = orient_outward(&stl);
-    assert_eq!((unwelded.pieces, unwelded.open_pieces, unwelded.turned_outward), (108, 108, 0));
+    assert_eq!(
+        (
+            unwelded.pieces,
+            unwelded.open_pieces,
+            unwelded.turned_outward
+        ),
+        (108, 108, 0)
+    );
 
     let (welded, _) = weld(&stl, relative_tolerance(&stl)).unwrap();
     let (outward, report) = orient_outward(&welded);

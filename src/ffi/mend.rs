@@ -301,6 +301,61 @@ pub unsafe extern "C" fn weft_unify_orientation(
     })
 }
 
+/// What `weft_orient_outward` found and changed; a piece is a set of faces
+/// connected through shared edges.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WeftOrientReport {
+    /// Faces reversed.
+    pub flipped_faces: usize,
+    /// Connected pieces.
+    pub pieces: usize,
+    /// Closed pieces that enclosed a negative volume and were turned outward.
+    pub turned_outward: usize,
+    /// Pieces with a naked or non-manifold edge: unified, with no inside to
+    /// face away from.
+    pub open_pieces: usize,
+    /// Pieces that no winding makes consistent (a Möbius strip).
+    pub non_orientable_pieces: usize,
+}
+
+/// As `weft_unify_orientation` (one consistent winding per piece, closed
+/// pieces turned to enclose a positive volume), reporting the pieces. The
+/// triangles of an STL file share no vertices: weld them first
+/// (`weft_weld`), or every triangle is an open piece of its own.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+/// not be NULL and is written on success only.
+/// `out_report` receives the pieces found and changed; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_orient_outward(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_report: *mut WeftOrientReport,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (oriented, report) = orient::orient_outward(mesh);
+        WeftMesh::write(out, oriented);
+        write_optional(
+            out_report,
+            WeftOrientReport {
+                flipped_faces: report.flipped_faces,
+                pieces: report.pieces,
+                turned_outward: report.turned_outward,
+                open_pieces: report.open_pieces,
+                non_orientable_pieces: report.non_orientable_pieces,
+            },
+        );
+        Ok(())
+    })
+}
+
 /// Reverses every face, keeping its first corner first ({a, b, c, d}
 /// becomes {a, d, c, b}), so that flipping twice gives the input back.
 ///
