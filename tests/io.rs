@@ -417,6 +417,7 @@ fn decorated_cube() -> io::MeshFile {
             sharpness: 10.0,
             line: 0,
         }],
+        materials: None,
     }
 }
 

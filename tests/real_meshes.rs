@@ -177,3 +177,87 @@ fn welded_boxes_some_inside_out_are_all_turned_outward() {
     assert_eq!(report.flipped_faces, 3 * 12);
     assert!((signed_volume(&outward) - 9.0).abs() < 1e-9);
 }
+
+/// An OBJ of two quads in two materials, one face before any `usemtl`, and
+/// two vertices no face uses.
+const MATERIAL_OBJ: &str = "mtllib panels.mtl\n\
+    v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 5 5 5\nv 6 6 6\n\
+    f 1 2 5 4\n\
+    usemtl glass pane\nf 2 3 6 5\n\
+    usemtl steel\nf 4 5 8 7\n";
+
+#[test]
+fn obj_materials_are_read_and_written_back() {
+    use weft::io::{parse_mesh_file, write_file_to, WriteOptions, NO_MATERIAL};
+    let file = parse_mesh_file(Format::Obj, MATERIAL_OBJ.as_bytes()).unwrap();
+    let materials = file.materials.as_ref().expect("materials are read");
+    assert_eq!(materials.libraries, ["panels.mtl"]);
+    assert_eq!(materials.names, ["glass pane", "steel"]);
+    assert_eq!(materials.face_materials, [NO_MATERIAL, 0, 1]);
+    assert_eq!(file.mesh.vertex_count(), 10, "bare vertices stay in place");
+
+    let mut bytes = Vec::new();
+    write_file_to(Format::Obj, &mut bytes, &file, &WriteOptions::default()).unwrap();
+    let text = String::from_utf8(bytes.clone()).unwrap();
+    assert!(text.contains("mtllib panels.mtl\n"), "{text}");
+    assert!(
+        text.contains("usemtl glass pane\nf 2 3 6 5\nusemtl steel\n"),
+        "{text}"
+    );
+    let again = parse_mesh_file(Format::Obj, &bytes).unwrap();
+    assert_eq!(again.materials, file.materials);
+}
+
+#[test]
+fn subdivided_and_triangulated_faces_keep_their_parents_materials() {
+    let dir = std::env::temp_dir().join(format!("weft-materials-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let input = dir.join("panels.obj");
+    std::fs::write(&input, MATERIAL_OBJ).unwrap();
+    let weft = env!("CARGO_BIN_EXE_weft");
+    let run = |args: &[&str]| {
+        let out = std::process::Command::new(weft)
+            .args(args)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    };
+    let subdivided = dir.join("smooth.obj");
+    let triangles = dir.join("triangles.obj");
+    let (i, s, t) = (
+        input.to_str().unwrap(),
+        subdivided.to_str().unwrap(),
+        triangles.to_str().unwrap(),
+    );
+    run(&[
+        "subdivide",
+        i,
+        s,
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "2",
+        "--naked-edges",
+        "smooth",
+    ]);
+    run(&["triangulate", i, t]);
+    let read = |path: &std::path::Path| {
+        weft::io::parse_mesh_file(Format::Obj, &std::fs::read(path).unwrap()).unwrap()
+    };
+    use weft::io::NO_MATERIAL;
+    let smooth = read(&subdivided);
+    let m = smooth.materials.expect("subdivide keeps the materials");
+    assert_eq!(m.libraries, ["panels.mtl"]);
+    // Each quad has 16 children at level 2, contiguous and in face order.
+    let expected: Vec<u32> = [NO_MATERIAL, 0, 1].iter().flat_map(|&x| [x; 16]).collect();
+    assert_eq!(m.face_materials, expected);
+    let m = read(&triangles)
+        .materials
+        .expect("triangulate keeps the materials");
+    assert_eq!(m.face_materials, [NO_MATERIAL, NO_MATERIAL, 0, 0, 1, 1]);
+    std::fs::remove_dir_all(&dir).unwrap();
+}

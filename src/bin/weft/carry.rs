@@ -30,9 +30,14 @@ pub fn triangulate(file: &MeshFile) -> weft::Result<MeshFile> {
             indices,
         }
     });
+    let materials = file
+        .materials
+        .as_ref()
+        .map(|m| m.inherited(&triangulation.parent_faces));
     Ok(MeshFile {
         mesh: triangulation.mesh,
         uvs,
+        materials,
         ..file.clone()
     })
 }
@@ -87,6 +92,7 @@ pub fn crease_by_angle(file: &MeshFile, angle_degrees: f64) -> weft::Result<(Mes
             normals: None,
             creases,
             corners,
+            materials: file.materials.clone(),
         },
         found.len(),
     ))
@@ -127,6 +133,10 @@ pub fn subdivide(file: &MeshFile, carry: &Carry) -> weft::Result<MeshFile> {
         let flat: Vec<f64> = uvs.values.iter().flatten().copied().collect();
         let corners = subdivider.face_varying(&flat, 2, &uvs.indices, carry.uv_linear)?;
         out.uvs = Some(shared_values(&corners));
+    }
+    if let Some(materials) = &file.materials {
+        let parents = weft::subdivide::parent_faces(&file.mesh, carry.scheme, carry.levels)?;
+        out.materials = Some(materials.inherited(&parents));
     }
     if carry.limit {
         let limit = subdivider.limit()?;
