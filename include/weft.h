@@ -1052,6 +1052,30 @@ WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct 
 WeftStatus weft_weld_relative_tolerance(const struct WeftMesh *mesh, double *out_tolerance);
 
 /**
+ * Returns how many vertices no face uses, or 0 when `mesh` is NULL.
+ * Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
+ * them on purpose); `weft_remove_unused_vertices` leaves them out.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle.
+ */
+size_t weft_mesh_unused_vertex_count(const struct WeftMesh *mesh);
+
+/**
+ * Leaves out the vertices no face uses; the others keep their order (the
+ * face indices are renumbered to match).
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_removed` receives how many vertices were left out; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_remove_unused_vertices(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
  * Welds vertices: every two vertices at most `tolerance` apart become one,
  * transitively. The merged vertex keeps the position of its cluster's
  * lowest-index vertex (seams stay where the surface put them, and welding

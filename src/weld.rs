@@ -192,6 +192,15 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     ))
 }
 
+/// How many vertices no face uses.
+pub fn unused_vertex_count(mesh: &Mesh) -> usize {
+    let mut used = vec![false; mesh.vertex_count()];
+    for &v in mesh.face_indices() {
+        used[v as usize] = true;
+    }
+    used.iter().filter(|&&u| !u).count()
+}
+
 /// Leaves out the vertices no face uses; the others keep their order.
 /// Returns the compacted mesh and how many vertices were left out.
 pub fn remove_unused_vertices(mesh: &Mesh) -> (Mesh, usize) {

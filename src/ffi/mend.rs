@@ -118,6 +118,44 @@ pub unsafe extern "C" fn weft_weld_relative_tolerance(
     })
 }
 
+/// Returns how many vertices no face uses, or 0 when `mesh` is NULL.
+/// Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
+/// them on purpose); `weft_remove_unused_vertices` leaves them out.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn weft_mesh_unused_vertex_count(mesh: *const WeftMesh) -> usize {
+    // SAFETY: the caller passes NULL or a live handle.
+    unsafe { mesh.as_ref() }.map_or(0, |m| weld::unused_vertex_count(&m.mesh))
+}
+
+/// Leaves out the vertices no face uses; the others keep their order (the
+/// face indices are renumbered to match).
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+/// not be NULL and is written on success only.
+/// `out_removed` receives how many vertices were left out; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_remove_unused_vertices(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_removed: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (compact, removed) = weld::remove_unused_vertices(mesh);
+        WeftMesh::write(out, compact);
+        write_optional(out_removed, removed);
+        Ok(())
+    })
+}
+
 /// Welds vertices: every two vertices at most `tolerance` apart become one,
 /// transitively. The merged vertex keeps the position of its cluster's
 /// lowest-index vertex (seams stay where the surface put them, and welding

@@ -434,6 +434,21 @@ static void test_orient_outward_and_relative_tolerance(void) {
   CHECK(near(tolerance, sqrt(16.0 + 1.0 + 1.0) * 1e-6));
   CHECK_STATUS(weft_weld_relative_tolerance(joined, NULL), WEFT_STATUS_NULL_POINTER);
   CHECK_STATUS(weft_weld_relative_tolerance(NULL, &tolerance), WEFT_STATUS_NULL_POINTER);
+  {
+    /* A triangle and a vertex no face uses. */
+    const double positions[] = {0, 0, 0, 9, 9, 9, 1, 0, 0, 0, 1, 0};
+    const uint32_t sizes[] = {3}, indices[] = {0, 2, 3};
+    WeftMesh *bare = NULL, *compact = NULL;
+    size_t removed = 0;
+    CHECK_STATUS(weft_mesh_new(positions, 4, sizes, 1, indices, 3, &bare), WEFT_STATUS_OK);
+    CHECK(weft_mesh_unused_vertex_count(bare) == 1 && weft_mesh_unused_vertex_count(NULL) == 0);
+    CHECK_STATUS(weft_remove_unused_vertices(bare, &compact, &removed), WEFT_STATUS_OK);
+    CHECK(removed == 1 && weft_mesh_vertex_count(compact) == 3);
+    CHECK(weft_mesh_face_indices(compact)[1] == 1 && weft_mesh_positions(compact)[3] == 1.0);
+    CHECK_STATUS(weft_remove_unused_vertices(NULL, &compact, NULL), WEFT_STATUS_NULL_POINTER);
+    weft_mesh_free(bare);
+    weft_mesh_free(compact);
+  }
   weft_mesh_free(a);
   weft_mesh_free(b);
   weft_mesh_free(flipped);
