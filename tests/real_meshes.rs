@@ -67,6 +67,7 @@ fn centre_of_square(view: View, up: Up, y_up: bool) -> [u8; 3] {
         edges: Some(false),
         view,
         up,
+        ..RenderOptions::default()
     };
     render(&square, &options).unwrap().pixel(30, 30)
 }
@@ -260,4 +261,43 @@ fn subdivided_and_triangulated_faces_keep_their_parents_materials() {
         .expect("triangulate keeps the materials");
     assert_eq!(m.face_materials, [NO_MATERIAL, NO_MATERIAL, 0, 0, 1, 1]);
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+fn violet_pixels(image: &weft::io::render::Image) -> usize {
+    let (w, h) = (image.width, image.height);
+    (0..h)
+        .flat_map(|y| (0..w).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let [r, g, b] = image.pixel(x, y);
+            b > 150 && g < 80 && r > 60
+        })
+        .count()
+}
+
+#[test]
+fn marked_edges_stand_out_and_a_section_shows_what_is_inside() {
+    use weft::io::render::Section;
+    let cube = shapes::cube();
+    let plain = render(&cube, &RenderOptions::default()).unwrap();
+    assert_eq!(violet_pixels(&plain), 0);
+    let options = RenderOptions {
+        marked_edges: vec![[0, 1], [1, 3], [7, 99]],
+        ..RenderOptions::default()
+    };
+    assert!(violet_pixels(&render(&cube, &options).unwrap()) > 100);
+
+    let cut = |point: DVec3| RenderOptions {
+        section: Some(Section {
+            point,
+            normal: DVec3::X,
+        }),
+        ..RenderOptions::default()
+    };
+    // Cutting at the middle leaves out the face at x = 1 only.
+    let half = render(&cube, &cut(DVec3::splat(0.5))).unwrap();
+    assert!(half != plain);
+    // Cutting below everything leaves an empty picture.
+    let none = render(&cube, &cut(DVec3::splat(-1.0))).unwrap();
+    let background = none.pixel(0, 0);
+    assert!((0..none.height).all(|y| (0..none.width).all(|x| none.pixel(x, y) == background)));
 }

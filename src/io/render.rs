@@ -60,8 +60,18 @@ pub enum Up {
     Y,
 }
 
-/// How to draw a picture.
+/// A cut through the mesh: faces whose centroid lies on the side `normal`
+/// points to are left out, so that what is inside shows.
 #[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    /// A point of the cutting plane.
+    pub point: DVec3,
+    /// The plane's normal, towards the part left out.
+    pub normal: DVec3,
+}
+
+/// How to draw a picture.
+#[derive(Debug, Clone, PartialEq)]
 pub struct RenderOptions {
     /// Width in pixels, 1 to [`MAX_SIDE`].
     pub width: u32,
@@ -75,6 +85,11 @@ pub struct RenderOptions {
     pub view: View,
     /// Which axis of the model points up.
     pub up: Up,
+    /// A cut-away: the faces beyond this plane are not drawn.
+    pub section: Option<Section>,
+    /// Edges drawn wide in violet (creases, say), as vertex pairs in either
+    /// order; pairs that are not edges of the mesh are ignored.
+    pub marked_edges: Vec<[u32; 2]>,
 }
 
 impl Default for RenderOptions {
@@ -85,6 +100,8 @@ impl Default for RenderOptions {
             edges: None,
             view: View::Iso,
             up: Up::Z,
+            section: None,
+            marked_edges: Vec::new(),
         }
     }
 }
@@ -135,6 +152,7 @@ const FRONT: [f32; 3] = [0.60, 0.70, 0.84];
 const BACK: [f32; 3] = [0.93, 0.50, 0.28];
 const EDGE: [f32; 3] = [0.13, 0.14, 0.17];
 const NAKED_EDGE: [f32; 3] = [0.85, 0.08, 0.10];
+const MARKED_EDGE: [f32; 3] = [0.42, 0.12, 0.78];
 /// Half the width of an edge line, in supersampled pixels.
 const EDGE_HALF_WIDTH: f64 = 0.85;
 /// Half the width of a naked edge line, in supersampled pixels.
@@ -145,6 +163,8 @@ const NAKED_HALF_WIDTH: f64 = 1.7;
 enum Side {
     /// Inside the polygon (a fan diagonal), or edges are off.
     Hidden,
+    /// An edge asked to stand out ([`RenderOptions::marked_edges`]).
+    Marked,
     /// A polygon edge.
     Edge,
     /// A polygon edge that only this face has.
@@ -293,8 +313,17 @@ fn render_with(
     );
 
     let topology = Topology::new(mesh);
+    let mut marked = vec![false; topology.edge_count()];
+    for &[a, b] in &options.marked_edges {
+        if let Some(e) = topology.find_edge(a, b) {
+            marked[e] = true;
+        }
+    }
     let side = |corner: usize| {
-        if topology.is_naked_edge(topology.corner_edges()[corner] as usize) {
+        let edge = topology.corner_edges()[corner] as usize;
+        if marked[edge] {
+            Side::Marked
+        } else if topology.is_naked_edge(edge) {
             Side::Naked
         } else if edges {
             Side::Edge
@@ -311,6 +340,11 @@ fn render_with(
         corners.extend(mesh.face_positions(f));
         let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+        if let Some(cut) = &options.section {
+            if (centroid - cut.point).dot(cut.normal) > 0.0 {
+                continue;
+            }
+        }
         let front = normal.dot(camera.eye - centroid) >= 0.0;
         let face_colour = colours.map(|colours| {
             let face = mesh.face(f);
@@ -426,8 +460,11 @@ fn fill_triangle(
             depth[i] = z as f32;
             // Distance to side k: twice the area of (pixel, side) over its length.
             let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
-            let line = if (0..3).any(|k| sides[k] == Side::Naked && distance(k) < NAKED_HALF_WIDTH)
-            {
+            let wide =
+                |kind: Side| (0..3).any(|k| sides[k] == kind && distance(k) < NAKED_HALF_WIDTH);
+            let line = if wide(Side::Marked) {
+                Some(MARKED_EDGE)
+            } else if wide(Side::Naked) {
                 Some(NAKED_EDGE)
             } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
                 Some(EDGE)
