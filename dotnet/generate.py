@@ -33,7 +33,7 @@ HANDLES = {"WeftMesh": "WeftMeshHandle", "WeftRefiner": "WeftRefinerHandle", "We
 # Structs generated here (internal, passed by reference) under their C# names.
 NATIVE_STRUCTS = {"WeftSubdivisionOptions": "NativeSubdivisionOptions", "WeftMeshInfo": "NativeMeshInfo"}
 # Structs whose public C# declaration is hand-written in Structs.cs (same layout, documented API).
-PUBLIC_STRUCTS = {"WeftPlane", "WeftWeldReport", "WeftTNode"}
+PUBLIC_STRUCTS = {"WeftPlane", "WeftWeldReport", "WeftOrientReport", "WeftTNode"}
 # A const pointer to one of these may be NULL: passed as an array of one element or null.
 OPTIONAL_STRUCTS = {"WeftPlane"}
 # A non-const pointer to one of these is a caller buffer of many elements, not one result.

@@ -100,8 +100,10 @@
 #define WEFT_SIDED_DIPYRAMID 3
 
 /**
- * The weld tolerance to use when the host has none: 0.001 model units,
- * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
+ * tolerance (a millimetre in a model in metres). It can collapse the faces
+ * of small or dense meshes: without a tolerance of the host's own, prefer
+ * `weft_weld_relative_tolerance`.
  */
 #define WEFT_DEFAULT_WELD_TOLERANCE 0.001
 
@@ -479,6 +481,34 @@ typedef struct WeftTNode {
    */
   double parameter;
 } WeftTNode;
+
+/**
+ * What `weft_orient_outward` found and changed; a piece is a set of faces
+ * connected through shared edges.
+ */
+typedef struct WeftOrientReport {
+  /**
+   * Faces reversed.
+   */
+  size_t flipped_faces;
+  /**
+   * Connected pieces.
+   */
+  size_t pieces;
+  /**
+   * Closed pieces that enclosed a negative volume and were turned outward.
+   */
+  size_t turned_outward;
+  /**
+   * Pieces with a naked or non-manifold edge: unified, with no inside to
+   * face away from.
+   */
+  size_t open_pieces;
+  /**
+   * Pieces that no winding makes consistent (a Möbius strip).
+   */
+  size_t non_orientable_pieces;
+} WeftOrientReport;
 
 /**
  * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -1103,6 +1133,48 @@ WeftStatus weft_match_lines_to_edges(const struct WeftMesh *mesh, size_t line_co
 WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
 
 /**
+ * The tolerance to weld `mesh` with when the host has none of its own: a
+ * millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
+ * single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
+ * collapses the faces of a small part or a dense scan, whatever the units.
+ * The command line's `weld` and `t-nodes` use it when no tolerance is given.
+ *
+ * `mesh` must not be NULL.
+ * `out_tolerance` receives the tolerance; it must not be NULL and is
+ * written on success only.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_tolerance` is writable.
+ */
+WeftStatus weft_weld_relative_tolerance(const struct WeftMesh *mesh, double *out_tolerance);
+
+/**
+ * Returns how many vertices no face uses, or 0 when `mesh` is NULL.
+ * Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
+ * them on purpose); `weft_remove_unused_vertices` leaves them out.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle.
+ */
+size_t weft_mesh_unused_vertex_count(const struct WeftMesh *mesh);
+
+/**
+ * Leaves out the vertices no face uses; the others keep their order (the
+ * face indices are renumbered to match).
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_removed` receives how many vertices were left out; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_remove_unused_vertices(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
  * Welds vertices: every two vertices at most `tolerance` apart become one,
  * transitively. The merged vertex keeps the position of its cluster's
  * lowest-index vertex (seams stay where the surface put them, and welding
@@ -1112,8 +1184,9 @@ WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct 
  *
  * `mesh` must not be NULL.
  * `tolerance` is a distance in model units, finite and not negative; 0
- * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
- * most models.
+ * merges exact duplicates only; `weft_weld_relative_tolerance` gives one
+ * that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
+ * 0.001, suits models of ordinary size in metres or millimetres).
  * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
  * must not be NULL and is written on success only.
  * `out_report` receives what changed; it may be NULL.
@@ -1200,6 +1273,22 @@ WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out
  * `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
  */
 WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * As `weft_unify_orientation` (one consistent winding per piece, closed
+ * pieces turned to enclose a positive volume), reporting the pieces. The
+ * triangles of an STL file share no vertices: weld them first
+ * (`weft_weld`), or every triangle is an open piece of its own.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_report` receives the pieces found and changed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
 
 /**
  * Reverses every face, keeping its first corner first ({a, b, c, d}

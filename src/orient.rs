@@ -31,6 +31,32 @@ pub fn is_orientable(mesh: &Mesh) -> bool {
 /// turned outward, having no inside. Reversed faces keep their first corner
 /// first, as [`flip`] does.
 pub fn unify_orientation(mesh: &Mesh) -> (Mesh, usize) {
+    let (unified, report) = orient_outward(mesh);
+    (unified, report.flipped_faces)
+}
+
+/// What [`orient_outward`] found and changed, piece by piece (a piece is a
+/// set of faces connected through shared edges).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct OrientReport {
+    /// Faces reversed.
+    pub flipped_faces: usize,
+    /// Connected pieces.
+    pub pieces: usize,
+    /// Closed pieces that enclosed a negative volume and were turned outward.
+    pub turned_outward: usize,
+    /// Pieces with a naked or non-manifold edge: unified, but with no inside
+    /// to face away from.
+    pub open_pieces: usize,
+    /// Pieces that no winding makes consistent (a Möbius strip).
+    pub non_orientable_pieces: usize,
+}
+
+/// As [`unify_orientation`], with a report of the pieces: how many were
+/// closed and turned outward, how many open (unified only) and how many
+/// cannot be oriented. A mesh read from STL must be welded first, or every
+/// triangle is a piece of its own.
+pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
     let topology = Topology::new(mesh);
     let orientation = topology.orientation();
     let component_count = orientation.component_orientable.len();
@@ -68,18 +94,26 @@ pub fn unify_orientation(mesh: &Mesh) -> (Mesh, usize) {
         let v = signed_volume_of_face(mesh, f, o);
         volume[c] += if reversed_face(f, &invert) { -v } else { v };
     }
+    let mut report = OrientReport {
+        pieces: component_count,
+        ..OrientReport::default()
+    };
     for c in 0..component_count {
-        if !open[c] && orientation.component_orientable[c] && volume[c] < 0.0 {
+        if !orientation.component_orientable[c] {
+            report.non_orientable_pieces += 1;
+        } else if open[c] {
+            report.open_pieces += 1;
+        } else if volume[c] < 0.0 {
             invert[c] = !invert[c];
+            report.turned_outward += 1;
         }
     }
 
     let mut face_indices = Vec::with_capacity(mesh.index_count());
-    let mut flipped = 0;
     for (f, face) in mesh.faces().enumerate() {
         if reversed_face(f, &invert) {
             push_reversed(&mut face_indices, face);
-            flipped += 1;
+            report.flipped_faces += 1;
         } else {
             face_indices.extend_from_slice(face);
         }
@@ -90,7 +124,7 @@ pub fn unify_orientation(mesh: &Mesh) -> (Mesh, usize) {
             mesh.face_sizes().to_vec(),
             face_indices,
         ),
-        flipped,
+        report,
     )
 }
 

@@ -29,6 +29,23 @@ use crate::topology::UnionFind;
 /// vertices of a design are far further apart.
 pub const DEFAULT_WELD_TOLERANCE: f64 = 0.001;
 
+/// The share of a mesh's bounding-box diagonal that [`relative_tolerance`]
+/// takes: a millionth, far above the round-off of coordinates written to
+/// files (about 1e-15 of the model's size in doubles, 1e-7 in the floats of
+/// STL) and far below the spacing of any vertices a model means to keep
+/// apart, whatever its units or size.
+pub const RELATIVE_TOLERANCE: f64 = 1e-6;
+
+/// The tolerance to weld `mesh` with when none is given: [`RELATIVE_TOLERANCE`]
+/// times its bounding-box diagonal (0 for an empty mesh or a single point,
+/// which then merges exact duplicates only). A dense scan and a 5 cm part
+/// keep every vertex they mean to keep, where an absolute 0.001 would
+/// collapse their faces.
+pub fn relative_tolerance(mesh: &Mesh) -> f64 {
+    mesh.bounding_box()
+        .map_or(0.0, |(lo, hi)| (hi - lo).length() * RELATIVE_TOLERANCE)
+}
+
 /// What [`weld`] changed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct WeldReport {
@@ -173,6 +190,15 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
         Mesh::from_valid_parts(out_positions, face_sizes, face_indices),
         report,
     ))
+}
+
+/// How many vertices no face uses.
+pub fn unused_vertex_count(mesh: &Mesh) -> usize {
+    let mut used = vec![false; mesh.vertex_count()];
+    for &v in mesh.face_indices() {
+        used[v as usize] = true;
+    }
+    used.iter().filter(|&&u| !u).count()
 }
 
 /// Leaves out the vertices no face uses; the others keep their order.

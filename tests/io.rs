@@ -417,6 +417,7 @@ fn decorated_cube() -> io::MeshFile {
             sharpness: 10.0,
             line: 0,
         }],
+        materials: None,
     }
 }
 
@@ -704,6 +705,7 @@ fn render_coloured_paints_faces_in_their_vertices_colours() {
         width: 80,
         height: 60,
         edges: Some(false),
+        ..RenderOptions::default()
     };
     let red = vec![[1.0, 0.0, 0.0, 1.0]; 8];
     let image = render_coloured(&cube, &options, &red).unwrap();

@@ -156,7 +156,7 @@ namespace Weft
     {
         /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
         internal const double SharpnessInfinite = 10.0;
-        /// <summary>The weld tolerance to use when the host has none: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres).</summary>
+        /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
         internal const double DefaultWeldTolerance = 0.001;
         /// <summary>Major version of the library this header belongs to.</summary>
         internal const uint VersionMajor = 0;

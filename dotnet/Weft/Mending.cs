@@ -132,6 +132,38 @@ namespace Weft
             return WeftMesh.FromCountingCall(NativeMethods.weft_unify_orientation, mesh, out flipped);
         }
 
+        /// <summary>
+        /// Unifies every piece and turns each closed one to enclose a positive
+        /// volume; <paramref name="report"/> counts the pieces found, turned,
+        /// left open and not orientable. Weld STL triangles first.
+        /// </summary>
+        public static WeftMesh OrientOutward(WeftMesh mesh, out WeftOrientReport report)
+        {
+            WeftMeshHandle result;
+            uint status = NativeMethods.weft_orient_outward(Arguments.Mesh(mesh, "mesh"), out result, out report);
+            return WeftMesh.FromCall(status, result);
+        }
+
+        /// <summary>A weld tolerance suited to the mesh's size: a millionth of its bounding-box diagonal.</summary>
+        public static double RelativeWeldTolerance(WeftMesh mesh)
+        {
+            double tolerance;
+            WeftException.Check(NativeMethods.weft_weld_relative_tolerance(Arguments.Mesh(mesh, "mesh"), out tolerance));
+            return tolerance;
+        }
+
+        /// <summary>How many vertices no face uses.</summary>
+        public static long UnusedVertexCount(WeftMesh mesh)
+        {
+            return (long)NativeMethods.weft_mesh_unused_vertex_count(Arguments.Mesh(mesh, "mesh")).ToUInt64();
+        }
+
+        /// <summary>Leaves out the vertices no face uses; <paramref name="removed"/> counts them.</summary>
+        public static WeftMesh RemoveUnusedVertices(WeftMesh mesh, out int removed)
+        {
+            return WeftMesh.FromCountingCall(NativeMethods.weft_remove_unused_vertices, mesh, out removed);
+        }
+
         /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}).</summary>
         public static WeftMesh Flip(WeftMesh mesh)
         {

@@ -183,6 +183,18 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_join(IntPtr[] meshes, UIntPtr count, out WeftMeshHandle outMesh);
 
+        /// <summary>The tolerance to weld <c>mesh</c> with when the host has none of its own: a millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never collapses the faces of a small part or a dense scan, whatever the units. The command line's <c>weld</c> and <c>t-nodes</c> use it when no tolerance is given.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_weld_relative_tolerance(WeftMeshHandle mesh, [Out] double[] outTolerance);
+
+        /// <summary>Returns how many vertices no face uses, or 0 when <c>mesh</c> is NULL. Subdivision keeps such bare vertices in place (OpenSubdiv cages carry them on purpose); <c>weft_remove_unused_vertices</c> leaves them out.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_mesh_unused_vertex_count(WeftMeshHandle mesh);
+
+        /// <summary>Leaves out the vertices no face uses; the others keep their order (the face indices are renumbered to match).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_remove_unused_vertices(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
+
         /// <summary>Welds vertices: every two vertices at most <c>tolerance</c> apart become one, transitively. The merged vertex keeps the position of its cluster's lowest-index vertex (seams stay where the surface put them, and welding twice changes nothing). Faces drop repeated corners (a quad with two merged corners becomes a triangle); faces left with fewer than 3 vertices are removed; vertices no face uses are left out.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_weld(WeftMeshHandle mesh, double tolerance, out WeftMeshHandle outMesh, out WeftWeldReport outReport);
@@ -202,6 +214,10 @@ namespace Weft
         /// <summary>Gives every connected piece one consistent winding, flipping the fewest of its faces, then turns each closed orientable piece to face outward. A piece that cannot be oriented (a Möbius strip) is wound as consistently as it can be; <c>weft_mesh_info</c> tells whether the mesh is orientable.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_unify_orientation(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outFlipped);
+
+        /// <summary>As <c>weft_unify_orientation</c> (one consistent winding per piece, closed pieces turned to enclose a positive volume), reporting the pieces. The triangles of an STL file share no vertices: weld them first (<c>weft_weld</c>), or every triangle is an open piece of its own.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_orient_outward(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out WeftOrientReport outReport);
 
         /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}), so that flipping twice gives the input back.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

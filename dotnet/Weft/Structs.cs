@@ -65,6 +65,28 @@ namespace Weft
         public long UnusedVertexCount { get { return (long)unusedVertexCount.ToUInt64(); } }
     }
 
+    /// <summary>What <see cref="Mending.OrientOutward"/> found and changed, laid out as <c>WeftOrientReport</c>.</summary>
+    [StructLayout(LayoutKind.Sequential)]
+    public struct WeftOrientReport
+    {
+        private UIntPtr flippedFaces;
+        private UIntPtr pieces;
+        private UIntPtr turnedOutward;
+        private UIntPtr openPieces;
+        private UIntPtr nonOrientablePieces;
+
+        /// <summary>Faces reversed.</summary>
+        public long FlippedFaces { get { return (long)flippedFaces.ToUInt64(); } }
+        /// <summary>Connected pieces (faces joined through shared edges).</summary>
+        public long Pieces { get { return (long)pieces.ToUInt64(); } }
+        /// <summary>Closed pieces that were inside out and were turned outward.</summary>
+        public long TurnedOutward { get { return (long)turnedOutward.ToUInt64(); } }
+        /// <summary>Pieces with a naked or non-manifold edge: unified, with no inside to face away from.</summary>
+        public long OpenPieces { get { return (long)openPieces.ToUInt64(); } }
+        /// <summary>Pieces no winding makes consistent (a Möbius strip).</summary>
+        public long NonOrientablePieces { get { return (long)nonOrientablePieces.ToUInt64(); } }
+    }
+
     /// <summary>
     /// A vertex lying inside another face's naked edge (see
     /// <see cref="Mending.FindTNodes"/>), laid out as <c>WeftTNode</c>.

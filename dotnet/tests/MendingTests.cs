@@ -209,6 +209,16 @@ namespace Weft.Tests
             {
                 t.Sequence(new uint[] { 0, 1, 3, 2 }, Shapes.Face(flipped, 0), "{a, b, c, d} becomes {a, d, c, b}");
                 t.True(Mending.FaceNormals(flipped)[2] > 0.99, "the bottom faces up");
+                WeftOrientReport report;
+                using (var outward = Mending.OrientOutward(flipped, out report))
+                {
+                    t.Equal(1L, report.TurnedOutward, "the inside-out cube is turned outward");
+                    t.Equal(6L, report.FlippedFaces, "every face reversed");
+                    t.Equal(0L, report.OpenPieces, "the cube is closed");
+                    t.True(Mending.FaceNormals(outward)[2] < -0.99, "the bottom faces down again");
+                }
+                t.True(Math.Abs(Mending.RelativeWeldTolerance(cube) - Math.Sqrt(3.0) * 1e-6) < 1e-15, "a millionth of the diagonal");
+                t.Equal(0L, Mending.UnusedVertexCount(cube), "every vertex used");
             }
         }
 

@@ -94,6 +94,16 @@ class WeftWeldReport(Structure):
     ]
 
 
+class WeftOrientReport(Structure):
+    _fields_ = [
+        ("flipped_faces", c_size_t),
+        ("pieces", c_size_t),
+        ("turned_outward", c_size_t),
+        ("open_pieces", c_size_t),
+        ("non_orientable_pieces", c_size_t),
+    ]
+
+
 class WeftMeshInfo(Structure):
     _fields_ = [
         ("vertex_count", c_size_t),
@@ -151,11 +161,15 @@ _SIGNATURES = {
     "weft_match_points_to_vertices": (S, [P, Z, P, D, P]),
     "weft_match_lines_to_edges": (S, [P, Z, P, D, P]),
     "weft_join": (S, [P, Z, OUT]),
+    "weft_mesh_unused_vertex_count": (Z, [P]),
+    "weft_remove_unused_vertices": (S, [P, OUT, ZP]),
+    "weft_weld_relative_tolerance": (S, [P, POINTER(D)]),
     "weft_weld": (S, [P, D, OUT, POINTER(WeftWeldReport)]),
     "weft_find_t_nodes": (S, [P, D, P, Z, ZP]),
     "weft_repair_t_nodes": (S, [P, D, OUT, ZP]),
     "weft_cull_adjacent": (S, [P, OUT, ZP]),
     "weft_unify_orientation": (S, [P, OUT, ZP]),
+    "weft_orient_outward": (S, [P, OUT, POINTER(WeftOrientReport)]),
     "weft_flip": (S, [P, OUT]),
     "weft_face_normals": (S, [P, P, Z]),
     "weft_vertex_normals": (S, [P, P, Z]),

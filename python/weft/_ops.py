@@ -12,7 +12,7 @@ from collections import namedtuple
 import numpy as np
 
 from . import _arrays
-from ._lib import WeftPlane, WeftSubdivisionOptions, WeftWeldReport, lib
+from ._lib import WeftOrientReport, WeftPlane, WeftSubdivisionOptions, WeftWeldReport, lib
 from ._mesh import Mesh, check_mesh, take_mesh
 
 DEFAULT_WELD_TOLERANCE = 0.001
@@ -36,6 +36,7 @@ TILE_FACES = {"all": 0, "quads-and-more": 1, "pentagons-and-more": 2, "triangles
 DUAL = {"vertex-average": 0, "keep-size": 1}
 
 WeldReport = namedtuple("WeldReport", [name for name, _ in WeftWeldReport._fields_])
+OrientReport = namedtuple("OrientReport", [name for name, _ in WeftOrientReport._fields_])
 WeldReport.__doc__ = "What :func:`weld` changed: vertices merged, faces removed, unused vertices left out."
 
 TNODE_DTYPE = np.dtype(
@@ -404,6 +405,42 @@ def join(meshes):
     return take_mesh(out)
 
 
+def weld_relative_tolerance(mesh):
+    """A weld tolerance suited to the mesh's size: a millionth of its
+    bounding-box diagonal (0 for an empty mesh). It never collapses the
+    faces of a small part or a dense scan, as an absolute 0.001 can::
+
+        >>> round(weft.weld_relative_tolerance(weft.box()) * 1e6, 6)
+        1.732051
+    """
+    tolerance = ctypes.c_double()
+    lib.weft_weld_relative_tolerance(check_mesh(mesh), ctypes.byref(tolerance))
+    return tolerance.value
+
+
+def unused_vertex_count(mesh):
+    """How many vertices no face uses (subdivision keeps them in place)::
+
+        >>> weft.unused_vertex_count(weft.Mesh([(0, 0, 0), (1, 0, 0), (0, 1, 0), (5, 5, 5)], [[0, 1, 2]]))
+        1
+    """
+    return lib.weft_mesh_unused_vertex_count(check_mesh(mesh))
+
+
+def remove_unused_vertices(mesh, report=False):
+    """Leaves out the vertices no face uses; the others keep their order.
+    With ``report=True`` returns ``(mesh, removed)``::
+
+        >>> weft.remove_unused_vertices(weft.Mesh([(0, 0, 0), (5, 5, 5), (1, 0, 0), (0, 1, 0)], [[0, 2, 3]])).faces
+        [[0, 1, 2]]
+    """
+    removed = ctypes.c_size_t()
+    out = _out()
+    lib.weft_remove_unused_vertices(check_mesh(mesh), ctypes.byref(out), ctypes.byref(removed))
+    result = take_mesh(out)
+    return (result, removed.value) if report else result
+
+
 def weld(meshes, tolerance=DEFAULT_WELD_TOLERANCE):
     """Joins meshes (one mesh or a sequence) and welds vertices at most
     ``tolerance`` apart, transitively; faces drop repeated corners and
@@ -500,6 +537,23 @@ def unify(mesh, report=False):
 
 
 unify_orientation = unify
+
+
+def orient_outward(mesh):
+    """As :func:`unify`, reporting the pieces: returns ``(mesh, report)``
+    with an :class:`OrientReport` (faces flipped, pieces, closed pieces
+    turned outward, open pieces, pieces that cannot be oriented). Weld the
+    triangles of an STL first, or every triangle is a piece of its own::
+
+        >>> box = weft.box()
+        >>> oriented, report = weft.orient_outward(weft.flip(box))
+        >>> report.turned_outward, report.open_pieces
+        (1, 0)
+    """
+    report = WeftOrientReport()
+    out = _out()
+    lib.weft_orient_outward(check_mesh(mesh), ctypes.byref(out), ctypes.byref(report))
+    return take_mesh(out), OrientReport(*(getattr(report, name) for name, _ in WeftOrientReport._fields_))
 
 
 def flip(mesh):

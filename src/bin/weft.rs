@@ -428,6 +428,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                     "never" => Some(false),
                     _ => None,
                 },
+                ..RenderOptions::default()
             };
             let image = with_progress("rendering", || match &file.colours {
                 Some(colours) => render::render_coloured(mesh, &options, &colours.rgba),

@@ -12,8 +12,10 @@ use crate::orient;
 use crate::t_nodes;
 use crate::weld;
 
-/// The weld tolerance to use when the host has none: 0.001 model units,
-/// Rhino's default absolute tolerance (a millimetre in a model in metres).
+/// An absolute weld tolerance: 0.001 model units, Rhino's default absolute
+/// tolerance (a millimetre in a model in metres). It can collapse the faces
+/// of small or dense meshes: without a tolerance of the host's own, prefer
+/// `weft_weld_relative_tolerance`.
 pub const WEFT_DEFAULT_WELD_TOLERANCE: f64 = 0.001;
 
 /// What `weft_weld` changed.
@@ -88,6 +90,72 @@ pub unsafe extern "C" fn weft_join(
     })
 }
 
+/// The tolerance to weld `mesh` with when the host has none of its own: a
+/// millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
+/// single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
+/// collapses the faces of a small part or a dense scan, whatever the units.
+/// The command line's `weld` and `t-nodes` use it when no tolerance is given.
+///
+/// `mesh` must not be NULL.
+/// `out_tolerance` receives the tolerance; it must not be NULL and is
+/// written on success only.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_tolerance` is writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_weld_relative_tolerance(
+    mesh: *const WeftMesh,
+    out_tolerance: *mut f64,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_tolerance, "out_tolerance")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        // SAFETY: `out_param` refused NULL; the caller guarantees the rest.
+        unsafe { out.write(weld::relative_tolerance(mesh)) };
+        Ok(())
+    })
+}
+
+/// Returns how many vertices no face uses, or 0 when `mesh` is NULL.
+/// Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
+/// them on purpose); `weft_remove_unused_vertices` leaves them out.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn weft_mesh_unused_vertex_count(mesh: *const WeftMesh) -> usize {
+    // SAFETY: the caller passes NULL or a live handle.
+    unsafe { mesh.as_ref() }.map_or(0, |m| weld::unused_vertex_count(&m.mesh))
+}
+
+/// Leaves out the vertices no face uses; the others keep their order (the
+/// face indices are renumbered to match).
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+/// not be NULL and is written on success only.
+/// `out_removed` receives how many vertices were left out; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_remove_unused_vertices(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_removed: *mut usize,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (compact, removed) = weld::remove_unused_vertices(mesh);
+        WeftMesh::write(out, compact);
+        write_optional(out_removed, removed);
+        Ok(())
+    })
+}
+
 /// Welds vertices: every two vertices at most `tolerance` apart become one,
 /// transitively. The merged vertex keeps the position of its cluster's
 /// lowest-index vertex (seams stay where the surface put them, and welding
@@ -97,8 +165,9 @@ pub unsafe extern "C" fn weft_join(
 ///
 /// `mesh` must not be NULL.
 /// `tolerance` is a distance in model units, finite and not negative; 0
-/// merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
-/// most models.
+/// merges exact duplicates only; `weft_weld_relative_tolerance` gives one
+/// that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
+/// 0.001, suits models of ordinary size in metres or millimetres).
 /// `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
 /// must not be NULL and is written on success only.
 /// `out_report` receives what changed; it may be NULL.
@@ -266,6 +335,61 @@ pub unsafe extern "C" fn weft_unify_orientation(
         let (unified, flipped) = orient::unify_orientation(mesh);
         WeftMesh::write(out, unified);
         write_optional(out_flipped, flipped);
+        Ok(())
+    })
+}
+
+/// What `weft_orient_outward` found and changed; a piece is a set of faces
+/// connected through shared edges.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct WeftOrientReport {
+    /// Faces reversed.
+    pub flipped_faces: usize,
+    /// Connected pieces.
+    pub pieces: usize,
+    /// Closed pieces that enclosed a negative volume and were turned outward.
+    pub turned_outward: usize,
+    /// Pieces with a naked or non-manifold edge: unified, with no inside to
+    /// face away from.
+    pub open_pieces: usize,
+    /// Pieces that no winding makes consistent (a Möbius strip).
+    pub non_orientable_pieces: usize,
+}
+
+/// As `weft_unify_orientation` (one consistent winding per piece, closed
+/// pieces turned to enclose a positive volume), reporting the pieces. The
+/// triangles of an STL file share no vertices: weld them first
+/// (`weft_weld`), or every triangle is an open piece of its own.
+///
+/// `mesh` must not be NULL.
+/// `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+/// not be NULL and is written on success only.
+/// `out_report` receives the pieces found and changed; it may be NULL.
+///
+/// # Safety
+/// `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_orient_outward(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_report: *mut WeftOrientReport,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (oriented, report) = orient::orient_outward(mesh);
+        WeftMesh::write(out, oriented);
+        write_optional(
+            out_report,
+            WeftOrientReport {
+                flipped_faces: report.flipped_faces,
+                pieces: report.pieces,
+                turned_outward: report.turned_outward,
+                open_pieces: report.open_pieces,
+                non_orientable_pieces: report.non_orientable_pieces,
+            },
+        );
         Ok(())
     })
 }

@@ -25,6 +25,39 @@ pub struct MeshFile {
     pub creases: Vec<FileCrease>,
     /// Sharp vertices (OBJ `t corner` tags, or a side file).
     pub corners: Vec<FileCorner>,
+    /// OBJ materials: the libraries named and each face's material.
+    pub materials: Option<Materials>,
+}
+
+/// A face with no material (before the file's first `usemtl`).
+pub const NO_MATERIAL: u32 = u32::MAX;
+
+/// OBJ materials: the material libraries a file names (`mtllib`), the
+/// materials its faces use (`usemtl`), and the material of every face.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Materials {
+    /// The `mtllib` file names, in the order named.
+    pub libraries: Vec<String>,
+    /// The material names, in the order first used.
+    pub names: Vec<String>,
+    /// For every face, its index in `names`, or [`NO_MATERIAL`].
+    pub face_materials: Vec<u32>,
+}
+
+impl Materials {
+    /// The materials of faces made from others: face `i` takes the material
+    /// of face `parent_faces[i]` (subdivision's children, a triangulation's
+    /// triangles).
+    pub fn inherited(&self, parent_faces: &[u32]) -> Materials {
+        Materials {
+            libraries: self.libraries.clone(),
+            names: self.names.clone(),
+            face_materials: parent_faces
+                .iter()
+                .map(|&f| self.face_materials[f as usize])
+                .collect(),
+        }
+    }
 }
 
 /// Vertex colours, red, green, blue and alpha from 0 to 1 (alpha 1 when the
@@ -126,11 +159,15 @@ impl MeshFile {
         if !self.corners.is_empty() {
             names.push("corners");
         }
+        if self.materials.is_some() {
+            names.push("materials");
+        }
         names
     }
 
     /// What writing this in `format` would lose: OBJ holds everything; PLY
     /// colours, normals and UVs without seams; OFF and STL only the mesh.
+    /// (Materials are OBJ's alone.)
     pub fn dropped_by(&self, format: super::Format) -> Vec<&'static str> {
         use super::Format;
         let mut dropped = self.attribute_names();

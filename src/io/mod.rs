@@ -32,7 +32,9 @@ use thiserror::Error;
 use crate::error::MeshError;
 use crate::mesh::Mesh;
 
-pub use mesh_file::{check_creases, Colours, FileCorner, FileCrease, MeshFile, Uvs};
+pub use mesh_file::{
+    check_creases, Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL,
+};
 
 pub mod creases;
 mod mesh_file;
@@ -333,6 +335,23 @@ pub(crate) fn check_attribute_sizes(file: &MeshFile) -> std::io::Result<()> {
             .find(|&&i| i as usize >= uvs.values.len())
         {
             return refuse(format!("UV index {i} is past the {} UVs", uvs.values.len()));
+        }
+    }
+    if let Some(materials) = &file.materials {
+        if materials.face_materials.len() != mesh.face_count() {
+            return refuse(format!(
+                "{} face materials for {} faces",
+                materials.face_materials.len(),
+                mesh.face_count()
+            ));
+        }
+        let names = materials.names.len();
+        if let Some(&m) = materials
+            .face_materials
+            .iter()
+            .find(|&&m| m != mesh_file::NO_MATERIAL && m as usize >= names)
+        {
+            return refuse(format!("face material {m} is past the {names} materials"));
         }
     }
     let n = mesh.vertex_count();

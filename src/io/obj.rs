@@ -15,19 +15,25 @@
 //! - OpenSubdiv's tags with 0-based indices: `t crease 2/1/0 i j s` (more
 //!   indices make a chain; one sharpness for all, or one per segment) and
 //!   `t corner 1/1/0 v s` (more vertices, one sharpness or one each).
+//! - `mtllib` file names and `usemtl` materials: each face keeps the
+//!   material in force where it stands.
 //!   Other tags, `vn` (normals are recomputed by whatever needs them),
-//!   comments, groups, materials and any other statement are ignored.
+//!   comments, groups and any other statement are ignored.
 //!
 //! Write: `v x y z [r g b [a]]` with round-trip exact numbers, `vn` and `vt`
 //! when present, `f` with 1-based `v`, `v/vt`, `v//vn` or `v/vt/vn`
 //! corners, infinitely sharp creases as `l` segments and the others and the
-//! corners as `t` tags.
+//! corners as `t` tags; `mtllib` and a `usemtl` wherever the material
+//! changes.
 
+use std::collections::HashMap;
 use std::io::Write;
 
 use glam::DVec3;
 
-use super::mesh_file::{parse_sharpness, Colours, FileCorner, FileCrease, MeshFile, Uvs};
+use super::mesh_file::{
+    parse_sharpness, Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL,
+};
 use super::text::{lines, parse_count, parse_f64, parse_i64, show, words};
 use super::{build_mesh, IoError, Location};
 use crate::mesh::Mesh;
@@ -83,6 +89,9 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut corners = Vec::new();
     // Polyline vertices to check against the vertex count at the end.
     let mut line_vertices: Vec<(u32, usize)> = Vec::new();
+    let mut materials = Materials::default();
+    let mut material = NO_MATERIAL;
+    let mut material_index: HashMap<Vec<u8>, u32> = HashMap::new();
     for (line, text) in lines(data) {
         let mut w = words(text);
         match w.next() {
@@ -218,6 +227,23 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
                 }
                 face_sizes.push(size);
                 face_lines.push(line);
+                materials.face_materials.push(material);
+            }
+            Some(b"mtllib") => {
+                materials
+                    .libraries
+                    .extend(w.map(|name| String::from_utf8_lossy(name).into_owned()));
+            }
+            Some(b"usemtl") => {
+                // The name is the rest of the line: names may hold spaces.
+                let name = rest_of_line(text, b"usemtl");
+                let next = materials.names.len() as u32;
+                material = *material_index.entry(name.to_vec()).or_insert_with(|| {
+                    materials
+                        .names
+                        .push(String::from_utf8_lossy(name).into_owned());
+                    next
+                });
             }
             Some(b"l") => {
                 let mut previous = None;
@@ -336,8 +362,19 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
         normals: None,
         creases,
         corners,
+        materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
+            .then_some(materials),
     };
     Ok((file, attribute_error))
+}
+
+/// The text of a line after its keyword, without surrounding white space.
+fn rest_of_line<'a>(text: &'a [u8], keyword: &[u8]) -> &'a [u8] {
+    let start = text
+        .windows(keyword.len())
+        .position(|w| w == keyword)
+        .map_or(text.len(), |at| at + keyword.len());
+    text[start..].trim_ascii()
 }
 
 /// Reads an OpenSubdiv tag: `t NAME ints/floats/strings INTS FLOATS STRINGS`.
@@ -479,8 +516,20 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
             writeln!(w, "vt {u} {v}")?;
         }
     }
+    let materials = file.materials.as_ref();
+    if let Some(libraries) = materials.map(|m| &m.libraries).filter(|l| !l.is_empty()) {
+        writeln!(w, "mtllib {}", libraries.join(" "))?;
+    }
+    let mut current = NO_MATERIAL;
     let mut corner = 0;
-    for face in mesh.faces() {
+    for (f, face) in mesh.faces().enumerate() {
+        if let Some(m) = materials {
+            let material = m.face_materials[f];
+            if material != current && material != NO_MATERIAL {
+                writeln!(w, "usemtl {}", m.names[material as usize])?;
+            }
+            current = material;
+        }
         w.write_all(b"f")?;
         for &v in face {
             let v = v as u64 + 1;

@@ -253,7 +253,11 @@ fn parse_header(data: &[u8]) -> Result<Header<'_>, IoError> {
         pos += length + 1;
         let w: Vec<&[u8]> = words(text).collect();
         if line == 1 {
-            if w.first() != Some(&&b"ply"[..]) {
+            // Some writers put the magic in capitals ("PLY"); readers accept it.
+            if !w
+                .first()
+                .is_some_and(|magic| magic.eq_ignore_ascii_case(b"ply"))
+            {
                 return Err(header_error(1, "expected \"ply\" on the first line"));
             }
             continue;

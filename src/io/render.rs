@@ -1,7 +1,8 @@
 //! A shaded picture of a mesh: a small software rasterizer that writes PNG.
 //!
-//! The camera looks at the bounding box from a three-quarter view above
-//! (z is up) and fits the mesh to the picture. Faces are lit by a fixed light
+//! The camera looks at the bounding box from a three-quarter view above, or
+//! along one of the six axis directions ([`View`]), with z or y up ([`Up`]),
+//! and fits the mesh to the picture. Faces are lit by a fixed light
 //! beside the camera (Lambert shading plus ambient); front faces are blue-grey
 //! and back faces orange, so a flipped face stands out. Coarse meshes get
 //! their face edges drawn as thin dark lines (polygon edges only, not the
@@ -25,16 +26,70 @@ pub const MAX_SIDE: u32 = 4096;
 /// Meshes with fewer faces than this get their edges drawn by default.
 pub const EDGE_FACE_LIMIT: usize = 4000;
 
-/// How to draw a picture.
+/// Pixels of picture per face below which face edges are not drawn by
+/// default: denser edges merge into dark moiré instead of showing faces.
+pub const EDGE_PIXELS_PER_FACE: usize = 300;
+
+/// Where the camera looks from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum View {
+    /// A three-quarter view from the front, right and above.
+    #[default]
+    Iso,
+    /// From above, looking down the up axis.
+    Top,
+    /// From below.
+    Bottom,
+    /// From the front: from -y when z is up, from +z when y is up.
+    Front,
+    /// From the back.
+    Back,
+    /// From the left (-x).
+    Left,
+    /// From the right (+x).
+    Right,
+}
+
+/// Which axis of the model points up.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Up {
+    /// z up, as in Rhino and most CAD.
+    #[default]
+    Z,
+    /// y up, as in many scans, game and film formats.
+    Y,
+}
+
+/// A cut through the mesh: faces whose centroid lies on the side `normal`
+/// points to are left out, so that what is inside shows.
 #[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Section {
+    /// A point of the cutting plane.
+    pub point: DVec3,
+    /// The plane's normal, towards the part left out.
+    pub normal: DVec3,
+}
+
+/// How to draw a picture.
+#[derive(Debug, Clone, PartialEq)]
 pub struct RenderOptions {
     /// Width in pixels, 1 to [`MAX_SIDE`].
     pub width: u32,
     /// Height in pixels, 1 to [`MAX_SIDE`].
     pub height: u32,
     /// Draw face edges; `None` draws them when the mesh has fewer than
-    /// [`EDGE_FACE_LIMIT`] faces.
+    /// [`EDGE_FACE_LIMIT`] faces and the picture has at least
+    /// [`EDGE_PIXELS_PER_FACE`] pixels per face.
     pub edges: Option<bool>,
+    /// Where the camera looks from.
+    pub view: View,
+    /// Which axis of the model points up.
+    pub up: Up,
+    /// A cut-away: the faces beyond this plane are not drawn.
+    pub section: Option<Section>,
+    /// Edges drawn wide in violet (creases, say), as vertex pairs in either
+    /// order; pairs that are not edges of the mesh are ignored.
+    pub marked_edges: Vec<[u32; 2]>,
 }
 
 impl Default for RenderOptions {
@@ -43,6 +98,10 @@ impl Default for RenderOptions {
             width: 800,
             height: 600,
             edges: None,
+            view: View::Iso,
+            up: Up::Z,
+            section: None,
+            marked_edges: Vec::new(),
         }
     }
 }
@@ -93,6 +152,7 @@ const FRONT: [f32; 3] = [0.60, 0.70, 0.84];
 const BACK: [f32; 3] = [0.93, 0.50, 0.28];
 const EDGE: [f32; 3] = [0.13, 0.14, 0.17];
 const NAKED_EDGE: [f32; 3] = [0.85, 0.08, 0.10];
+const MARKED_EDGE: [f32; 3] = [0.42, 0.12, 0.78];
 /// Half the width of an edge line, in supersampled pixels.
 const EDGE_HALF_WIDTH: f64 = 0.85;
 /// Half the width of a naked edge line, in supersampled pixels.
@@ -103,6 +163,8 @@ const NAKED_HALF_WIDTH: f64 = 1.7;
 enum Side {
     /// Inside the polygon (a fan diagonal), or edges are off.
     Hidden,
+    /// An edge asked to stand out ([`RenderOptions::marked_edges`]).
+    Marked,
     /// A polygon edge.
     Edge,
     /// A polygon edge that only this face has.
@@ -122,14 +184,33 @@ struct Camera {
 }
 
 impl Camera {
-    fn fit(mesh: &Mesh, width: usize, height: usize) -> Camera {
+    fn fit(mesh: &Mesh, width: usize, height: usize, view: View, up: Up) -> Camera {
         let (lo, hi) = mesh.bounding_box().unwrap_or((DVec3::ZERO, DVec3::ONE));
         let target = (lo + hi) / 2.0;
         let radius = ((hi - lo).length() / 2.0).max(1e-9);
-        let toward_eye = DVec3::new(0.95, -1.45, 1.05).normalize();
+        // The model's right, front (towards a viewer in front) and up axes.
+        let (model_right, model_up) = match up {
+            Up::Z => (DVec3::X, DVec3::Z),
+            Up::Y => (DVec3::X, DVec3::Y),
+        };
+        let model_front = model_right.cross(model_up);
+        let toward_eye = match view {
+            View::Iso => (model_right * 0.95 + model_front * 1.45 + model_up * 1.05).normalize(),
+            View::Top => model_up,
+            View::Bottom => -model_up,
+            View::Front => model_front,
+            View::Back => -model_front,
+            View::Left => -model_right,
+            View::Right => model_right,
+        };
+        // Looking along the up axis, the picture's top is the model's back.
+        let screen_up = match view {
+            View::Top | View::Bottom => -model_front,
+            _ => model_up,
+        };
         let eye = target + toward_eye * radius * 3.0;
         let forward = -toward_eye;
-        let right = forward.cross(DVec3::Z).normalize();
+        let right = forward.cross(screen_up).normalize();
         let up = right.cross(forward);
         let mut camera = Camera {
             eye,
@@ -223,14 +304,26 @@ fn render_with(
     let mut depth: Vec<f32> = try_vec(w * h, "the depth buffer")?;
     depth.resize(w * h, f32::INFINITY);
 
-    let camera = Camera::fit(mesh, w, h);
+    let camera = Camera::fit(mesh, w, h, options.view, options.up);
     let light = (camera.up * 0.7 - camera.right * 0.45 - camera.forward * 0.75).normalize();
     let fill = (camera.right * 0.6 - camera.forward * 0.4).normalize();
-    let edges = options.edges.unwrap_or(mesh.face_count() < EDGE_FACE_LIMIT);
+    let pixels = options.width as usize * options.height as usize;
+    let edges = options.edges.unwrap_or(
+        mesh.face_count() < EDGE_FACE_LIMIT && mesh.face_count() * EDGE_PIXELS_PER_FACE <= pixels,
+    );
 
     let topology = Topology::new(mesh);
+    let mut marked = vec![false; topology.edge_count()];
+    for &[a, b] in &options.marked_edges {
+        if let Some(e) = topology.find_edge(a, b) {
+            marked[e] = true;
+        }
+    }
     let side = |corner: usize| {
-        if topology.is_naked_edge(topology.corner_edges()[corner] as usize) {
+        let edge = topology.corner_edges()[corner] as usize;
+        if marked[edge] {
+            Side::Marked
+        } else if topology.is_naked_edge(edge) {
             Side::Naked
         } else if edges {
             Side::Edge
@@ -247,6 +340,11 @@ fn render_with(
         corners.extend(mesh.face_positions(f));
         let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+        if let Some(cut) = &options.section {
+            if (centroid - cut.point).dot(cut.normal) > 0.0 {
+                continue;
+            }
+        }
         let front = normal.dot(camera.eye - centroid) >= 0.0;
         let face_colour = colours.map(|colours| {
             let face = mesh.face(f);
@@ -362,8 +460,11 @@ fn fill_triangle(
             depth[i] = z as f32;
             // Distance to side k: twice the area of (pixel, side) over its length.
             let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
-            let line = if (0..3).any(|k| sides[k] == Side::Naked && distance(k) < NAKED_HALF_WIDTH)
-            {
+            let wide =
+                |kind: Side| (0..3).any(|k| sides[k] == kind && distance(k) < NAKED_HALF_WIDTH);
+            let line = if wide(Side::Marked) {
+                Some(MARKED_EDGE)
+            } else if wide(Side::Naked) {
                 Some(NAKED_EDGE)
             } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
                 Some(EDGE)

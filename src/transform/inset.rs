@@ -33,7 +33,9 @@ pub enum InsetMode {
 /// # Errors
 /// [`Error::InvalidArgument`] when `distances` has neither 1 nor one value
 /// per face (naming both numbers), or when a distance is negative, not
-/// finite, or (for [`InsetMode::EdgeFraction`]) not below 0.5;
+/// finite, or (for [`InsetMode::EdgeFraction`]) not below 0.5, or wider
+/// than a face allows (its inset would turn over and its frame cross
+/// itself; the message names the face and the widest it takes);
 /// [`Error::ResultTooLarge`] past the size cap.
 pub fn window(mesh: &Mesh, distances: &[f64], mode: InsetMode) -> Result<Mesh> {
     inset(mesh, distances, mode, true)
@@ -95,19 +97,19 @@ fn inset(mesh: &Mesh, distances: &[f64], mode: InsetMode, keep_inner: bool) -> R
     )?;
     out.positions.extend_from_slice(mesh.positions());
     let mut inner = Vec::new();
+    let mut corners = Vec::new();
     for f in 0..faces {
         let d = distances[if distances.len() == 1 { 0 } else { f }];
         let outer = mesh.face(f);
         let points: Vec<DVec3> = mesh.face_positions(f).collect();
         let normal = face_normal(mesh, f);
+        inset_corners(&points, normal, mode, d, &mut corners);
+        if !keeps_its_shape(&points, &corners, normal) {
+            return Err(too_wide(f, &points, normal, mode, d));
+        }
         let n = points.len();
         inner.clear();
-        for k in 0..n {
-            let (p, next, prev) = (points[k], points[(k + 1) % n], points[(k + n - 1) % n]);
-            let q = match mode {
-                InsetMode::EdgeFraction => p + (next - p) * d + (prev - p) * d,
-                InsetMode::Parallelogram => parallelogram(p, next, prev, normal, d),
-            };
+        for &q in &corners {
             inner.push(out.vertex(q));
         }
         for k in 0..n {
@@ -119,6 +121,51 @@ fn inset(mesh: &Mesh, distances: &[f64], mode: InsetMode, keep_inner: bool) -> R
         }
     }
     out.finish()
+}
+
+/// The inner corners of a face inset by `d`.
+fn inset_corners(points: &[DVec3], normal: DVec3, mode: InsetMode, d: f64, out: &mut Vec<DVec3>) {
+    let n = points.len();
+    out.clear();
+    out.extend((0..n).map(|k| {
+        let (p, next, prev) = (points[k], points[(k + 1) % n], points[(k + n - 1) % n]);
+        match mode {
+            InsetMode::EdgeFraction => p + (next - p) * d + (prev - p) * d,
+            InsetMode::Parallelogram => parallelogram(p, next, prev, normal, d),
+        }
+    }));
+}
+
+/// Whether the inset face runs the same way as the face, edge by edge and
+/// as a whole: an inset wider than the face turns its inner polygon over
+/// (a triangle's past a third of its edges) and its frame crosses itself.
+fn keeps_its_shape(points: &[DVec3], inner: &[DVec3], normal: DVec3) -> bool {
+    let n = points.len();
+    let area: DVec3 = (0..n).map(|k| inner[k].cross(inner[(k + 1) % n])).sum();
+    area.dot(normal) > 0.0
+        && (0..n).all(|k| {
+            let k1 = (k + 1) % n;
+            (inner[k1] - inner[k]).dot(points[k1] - points[k]) >= 0.0
+        })
+}
+
+/// The refusal of an inset wider than face `f`, with the widest the face takes.
+fn too_wide(f: usize, points: &[DVec3], normal: DVec3, mode: InsetMode, d: f64) -> Error {
+    let (mut fits, mut crosses) = (0.0, d);
+    let mut corners = Vec::new();
+    for _ in 0..40 {
+        let middle = (fits + crosses) / 2.0;
+        inset_corners(points, normal, mode, middle, &mut corners);
+        if keeps_its_shape(points, &corners, normal) {
+            fits = middle;
+        } else {
+            crosses = middle;
+        }
+    }
+    Error::InvalidArgument(format!(
+        "distance {d} is wider than face {f} allows: its inset would cross itself; \
+         that face takes at most {fits:.6}"
+    ))
 }
 
 fn parallelogram(p: DVec3, next: DVec3, prev: DVec3, normal: DVec3, d: f64) -> DVec3 {

@@ -459,6 +459,52 @@ static void test_match_points_and_lines(void) {
   weft_mesh_free(cube);
 }
 
+/* Two cubes, the second inside out, joined: orienting outward turns the
+ * second and reports both pieces closed; the relative weld tolerance is a
+ * millionth of the bounding-box diagonal. */
+static void test_orient_outward_and_relative_tolerance(void) {
+  WeftMesh *a = make_cube(0.0), *b = make_cube(3.0), *flipped = NULL, *joined = NULL,
+           *outward = NULL;
+  const WeftMesh *pair[2];
+  WeftOrientReport report;
+  double tolerance = -1.0;
+  memset(&report, 0xff, sizeof report);
+  CHECK_STATUS(weft_flip(b, &flipped), WEFT_STATUS_OK);
+  pair[0] = a;
+  pair[1] = flipped;
+  CHECK_STATUS(weft_join(pair, 2, &joined), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_orient_outward(joined, &outward, &report), WEFT_STATUS_OK);
+  CHECK(report.pieces == 2 && report.turned_outward == 1 && report.flipped_faces == 6);
+  CHECK(report.open_pieces == 0 && report.non_orientable_pieces == 0);
+  CHECK_STATUS(weft_orient_outward(NULL, &outward, &report), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_orient_outward(joined, NULL, NULL), WEFT_STATUS_NULL_POINTER);
+
+  CHECK_STATUS(weft_weld_relative_tolerance(joined, &tolerance), WEFT_STATUS_OK);
+  CHECK(near(tolerance, sqrt(16.0 + 1.0 + 1.0) * 1e-6));
+  CHECK_STATUS(weft_weld_relative_tolerance(joined, NULL), WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_weld_relative_tolerance(NULL, &tolerance), WEFT_STATUS_NULL_POINTER);
+  {
+    /* A triangle and a vertex no face uses. */
+    const double positions[] = {0, 0, 0, 9, 9, 9, 1, 0, 0, 0, 1, 0};
+    const uint32_t sizes[] = {3}, indices[] = {0, 2, 3};
+    WeftMesh *bare = NULL, *compact = NULL;
+    size_t removed = 0;
+    CHECK_STATUS(weft_mesh_new(positions, 4, sizes, 1, indices, 3, &bare), WEFT_STATUS_OK);
+    CHECK(weft_mesh_unused_vertex_count(bare) == 1 && weft_mesh_unused_vertex_count(NULL) == 0);
+    CHECK_STATUS(weft_remove_unused_vertices(bare, &compact, &removed), WEFT_STATUS_OK);
+    CHECK(removed == 1 && weft_mesh_vertex_count(compact) == 3);
+    CHECK(weft_mesh_face_indices(compact)[1] == 1 && weft_mesh_positions(compact)[3] == 1.0);
+    CHECK_STATUS(weft_remove_unused_vertices(NULL, &compact, NULL), WEFT_STATUS_NULL_POINTER);
+    weft_mesh_free(bare);
+    weft_mesh_free(compact);
+  }
+  weft_mesh_free(a);
+  weft_mesh_free(b);
+  weft_mesh_free(flipped);
+  weft_mesh_free(joined);
+  weft_mesh_free(outward);
+}
+
 int main(void) {
   test_join_weld_cull();
   test_t_nodes();
@@ -468,5 +514,6 @@ int main(void) {
   test_normals_and_planarity();
   test_naked_boundaries();
   test_match_points_and_lines();
+  test_orient_outward_and_relative_tolerance();
   return check_summary("test_mend");
 }

@@ -31,9 +31,14 @@ pub fn as_triangles(file: &MeshFile) -> weft::Result<(MeshFile, usize)> {
             indices,
         }
     });
+    let materials = file
+        .materials
+        .as_ref()
+        .map(|m| m.inherited(&triangulation.parent_faces));
     let file = MeshFile {
         mesh: triangulation.mesh,
         uvs,
+        materials,
         ..file.clone()
     };
     Ok((file, split))
@@ -89,6 +94,7 @@ pub fn crease_by_angle(file: &MeshFile, angle_degrees: f64) -> weft::Result<(Mes
             normals: None,
             creases,
             corners,
+            materials: file.materials.clone(),
         },
         found.len(),
     ))
@@ -129,6 +135,10 @@ pub fn subdivide(file: &MeshFile, carry: &Carry) -> weft::Result<MeshFile> {
         let flat: Vec<f64> = uvs.values.iter().flatten().copied().collect();
         let corners = subdivider.face_varying(&flat, 2, &uvs.indices, carry.uv_linear)?;
         out.uvs = Some(shared_values(&corners));
+    }
+    if let Some(materials) = &file.materials {
+        let parents = weft::subdivide::parent_faces(&file.mesh, carry.scheme, carry.levels)?;
+        out.materials = Some(materials.inherited(&parents));
     }
     if carry.limit {
         let limit = subdivider.limit()?;
