@@ -147,9 +147,9 @@ namespace Weft
         /// <summary>A weld tolerance suited to the mesh's size: a millionth of its bounding-box diagonal.</summary>
         public static double RelativeWeldTolerance(WeftMesh mesh)
         {
-            double tolerance;
-            WeftException.Check(NativeMethods.weft_weld_relative_tolerance(Arguments.Mesh(mesh, "mesh"), out tolerance));
-            return tolerance;
+            var tolerance = new double[1];
+            WeftException.Check(NativeMethods.weft_weld_relative_tolerance(Arguments.Mesh(mesh, "mesh"), tolerance));
+            return tolerance[0];
         }
 
         /// <summary>How many vertices no face uses.</summary>
