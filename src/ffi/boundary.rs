@@ -207,6 +207,27 @@ pub(crate) unsafe fn mesh_op(
     unsafe { make_mesh(out_mesh, borrow_and_run) }
 }
 
+/// As `mesh_op`, for an operation that also counts what it changed: the
+/// count goes to `out_count` unless that is NULL, on success only.
+///
+/// # Safety
+/// As `mesh_op`; `out_count` is NULL or writable.
+pub(crate) unsafe fn counted_mesh_op(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_count: *mut usize,
+    op: impl FnOnce(&Mesh) -> Result<(Mesh, usize), Failure>,
+) -> WeftStatus {
+    let run_and_count = |mesh: &Mesh| {
+        let (result, count) = op(mesh)?;
+        // SAFETY: `out_count` is NULL or writable, as the caller promises.
+        unsafe { write_optional(out_count, count) };
+        Ok(result)
+    };
+    // SAFETY: `mesh` and `out_mesh` are as `mesh_op` requires, as the caller promises.
+    unsafe { mesh_op(mesh, out_mesh, run_and_count) }
+}
+
 /// Checks an out-parameter before any work is done, so that a NULL output
 /// fails fast and a success is the only time it is written.
 pub(crate) fn out_param<T>(pointer: *mut T, name: &str) -> Result<*mut T, Failure> {

@@ -4,8 +4,8 @@
 use crate::analysis;
 use crate::cull;
 use crate::ffi::boundary::{
-    check_room, guard, input_slice, make_mesh, mesh_op, out_param, output_slice, write_optional,
-    Failure, WeftStatus,
+    check_room, counted_mesh_op, guard, input_slice, make_mesh, mesh_op, out_param, output_slice,
+    write_optional, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::mesh::Mesh;
@@ -206,10 +206,8 @@ pub unsafe extern "C" fn weft_repair_t_nodes(
     // SAFETY: `mesh`, `out_mesh` and `out_inserted` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        mesh_op(mesh, out_mesh, |mesh| {
-            let (repaired, inserted) = t_nodes::repair_t_nodes(mesh, tolerance)?;
-            write_optional(out_inserted, inserted);
-            Ok(repaired)
+        counted_mesh_op(mesh, out_mesh, out_inserted, |m| {
+            Ok(t_nodes::repair_t_nodes(m, tolerance)?)
         })
     }
 }
@@ -233,13 +231,7 @@ pub unsafe extern "C" fn weft_cull_adjacent(
 ) -> WeftStatus {
     // SAFETY: `mesh`, `out_mesh` and `out_removed` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |mesh| {
-            let (culled, removed) = cull::cull_adjacent(mesh);
-            write_optional(out_removed, removed);
-            Ok(culled)
-        })
-    }
+    unsafe { counted_mesh_op(mesh, out_mesh, out_removed, |m| Ok(cull::cull_adjacent(m))) }
 }
 
 /// Gives every connected piece one consistent winding, flipping the fewest
@@ -263,10 +255,8 @@ pub unsafe extern "C" fn weft_unify_orientation(
     // SAFETY: `mesh`, `out_mesh` and `out_flipped` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        mesh_op(mesh, out_mesh, |mesh| {
-            let (unified, flipped) = orient::unify_orientation(mesh);
-            write_optional(out_flipped, flipped);
-            Ok(unified)
+        counted_mesh_op(mesh, out_mesh, out_flipped, |m| {
+            Ok(orient::unify_orientation(m))
         })
     }
 }

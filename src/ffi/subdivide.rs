@@ -2,7 +2,8 @@
 //! face of every refined face, and triangulation for chaining into Loop.
 
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, mesh_op, out_param, output_slice, Failure, WeftStatus,
+    check_room, counted_mesh_op, enum_arg, guard, mesh_op, out_param, output_slice, Failure,
+    WeftStatus,
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::subdivide::{self, NakedEdges, Scheme};
@@ -297,12 +298,9 @@ pub unsafe extern "C" fn weft_as_triangles(
     // SAFETY: `mesh`, `out_mesh` and `out_split_faces` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        mesh_op(mesh, out_mesh, |mesh| {
-            let (result, split_faces) = as_triangles(mesh)?;
-            if !out_split_faces.is_null() {
-                *out_split_faces = split_faces;
-            }
-            Ok(result.mesh)
+        counted_mesh_op(mesh, out_mesh, out_split_faces, |m| {
+            let (triangles, split_faces) = as_triangles(m)?;
+            Ok((triangles.mesh, split_faces))
         })
     }
 }
