@@ -9,6 +9,46 @@
 
 
 /**
+ * Major version of the library this header belongs to.
+ */
+#define WEFT_VERSION_MAJOR 0
+
+/**
+ * Minor version of the library this header belongs to.
+ */
+#define WEFT_VERSION_MINOR 1
+
+/**
+ * Patch version of the library this header belongs to.
+ */
+#define WEFT_VERSION_PATCH 0
+
+/**
+ * Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
+ */
+#define WEFT_NAKED_EDGES_FIXED 0
+
+/**
+ * Naked edges tend to a cubic B-spline; every boundary vertex moves (OpenSubdiv VTX_BOUNDARY_EDGE_ONLY).
+ */
+#define WEFT_NAKED_EDGES_SMOOTH 1
+
+/**
+ * As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).
+ */
+#define WEFT_NAKED_EDGES_CORNER_FIXED 2
+
+/**
+ * Catmull-Clark: any polygons in, quads out.
+ */
+#define WEFT_SCHEME_CATMULL_CLARK 0
+
+/**
+ * Loop: triangles in, triangles out.
+ */
+#define WEFT_SCHEME_LOOP 1
+
+/**
  * Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).
  */
 #define WEFT_CREASING_UNIFORM 0
@@ -52,6 +92,12 @@
  * The sharpness at and above which a crease or corner never softens.
  */
 #define WEFT_SHARPNESS_INFINITE 10.0
+
+/**
+ * The weld tolerance to use when the host has none: 0.001 model units,
+ * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ */
+#define WEFT_DEFAULT_WELD_TOLERANCE 0.001
 
 /**
  * Platonic solid for `weft_platonic`: the tetrahedron (4 triangles).
@@ -100,52 +146,21 @@
 #define WEFT_SIDED_DIPYRAMID 3
 
 /**
- * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
- * tolerance (a millimetre in a model in metres). It can collapse the faces
- * of small or dense meshes: without a tolerance of the host's own, prefer
- * `weft_weld_relative_tolerance`.
+ * Smoothing direction: vertices move freely (the published HC algorithm).
  */
-#define WEFT_DEFAULT_WELD_TOLERANCE 0.001
+#define WEFT_SMOOTH_DIRECTION_FREE 0
 
 /**
- * Major version of the library this header belongs to.
+ * Smoothing direction: each vertex moves only along the line of its
+ * original vertex normal, so nothing slides across the surface.
  */
-#define WEFT_VERSION_MAJOR 0
+#define WEFT_SMOOTH_DIRECTION_ALONG_NORMAL 1
 
 /**
- * Minor version of the library this header belongs to.
+ * Smoothing direction: each vertex moves only within the plane through its
+ * original position across its original normal (relaxation).
  */
-#define WEFT_VERSION_MINOR 1
-
-/**
- * Patch version of the library this header belongs to.
- */
-#define WEFT_VERSION_PATCH 0
-
-/**
- * Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
- */
-#define WEFT_NAKED_EDGES_FIXED 0
-
-/**
- * Naked edges tend to a cubic B-spline; every boundary vertex moves (OpenSubdiv VTX_BOUNDARY_EDGE_ONLY).
- */
-#define WEFT_NAKED_EDGES_SMOOTH 1
-
-/**
- * As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).
- */
-#define WEFT_NAKED_EDGES_CORNER_FIXED 2
-
-/**
- * Catmull-Clark: any polygons in, quads out.
- */
-#define WEFT_SCHEME_CATMULL_CLARK 0
-
-/**
- * Loop: triangles in, triangles out.
- */
-#define WEFT_SCHEME_LOOP 1
+#define WEFT_SMOOTH_DIRECTION_TANGENTIAL 2
 
 /**
  * Offset type: each vertex moves by the distance along its vertex normal.
@@ -173,23 +188,6 @@
  * Inset mode: the distance is a width in model units (parallelogram rule).
  */
 #define WEFT_INSET_PARALLELOGRAM 1
-
-/**
- * Smoothing direction: vertices move freely (the published HC algorithm).
- */
-#define WEFT_SMOOTH_DIRECTION_FREE 0
-
-/**
- * Smoothing direction: each vertex moves only along the line of its
- * original vertex normal, so nothing slides across the surface.
- */
-#define WEFT_SMOOTH_DIRECTION_ALONG_NORMAL 1
-
-/**
- * Smoothing direction: each vertex moves only within the plane through its
- * original position across its original normal (relaxation).
- */
-#define WEFT_SMOOTH_DIRECTION_TANGENTIAL 2
 
 /**
  * Tile fill: the chosen faces stay as they are.
@@ -371,6 +369,52 @@ typedef struct WeftMesh WeftMesh;
 typedef struct WeftRefiner WeftRefiner;
 
 /**
+ * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
+ */
+typedef struct WeftMeshInfo {
+  /**
+   * Number of vertices.
+   */
+  size_t vertex_count;
+  /**
+   * Number of unique edges.
+   */
+  size_t edge_count;
+  /**
+   * Number of faces.
+   */
+  size_t face_count;
+  /**
+   * Edges with exactly one face.
+   */
+  size_t naked_edge_count;
+  /**
+   * Edges with three or more faces.
+   */
+  size_t non_manifold_edge_count;
+  /**
+   * Vertices whose faces do not form one fan, or on a non-manifold edge.
+   */
+  size_t non_manifold_vertex_count;
+  /**
+   * Pieces of faces connected through shared edges.
+   */
+  size_t component_count;
+  /**
+   * No naked and no non-manifold edges (false for a mesh without faces).
+   */
+  bool is_closed;
+  /**
+   * Every component can be given one consistent winding.
+   */
+  bool is_orientable;
+  /**
+   * Every manifold edge already runs in opposite directions in its two faces.
+   */
+  bool is_oriented;
+} WeftMeshInfo;
+
+/**
  * What besides the mesh shapes a subdivision: the scheme, the naked-edge
  * mode, the creasing method, and OpenSubdiv-style crease and corner arrays.
  * Zero-initialise it, then fill what you need: all zeros is Catmull-Clark
@@ -414,27 +458,6 @@ typedef struct WeftSubdivisionOptions {
    */
   const double *corner_sharpness;
 } WeftSubdivisionOptions;
-
-/**
- * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
- * The axes need not be unit length or orthogonal (they are
- * orthonormalised, keeping the x axis's direction); the normal, the front
- * side, is `x_axis × y_axis`.
- */
-typedef struct WeftPlane {
-  /**
-   * A point of the plane.
-   */
-  double origin[3];
-  /**
-   * The plane's x direction; must not be zero.
-   */
-  double x_axis[3];
-  /**
-   * The plane's y direction; must not be zero or parallel to `x_axis`.
-   */
-  double y_axis[3];
-} WeftPlane;
 
 /**
  * What `weft_weld` changed.
@@ -483,903 +506,29 @@ typedef struct WeftTNode {
 } WeftTNode;
 
 /**
- * What `weft_orient_outward` found and changed; a piece is a set of faces
- * connected through shared edges.
+ * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
+ * The axes need not be unit length or orthogonal (they are
+ * orthonormalised, keeping the x axis's direction); the normal, the front
+ * side, is `x_axis × y_axis`.
  */
-typedef struct WeftOrientReport {
+typedef struct WeftPlane {
   /**
-   * Faces reversed.
+   * A point of the plane.
    */
-  size_t flipped_faces;
+  double origin[3];
   /**
-   * Connected pieces.
+   * The plane's x direction; must not be zero.
    */
-  size_t pieces;
+  double x_axis[3];
   /**
-   * Closed pieces that enclosed a negative volume and were turned outward.
+   * The plane's y direction; must not be zero or parallel to `x_axis`.
    */
-  size_t turned_outward;
-  /**
-   * Pieces with a naked or non-manifold edge: unified, with no inside to
-   * face away from.
-   */
-  size_t open_pieces;
-  /**
-   * Pieces that no winding makes consistent (a Möbius strip).
-   */
-  size_t non_orientable_pieces;
-} WeftOrientReport;
-
-/**
- * Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
- */
-typedef struct WeftMeshInfo {
-  /**
-   * Number of vertices.
-   */
-  size_t vertex_count;
-  /**
-   * Number of unique edges.
-   */
-  size_t edge_count;
-  /**
-   * Number of faces.
-   */
-  size_t face_count;
-  /**
-   * Edges with exactly one face.
-   */
-  size_t naked_edge_count;
-  /**
-   * Edges with three or more faces.
-   */
-  size_t non_manifold_edge_count;
-  /**
-   * Vertices whose faces do not form one fan, or on a non-manifold edge.
-   */
-  size_t non_manifold_vertex_count;
-  /**
-   * Pieces of faces connected through shared edges.
-   */
-  size_t component_count;
-  /**
-   * No naked and no non-manifold edges (false for a mesh without faces).
-   */
-  bool is_closed;
-  /**
-   * Every component can be given one consistent winding.
-   */
-  bool is_orientable;
-  /**
-   * Every manifold edge already runs in opposite directions in its two faces.
-   */
-  bool is_oriented;
-} WeftMeshInfo;
+  double y_axis[3];
+} WeftPlane;
 
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
-
-/**
- * Subdivides a mesh `levels` times with the scheme, naked-edge mode,
- * creases and corners of `options`, as OpenSubdiv does with the same
- * `Sdc::Options` and `TopologyDescriptor` arrays. Output order as
- * `weft_catmull_clark` and `weft_loop`.
- *
- * `mesh` must not be NULL. `options` must not be NULL; see
- * `WeftSubdivisionOptions`. `levels` is the number of steps; 0 returns a copy.
- * `out_mesh` receives the new mesh on success (free it with
- * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
- * unknown enumeration value, a crease pair that is not an edge of the mesh,
- * a corner past the vertex count, a negative or NaN sharpness — the
- * message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
- * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY. Coordinates
- * near the largest double are subdivided at an exactly scaled size, so the
- * rules never overflow; a refined point beyond the largest double (only
- * when the input spans nearly the whole range) is
- * WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `options` is NULL or readable with
- * arrays of the lengths it states; `out_mesh` is NULL or writable.
- */
-WeftStatus weft_subdivide_ex(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftMesh **out_mesh);
-
-/**
- * Gives the vertex, face and face-index counts of the mesh `levels` steps
- * of `scheme` make from `mesh` (creases do not change them), without
- * subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
- * `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
- *
- * `mesh` must not be NULL. `scheme` is a WEFT_SCHEME_* value. Each
- * `out_*` receives its count on success; none may be NULL.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
- * WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
- *
- * # Safety
- * `mesh` is NULL or a live handle; the `out_*` are NULL or writable.
- */
-WeftStatus weft_subdivision_counts(const struct WeftMesh *mesh, uint32_t scheme, uint32_t levels, size_t *out_vertex_count, size_t *out_face_count, size_t *out_index_count);
-
-/**
- * Carries per-vertex data of any width (colours, weights) through the
- * subdivision of `weft_subdivide_ex`: every refined vertex gets the same
- * weighted sum of cage values as its position (OpenSubdiv's
- * `PrimvarRefiner::Interpolate`).
- *
- * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
- * `data` holds `width` doubles per cage vertex (`width` ≥ 1), `data_len` in all.
- * `out_data` has room for `capacity` doubles; it needs `width` times the
- * refined vertex count (`weft_subdivision_counts`), else the call fails with
- * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- *
- * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
- * `data_len` is not `width` times the cage's vertex count, and
- * WEFT_STATUS_INVALID_ARGUMENT when `width` is 0 or a value is NaN or
- * infinite (the message names the vertex and component).
- *
- * # Safety
- * As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
- * `capacity` writable doubles (either may be NULL when its length is 0).
- */
-WeftStatus weft_subdivide_vertex_data(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, const double *data, size_t data_len, size_t width, double *out_data, size_t capacity);
-
-/**
- * Carries per-face-corner values (UVs) through the subdivision of
- * `weft_subdivide_ex`, face-varying as OpenSubdiv's
- * `PrimvarRefiner::InterpolateFaceVarying`: corners of one vertex that use
- * different values are a seam, and `face_varying_linear` says where values
- * are interpolated linearly.
- *
- * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
- * `face_varying_linear` is a WEFT_FACE_VARYING_* value.
- * `values` holds `width` doubles for each of `value_count` values (`width` ≥ 1).
- * `value_indices` holds the value of every face corner of `mesh`, face
- * after face: `index_count` must equal the mesh's face-index count.
- * `out_values` has room for `capacity` doubles; it receives `width` doubles
- * per face corner of the refined mesh, face after face, and needs `width`
- * times the refined face-index count (`weft_subdivision_counts`), else the
- * call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- *
- * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
- * WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
- * WEFT_STATUS_INVALID_ARGUMENT (also for a NaN or infinite value, naming it).
- *
- * # Safety
- * As `weft_subdivide_ex`; the buffers hold the elements stated.
- */
-WeftStatus weft_subdivide_face_varying(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, uint32_t face_varying_linear, const double *values, size_t value_count, size_t width, const uint32_t *value_indices, size_t index_count, double *out_values, size_t capacity);
-
-/**
- * Projects the vertices of the subdivision of `weft_subdivide_ex` onto the
- * limit surface, and gives the surface's unit normals there (OpenSubdiv's
- * `PrimvarRefiner::Limit`; normal = du × dv normalised, outward for
- * counter-clockwise faces, zero where undefined).
- *
- * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`
- * (Catmull-Clark needs at least 1 unless every face is a quad).
- * `out_positions` and `out_normals` each have room for `capacity` doubles
- * and need 3 per refined vertex (`weft_subdivision_counts`), else the call
- * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing;
- * `out_normals` may be NULL when the normals are not wanted.
- *
- * Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
- * Catmull-Clark at level 0 on a mesh with faces that are not quads.
- * Coordinates near the largest double are evaluated at an exactly scaled
- * size; a limit position beyond it is WEFT_STATUS_DEGENERATE_INPUT naming
- * the vertex.
- *
- * # Safety
- * As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
- */
-WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, double *out_positions, double *out_normals, size_t capacity);
-
-/**
- * Plans a subdivision with the scheme, naked-edge mode, creases and corners
- * of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
- * other `weft_refiner_*` functions work on it as on one from
- * `weft_refiner_new`).
- *
- * `cage` and `options` must not be NULL; the cage's positions are kept for
- * `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
- * it with `weft_refiner_free`) and is left untouched on failure; it must
- * not be NULL.
- *
- * Fails as `weft_subdivide_ex`.
- *
- * # Safety
- * `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
- * `out_refiner` is NULL or writable.
- */
-WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftRefiner **out_refiner);
-
-/**
- * Prepares a mesh whose creases are unwelded seams or sharp folds for
- * creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
- * same position, and lists as creases every edge that was naked before
- * welding and has two faces after, and every edge whose faces' normals
- * differ by more than `angle_degrees` (180 or more: no fold test). Pass the
- * pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
- * `weft_crease_edges_from_mesh_ex` also gives which welded vertex each
- * input vertex became.
- *
- * `mesh` must not be NULL. `angle_degrees` must be 0 or more.
- * `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
- * must not be NULL. `out_pairs` has room for `capacity` indices and receives
- * two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
- * always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
- * `out_crease_count` receives the number of creases; it must not be NULL.
- * Nothing is written on failure.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
- * or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
- * writable indices; the other outputs are NULL or writable.
- */
-WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count);
-
-/**
- * As `weft_crease_edges_from_mesh`, and gives the vertex map of the weld:
- * for each vertex of `mesh`, the index of the vertex of the welded mesh it
- * became (the first of the vertices at its position). With it a host
- * carries per-vertex data given on the input (colours, weights, its own
- * creases and corners) onto the welded mesh: welded vertex
- * `out_vertex_map[v]` takes vertex `v`'s value.
- *
- * `mesh`, `angle_degrees`, `out_welded`, `out_pairs`, `capacity` and
- * `out_crease_count` as `weft_crease_edges_from_mesh`.
- * `out_vertex_map` has room for `vertex_map_capacity` indices and receives
- * one per vertex of `mesh`: it needs `weft_mesh_vertex_count(mesh)`, else
- * the call fails with WEFT_STATUS_BUFFER_TOO_SMALL (checked before any
- * work is done). It may be NULL only when `vertex_map_capacity` is 0.
- * Nothing is written on failure.
- *
- * Fails as `weft_crease_edges_from_mesh`.
- *
- * # Safety
- * As `weft_crease_edges_from_mesh`; `out_vertex_map` is NULL or holds
- * `vertex_map_capacity` writable indices.
- */
-WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
-
-/**
- * Reads a mesh file, choosing the format by the extension of `path`
- * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does. STL
- * corners come unwelded, one vertex per triangle corner (`weft_weld` with
- * tolerance 0 joins them); vertex colours, UVs and creases are not read.
- *
- * `path` is a NUL-terminated UTF-8 path; it must not be NULL.
- * `out_mesh` receives the mesh on success (free it with `weft_mesh_free`)
- * and is left untouched on failure; it must not be NULL.
- *
- * Fails with WEFT_STATUS_NULL_POINTER; WEFT_STATUS_INVALID_ARGUMENT for a
- * path that is not UTF-8, an unknown extension, a file that cannot be
- * read, or content that does not follow its format (the message names the
- * file and the line, or the byte offset of a binary file); and with the
- * status of `weft_mesh_new` (WEFT_STATUS_INDEX_OUT_OF_RANGE, …) when the
- * file's faces do not make a valid mesh, the message naming the file, its
- * line or byte offset and the face.
- *
- * # Safety
- * `path` is NULL or a NUL-terminated string; `out_mesh` is NULL or writable.
- */
-WeftStatus weft_read_mesh_file(const char *path, struct WeftMesh **out_mesh);
-
-/**
- * Writes a mesh file, choosing the format by the extension of `path`
- * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does: PLY as
- * binary little endian, STL as binary with polygons written as triangle
- * fans. The file is written beside its destination under a temporary name
- * and renamed into place, so a failed write leaves no partial file and an
- * existing file as it was.
- *
- * `mesh` must not be NULL. `path` is a NUL-terminated UTF-8 path; it must
- * not be NULL; its folder must exist.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, or WEFT_STATUS_INVALID_ARGUMENT for
- * a path that is not UTF-8, an unknown extension, a missing folder or a
- * file the system refuses to write (the message names the file).
- *
- * # Safety
- * `mesh` is NULL or a live handle; `path` is NULL or a NUL-terminated string.
- */
-WeftStatus weft_write_mesh_file(const struct WeftMesh *mesh, const char *path);
-
-/**
- * Triangulates points by the Delaunay criterion of their projections onto
- * a plane; the mesh's vertices are the original 3-D points, its triangles
- * front-facing along the plane's normal.
- *
- * Points whose projections coincide are merged: the first is kept, so the
- * mesh's vertices are the distinct points in input order.
- *
- * `points` holds `3 * point_count` doubles; it may be NULL only when
- * `point_count` is 0 (which then fails as too few points).
- * `plane` may be NULL for the world XY plane.
- * `out_mesh` receives the new mesh on success (free it with
- * `weft_mesh_free`); it must not be NULL.
- * `out_merged` receives the number of points merged into an earlier one;
- * it may be NULL.
- *
- * Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
- * all collinear points or a degenerate plane, and with
- * WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
- * coordinate. More than 2^31 − 1 points fail with
- * WEFT_STATUS_INPUT_TOO_LARGE before the buffer is read; more than a sixth
- * of that (up to two triangles per point must fit the cap) with
- * WEFT_STATUS_RESULT_TOO_LARGE.
- *
- * # Safety
- * `points` holds the doubles stated; `plane` is NULL or readable;
- * `out_mesh` and a non-NULL `out_merged` are writable.
- */
-WeftStatus weft_delaunay(const double *points, size_t point_count, const struct WeftPlane *plane, struct WeftMesh **out_mesh, size_t *out_merged);
-
-/**
- * Computes the Voronoi cell of each point on a plane, clipped to a boundary
- * polygon and, when `radius` is positive, to the 64-gon inscribed in the
- * circle of that radius around the point.
- *
- * Cells lie in the plane, counter-clockwise seen from its normal, without
- * a repeated closing corner. A point outside the boundary, or repeating an
- * earlier point's projection, gets an empty cell (size 0). With a concave
- * boundary, a cell that meets it in several pieces keeps the piece holding
- * its point.
- *
- * `points` holds `3 * point_count` doubles; it may be NULL only when
- * `point_count` is 0.
- * `plane` may be NULL for the world XY plane.
- * `boundary` holds `3 * boundary_count` doubles, the corners of a simple
- * polygon (convex or not, either winding), projected onto the plane; with
- * `boundary_count` 0 (and `boundary` NULL or not) the boundary is the
- * points' bounding rectangle on the plane grown by 10 % of its larger side
- * on every side.
- * `radius` 0 means no circle; otherwise it must be positive and finite.
- * `out_cells` receives the cells on success (free them with
- * `weft_cells_free`); it must not be NULL.
- *
- * Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
- * corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
- * crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
- * for a degenerate plane or a boundary without area. More than 2^31 − 1
- * points or boundary corners fail with WEFT_STATUS_INPUT_TOO_LARGE before
- * the buffers are read.
- *
- * # Safety
- * Each non-NULL buffer holds the doubles stated; `plane` is NULL or
- * readable; `out_cells` is writable.
- */
-WeftStatus weft_voronoi(const double *points, size_t point_count, const struct WeftPlane *plane, const double *boundary, size_t boundary_count, double radius, struct WeftCells **out_cells);
-
-/**
- * Returns the number of cells (the number of input points), or 0 when
- * `cells` is NULL.
- *
- * # Safety
- * `cells` is NULL or a live handle.
- */
-size_t weft_cells_count(const struct WeftCells *cells);
-
-/**
- * Returns the number of corners of all cells together, or 0 when `cells`
- * is NULL.
- *
- * # Safety
- * `cells` is NULL or a live handle.
- */
-size_t weft_cells_corner_count(const struct WeftCells *cells);
-
-/**
- * Returns the number of corners of each cell (`weft_cells_count` values,
- * 0 for an empty cell), or NULL when `cells` is NULL or holds no cells.
- *
- * The pointer is owned by the handle and valid until it is freed.
- *
- * # Safety
- * `cells` is NULL or a live handle.
- */
-const uint32_t *weft_cells_sizes(const struct WeftCells *cells);
-
-/**
- * Returns the corners of all cells, one cell after another,
- * `3 * weft_cells_corner_count` doubles, or NULL when `cells` is NULL or
- * every cell is empty.
- *
- * The pointer is owned by the handle and valid until it is freed.
- *
- * # Safety
- * `cells` is NULL or a live handle.
- */
-const double *weft_cells_corners(const struct WeftCells *cells);
-
-/**
- * Copies the cells into caller buffers.
- *
- * `cells` must not be NULL.
- * `out_sizes` must have room for `weft_cells_count` values
- * (`sizes_capacity`).
- * `out_corners` must have room for `3 * weft_cells_corner_count` doubles
- * (`corners_capacity`). When either is too small the call fails with
- * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- *
- * # Safety
- * Each buffer points to as many writable values as its capacity says (or
- * is NULL with 0).
- */
-WeftStatus weft_cells_copy(const struct WeftCells *cells, uint32_t *out_sizes, size_t sizes_capacity, double *out_corners, size_t corners_capacity);
-
-/**
- * Makes a mesh with one n-gon face per non-empty cell, in cell order; the
- * cells share no vertices (weld the mesh to join them).
- *
- * `cells` and `out_mesh` must not be NULL; the new mesh is written on
- * success only (free it with `weft_mesh_free`).
- *
- * # Safety
- * `cells` is a live handle; `out_mesh` is writable.
- */
-WeftStatus weft_cells_to_mesh(const struct WeftCells *cells, struct WeftMesh **out_mesh);
-
-/**
- * Frees cells made by `weft_voronoi`. NULL is ignored.
- *
- * # Safety
- * `cells` is NULL or a handle from this library not yet freed; after the
- * call it and every pointer obtained from it are invalid.
- */
-void weft_cells_free(struct WeftCells *cells);
-
-/**
- * Connects a `u_count × v_count` grid of points (a sampled surface) into a
- * quad mesh, or triangles.
- *
- * Point `(u, v)` is at `points[3 * (v * u_count + u)]`: u runs fastest.
- * The quad at `(u, v)` runs `(u, v), (u+1, v), (u+1, v+1), (u, v+1)`, so
- * faces front the side `∂/∂u × ∂/∂v` points to; faces come row by row.
- *
- * `points` holds `3 * point_count` doubles and `point_count` must equal
- * `u_count * v_count`, each count at least 2.
- * `closed_u` / `closed_v` wrap that direction around: the last point of a
- * row connects to the first, which is not repeated (at least 3 points
- * needed in a closed direction).
- * `triangulate` splits each quad along its shorter diagonal.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
- * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
- * The counts are checked before `points` is read; more than 2^31 − 1
- * points fail with WEFT_STATUS_INPUT_TOO_LARGE.
- *
- * # Safety
- * `points` holds the doubles stated; `out_mesh` is writable.
- */
-WeftStatus weft_mesh_from_grid(const double *points, size_t point_count, size_t u_count, size_t v_count, bool closed_u, bool closed_v, bool triangulate, struct WeftMesh **out_mesh);
-
-/**
- * Raises a pyramid on every face: a new vertex at the face's centroid moved
- * along its normal by the face's height, and a fan of triangles.
- *
- * Output order: the input's vertices, then one apex per face (face f's is
- * vertex `vertex_count + f`); face f's fan of triangles is contiguous.
- *
- * `mesh` must not be NULL.
- * `heights` holds `height_count` doubles: 1 for one height for every face,
- * or one per face; negative heights point into the face's back side.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * Fails with WEFT_STATUS_INVALID_ARGUMENT when `height_count` is neither 1
- * nor the face count (naming both), or naming the face whose height is not
- * finite.
- *
- * # Safety
- * `mesh` is a live handle; `heights` holds `height_count` doubles;
- * `out_mesh` is writable.
- */
-WeftStatus weft_stellate(const struct WeftMesh *mesh, const double *heights, size_t height_count, struct WeftMesh **out_mesh);
-
-/**
- * Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
- * the origin and facing +z, of `u_count × v_count` quads.
- *
- * Sizes must be positive and finite, counts at least 1. Counts whose
- * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
- * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
- * allocated.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * # Safety
- * `out_mesh` is writable.
- */
-WeftStatus weft_plane_grid(double size_x, double size_y, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
-
-/**
- * Makes a closed, welded box centred on the origin whose sides are divided
- * into quads: `u_count` along x, `v_count` along y, `w_count` along z.
- *
- * Sizes must be positive and finite, counts at least 1. Counts whose
- * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
- * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
- * allocated.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * # Safety
- * `out_mesh` is writable.
- */
-WeftStatus weft_box(double size_x, double size_y, double size_z, size_t u_count, size_t v_count, size_t w_count, struct WeftMesh **out_mesh);
-
-/**
- * Makes a sphere of `radius` centred on the origin with `u_count` segments
- * around the z axis (at least 3) and `v_count` from pole to pole (at least
- * 2); each pole is one vertex with a fan of triangles, the rest are quads.
- * Counts whose result would pass 2^31 − 1 face corners (any count
- * near SIZE_MAX included) fail with WEFT_STATUS_RESULT_TOO_LARGE before
- * anything is allocated.
- *
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * # Safety
- * `out_mesh` is writable.
- */
-WeftStatus weft_uv_sphere(double radius, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
-
-/**
- * Makes a platonic solid centred on the origin with its vertices on the
- * sphere of `radius`.
- *
- * `kind` is one of the WEFT_PLATONIC_* values; another value fails with
- * WEFT_STATUS_INVALID_ARGUMENT.
- * `radius` must be positive and finite.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * # Safety
- * `out_mesh` is writable.
- */
-WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mesh);
-
-/**
- * Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
- * circumradius `radius` about the z axis, `height` tall and centred on the
- * origin.
- *
- * `kind` is one of the WEFT_SIDED_* values; another value fails with
- * WEFT_STATUS_INVALID_ARGUMENT.
- * `sides` is n, at least 3; a count whose result would pass 2^31 − 1 face
- * corners fails with WEFT_STATUS_RESULT_TOO_LARGE before anything is
- * allocated. `radius` and `height` must be positive and finite.
- * `out_mesh` receives the new mesh on success; it must not be NULL.
- *
- * # Safety
- * `out_mesh` is writable.
- */
-WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
-
-/**
- * Finds, for each point, the nearest vertex of the mesh within a tolerance
- * (the lower index when two are equally near), through the spatial hash
- * that `weft_weld` uses.
- *
- * `mesh` must not be NULL.
- * `points` holds `point_count` points of three doubles (x, y, z); it may be
- * NULL only when `point_count` is 0.
- * `tolerance` is the largest distance from a point to its vertex, finite
- * and at least 0.
- * `out_vertices` must have room for `point_count` values and receives one
- * vertex index per point on success; it may be NULL only when
- * `point_count` is 0. Nothing is written on failure.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
- * (naming the point), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
- * infinite tolerance or for a point with no vertex within reach (naming
- * the point's index, its coordinates and the tolerance), or
- * WEFT_STATUS_OUT_OF_MEMORY.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `points` is NULL or holds
- * `3 * point_count` doubles; `out_vertices` is NULL or holds `point_count`
- * writable values.
- */
-WeftStatus weft_match_points_to_vertices(const struct WeftMesh *mesh, size_t point_count, const double *points, double tolerance, uint32_t *out_vertices);
-
-/**
- * Finds, for each line, the edge of the mesh whose end points lie within a
- * tolerance of the line's, in either direction. When several vertices are
- * within reach of an end, the pair that is an edge wins, the nearest (the
- * smallest sum of the two distances) first.
- *
- * `mesh` must not be NULL.
- * `lines` holds `line_count` lines of six doubles (start x, y, z, end x,
- * y, z); it may be NULL only when `line_count` is 0.
- * `tolerance` is the largest distance from a line's end to its vertex,
- * finite and at least 0.
- * `out_vertex_pairs` must have room for `2 * line_count` values and
- * receives, on success, the two vertex indices of each line's edge in the
- * line's direction (the vertex at its start first); it may be NULL only
- * when `line_count` is 0. Nothing is written on failure.
- *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
- * (naming the line), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
- * infinite tolerance or for a line that matches no edge (naming the line's
- * index, its end points, the tolerance and which end found no vertex), or
- * WEFT_STATUS_OUT_OF_MEMORY.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `lines` is NULL or holds
- * `6 * line_count` doubles; `out_vertex_pairs` is NULL or holds
- * `2 * line_count` writable values.
- */
-WeftStatus weft_match_lines_to_edges(const struct WeftMesh *mesh, size_t line_count, const double *lines, double tolerance, uint32_t *out_vertex_pairs);
-
-/**
- * Joins meshes into one: the vertices of each follow those of the meshes
- * before it and its face indices are offset to match; faces keep their order.
- *
- * `meshes` holds `count` mesh handles, none of them NULL; it may be NULL
- * only when `count` is 0 (the result is then the empty mesh).
- * `out_mesh` receives the joined mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- *
- * Fails with WEFT_STATUS_RESULT_TOO_LARGE when the joined vertex or index
- * count passes 2^31 - 1, or WEFT_STATUS_NULL_POINTER naming a NULL element.
- *
- * # Safety
- * `meshes` points to `count` readable handle pointers (or is NULL with 0),
- * each a live handle or NULL.
- */
-WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
-
-/**
- * The tolerance to weld `mesh` with when the host has none of its own: a
- * millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
- * single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
- * collapses the faces of a small part or a dense scan, whatever the units.
- * The command line's `weld` and `t-nodes` use it when no tolerance is given.
- *
- * `mesh` must not be NULL.
- * `out_tolerance` receives the tolerance; it must not be NULL and is
- * written on success only.
- *
- * Fails with WEFT_STATUS_NULL_POINTER.
- *
- * # Safety
- * `mesh` is a live handle; `out_tolerance` is writable.
- */
-WeftStatus weft_weld_relative_tolerance(const struct WeftMesh *mesh, double *out_tolerance);
-
-/**
- * Returns how many vertices no face uses, or 0 when `mesh` is NULL.
- * Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
- * them on purpose); `weft_remove_unused_vertices` leaves them out.
- *
- * # Safety
- * `mesh` is NULL or a live handle.
- */
-size_t weft_mesh_unused_vertex_count(const struct WeftMesh *mesh);
-
-/**
- * Leaves out the vertices no face uses; the others keep their order (the
- * face indices are renumbered to match).
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
- * not be NULL and is written on success only.
- * `out_removed` receives how many vertices were left out; it may be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
- */
-WeftStatus weft_remove_unused_vertices(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
-
-/**
- * Welds vertices: every two vertices at most `tolerance` apart become one,
- * transitively. The merged vertex keeps the position of its cluster's
- * lowest-index vertex (seams stay where the surface put them, and welding
- * twice changes nothing). Faces drop repeated corners (a quad with two
- * merged corners becomes a triangle); faces left with fewer than 3 vertices
- * are removed; vertices no face uses are left out.
- *
- * `mesh` must not be NULL.
- * `tolerance` is a distance in model units, finite and not negative; 0
- * merges exact duplicates only; `weft_weld_relative_tolerance` gives one
- * that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
- * 0.001, suits models of ordinary size in metres or millimetres).
- * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- * `out_report` receives what changed; it may be NULL.
- *
- * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
- * tolerance.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
- */
-WeftStatus weft_weld(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, struct WeftWeldReport *out_report);
-
-/**
- * Finds the T-nodes: vertices on the naked boundary that lie within
- * `tolerance` of the inside of another face's naked edge (and further than
- * `tolerance` from its ends). They are sorted by face, then by the edge's
- * place in the face, then by parameter.
- *
- * Call it first with `out_nodes` NULL to learn the count, then with a
- * buffer of that many elements.
- *
- * `mesh` must not be NULL.
- * `tolerance` is finite and not negative (WEFT_DEFAULT_WELD_TOLERANCE suits
- * most models).
- * `out_nodes` receives the T-nodes; NULL asks for the count only. When it
- * is not NULL and `capacity` is below the count the call fails with
- * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- * `capacity` is the number of elements `out_nodes` has room for.
- * `out_count` receives the number of T-nodes; it must not be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_nodes` is NULL or has room for `capacity`
- * elements; `out_count` is writable.
- */
-WeftStatus weft_find_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftTNode *out_nodes, size_t capacity, size_t *out_count);
-
-/**
- * Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
- * inserted into the edge it lies on (several on one edge in order), so
- * the face becomes an n-gon and both sides share the seam. Positions do
- * not change.
- *
- * `mesh` must not be NULL.
- * `tolerance` is finite and not negative.
- * `out_mesh` receives the repaired mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- * `out_inserted` receives the number of vertices inserted; it may be NULL.
- *
- * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
- * tolerance.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_inserted` is NULL or writable.
- */
-WeftStatus weft_repair_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, size_t *out_inserted);
-
-/**
- * Removes every face that has a twin with the same vertices (in either
- * orientation, from any corner): all copies go. These are the walls inside
- * an aggregation of joined and welded boxes. Vertices are kept as they are.
- *
- * `mesh` must not be NULL; weld it first, as faces are compared by index.
- * `out_mesh` receives the culled mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- * `out_removed` receives the number of faces removed; it may be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
- */
-WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
-
-/**
- * Gives every connected piece one consistent winding, flipping the fewest
- * of its faces, then turns each closed orientable piece to face outward.
- * A piece that cannot be oriented (a Möbius strip) is wound as consistently
- * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
- * not be NULL and is written on success only.
- * `out_flipped` receives the number of faces reversed; it may be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
- */
-WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
-
-/**
- * As `weft_unify_orientation` (one consistent winding per piece, closed
- * pieces turned to enclose a positive volume), reporting the pieces. The
- * triangles of an STL file share no vertices: weld them first
- * (`weft_weld`), or every triangle is an open piece of its own.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
- * not be NULL and is written on success only.
- * `out_report` receives the pieces found and changed; it may be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
- */
-WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
-
-/**
- * Reverses every face, keeping its first corner first ({a, b, c, d}
- * becomes {a, d, c, b}), so that flipping twice gives the input back.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable.
- */
-WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
-
-/**
- * Computes the unit normal of each face by Newell's method (robust on
- * non-planar polygons); a face of zero area gets (0, 0, 0).
- *
- * `mesh` must not be NULL.
- * `out_normals` receives x, y, z per face and must have room for
- * `3 * face_count` doubles; `capacity` is its length in doubles. When it is
- * too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- *
- * # Safety
- * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
- * (or is NULL with 0).
- */
-WeftStatus weft_face_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
-
-/**
- * Computes the unit normal of each vertex: the face normals weighted by the
- * face's angle at the vertex (unchanged when faces are split into
- * triangles). A vertex no face uses gets (0, 0, 0).
- *
- * `mesh` must not be NULL.
- * `out_normals` receives x, y, z per vertex and must have room for
- * `3 * vertex_count` doubles; `capacity` is its length in doubles. When it
- * is too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes
- * nothing.
- *
- * # Safety
- * `mesh` is a live handle; `out_normals` has room for `capacity` doubles
- * (or is NULL with 0).
- */
-WeftStatus weft_vertex_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
-
-/**
- * Computes, per face, the largest distance of its corners from its
- * best-fit (least-squares) plane; 0 for triangles. A face is planar within
- * a tolerance when its value is at most the tolerance (the planar-quad
- * mesh check).
- *
- * `mesh` must not be NULL.
- * `out_deviations` receives one double per face and must have room for
- * `face_count`; `capacity` is its length. When it is too small the call
- * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- *
- * # Safety
- * `mesh` is a live handle; `out_deviations` has room for `capacity`
- * doubles (or is NULL with 0).
- */
-WeftStatus weft_planarity(const struct WeftMesh *mesh, double *out_deviations, size_t capacity);
-
-/**
- * Chains the naked edges (edges with one face) into polylines. On a
- * manifold mesh each border is one closed polyline running the way its
- * faces run their edges; at a vertex with one or three or more naked edges
- * polylines stop, and one that returns to its start is closed. A closed
- * polyline does not repeat its first point at the end.
- *
- * Call it first with `out_points` NULL to learn the totals, then with
- * buffers of those sizes. The polylines' points follow one another in
- * `out_points`; polyline i has `out_point_counts[i]` of them.
- *
- * `mesh` must not be NULL.
- * `out_points` receives x, y, z per point; NULL asks for the totals only.
- * `points_capacity` is its length in doubles (3 per point).
- * `out_point_counts` receives the number of points of each polyline; it
- * must not be NULL when `out_points` is not.
- * `out_closed` receives whether each polyline is closed; it may be NULL.
- * `polylines_capacity` is the number of elements `out_point_counts` (and
- * `out_closed`, when given) have room for.
- * When a buffer is too small the call fails with
- * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
- * `out_point_total` receives the number of points in all; must not be NULL.
- * `out_polyline_count` receives the number of polylines; must not be NULL.
- *
- * # Safety
- * `mesh` is a live handle; each buffer is NULL or has room for its capacity.
- */
-WeftStatus weft_naked_boundaries(const struct WeftMesh *mesh, double *out_points, size_t points_capacity, size_t *out_point_counts, bool *out_closed, size_t polylines_capacity, size_t *out_point_total, size_t *out_polyline_count);
 
 /**
  * Returns the library's version as a string such as "0.1.0".
@@ -1523,92 +672,65 @@ WeftStatus weft_mesh_copy_faces(const struct WeftMesh *mesh, uint32_t *out_face_
  * `mesh` and `out_info` must not be NULL; `out_info` is written on success only.
  *
  * # Safety
- * `mesh` is a live handle; `out_info` points to a writable `WeftMeshInfo`.
+ * `mesh` is NULL or a live handle; `out_info` is NULL or points to a writable `WeftMeshInfo`.
  */
 WeftStatus weft_mesh_info(const struct WeftMesh *mesh, struct WeftMeshInfo *out_info);
 
 /**
- * Plans `levels` steps of `scheme` on the faces of `cage`: everything that
- * depends only on its topology (the faces of each level and what each new
- * vertex is made of) is computed here, once.
+ * Finds, for each point, the nearest vertex of the mesh within a tolerance
+ * (the lower index when two are equally near), through the spatial hash
+ * that `weft_weld` uses.
  *
- * `cage` must not be NULL; its positions are kept for `weft_refiner_mesh`.
- * `scheme` is a WEFT_SCHEME_* value, `naked_edges` a WEFT_NAKED_EDGES_* value.
- * `out_refiner` receives the refiner on success (free it with
- * `weft_refiner_free`) and is left untouched on failure; it must not be NULL.
+ * `mesh` must not be NULL.
+ * `points` holds `point_count` points of three doubles (x, y, z); it may be
+ * NULL only when `point_count` is 0.
+ * `tolerance` is the largest distance from a point to its vertex, finite
+ * and at least 0.
+ * `out_vertices` must have room for `point_count` values and receives one
+ * vertex index per point on success; it may be NULL only when
+ * `point_count` is 0. Nothing is written on failure.
  *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
- * WEFT_STATUS_NOT_TRIANGLES (Loop on another polygon),
- * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+ * (naming the point), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
+ * infinite tolerance or for a point with no vertex within reach (naming
+ * the point's index, its coordinates and the tolerance), or
+ * WEFT_STATUS_OUT_OF_MEMORY.
  *
  * # Safety
- * `cage` is NULL or a live handle; `out_refiner` is NULL or writable.
+ * `mesh` is NULL or a live handle; `points` is NULL or holds
+ * `3 * point_count` doubles; `out_vertices` is NULL or holds `point_count`
+ * writable values.
  */
-WeftStatus weft_refiner_new(const struct WeftMesh *cage, uint32_t scheme, uint32_t levels, uint32_t naked_edges, struct WeftRefiner **out_refiner);
+WeftStatus weft_match_points_to_vertices(const struct WeftMesh *mesh, size_t point_count, const double *points, double tolerance, uint32_t *out_vertices);
 
 /**
- * Computes the refined positions for new cage positions, without
- * allocating: the cage's faces must be those the refiner was built from.
+ * Finds, for each line, the edge of the mesh whose end points lie within a
+ * tolerance of the line's, in either direction. When several vertices are
+ * within reach of an end, the pair that is an edge wins, the nearest (the
+ * smallest sum of the two distances) first.
  *
- * `refiner` must not be NULL.
- * `cage_positions` holds `3 * vertex_count` doubles; `vertex_count` must
- * equal the cage's vertex count.
- * `out_positions` has room for `out_len` doubles, at least
- * `3 * weft_refiner_vertex_count(refiner)`; too small a buffer fails with
- * WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
+ * `mesh` must not be NULL.
+ * `lines` holds `line_count` lines of six doubles (start x, y, z, end x,
+ * y, z); it may be NULL only when `line_count` is 0.
+ * `tolerance` is the largest distance from a line's end to its vertex,
+ * finite and at least 0.
+ * `out_vertex_pairs` must have room for `2 * line_count` values and
+ * receives, on success, the two vertex indices of each line's edge in the
+ * line's direction (the vertex at its start first); it may be NULL only
+ * when `line_count` is 0. Nothing is written on failure.
  *
- * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
- * WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE, with
- * nothing written. Coordinates near the largest double are refined at an
- * exactly scaled size, so the rules never overflow; a refined point beyond
- * the largest double (only when the cage spans nearly the whole range) is
- * WEFT_STATUS_DEGENERATE_INPUT naming the vertex, and the contents of
- * `out_positions` are then unspecified.
- *
- * # Safety
- * `refiner` is NULL or live; the buffers hold the elements stated.
- */
-WeftStatus weft_refiner_evaluate(const struct WeftRefiner *refiner, const double *cage_positions, size_t vertex_count, double *out_positions, size_t out_len);
-
-/**
- * Makes the refined mesh at the cage positions the refiner was built from.
- *
- * `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
- * it with `weft_mesh_free`); it must not be NULL.
- *
- * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
- * with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when a refined point
- * lies beyond the largest double (see `weft_refiner_evaluate`).
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+ * (naming the line), WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or
+ * infinite tolerance or for a line that matches no edge (naming the line's
+ * index, its end points, the tolerance and which end found no vertex), or
+ * WEFT_STATUS_OUT_OF_MEMORY.
  *
  * # Safety
- * `refiner` is NULL or live; `out_mesh` is NULL or writable.
+ * `mesh` is NULL or a live handle; `lines` is NULL or holds
+ * `6 * line_count` doubles; `out_vertex_pairs` is NULL or holds
+ * `2 * line_count` writable values.
  */
-WeftStatus weft_refiner_mesh(const struct WeftRefiner *refiner, struct WeftMesh **out_mesh);
-
-/**
- * Returns the number of refined vertices (the output of
- * `weft_refiner_evaluate` holds three doubles each), or 0 when `refiner` is NULL.
- *
- * # Safety
- * `refiner` is NULL or live.
- */
-size_t weft_refiner_vertex_count(const struct WeftRefiner *refiner);
-
-/**
- * Returns the number of refined faces, or 0 when `refiner` is NULL.
- *
- * # Safety
- * `refiner` is NULL or live.
- */
-size_t weft_refiner_face_count(const struct WeftRefiner *refiner);
-
-/**
- * Frees a refiner. NULL is ignored.
- *
- * # Safety
- * `refiner` is NULL or a refiner not yet freed; it is invalid afterwards.
- */
-void weft_refiner_free(struct WeftRefiner *refiner);
+WeftStatus weft_match_lines_to_edges(const struct WeftMesh *mesh, size_t line_count, const double *lines, double tolerance, uint32_t *out_vertex_pairs);
 
 /**
  * Subdivides a mesh with Catmull-Clark, `levels` times, as OpenSubdiv's
@@ -1750,6 +872,752 @@ WeftStatus weft_triangulate_ex(const struct WeftMesh *mesh, struct WeftMesh **ou
  * `out_split_faces` is NULL or writable.
  */
 WeftStatus weft_as_triangles(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_split_faces);
+
+/**
+ * Plans `levels` steps of `scheme` on the faces of `cage`: everything that
+ * depends only on its topology (the faces of each level and what each new
+ * vertex is made of) is computed here, once.
+ *
+ * `cage` must not be NULL; its positions are kept for `weft_refiner_mesh`.
+ * `scheme` is a WEFT_SCHEME_* value, `naked_edges` a WEFT_NAKED_EDGES_* value.
+ * `out_refiner` receives the refiner on success (free it with
+ * `weft_refiner_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop on another polygon),
+ * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `out_refiner` is NULL or writable.
+ */
+WeftStatus weft_refiner_new(const struct WeftMesh *cage, uint32_t scheme, uint32_t levels, uint32_t naked_edges, struct WeftRefiner **out_refiner);
+
+/**
+ * Plans a subdivision with the scheme, naked-edge mode, creases and corners
+ * of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
+ * other `weft_refiner_*` functions work on it as on one from
+ * `weft_refiner_new`).
+ *
+ * `cage` and `options` must not be NULL; the cage's positions are kept for
+ * `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
+ * it with `weft_refiner_free`) and is left untouched on failure; it must
+ * not be NULL.
+ *
+ * Fails as `weft_subdivide_ex`.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
+ * `out_refiner` is NULL or writable.
+ */
+WeftStatus weft_refiner_new_ex(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftRefiner **out_refiner);
+
+/**
+ * Computes the refined positions for new cage positions, without
+ * allocating: the cage's faces must be those the refiner was built from.
+ *
+ * `refiner` must not be NULL.
+ * `cage_positions` holds `3 * vertex_count` doubles; `vertex_count` must
+ * equal the cage's vertex count.
+ * `out_positions` has room for `out_len` doubles, at least
+ * `3 * weft_refiner_vertex_count(refiner)`; too small a buffer fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and nothing is written.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_COUNT_MISMATCH,
+ * WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_NON_FINITE_COORDINATE, with
+ * nothing written. Coordinates near the largest double are refined at an
+ * exactly scaled size, so the rules never overflow; a refined point beyond
+ * the largest double (only when the cage spans nearly the whole range) is
+ * WEFT_STATUS_DEGENERATE_INPUT naming the vertex, and the contents of
+ * `out_positions` are then unspecified.
+ *
+ * # Safety
+ * `refiner` is NULL or live; the buffers hold the elements stated.
+ */
+WeftStatus weft_refiner_evaluate(const struct WeftRefiner *refiner, const double *cage_positions, size_t vertex_count, double *out_positions, size_t out_len);
+
+/**
+ * Makes the refined mesh at the cage positions the refiner was built from.
+ *
+ * `refiner` must not be NULL. `out_mesh` receives the mesh on success (free
+ * it with `weft_mesh_free`); it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER or WEFT_STATUS_OUT_OF_MEMORY, and
+ * with WEFT_STATUS_DEGENERATE_INPUT naming the vertex when a refined point
+ * lies beyond the largest double (see `weft_refiner_evaluate`).
+ *
+ * # Safety
+ * `refiner` is NULL or live; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_refiner_mesh(const struct WeftRefiner *refiner, struct WeftMesh **out_mesh);
+
+/**
+ * Returns the number of refined vertices (the output of
+ * `weft_refiner_evaluate` holds three doubles each), or 0 when `refiner` is NULL.
+ *
+ * # Safety
+ * `refiner` is NULL or live.
+ */
+size_t weft_refiner_vertex_count(const struct WeftRefiner *refiner);
+
+/**
+ * Returns the number of refined faces, or 0 when `refiner` is NULL.
+ *
+ * # Safety
+ * `refiner` is NULL or live.
+ */
+size_t weft_refiner_face_count(const struct WeftRefiner *refiner);
+
+/**
+ * Frees a refiner. NULL is ignored.
+ *
+ * # Safety
+ * `refiner` is NULL or a refiner not yet freed; it is invalid afterwards.
+ */
+void weft_refiner_free(struct WeftRefiner *refiner);
+
+/**
+ * Subdivides a mesh `levels` times with the scheme, naked-edge mode,
+ * creases and corners of `options`, as OpenSubdiv does with the same
+ * `Sdc::Options` and `TopologyDescriptor` arrays. Output order as
+ * `weft_catmull_clark` and `weft_loop`.
+ *
+ * `mesh` must not be NULL. `options` must not be NULL; see
+ * `WeftSubdivisionOptions`. `levels` is the number of steps; 0 returns a copy.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (an
+ * unknown enumeration value, a crease pair that is not an edge of the mesh,
+ * a corner past the vertex count, a negative or NaN sharpness — the
+ * message names which), WEFT_STATUS_NOT_TRIANGLES (Loop),
+ * WEFT_STATUS_RESULT_TOO_LARGE or WEFT_STATUS_OUT_OF_MEMORY. Coordinates
+ * near the largest double are subdivided at an exactly scaled size, so the
+ * rules never overflow; a refined point beyond the largest double (only
+ * when the input spans nearly the whole range) is
+ * WEFT_STATUS_DEGENERATE_INPUT naming the vertex.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `options` is NULL or readable with
+ * arrays of the lengths it states; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_subdivide_ex(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, struct WeftMesh **out_mesh);
+
+/**
+ * Gives the vertex, face and face-index counts of the mesh `levels` steps
+ * of `scheme` make from `mesh` (creases do not change them), without
+ * subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
+ * `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
+ *
+ * `mesh` must not be NULL. `scheme` is a WEFT_SCHEME_* value. Each
+ * `out_*` receives its count on success; none may be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT,
+ * WEFT_STATUS_NOT_TRIANGLES (Loop) or WEFT_STATUS_RESULT_TOO_LARGE.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; the `out_*` are NULL or writable.
+ */
+WeftStatus weft_subdivision_counts(const struct WeftMesh *mesh, uint32_t scheme, uint32_t levels, size_t *out_vertex_count, size_t *out_face_count, size_t *out_index_count);
+
+/**
+ * Carries per-vertex data of any width (colours, weights) through the
+ * subdivision of `weft_subdivide_ex`: every refined vertex gets the same
+ * weighted sum of cage values as its position (OpenSubdiv's
+ * `PrimvarRefiner::Interpolate`).
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+ * `data` holds `width` doubles per cage vertex (`width` ≥ 1), `data_len` in all.
+ * `out_data` has room for `capacity` doubles; it needs `width` times the
+ * refined vertex count (`weft_subdivision_counts`), else the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH when
+ * `data_len` is not `width` times the cage's vertex count, and
+ * WEFT_STATUS_INVALID_ARGUMENT when `width` is 0 or a value is NaN or
+ * infinite (the message names the vertex and component).
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; `data` holds `data_len` doubles and `out_data`
+ * `capacity` writable doubles (either may be NULL when its length is 0).
+ */
+WeftStatus weft_subdivide_vertex_data(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, const double *data, size_t data_len, size_t width, double *out_data, size_t capacity);
+
+/**
+ * Carries per-face-corner values (UVs) through the subdivision of
+ * `weft_subdivide_ex`, face-varying as OpenSubdiv's
+ * `PrimvarRefiner::InterpolateFaceVarying`: corners of one vertex that use
+ * different values are a seam, and `face_varying_linear` says where values
+ * are interpolated linearly.
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`.
+ * `face_varying_linear` is a WEFT_FACE_VARYING_* value.
+ * `values` holds `width` doubles for each of `value_count` values (`width` ≥ 1).
+ * `value_indices` holds the value of every face corner of `mesh`, face
+ * after face: `index_count` must equal the mesh's face-index count.
+ * `out_values` has room for `capacity` doubles; it receives `width` doubles
+ * per face corner of the refined mesh, face after face, and needs `width`
+ * times the refined face-index count (`weft_subdivision_counts`), else the
+ * call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
+ * WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
+ * WEFT_STATUS_INVALID_ARGUMENT (also for a NaN or infinite value, naming it).
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; the buffers hold the elements stated.
+ */
+WeftStatus weft_subdivide_face_varying(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, uint32_t face_varying_linear, const double *values, size_t value_count, size_t width, const uint32_t *value_indices, size_t index_count, double *out_values, size_t capacity);
+
+/**
+ * Projects the vertices of the subdivision of `weft_subdivide_ex` onto the
+ * limit surface, and gives the surface's unit normals there (OpenSubdiv's
+ * `PrimvarRefiner::Limit`; normal = du × dv normalised, outward for
+ * counter-clockwise faces, zero where undefined).
+ *
+ * `mesh` and `options` must not be NULL; `levels` as `weft_subdivide_ex`
+ * (Catmull-Clark needs at least 1 unless every face is a quad).
+ * `out_positions` and `out_normals` each have room for `capacity` doubles
+ * and need 3 per refined vertex (`weft_subdivision_counts`), else the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing;
+ * `out_normals` may be NULL when the normals are not wanted.
+ *
+ * Fails as `weft_subdivide_ex`, and with WEFT_STATUS_INVALID_ARGUMENT for
+ * Catmull-Clark at level 0 on a mesh with faces that are not quads.
+ * Coordinates near the largest double are evaluated at an exactly scaled
+ * size; a limit position beyond it is WEFT_STATUS_DEGENERATE_INPUT naming
+ * the vertex.
+ *
+ * # Safety
+ * As `weft_subdivide_ex`; the outputs are NULL or hold `capacity` writable doubles.
+ */
+WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, double *out_positions, double *out_normals, size_t capacity);
+
+/**
+ * Prepares a mesh whose creases are unwelded seams or sharp folds for
+ * creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
+ * same position, and lists as creases every edge that was naked before
+ * welding and has two faces after, and every edge whose faces' normals
+ * differ by more than `angle_degrees` (180 or more: no fold test). Pass the
+ * pairs as `crease_vertex_pairs` with `WEFT_SHARPNESS_INFINITE` sharpness.
+ * `weft_crease_edges_from_mesh_ex` also gives which welded vertex each
+ * input vertex became.
+ *
+ * `mesh` must not be NULL. `angle_degrees` must be 0 or more.
+ * `out_welded` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL. `out_pairs` has room for `capacity` indices and receives
+ * two per crease (indices of the welded mesh); `2 * weft_mesh_index_count(mesh)`
+ * always suffices; too small a buffer fails with WEFT_STATUS_BUFFER_TOO_SMALL.
+ * `out_crease_count` receives the number of creases; it must not be NULL.
+ * Nothing is written on failure.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_INVALID_ARGUMENT (a NaN
+ * or negative angle), WEFT_STATUS_BUFFER_TOO_SMALL or WEFT_STATUS_OUT_OF_MEMORY.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_pairs` is NULL or holds `capacity`
+ * writable indices; the other outputs are NULL or writable.
+ */
+WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count);
+
+/**
+ * As `weft_crease_edges_from_mesh`, and gives the vertex map of the weld:
+ * for each vertex of `mesh`, the index of the vertex of the welded mesh it
+ * became (the first of the vertices at its position). With it a host
+ * carries per-vertex data given on the input (colours, weights, its own
+ * creases and corners) onto the welded mesh: welded vertex
+ * `out_vertex_map[v]` takes vertex `v`'s value.
+ *
+ * `mesh`, `angle_degrees`, `out_welded`, `out_pairs`, `capacity` and
+ * `out_crease_count` as `weft_crease_edges_from_mesh`.
+ * `out_vertex_map` has room for `vertex_map_capacity` indices and receives
+ * one per vertex of `mesh`: it needs `weft_mesh_vertex_count(mesh)`, else
+ * the call fails with WEFT_STATUS_BUFFER_TOO_SMALL (checked before any
+ * work is done). It may be NULL only when `vertex_map_capacity` is 0.
+ * Nothing is written on failure.
+ *
+ * Fails as `weft_crease_edges_from_mesh`.
+ *
+ * # Safety
+ * As `weft_crease_edges_from_mesh`; `out_vertex_map` is NULL or holds
+ * `vertex_map_capacity` writable indices.
+ */
+WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
+
+/**
+ * Joins meshes into one: the vertices of each follow those of the meshes
+ * before it and its face indices are offset to match; faces keep their order.
+ *
+ * `meshes` holds `count` mesh handles, none of them NULL; it may be NULL
+ * only when `count` is 0 (the result is then the empty mesh).
+ * `out_mesh` receives the joined mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * Fails with WEFT_STATUS_RESULT_TOO_LARGE when the joined vertex or index
+ * count passes 2^31 - 1, or WEFT_STATUS_NULL_POINTER naming a NULL element.
+ *
+ * # Safety
+ * `meshes` points to `count` readable handle pointers (or is NULL with 0),
+ * each a live handle or NULL.
+ */
+WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
+
+/**
+ * Welds vertices: every two vertices at most `tolerance` apart become one,
+ * transitively. The merged vertex keeps the position of its cluster's
+ * lowest-index vertex (seams stay where the surface put them, and welding
+ * twice changes nothing). Faces drop repeated corners (a quad with two
+ * merged corners becomes a triangle); faces left with fewer than 3 vertices
+ * are removed; vertices no face uses are left out.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is a distance in model units, finite and not negative; 0
+ * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
+ * most models.
+ * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_report` receives what changed; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_weld(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, struct WeftWeldReport *out_report);
+
+/**
+ * Finds the T-nodes: vertices on the naked boundary that lie within
+ * `tolerance` of the inside of another face's naked edge (and further than
+ * `tolerance` from its ends). They are sorted by face, then by the edge's
+ * place in the face, then by parameter.
+ *
+ * Call it first with `out_nodes` NULL to learn the count, then with a
+ * buffer of that many elements.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative (WEFT_DEFAULT_WELD_TOLERANCE suits
+ * most models).
+ * `out_nodes` receives the T-nodes; NULL asks for the count only. When it
+ * is not NULL and `capacity` is below the count the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `capacity` is the number of elements `out_nodes` has room for.
+ * `out_count` receives the number of T-nodes; it must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_nodes` is NULL or has room for `capacity`
+ * elements; `out_count` is NULL or writable.
+ */
+WeftStatus weft_find_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftTNode *out_nodes, size_t capacity, size_t *out_count);
+
+/**
+ * Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
+ * inserted into the edge it lies on (several on one edge in order), so
+ * the face becomes an n-gon and both sides share the seam. Positions do
+ * not change.
+ *
+ * `mesh` must not be NULL.
+ * `tolerance` is finite and not negative.
+ * `out_mesh` receives the repaired mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_inserted` receives the number of vertices inserted; it may be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for a negative, NaN or infinite
+ * tolerance.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_inserted` is NULL or writable.
+ */
+WeftStatus weft_repair_t_nodes(const struct WeftMesh *mesh, double tolerance, struct WeftMesh **out_mesh, size_t *out_inserted);
+
+/**
+ * Removes every face that has a twin with the same vertices (in either
+ * orientation, from any corner): all copies go. These are the walls inside
+ * an aggregation of joined and welded boxes. Vertices are kept as they are.
+ *
+ * `mesh` must not be NULL; weld it first, as faces are compared by index.
+ * `out_mesh` receives the culled mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ * `out_removed` receives the number of faces removed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
+ * Gives every connected piece one consistent winding, flipping the fewest
+ * of its faces, then turns each closed orientable piece to face outward.
+ * A piece that cannot be oriented (a Möbius strip) is wound as consistently
+ * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_flipped` receives the number of faces reversed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_flipped` is NULL or writable.
+ */
+WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * Reverses every face, keeping its first corner first ({a, b, c, d}
+ * becomes {a, d, c, b}), so that flipping twice gives the input back.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
+
+/**
+ * Computes the unit normal of each face by Newell's method (robust on
+ * non-planar polygons); a face of zero area gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per face and must have room for
+ * `3 * face_count` doubles; `capacity` is its length in doubles. When it is
+ * too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_face_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes the unit normal of each vertex: the face normals weighted by the
+ * face's angle at the vertex (unchanged when faces are split into
+ * triangles). A vertex no face uses gets (0, 0, 0).
+ *
+ * `mesh` must not be NULL.
+ * `out_normals` receives x, y, z per vertex and must have room for
+ * `3 * vertex_count` doubles; `capacity` is its length in doubles. When it
+ * is too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes
+ * nothing.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_normals` has room for `capacity` doubles
+ * (or is NULL with 0).
+ */
+WeftStatus weft_vertex_normals(const struct WeftMesh *mesh, double *out_normals, size_t capacity);
+
+/**
+ * Computes, per face, the largest distance of its corners from its
+ * best-fit (least-squares) plane; 0 for triangles. A face is planar within
+ * a tolerance when its value is at most the tolerance (the planar-quad
+ * mesh check).
+ *
+ * `mesh` must not be NULL.
+ * `out_deviations` receives one double per face and must have room for
+ * `face_count`; `capacity` is its length. When it is too small the call
+ * fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_deviations` has room for `capacity`
+ * doubles (or is NULL with 0).
+ */
+WeftStatus weft_planarity(const struct WeftMesh *mesh, double *out_deviations, size_t capacity);
+
+/**
+ * Chains the naked edges (edges with one face) into polylines. On a
+ * manifold mesh each border is one closed polyline running the way its
+ * faces run their edges; at a vertex with one or three or more naked edges
+ * polylines stop, and one that returns to its start is closed. A closed
+ * polyline does not repeat its first point at the end.
+ *
+ * Call it first with `out_points` NULL to learn the totals, then with
+ * buffers of those sizes. The polylines' points follow one another in
+ * `out_points`; polyline i has `out_point_counts[i]` of them.
+ *
+ * `mesh` must not be NULL.
+ * `out_points` receives x, y, z per point; NULL asks for the totals only.
+ * `points_capacity` is its length in doubles (3 per point).
+ * `out_point_counts` receives the number of points of each polyline; it
+ * must not be NULL when `out_points` is not.
+ * `out_closed` receives whether each polyline is closed; it may be NULL.
+ * `polylines_capacity` is the number of elements `out_point_counts` (and
+ * `out_closed`, when given) have room for.
+ * When a buffer is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * `out_point_total` receives the number of points in all; must not be NULL.
+ * `out_polyline_count` receives the number of polylines; must not be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; each buffer is NULL or has room for its capacity.
+ */
+WeftStatus weft_naked_boundaries(const struct WeftMesh *mesh, double *out_points, size_t points_capacity, size_t *out_point_counts, bool *out_closed, size_t polylines_capacity, size_t *out_point_total, size_t *out_polyline_count);
+
+/**
+ * Triangulates points by the Delaunay criterion of their projections onto
+ * a plane; the mesh's vertices are the original 3-D points, its triangles
+ * front-facing along the plane's normal.
+ *
+ * Points whose projections coincide are merged: the first is kept, so the
+ * mesh's vertices are the distinct points in input order.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0 (which then fails as too few points).
+ * `plane` may be NULL for the world XY plane.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`); it must not be NULL.
+ * `out_merged` receives the number of points merged into an earlier one;
+ * it may be NULL.
+ *
+ * Fails with WEFT_STATUS_DEGENERATE_INPUT for fewer than 3 distinct points,
+ * all collinear points or a degenerate plane, and with
+ * WEFT_STATUS_NON_FINITE_COORDINATE naming the point with a NaN or infinite
+ * coordinate. More than 2^31 − 1 points fail with
+ * WEFT_STATUS_INPUT_TOO_LARGE before the buffer is read; more than a sixth
+ * of that (up to two triangles per point must fit the cap) with
+ * WEFT_STATUS_RESULT_TOO_LARGE.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `plane` is NULL or readable;
+ * `out_mesh` and a non-NULL `out_merged` are writable.
+ */
+WeftStatus weft_delaunay(const double *points, size_t point_count, const struct WeftPlane *plane, struct WeftMesh **out_mesh, size_t *out_merged);
+
+/**
+ * Computes the Voronoi cell of each point on a plane, clipped to a boundary
+ * polygon and, when `radius` is positive, to the 64-gon inscribed in the
+ * circle of that radius around the point.
+ *
+ * Cells lie in the plane, counter-clockwise seen from its normal, without
+ * a repeated closing corner. A point outside the boundary, or repeating an
+ * earlier point's projection, gets an empty cell (size 0). With a concave
+ * boundary, a cell that meets it in several pieces keeps the piece holding
+ * its point.
+ *
+ * `points` holds `3 * point_count` doubles; it may be NULL only when
+ * `point_count` is 0.
+ * `plane` may be NULL for the world XY plane.
+ * `boundary` holds `3 * boundary_count` doubles, the corners of a simple
+ * polygon (convex or not, either winding), projected onto the plane; with
+ * `boundary_count` 0 (and `boundary` NULL or not) the boundary is the
+ * points' bounding rectangle on the plane grown by 10 % of its larger side
+ * on every side.
+ * `radius` 0 means no circle; otherwise it must be positive and finite.
+ * `out_cells` receives the cells on success (free them with
+ * `weft_cells_free`); it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NON_FINITE_COORDINATE naming a point or boundary
+ * corner, WEFT_STATUS_INVALID_ARGUMENT for a bad radius or a boundary that
+ * crosses itself or has fewer than 3 corners, WEFT_STATUS_DEGENERATE_INPUT
+ * for a degenerate plane or a boundary without area. More than 2^31 − 1
+ * points or boundary corners fail with WEFT_STATUS_INPUT_TOO_LARGE before
+ * the buffers are read.
+ *
+ * # Safety
+ * Each non-NULL buffer holds the doubles stated; `plane` is NULL or
+ * readable; `out_cells` is NULL or writable.
+ */
+WeftStatus weft_voronoi(const double *points, size_t point_count, const struct WeftPlane *plane, const double *boundary, size_t boundary_count, double radius, struct WeftCells **out_cells);
+
+/**
+ * Returns the number of cells (the number of input points), or 0 when
+ * `cells` is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of all cells together, or 0 when `cells`
+ * is NULL.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+size_t weft_cells_corner_count(const struct WeftCells *cells);
+
+/**
+ * Returns the number of corners of each cell (`weft_cells_count` values,
+ * 0 for an empty cell), or NULL when `cells` is NULL or holds no cells.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const uint32_t *weft_cells_sizes(const struct WeftCells *cells);
+
+/**
+ * Returns the corners of all cells, one cell after another,
+ * `3 * weft_cells_corner_count` doubles, or NULL when `cells` is NULL or
+ * every cell is empty.
+ *
+ * The pointer is owned by the handle and valid until it is freed.
+ *
+ * # Safety
+ * `cells` is NULL or a live handle.
+ */
+const double *weft_cells_corners(const struct WeftCells *cells);
+
+/**
+ * Copies the cells into caller buffers.
+ *
+ * `cells` must not be NULL.
+ * `out_sizes` must have room for `weft_cells_count` values
+ * (`sizes_capacity`).
+ * `out_corners` must have room for `3 * weft_cells_corner_count` doubles
+ * (`corners_capacity`). When either is too small the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * # Safety
+ * Each buffer points to as many writable values as its capacity says (or
+ * is NULL with 0).
+ */
+WeftStatus weft_cells_copy(const struct WeftCells *cells, uint32_t *out_sizes, size_t sizes_capacity, double *out_corners, size_t corners_capacity);
+
+/**
+ * Makes a mesh with one n-gon face per non-empty cell, in cell order; the
+ * cells share no vertices (weld the mesh to join them).
+ *
+ * `cells` and `out_mesh` must not be NULL; the new mesh is written on
+ * success only (free it with `weft_mesh_free`).
+ *
+ * # Safety
+ * `cells` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_cells_to_mesh(const struct WeftCells *cells, struct WeftMesh **out_mesh);
+
+/**
+ * Frees cells made by `weft_voronoi`. NULL is ignored.
+ *
+ * # Safety
+ * `cells` is NULL or a handle from this library not yet freed; after the
+ * call it and every pointer obtained from it are invalid.
+ */
+void weft_cells_free(struct WeftCells *cells);
+
+/**
+ * Connects a `u_count × v_count` grid of points (a sampled surface) into a
+ * quad mesh, or triangles.
+ *
+ * Point `(u, v)` is at `points[3 * (v * u_count + u)]`: u runs fastest.
+ * The quad at `(u, v)` runs `(u, v), (u+1, v), (u+1, v+1), (u, v+1)`, so
+ * faces front the side `∂/∂u × ∂/∂v` points to; faces come row by row.
+ *
+ * `points` holds `3 * point_count` doubles and `point_count` must equal
+ * `u_count * v_count`, each count at least 2.
+ * `closed_u` / `closed_v` wrap that direction around: the last point of a
+ * row connects to the first, which is not repeated (at least 3 points
+ * needed in a closed direction).
+ * `triangulate` splits each quad along its shorter diagonal.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT naming both counts when they do
+ * not match, and with WEFT_STATUS_NON_FINITE_COORDINATE naming a point.
+ * The counts are checked before `points` is read; more than 2^31 − 1
+ * points fail with WEFT_STATUS_INPUT_TOO_LARGE.
+ *
+ * # Safety
+ * `points` holds the doubles stated; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_mesh_from_grid(const double *points, size_t point_count, size_t u_count, size_t v_count, bool closed_u, bool closed_v, bool triangulate, struct WeftMesh **out_mesh);
+
+/**
+ * Raises a pyramid on every face: a new vertex at the face's centroid moved
+ * along its normal by the face's height, and a fan of triangles.
+ *
+ * Output order: the input's vertices, then one apex per face (face f's is
+ * vertex `vertex_count + f`); face f's fan of triangles is contiguous.
+ *
+ * `mesh` must not be NULL.
+ * `heights` holds `height_count` doubles: 1 for one height for every face,
+ * or one per face; negative heights point into the face's back side.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT when `height_count` is neither 1
+ * nor the face count (naming both), or naming the face whose height is not
+ * finite.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `heights` holds `height_count` doubles;
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_stellate(const struct WeftMesh *mesh, const double *heights, size_t height_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
+ * the origin and facing +z, of `u_count × v_count` quads.
+ *
+ * Sizes must be positive and finite, counts at least 1. Counts whose
+ * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+ * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_plane_grid(double size_x, double size_y, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a closed, welded box centred on the origin whose sides are divided
+ * into quads: `u_count` along x, `v_count` along y, `w_count` along z.
+ *
+ * Sizes must be positive and finite, counts at least 1. Counts whose
+ * result would pass 2^31 − 1 face corners (any count near SIZE_MAX
+ * included) fail with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_box(double size_x, double size_y, double size_z, size_t u_count, size_t v_count, size_t w_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a sphere of `radius` centred on the origin with `u_count` segments
+ * around the z axis (at least 3) and `v_count` from pole to pole (at least
+ * 2); each pole is one vertex with a fan of triangles, the rest are quads.
+ * Counts whose result would pass 2^31 − 1 face corners (any count
+ * near SIZE_MAX included) fail with WEFT_STATUS_RESULT_TOO_LARGE before
+ * anything is allocated.
+ *
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_uv_sphere(double radius, size_t u_count, size_t v_count, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a platonic solid centred on the origin with its vertices on the
+ * sphere of `radius`.
+ *
+ * `kind` is one of the WEFT_PLATONIC_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `radius` must be positive and finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_platonic(uint32_t kind, double radius, struct WeftMesh **out_mesh);
+
+/**
+ * Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
+ * circumradius `radius` about the z axis, `height` tall and centred on the
+ * origin.
+ *
+ * `kind` is one of the WEFT_SIDED_* values; another value fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ * `sides` is n, at least 3; a count whose result would pass 2^31 − 1 face
+ * corners fails with WEFT_STATUS_RESULT_TOO_LARGE before anything is
+ * allocated. `radius` and `height` must be positive and finite.
+ * `out_mesh` receives the new mesh on success; it must not be NULL.
+ *
+ * # Safety
+ * `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_sided_solid(uint32_t kind, size_t sides, double radius, double height, struct WeftMesh **out_mesh);
 
 /**
  * Splits each n-gon into n quads through its edge midpoints and centroid,
@@ -2092,6 +1960,27 @@ WeftStatus weft_bevel_edges(const struct WeftMesh *mesh, double fraction, struct
 WeftStatus weft_bevel_vertices(const struct WeftMesh *mesh, double fraction, struct WeftMesh **out_mesh);
 
 /**
+ * Re-fills the chosen faces of a mesh by a pattern of triangles or quads
+ * (Weaverbird's Tile, with its numbers for both choices). Every pattern
+ * keeps each face's outline and winding and the input's vertices (their
+ * indices too), so seams stay welded and a closed mesh stays closed; the
+ * fans' centroids follow the input's vertices, one per filled face.
+ *
+ * `mesh` is the input; it must not be NULL.
+ * `fill` is one of the WEFT_TILE_FILL_* values.
+ * `faces` is one of the WEFT_TILE_FACES_* values; the other faces are kept.
+ * `out_mesh` receives the new mesh on success (free it with
+ * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown fill or faces
+ * value, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_tile(const struct WeftMesh *mesh, uint32_t fill, uint32_t faces, struct WeftMesh **out_mesh);
+
+/**
  * The dual mesh: a vertex per face, a face per interior vertex joining
  * the faces around it (Weaverbird's Dual). Vertices on naked or
  * non-manifold edges get no face.
@@ -2189,27 +2078,6 @@ WeftStatus weft_reroute_faces(const struct WeftMesh *mesh, int64_t shift, struct
  * NULL or writable.
  */
 WeftStatus weft_mesh_from_lines(const double *segments, size_t segment_count, double tolerance, uint32_t max_valence, struct WeftMesh **out_mesh);
-
-/**
- * Re-fills the chosen faces of a mesh by a pattern of triangles or quads
- * (Weaverbird's Tile, with its numbers for both choices). Every pattern
- * keeps each face's outline and winding and the input's vertices (their
- * indices too), so seams stay welded and a closed mesh stays closed; the
- * fans' centroids follow the input's vertices, one per filled face.
- *
- * `mesh` is the input; it must not be NULL.
- * `fill` is one of the WEFT_TILE_FILL_* values.
- * `faces` is one of the WEFT_TILE_FACES_* values; the other faces are kept.
- * `out_mesh` receives the new mesh on success (free it with
- * `weft_mesh_free`) and is left untouched on failure; it must not be NULL.
- *
- * Fails with WEFT_STATUS_INVALID_ARGUMENT for an unknown fill or faces
- * value, WEFT_STATUS_RESULT_TOO_LARGE past the size cap.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
- */
-WeftStatus weft_tile(const struct WeftMesh *mesh, uint32_t fill, uint32_t faces, struct WeftMesh **out_mesh);
 
 #ifdef __cplusplus
 }  // extern "C"

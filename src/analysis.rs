@@ -30,6 +30,23 @@ pub fn face_normal(mesh: &Mesh, f: usize) -> DVec3 {
     area_vector(mesh, f).normalize_or_zero()
 }
 
+/// The median length of the mesh's edges (0 for a mesh without faces): the
+/// scale a tolerance is measured against in messages.
+pub fn median_edge_length(mesh: &Mesh) -> f64 {
+    let topology = crate::topology::Topology::new(mesh);
+    let p = mesh.positions();
+    let mut lengths: Vec<f64> = topology
+        .edges()
+        .iter()
+        .map(|&[a, b]| p[a as usize].distance(p[b as usize]))
+        .collect();
+    if lengths.is_empty() {
+        return 0.0;
+    }
+    let middle = lengths.len() / 2;
+    *lengths.select_nth_unstable_by(middle, f64::total_cmp).1
+}
+
 /// Newell's sum over a polygon's edges: a vector along the polygon's normal
 /// whose length is twice its area. Taken about the first corner, which keeps
 /// polygons far from the origin exact. Zero for fewer than 3 corners.

@@ -20,6 +20,7 @@
 //!
 //! Everything outside `ffi` is safe Rust.
 #![deny(unsafe_code)]
+#![deny(unsafe_op_in_unsafe_fn)]
 
 /// cbindgen:ignore
 pub mod analysis;

@@ -301,3 +301,158 @@ fn marked_edges_stand_out_and_a_section_shows_what_is_inside() {
     let background = none.pixel(0, 0);
     assert!((0..none.height).all(|y| (0..none.width).all(|x| none.pixel(x, y) == background)));
 }
+
+/// Runs `weft` with `args` in `dir`; returns (exit code, stderr).
+fn weft_in(dir: &std::path::Path, args: &[&str]) -> (i32, String) {
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn scratch(name: &str) -> std::path::PathBuf {
+    let dir = std::env::temp_dir().join(format!("weft-real-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+fn write_obj(path: &std::path::Path, mesh: &Mesh) {
+    weft::io::write_mesh(path, mesh).unwrap();
+}
+
+#[test]
+fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
+    let dir = scratch("weld");
+    write_obj(&dir.join("sphere.obj"), &uv_sphere(0.025, 64, 32).unwrap());
+    let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "welded.obj"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("removed 0 collapsed faces"), "{err}");
+    let welded = weft::io::read_mesh(dir.join("welded.obj")).unwrap();
+    assert_eq!(welded.face_count(), 2048);
+
+    let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "coarse.obj", "--tolerance", "0.001"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("would collapse") && err.contains("of 2048 faces"), "{err}");
+    assert!(err.contains("median edge") && err.contains("tolerance 0.001"), "{err}");
+    assert!(!dir.join("coarse.obj").exists(), "a refused weld writes nothing");
+
+    let args = ["weld", "sphere.obj", "-o", "coarse.obj", "--tolerance", "0.001", "--allow-collapse"];
+    let (code, err) = weft_in(&dir, &args);
+    assert_eq!(code, 0, "{err}");
+    assert!(weft::io::read_mesh(dir.join("coarse.obj")).unwrap().face_count() < 2048);
+
+    // A negative number reaches Weft's own check, not the parser's advice.
+    let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "x.obj", "--tolerance", "-1"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("expected a distance of 0 or more"), "{err}");
+    assert!(!err.contains("-- -1"), "{err}");
+}
+
+#[test]
+fn info_counts_unused_vertices_and_cull_adjacent_drops_them() {
+    let dir = scratch("unused");
+    std::fs::write(dir.join("panels.obj"), MATERIAL_OBJ).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(&dir)
+        .args(["info", "panels.obj", "--json"])
+        .output()
+        .unwrap();
+    let json = String::from_utf8_lossy(&out.stdout);
+    assert!(json.contains("\"unused_vertices\": 2"), "{json}");
+    // Two boxes sharing a wall: culling removes the wall's two copies and
+    // the vertices only they used (none here), and the two bare vertices.
+    let boxes = weft::weld::join(&[&shapes::cube(), &{
+        let mut b = shapes::cube();
+        b.positions_mut().iter_mut().for_each(|p| p.x += 1.0);
+        b
+    }])
+    .unwrap();
+    let (welded, _) = weld(&boxes, 1e-9).unwrap();
+    let mut positions = welded.positions().to_vec();
+    positions.push(DVec3::splat(9.0));
+    let bare = Mesh::new(positions, welded.face_sizes().to_vec(), welded.face_indices().to_vec()).unwrap();
+    write_obj(&dir.join("boxes.obj"), &bare);
+    let (code, err) = weft_in(&dir, &["cull-adjacent", "boxes.obj", "hull.obj"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("removed 2 of 12 faces") && err.contains("1 vertices no face uses"), "{err}");
+    let hull = weft::io::read_mesh(dir.join("hull.obj")).unwrap();
+    assert_eq!(weft::weld::unused_vertex_count(&hull), 0);
+    assert_eq!(hull.vertex_count(), 12);
+}
+
+#[test]
+fn flip_outward_turns_welded_stl_boxes_outward() {
+    use weft::orient::signed_volume;
+    let dir = scratch("outward");
+    let stl = boxes_as_stl_triangles(6);
+    weft::io::write_mesh(dir.join("boxes.stl"), &stl).unwrap();
+    let (code, err) = weft_in(&dir, &["flip", "boxes.stl", "plain.obj", "--outward"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("add --weld"), "{err}");
+    let (code, err) = weft_in(&dir, &["flip", "boxes.stl", "out.obj", "--outward", "--weld"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("6 pieces: turned 2 closed ones outward"), "{err}");
+    let out = weft::io::read_mesh(dir.join("out.obj")).unwrap();
+    assert!((signed_volume(&out) - 6.0).abs() < 1e-6, "{}", signed_volume(&out));
+}
+
+#[test]
+fn odd_input_gets_a_clear_answer() {
+    let dir = scratch("odd");
+    std::fs::write(dir.join("points.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n").unwrap();
+    let args = ["subdivide", "points.obj", "out.obj", "--scheme", "catmull-clark", "--levels", "1", "--naked-edges", "smooth"];
+    let (code, err) = weft_in(&dir, &args);
+    assert_eq!(code, 1, "{err}");
+    assert!(err.contains("has no faces"), "{err}");
+    assert!(!dir.join("out.obj").exists());
+
+    // One face of a grid turned over: subdivision warns and names the fix.
+    let grid = shapes::quad_grid(2, 1);
+    let mut faces: Vec<Vec<u32>> = grid.faces().map(|f| f.to_vec()).collect();
+    faces[0].reverse();
+    write_obj(&dir.join("mixed.obj"), &Mesh::from_polygons(grid.positions().to_vec(), faces).unwrap());
+    let args = ["subdivide", "mixed.obj", "out.obj", "--scheme", "catmull-clark", "--levels", "1", "--naked-edges", "smooth"];
+    let (code, err) = weft_in(&dir, &args);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("disagree on their orientation") && err.contains("--unify"), "{err}");
+
+    let (code, err) = weft_in(&dir, &["render", "mixed.obj", "top.png", "--view", "top", "--up", "y"]);
+    assert_eq!(code, 0, "{err}");
+    assert!(dir.join("top.png").exists());
+}
+
+#[test]
+fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
+    let dir = scratch("crease-angle");
+    let cube = weft::triangulate::triangulate(&shapes::cube()).unwrap().mesh;
+    let mut positions = Vec::new();
+    for &v in cube.face_indices() {
+        positions.push(cube.positions()[v as usize]);
+    }
+    let split = Mesh::new(positions, cube.face_sizes().to_vec(), (0..36).collect()).unwrap();
+    weft::io::write_mesh(dir.join("cube.stl"), &split).unwrap();
+    let common = ["--scheme", "catmull-clark", "--levels", "2", "--naked-edges", "smooth", "--crease-angle", "30"];
+    let run = |out: &str, weld: bool| {
+        let mut args = vec!["subdivide", "cube.stl", out];
+        args.extend(common);
+        if weld {
+            args.push("--weld");
+        }
+        weft_in(&dir, &args)
+    };
+    let (code, err) = run("plain.obj", false);
+    assert_eq!(code, 0, "{err}");
+    assert!(err.contains("welded") && err.contains("12 edges creased"), "{err}");
+    let (code, err) = run("welded.obj", true);
+    assert_eq!(code, 0, "{err}");
+    assert_eq!(
+        std::fs::read(dir.join("plain.obj")).unwrap(),
+        std::fs::read(dir.join("welded.obj")).unwrap()
+    );
+}

@@ -18,7 +18,9 @@ use weft::ffi::mend::*;
 use weft::ffi::mesh::*;
 use weft::ffi::refiner::*;
 use weft::ffi::subdivide::*;
+use weft::ffi::extract::*;
 use weft::ffi::toolbar::*;
+use weft::ffi::transform::*;
 use weft::ffi::WeftStatus;
 
 /// Reads the fuzzer's bytes as a stream of small numbers.

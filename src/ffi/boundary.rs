@@ -1,12 +1,23 @@
 //! The rules every export follows: a status for every outcome, the last
 //! error's sentence kept per thread, no panic across the boundary, NULL
 //! checked rather than asserted, outputs written only on success.
+//!
+//! The exports stay `unsafe extern "C" fn`: each reads or writes memory the
+//! caller points to, which only the caller can vouch for, so a safe
+//! signature would let safe Rust reach undefined behaviour. Instead every
+//! unsafe operation sits in an explicit `unsafe` block whose `SAFETY:` note
+//! names the promise it relies on, and the helpers below are the only code
+//! that turns a pointer into a reference or a slice.
 
 use std::cell::RefCell;
 use std::ffi::{c_char, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-use crate::error::{Error, MeshError};
+use glam::DVec3;
+
+use crate::error::{Error, MeshError, MAX_ELEMENTS};
+use crate::ffi::mesh::WeftMesh;
+use crate::mesh::Mesh;
 
 /// The outcome of every Weft function. The values are stable: new ones are
 /// only ever added at the end.
@@ -140,9 +151,81 @@ pub(crate) fn guard(body: impl FnOnce() -> Result<(), Failure>) -> WeftStatus {
 /// # Safety
 /// `pointer` is NULL or points to a live `T` for the lifetime `'a`.
 pub(crate) unsafe fn required<'a, T>(pointer: *const T, name: &str) -> Result<&'a T, Failure> {
-    pointer
-        .as_ref()
+    // SAFETY: `pointer` is NULL (`as_ref` gives None) or points to a live `T`,
+    // as the caller promises.
+    unsafe { pointer.as_ref() }
         .ok_or_else(|| Failure::new(WeftStatus::NullPointer, format!("{name} is NULL")))
+}
+
+/// Writes `value` through an out-parameter that may be NULL (an optional
+/// output the caller did not ask for).
+///
+/// # Safety
+/// `pointer` is NULL or points to a writable `T`.
+pub(crate) unsafe fn write_optional<T>(pointer: *mut T, value: T) {
+    // SAFETY: `pointer` is NULL (`as_mut` gives None) or writable, as the
+    // caller promises.
+    if let Some(slot) = unsafe { pointer.as_mut() } {
+        *slot = value;
+    }
+}
+
+/// Runs an export that makes a mesh: checks `out_mesh` first and writes the
+/// result only on success.
+///
+/// # Safety
+/// `out_mesh` is NULL or writable.
+pub(crate) unsafe fn make_mesh(
+    out_mesh: *mut *mut WeftMesh,
+    op: impl FnOnce() -> Result<Mesh, Failure>,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_mesh, "out_mesh")?;
+        let result = op()?;
+        // SAFETY: `out` is the caller's writable `out_mesh`, checked not NULL.
+        unsafe { WeftMesh::write(out, result) };
+        Ok(())
+    })
+}
+
+/// Runs a mesh-to-mesh export: checks `out_mesh` first, borrows the input,
+/// and writes the result only on success.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+pub(crate) unsafe fn mesh_op(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    op: impl FnOnce(&Mesh) -> Result<Mesh, Failure>,
+) -> WeftStatus {
+    let borrow_and_run = || {
+        // SAFETY: `mesh` is NULL or a live handle, as the caller promises.
+        let mesh = unsafe { crate::ffi::mesh::mesh_ref(mesh, "mesh") }?;
+        op(mesh)
+    };
+    // SAFETY: `out_mesh` is NULL or writable, as the caller promises.
+    unsafe { make_mesh(out_mesh, borrow_and_run) }
+}
+
+/// As `mesh_op`, for an operation that also counts what it changed: the
+/// count goes to `out_count` unless that is NULL, on success only.
+///
+/// # Safety
+/// As `mesh_op`; `out_count` is NULL or writable.
+pub(crate) unsafe fn counted_mesh_op(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    out_count: *mut usize,
+    op: impl FnOnce(&Mesh) -> Result<(Mesh, usize), Failure>,
+) -> WeftStatus {
+    let run_and_count = |mesh: &Mesh| {
+        let (result, count) = op(mesh)?;
+        // SAFETY: `out_count` is NULL or writable, as the caller promises.
+        unsafe { write_optional(out_count, count) };
+        Ok(result)
+    };
+    // SAFETY: `mesh` and `out_mesh` are as `mesh_op` requires, as the caller promises.
+    unsafe { mesh_op(mesh, out_mesh, run_and_count) }
 }
 
 /// Checks an out-parameter before any work is done, so that a NULL output
@@ -191,7 +274,9 @@ pub(crate) unsafe fn input_slice<'a, T>(
         return Ok(&[]);
     }
     check_buffer::<T>(pointer.is_null(), len, name)?;
-    Ok(std::slice::from_raw_parts(pointer, len))
+    // SAFETY: `pointer` is not NULL, holds `len` readable elements for `'a`
+    // (the caller's promise) and `len` elements fit in `isize::MAX` bytes.
+    Ok(unsafe { std::slice::from_raw_parts(pointer, len) })
 }
 
 /// A caller output buffer of `len` elements; `(NULL, 0)` is the empty buffer.
@@ -207,7 +292,9 @@ pub(crate) unsafe fn output_slice<'a, T>(
         return Ok(&mut []);
     }
     check_buffer::<T>(pointer.is_null(), len, name)?;
-    Ok(std::slice::from_raw_parts_mut(pointer, len))
+    // SAFETY: `pointer` is not NULL, holds `len` writable elements for `'a`
+    // (the caller's promise) and `len` elements fit in `isize::MAX` bytes.
+    Ok(unsafe { std::slice::from_raw_parts_mut(pointer, len) })
 }
 
 /// Checks that a caller buffer of `len` elements has room for `needed`.
@@ -233,4 +320,57 @@ pub(crate) fn enum_arg<T>(
     convert(value).ok_or_else(|| {
         Failure::invalid_argument(format!("{name} is {value}; it must be {allowed}"))
     })
+}
+
+/// Checks a count of points against the cap and returns the number of
+/// doubles they take, before any buffer is viewed: a count past the cap
+/// never becomes a slice.
+pub(crate) fn point_count_arg(count: usize, name: &str) -> Result<usize, Failure> {
+    if count as u64 > MAX_ELEMENTS {
+        return Err(Failure::new(
+            WeftStatus::InputTooLarge,
+            format!("{name}: a count of {count} points exceeds the limit of {MAX_ELEMENTS}"),
+        ));
+    }
+    count.checked_mul(3).ok_or_else(|| {
+        Failure::new(
+            WeftStatus::InputTooLarge,
+            format!("{name}: a count of {count} points is larger than memory can hold"),
+        )
+    })
+}
+
+/// Reads `count` points of three doubles, naming the first non-finite one.
+///
+/// # Safety
+/// `points` is NULL or holds `3 * count` doubles.
+pub(crate) unsafe fn points_arg(
+    points: *const f64,
+    count: usize,
+    name: &str,
+) -> Result<Vec<DVec3>, Failure> {
+    let length = point_count_arg(count, name)?;
+    // SAFETY: `points` is NULL or holds `3 * count` doubles, as the caller promises.
+    let flat = unsafe { input_slice(points, length, name) }?;
+    let mut out = Vec::new();
+    out.try_reserve_exact(count).map_err(|_| {
+        Failure::new(
+            WeftStatus::OutOfMemory,
+            format!("could not copy the {count} points of {name}"),
+        )
+    })?;
+    for (i, c) in flat.chunks_exact(3).enumerate() {
+        let p = DVec3::new(c[0], c[1], c[2]);
+        if !p.is_finite() {
+            return Err(Failure::new(
+                WeftStatus::NonFiniteCoordinate,
+                format!(
+                    "{name}: point {i} has a non-finite coordinate ({}, {}, {})",
+                    p.x, p.y, p.z
+                ),
+            ));
+        }
+        out.push(p);
+    }
+    Ok(out)
 }

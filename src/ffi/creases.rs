@@ -5,16 +5,13 @@
 use glam::DVec3;
 
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, input_slice, out_param, output_slice, required, Failure,
-    WeftStatus,
+    check_room, enum_arg, guard, input_slice, make_mesh, out_param, output_slice, required,
+    Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::ffi::refiner::WeftRefiner;
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
 use crate::mesh::Mesh;
-use crate::subdivide::{
-    self, Creasing, FaceVaryingLinear, Refiner, Scheme, Subdivider, SubdivisionOptions,
-};
+use crate::subdivide::{self, Creasing, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions};
 
 /// Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).
 pub const WEFT_CREASING_UNIFORM: u32 = 0;
@@ -63,81 +60,110 @@ pub struct WeftSubdivisionOptions {
 }
 
 /// Reads the options: enumerations checked, arrays copied.
-unsafe fn options_arg(
+///
+/// # Safety
+/// `options` is NULL or points to a readable `WeftSubdivisionOptions`
+/// whose arrays hold the counts it states.
+pub(crate) unsafe fn options_arg(
     options: *const WeftSubdivisionOptions,
 ) -> Result<(Scheme, SubdivisionOptions), Failure> {
-    let options = required(options, "options")?;
-    let scheme = scheme_arg(options.scheme)?;
-    let naked_edges = naked_edges_arg(options.naked_edges)?;
-    let creasing = enum_arg(
-        options.creasing,
-        "creasing",
-        Creasing::from_u32,
-        "WEFT_CREASING_UNIFORM (0) or WEFT_CREASING_CHAIKIN (1)",
-    )?;
-    let pair_count = options.crease_count.checked_mul(2).ok_or_else(|| {
-        Failure::new(
-            WeftStatus::InputTooLarge,
-            format!("crease_count {} is too large", options.crease_count),
-        )
-    })?;
-    let pairs = input_slice(
-        options.crease_vertex_pairs,
-        pair_count,
-        "crease_vertex_pairs",
-    )?;
-    let crease_sharpness = input_slice(
-        options.crease_sharpness,
-        options.crease_count,
-        "crease_sharpness",
-    )?;
-    let corners = input_slice(
-        options.corner_vertices,
-        options.corner_count,
-        "corner_vertices",
-    )?;
-    let corner_sharpness = input_slice(
-        options.corner_sharpness,
-        options.corner_count,
-        "corner_sharpness",
-    )?;
-    Ok((
-        scheme,
-        SubdivisionOptions {
-            naked_edges,
-            creasing,
-            creases: pairs
-                .chunks_exact(2)
-                .zip(crease_sharpness)
-                .map(|(pair, &s)| ([pair[0], pair[1]], s))
-                .collect(),
-            corners: corners
-                .iter()
-                .copied()
-                .zip(corner_sharpness.iter().copied())
-                .collect(),
-        },
-    ))
+    // SAFETY: `options` is as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        let options = required(options, "options")?;
+        let scheme = scheme_arg(options.scheme)?;
+        let naked_edges = naked_edges_arg(options.naked_edges)?;
+        let creasing = enum_arg(
+            options.creasing,
+            "creasing",
+            |v| match v {
+                WEFT_CREASING_UNIFORM => Some(Creasing::Uniform),
+                WEFT_CREASING_CHAIKIN => Some(Creasing::Chaikin),
+                _ => None,
+            },
+            "WEFT_CREASING_UNIFORM (0) or WEFT_CREASING_CHAIKIN (1)",
+        )?;
+        let pair_count = options.crease_count.checked_mul(2).ok_or_else(|| {
+            Failure::new(
+                WeftStatus::InputTooLarge,
+                format!("crease_count {} is too large", options.crease_count),
+            )
+        })?;
+        let pairs = input_slice(
+            options.crease_vertex_pairs,
+            pair_count,
+            "crease_vertex_pairs",
+        )?;
+        let crease_sharpness = input_slice(
+            options.crease_sharpness,
+            options.crease_count,
+            "crease_sharpness",
+        )?;
+        let corners = input_slice(
+            options.corner_vertices,
+            options.corner_count,
+            "corner_vertices",
+        )?;
+        let corner_sharpness = input_slice(
+            options.corner_sharpness,
+            options.corner_count,
+            "corner_sharpness",
+        )?;
+        Ok((
+            scheme,
+            SubdivisionOptions {
+                naked_edges,
+                creasing,
+                creases: pairs
+                    .chunks_exact(2)
+                    .zip(crease_sharpness)
+                    .map(|(pair, &s)| ([pair[0], pair[1]], s))
+                    .collect(),
+                corners: corners
+                    .iter()
+                    .copied()
+                    .zip(corner_sharpness.iter().copied())
+                    .collect(),
+            },
+        ))
+    }
 }
 
 fn face_varying_arg(value: u32) -> Result<FaceVaryingLinear, Failure> {
     enum_arg(
         value,
         "face_varying_linear",
-        FaceVaryingLinear::from_u32,
+        |v| match v {
+            WEFT_FACE_VARYING_SMOOTH => Some(FaceVaryingLinear::Smooth),
+            WEFT_FACE_VARYING_CORNERS_ONLY => Some(FaceVaryingLinear::CornersOnly),
+            WEFT_FACE_VARYING_CORNERS_PLUS1 => Some(FaceVaryingLinear::CornersPlus1),
+            WEFT_FACE_VARYING_CORNERS_PLUS2 => Some(FaceVaryingLinear::CornersPlus2),
+            WEFT_FACE_VARYING_BOUNDARIES => Some(FaceVaryingLinear::Boundaries),
+            WEFT_FACE_VARYING_ALL => Some(FaceVaryingLinear::All),
+            _ => None,
+        },
         "one of the WEFT_FACE_VARYING_* values (0 to 5)",
     )
 }
 
+/// The mesh behind `mesh` and a subdivider of it with `options`.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle that outlives every use of the returned
+/// reference (the export's call); `options` as for `options_arg`.
 unsafe fn subdivider_arg(
     mesh: *const WeftMesh,
     options: *const WeftSubdivisionOptions,
     levels: u32,
 ) -> Result<(&'static Mesh, Subdivider), Failure> {
-    let mesh = mesh_ref(mesh, "mesh")?;
-    let (scheme, options) = options_arg(options)?;
-    let subdivider = Subdivider::new(mesh, scheme, levels, &options)?;
-    Ok((mesh, subdivider))
+    // SAFETY: `mesh` and `options` are as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        let mesh = mesh_ref(mesh, "mesh")?;
+        let (scheme, options) = options_arg(options)?;
+        let subdivider = Subdivider::new(mesh, scheme, levels, &options)?;
+        Ok((mesh, subdivider))
+    }
 }
 
 /// Subdivides a mesh `levels` times with the scheme, naked-edge mode,
@@ -170,12 +196,14 @@ pub unsafe extern "C" fn weft_subdivide_ex(
     levels: u32,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
-        WeftMesh::write(out, subdivider.mesh()?);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `options` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+            Ok(subdivider.mesh()?)
+        })
+    }
 }
 
 /// Gives the vertex, face and face-index counts of the mesh `levels` steps
@@ -200,18 +228,22 @@ pub unsafe extern "C" fn weft_subdivision_counts(
     out_face_count: *mut usize,
     out_index_count: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let vertices = out_param(out_vertex_count, "out_vertex_count")?;
-        let faces = out_param(out_face_count, "out_face_count")?;
-        let indices = out_param(out_index_count, "out_index_count")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let scheme = scheme_arg(scheme)?;
-        let counts = subdivide::refined_counts(mesh, scheme, levels)?;
-        *vertices = counts.vertex_count;
-        *faces = counts.face_count;
-        *indices = counts.index_count;
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_vertex_count`, `out_face_count` and `out_index_count` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let vertices = out_param(out_vertex_count, "out_vertex_count")?;
+            let faces = out_param(out_face_count, "out_face_count")?;
+            let indices = out_param(out_index_count, "out_index_count")?;
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let scheme = scheme_arg(scheme)?;
+            let counts = subdivide::refined_counts(mesh, scheme, levels)?;
+            *vertices = counts.vertex_count;
+            *faces = counts.face_count;
+            *indices = counts.index_count;
+            Ok(())
+        })
+    }
 }
 
 /// Carries per-vertex data of any width (colours, weights) through the
@@ -244,31 +276,35 @@ pub unsafe extern "C" fn weft_subdivide_vertex_data(
     out_data: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        // The lengths are checked against the mesh before either buffer is viewed.
-        let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
-        if width == 0 {
-            return Err(Failure::invalid_argument(
-                "width is 0; it must be at least 1",
-            ));
-        }
-        if Some(data_len) != mesh.vertex_count().checked_mul(width) {
-            return Err(Failure::new(
-                WeftStatus::CountMismatch,
-                format!(
-                    "data holds {data_len} doubles but {} vertices of width {width} need {}",
-                    mesh.vertex_count(),
-                    mesh.vertex_count().saturating_mul(width)
-                ),
-            ));
-        }
-        let needed = subdivider.vertex_count().saturating_mul(width);
-        check_room("out_data", capacity, needed)?;
-        let data = input_slice(data, data_len, "data")?;
-        let out = output_slice(out_data, capacity, "out_data")?;
-        subdivider.vertex_data_into(data, width, &mut out[..needed])?;
-        Ok(())
-    })
+    // SAFETY: `mesh`, `options`, `data` and `out_data` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            // The lengths are checked against the mesh before either buffer is viewed.
+            let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
+            if width == 0 {
+                return Err(Failure::invalid_argument(
+                    "width is 0; it must be at least 1",
+                ));
+            }
+            if Some(data_len) != mesh.vertex_count().checked_mul(width) {
+                return Err(Failure::new(
+                    WeftStatus::CountMismatch,
+                    format!(
+                        "data holds {data_len} doubles but {} vertices of width {width} need {}",
+                        mesh.vertex_count(),
+                        mesh.vertex_count().saturating_mul(width)
+                    ),
+                ));
+            }
+            let needed = subdivider.vertex_count().saturating_mul(width);
+            check_room("out_data", capacity, needed)?;
+            let data = input_slice(data, data_len, "data")?;
+            let out = output_slice(out_data, capacity, "out_data")?;
+            subdivider.vertex_data_into(data, width, &mut out[..needed])?;
+            Ok(())
+        })
+    }
 }
 
 /// Carries per-face-corner values (UVs) through the subdivision of
@@ -307,48 +343,52 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
     out_values: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let linear = face_varying_arg(face_varying_linear)?;
-        if width == 0 {
-            return Err(Failure::invalid_argument(
-                "width is 0; it must be at least 1",
-            ));
-        }
-        let value_len = value_count.checked_mul(width).ok_or_else(|| {
-            Failure::new(
-                WeftStatus::InputTooLarge,
-                "value_count * width is too large",
-            )
-        })?;
-        let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
-        if index_count != mesh.index_count() {
-            return Err(Failure::new(
-                WeftStatus::CountMismatch,
-                format!(
-                    "value_indices holds {index_count} indices but the mesh has {} face corners",
-                    mesh.index_count()
-                ),
-            ));
-        }
-        let needed = subdivider.face_indices().len().saturating_mul(width);
-        check_room("out_values", capacity, needed)?;
-        // Only now, with every length checked, are the buffers viewed.
-        let values = input_slice(values, value_len, "values")?;
-        let indices = input_slice(value_indices, index_count, "value_indices")?;
-        let out = output_slice(out_values, capacity, "out_values")?;
-        if let Some(c) = indices.iter().position(|&i| i as usize >= value_count) {
-            return Err(Failure::new(
-                WeftStatus::IndexOutOfRange,
-                format!(
-                    "face corner {c} uses value {}, but there are {value_count} values",
-                    indices[c]
-                ),
-            ));
-        }
-        let refined = subdivider.face_varying(values, width, indices, linear)?;
-        out[..needed].copy_from_slice(&refined);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `options`, `values`, `value_indices` and `out_values` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let linear = face_varying_arg(face_varying_linear)?;
+            if width == 0 {
+                return Err(Failure::invalid_argument(
+                    "width is 0; it must be at least 1",
+                ));
+            }
+            let value_len = value_count.checked_mul(width).ok_or_else(|| {
+                Failure::new(
+                    WeftStatus::InputTooLarge,
+                    "value_count * width is too large",
+                )
+            })?;
+            let (mesh, subdivider) = subdivider_arg(mesh, options, levels)?;
+            if index_count != mesh.index_count() {
+                return Err(Failure::new(
+                    WeftStatus::CountMismatch,
+                    format!(
+                        "value_indices holds {index_count} indices but the mesh has {} face corners",
+                        mesh.index_count()
+                    ),
+                ));
+            }
+            let needed = subdivider.face_indices().len().saturating_mul(width);
+            check_room("out_values", capacity, needed)?;
+            // Only now, with every length checked, are the buffers viewed.
+            let values = input_slice(values, value_len, "values")?;
+            let indices = input_slice(value_indices, index_count, "value_indices")?;
+            let out = output_slice(out_values, capacity, "out_values")?;
+            if let Some(c) = indices.iter().position(|&i| i as usize >= value_count) {
+                return Err(Failure::new(
+                    WeftStatus::IndexOutOfRange,
+                    format!(
+                        "face corner {c} uses value {}, but there are {value_count} values",
+                        indices[c]
+                    ),
+                ));
+            }
+            let refined = subdivider.face_varying(values, width, indices, linear)?;
+            out[..needed].copy_from_slice(&refined);
+            Ok(())
+        })
+    }
 }
 
 /// Projects the vertices of the subdivision of `weft_subdivide_ex` onto the
@@ -380,62 +420,34 @@ pub unsafe extern "C" fn weft_subdivide_limit(
     out_normals: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let positions = out_param(out_positions, "out_positions")?;
-        let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
-        let needed = subdivider.vertex_count().saturating_mul(3);
-        check_room("out_positions", capacity, needed)?;
-        let positions = output_slice(positions, capacity, "out_positions")?;
-        let normals = if out_normals.is_null() {
-            None
-        } else {
-            Some(output_slice(out_normals, capacity, "out_normals")?)
-        };
-        let (limit_positions, limit_normals) = subdivider.limit_positions_and_normals()?;
-        write_points(&limit_positions, positions);
-        if let Some(normals) = normals {
-            write_points(&limit_normals, normals);
-        }
-        Ok(())
-    })
+    // SAFETY: `mesh`, `options`, `out_positions` and `out_normals` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let positions = out_param(out_positions, "out_positions")?;
+            let (_, subdivider) = subdivider_arg(mesh, options, levels)?;
+            let needed = subdivider.vertex_count().saturating_mul(3);
+            check_room("out_positions", capacity, needed)?;
+            let positions = output_slice(positions, capacity, "out_positions")?;
+            let normals = if out_normals.is_null() {
+                None
+            } else {
+                Some(output_slice(out_normals, capacity, "out_normals")?)
+            };
+            let (limit_positions, limit_normals) = subdivider.limit_positions_and_normals()?;
+            write_points(&limit_positions, positions);
+            if let Some(normals) = normals {
+                write_points(&limit_normals, normals);
+            }
+            Ok(())
+        })
+    }
 }
 
 fn write_points(points: &[DVec3], out: &mut [f64]) {
     for (p, xyz) in points.iter().zip(out.chunks_exact_mut(3)) {
         xyz.copy_from_slice(&p.to_array());
     }
-}
-
-/// Plans a subdivision with the scheme, naked-edge mode, creases and corners
-/// of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
-/// other `weft_refiner_*` functions work on it as on one from
-/// `weft_refiner_new`).
-///
-/// `cage` and `options` must not be NULL; the cage's positions are kept for
-/// `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
-/// it with `weft_refiner_free`) and is left untouched on failure; it must
-/// not be NULL.
-///
-/// Fails as `weft_subdivide_ex`.
-///
-/// # Safety
-/// `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
-/// `out_refiner` is NULL or writable.
-#[no_mangle]
-pub unsafe extern "C" fn weft_refiner_new_ex(
-    cage: *const WeftMesh,
-    options: *const WeftSubdivisionOptions,
-    levels: u32,
-    out_refiner: *mut *mut WeftRefiner,
-) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_refiner, "out_refiner")?;
-        let cage = mesh_ref(cage, "cage")?;
-        let (scheme, options) = options_arg(options)?;
-        let refiner = Refiner::with_options(cage, scheme, levels, &options)?;
-        *out = WeftRefiner::boxed(refiner);
-        Ok(())
-    })
 }
 
 /// Prepares a mesh whose creases are unwelded seams or sharp folds for
@@ -470,16 +482,20 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh(
     capacity: usize,
     out_crease_count: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        crease_edges(
-            mesh,
-            angle_degrees,
-            out_welded,
-            (out_pairs, capacity),
-            out_crease_count,
-            None,
-        )
-    })
+    // SAFETY: `mesh`, `out_welded`, `out_pairs` and `out_crease_count` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            crease_edges(
+                mesh,
+                angle_degrees,
+                out_welded,
+                (out_pairs, capacity),
+                out_crease_count,
+                None,
+            )
+        })
+    }
 }
 
 /// As `weft_crease_edges_from_mesh`, and gives the vertex map of the weld:
@@ -513,16 +529,20 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh_ex(
     out_vertex_map: *mut u32,
     vertex_map_capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        crease_edges(
-            mesh,
-            angle_degrees,
-            out_welded,
-            (out_pairs, capacity),
-            out_crease_count,
-            Some((out_vertex_map, vertex_map_capacity)),
-        )
-    })
+    // SAFETY: `mesh`, `out_welded`, `out_pairs`, `out_crease_count` and `out_vertex_map` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            crease_edges(
+                mesh,
+                angle_degrees,
+                out_welded,
+                (out_pairs, capacity),
+                out_crease_count,
+                Some((out_vertex_map, vertex_map_capacity)),
+            )
+        })
+    }
 }
 
 /// The body of both crease exports; `vertex_map` is the optional map buffer
@@ -538,33 +558,37 @@ unsafe fn crease_edges(
     out_crease_count: *mut usize,
     vertex_map: Option<(*mut u32, usize)>,
 ) -> Result<(), Failure> {
-    let welded_out = out_param(out_welded, "out_welded")?;
-    let count_out = out_param(out_crease_count, "out_crease_count")?;
-    let mesh = mesh_ref(mesh, "mesh")?;
-    if let Some((_, map_capacity)) = vertex_map {
-        check_room("out_vertex_map", map_capacity, mesh.vertex_count())?;
-    }
-    let subdivide::CreasedMesh {
-        mesh: welded,
-        creases,
-        vertex_map: map,
-    } = subdivide::creases_from_mesh(mesh, angle_degrees)?;
-    check_room("out_pairs", capacity, 2 * creases.len())?;
-    // Every length is checked: the buffers are viewed only now.
-    let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
-    let map_out = match vertex_map {
-        Some((pointer, map_capacity)) => {
-            Some(output_slice(pointer, map_capacity, "out_vertex_map")?)
+    // SAFETY: `mesh`, `out_welded` and `out_crease_count` are as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        let welded_out = out_param(out_welded, "out_welded")?;
+        let count_out = out_param(out_crease_count, "out_crease_count")?;
+        let mesh = mesh_ref(mesh, "mesh")?;
+        if let Some((_, map_capacity)) = vertex_map {
+            check_room("out_vertex_map", map_capacity, mesh.vertex_count())?;
         }
-        None => None,
-    };
-    for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
-        slot.copy_from_slice(pair);
+        let subdivide::CreasedMesh {
+            mesh: welded,
+            creases,
+            vertex_map: map,
+        } = subdivide::creases_from_mesh(mesh, angle_degrees)?;
+        check_room("out_pairs", capacity, 2 * creases.len())?;
+        // Every length is checked: the buffers are viewed only now.
+        let pairs = output_slice(out_pairs, capacity, "out_pairs")?;
+        let map_out = match vertex_map {
+            Some((pointer, map_capacity)) => {
+                Some(output_slice(pointer, map_capacity, "out_vertex_map")?)
+            }
+            None => None,
+        };
+        for (slot, (pair, _)) in pairs.chunks_exact_mut(2).zip(&creases) {
+            slot.copy_from_slice(pair);
+        }
+        if let Some(out) = map_out {
+            out[..map.len()].copy_from_slice(&map);
+        }
+        *count_out = creases.len();
+        WeftMesh::write(welded_out, welded);
+        Ok(())
     }
-    if let Some(out) = map_out {
-        out[..map.len()].copy_from_slice(&map);
-    }
-    *count_out = creases.len();
-    WeftMesh::write(welded_out, welded);
-    Ok(())
 }

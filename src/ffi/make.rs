@@ -9,12 +9,11 @@
 use glam::DVec3;
 
 use crate::delaunay::delaunay;
-use crate::error::MAX_ELEMENTS;
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, input_slice, out_param, output_slice, required, Failure,
-    WeftStatus,
+    check_room, enum_arg, guard, input_slice, make_mesh, mesh_op, out_param, output_slice,
+    point_count_arg, points_arg, required, Failure, WeftStatus,
 };
-use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::ffi::mesh::WeftMesh;
 use crate::grid::{check_grid_counts, mesh_from_grid};
 use crate::plane::Plane;
 use crate::primitives::{box_grid, plane_grid, platonic, sided, uv_sphere, Platonic, Sided};
@@ -66,70 +65,22 @@ pub struct WeftCells {
     cells: Vec<Vec<DVec3>>,
 }
 
-/// Checks a count of points against the cap and returns the number of
-/// doubles they take, before any buffer is viewed: a count past the cap
-/// never becomes a slice.
-fn point_count_arg(count: usize, name: &str) -> Result<usize, Failure> {
-    if count as u64 > MAX_ELEMENTS {
-        return Err(Failure::new(
-            WeftStatus::InputTooLarge,
-            format!("{name}: a count of {count} points exceeds the limit of {MAX_ELEMENTS}"),
-        ));
-    }
-    count.checked_mul(3).ok_or_else(|| {
-        Failure::new(
-            WeftStatus::InputTooLarge,
-            format!("{name}: a count of {count} points is larger than memory can hold"),
-        )
-    })
-}
-
-/// Reads `count` points of three doubles, naming the first non-finite one.
-///
-/// # Safety
-/// `points` is NULL or holds `3 * count` doubles.
-pub(crate) unsafe fn points_arg(
-    points: *const f64,
-    count: usize,
-    name: &str,
-) -> Result<Vec<DVec3>, Failure> {
-    let length = point_count_arg(count, name)?;
-    let flat = input_slice(points, length, name)?;
-    let mut out = Vec::new();
-    out.try_reserve_exact(count).map_err(|_| {
-        Failure::new(
-            WeftStatus::OutOfMemory,
-            format!("could not copy the {count} points of {name}"),
-        )
-    })?;
-    for (i, c) in flat.chunks_exact(3).enumerate() {
-        let p = DVec3::new(c[0], c[1], c[2]);
-        if !p.is_finite() {
-            return Err(Failure::new(
-                WeftStatus::NonFiniteCoordinate,
-                format!(
-                    "{name}: point {i} has a non-finite coordinate ({}, {}, {})",
-                    p.x, p.y, p.z
-                ),
-            ));
-        }
-        out.push(p);
-    }
-    Ok(out)
-}
-
 /// The plane behind a pointer; NULL is the world XY plane.
 ///
 /// # Safety
 /// `plane` is NULL or points to a readable `WeftPlane`.
 unsafe fn plane_arg(plane: *const WeftPlane) -> Result<Plane, Failure> {
-    match plane.as_ref() {
-        None => Ok(Plane::xy()),
-        Some(p) => Ok(Plane::new(
-            DVec3::from_array(p.origin),
-            DVec3::from_array(p.x_axis),
-            DVec3::from_array(p.y_axis),
-        )?),
+    // SAFETY: `plane` is as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        match plane.as_ref() {
+            None => Ok(Plane::xy()),
+            Some(p) => Ok(Plane::new(
+                DVec3::from_array(p.origin),
+                DVec3::from_array(p.x_axis),
+                DVec3::from_array(p.y_axis),
+            )?),
+        }
     }
 }
 
@@ -167,17 +118,19 @@ pub unsafe extern "C" fn weft_delaunay(
     out_mesh: *mut *mut WeftMesh,
     out_merged: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let points = points_arg(points, point_count, "points")?;
-        let plane = plane_arg(plane)?;
-        let (mesh, report) = delaunay(&points, &plane)?;
-        if let Some(merged) = out_merged.as_mut() {
-            *merged = report.merged_duplicates;
-        }
-        WeftMesh::write(out, mesh);
-        Ok(())
-    })
+    // SAFETY: `points`, `plane`, `out_mesh` and `out_merged` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let points = points_arg(points, point_count, "points")?;
+            let plane = plane_arg(plane)?;
+            let (mesh, report) = delaunay(&points, &plane)?;
+            if let Some(merged) = out_merged.as_mut() {
+                *merged = report.merged_duplicates;
+            }
+            Ok(mesh)
+        })
+    }
 }
 
 /// Computes the Voronoi cell of each point on a plane, clipped to a boundary
@@ -211,7 +164,7 @@ pub unsafe extern "C" fn weft_delaunay(
 ///
 /// # Safety
 /// Each non-NULL buffer holds the doubles stated; `plane` is NULL or
-/// readable; `out_cells` is writable.
+/// readable; `out_cells` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_voronoi(
     points: *const f64,
@@ -222,23 +175,27 @@ pub unsafe extern "C" fn weft_voronoi(
     radius: f64,
     out_cells: *mut *mut WeftCells,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_cells, "out_cells")?;
-        let points = points_arg(points, point_count, "points")?;
-        let boundary = points_arg(boundary, boundary_count, "boundary")?;
-        let plane = plane_arg(plane)?;
-        let radius = if radius == 0.0 { None } else { Some(radius) };
-        let boundary = (!boundary.is_empty()).then_some(&boundary[..]);
-        let cells = voronoi(&points, &plane, boundary, radius)?;
-        let sizes = cells.iter().map(|c| c.len() as u32).collect();
-        let corners = cells.iter().flatten().copied().collect();
-        *out = Box::into_raw(Box::new(WeftCells {
-            sizes,
-            corners,
-            cells,
-        }));
-        Ok(())
-    })
+    // SAFETY: `points`, `plane`, `boundary` and `out_cells` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let out = out_param(out_cells, "out_cells")?;
+            let points = points_arg(points, point_count, "points")?;
+            let boundary = points_arg(boundary, boundary_count, "boundary")?;
+            let plane = plane_arg(plane)?;
+            let radius = if radius == 0.0 { None } else { Some(radius) };
+            let boundary = (!boundary.is_empty()).then_some(&boundary[..]);
+            let cells = voronoi(&points, &plane, boundary, radius)?;
+            let sizes = cells.iter().map(|c| c.len() as u32).collect();
+            let corners = cells.iter().flatten().copied().collect();
+            *out = Box::into_raw(Box::new(WeftCells {
+                sizes,
+                corners,
+                cells,
+            }));
+            Ok(())
+        })
+    }
 }
 
 /// Returns the number of cells (the number of input points), or 0 when
@@ -248,7 +205,9 @@ pub unsafe extern "C" fn weft_voronoi(
 /// `cells` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_count(cells: *const WeftCells) -> usize {
-    cells.as_ref().map_or(0, |c| c.sizes.len())
+    // SAFETY: `cells` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { cells.as_ref().map_or(0, |c| c.sizes.len()) }
 }
 
 /// Returns the number of corners of all cells together, or 0 when `cells`
@@ -258,7 +217,9 @@ pub unsafe extern "C" fn weft_cells_count(cells: *const WeftCells) -> usize {
 /// `cells` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_corner_count(cells: *const WeftCells) -> usize {
-    cells.as_ref().map_or(0, |c| c.corners.len())
+    // SAFETY: `cells` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { cells.as_ref().map_or(0, |c| c.corners.len()) }
 }
 
 /// Returns the number of corners of each cell (`weft_cells_count` values,
@@ -270,9 +231,13 @@ pub unsafe extern "C" fn weft_cells_corner_count(cells: *const WeftCells) -> usi
 /// `cells` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_sizes(cells: *const WeftCells) -> *const u32 {
-    match cells.as_ref() {
-        Some(c) if !c.sizes.is_empty() => c.sizes.as_ptr(),
-        _ => std::ptr::null(),
+    // SAFETY: `cells` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        match cells.as_ref() {
+            Some(c) if !c.sizes.is_empty() => c.sizes.as_ptr(),
+            _ => std::ptr::null(),
+        }
     }
 }
 
@@ -286,9 +251,13 @@ pub unsafe extern "C" fn weft_cells_sizes(cells: *const WeftCells) -> *const u32
 /// `cells` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_corners(cells: *const WeftCells) -> *const f64 {
-    match cells.as_ref() {
-        Some(c) if !c.corners.is_empty() => c.corners.as_ptr().cast(),
-        _ => std::ptr::null(),
+    // SAFETY: `cells` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        match cells.as_ref() {
+            Some(c) if !c.corners.is_empty() => c.corners.as_ptr().cast(),
+            _ => std::ptr::null(),
+        }
     }
 }
 
@@ -312,18 +281,22 @@ pub unsafe extern "C" fn weft_cells_copy(
     out_corners: *mut f64,
     corners_capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let cells = required(cells, "cells")?;
-        check_room("out_sizes", sizes_capacity, cells.sizes.len())?;
-        check_room("out_corners", corners_capacity, cells.corners.len() * 3)?;
-        let sizes = output_slice(out_sizes, sizes_capacity, "out_sizes")?;
-        let corners = output_slice(out_corners, corners_capacity, "out_corners")?;
-        sizes[..cells.sizes.len()].copy_from_slice(&cells.sizes);
-        for (chunk, p) in corners.chunks_exact_mut(3).zip(&cells.corners) {
-            chunk.copy_from_slice(&p.to_array());
-        }
-        Ok(())
-    })
+    // SAFETY: `cells`, `out_sizes` and `out_corners` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let cells = required(cells, "cells")?;
+            check_room("out_sizes", sizes_capacity, cells.sizes.len())?;
+            check_room("out_corners", corners_capacity, cells.corners.len() * 3)?;
+            let sizes = output_slice(out_sizes, sizes_capacity, "out_sizes")?;
+            let corners = output_slice(out_corners, corners_capacity, "out_corners")?;
+            sizes[..cells.sizes.len()].copy_from_slice(&cells.sizes);
+            for (chunk, p) in corners.chunks_exact_mut(3).zip(&cells.corners) {
+                chunk.copy_from_slice(&p.to_array());
+            }
+            Ok(())
+        })
+    }
 }
 
 /// Makes a mesh with one n-gon face per non-empty cell, in cell order; the
@@ -333,18 +306,20 @@ pub unsafe extern "C" fn weft_cells_copy(
 /// success only (free it with `weft_mesh_free`).
 ///
 /// # Safety
-/// `cells` is a live handle; `out_mesh` is writable.
+/// `cells` is NULL or a live handle; `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_to_mesh(
     cells: *const WeftCells,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let cells = required(cells, "cells")?;
-        WeftMesh::write(out, cells_to_mesh(&cells.cells)?);
-        Ok(())
-    })
+    // SAFETY: `cells` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let cells = required(cells, "cells")?;
+            Ok(cells_to_mesh(&cells.cells)?)
+        })
+    }
 }
 
 /// Frees cells made by `weft_voronoi`. NULL is ignored.
@@ -354,8 +329,12 @@ pub unsafe extern "C" fn weft_cells_to_mesh(
 /// call it and every pointer obtained from it are invalid.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cells_free(cells: *mut WeftCells) {
-    if !cells.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(cells)));
+    // SAFETY: `cells` is NULL or a handle from this library not yet
+    // freed, as the `# Safety` section above requires.
+    unsafe {
+        if !cells.is_null() {
+            let _ = std::panic::catch_unwind(|| drop(Box::from_raw(cells)));
+        }
     }
 }
 
@@ -380,7 +359,7 @@ pub unsafe extern "C" fn weft_cells_free(cells: *mut WeftCells) {
 /// points fail with WEFT_STATUS_INPUT_TOO_LARGE.
 ///
 /// # Safety
-/// `points` holds the doubles stated; `out_mesh` is writable.
+/// `points` holds the doubles stated; `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_from_grid(
     points: *const f64,
@@ -392,16 +371,18 @@ pub unsafe extern "C" fn weft_mesh_from_grid(
     triangulate: bool,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        // The counts are checked, against the cap and each other, before the buffer is viewed.
-        point_count_arg(point_count, "points")?;
-        check_grid_counts(point_count, u_count, v_count, closed_u, closed_v)?;
-        let points = points_arg(points, point_count, "points")?;
-        let mesh = mesh_from_grid(&points, u_count, v_count, closed_u, closed_v, triangulate)?;
-        WeftMesh::write(out, mesh);
-        Ok(())
-    })
+    // SAFETY: `points` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            // The counts are checked, against the cap and each other, before the buffer is viewed.
+            point_count_arg(point_count, "points")?;
+            check_grid_counts(point_count, u_count, v_count, closed_u, closed_v)?;
+            let points = points_arg(points, point_count, "points")?;
+            let mesh = mesh_from_grid(&points, u_count, v_count, closed_u, closed_v, triangulate)?;
+            Ok(mesh)
+        })
+    }
 }
 
 /// Raises a pyramid on every face: a new vertex at the face's centroid moved
@@ -420,8 +401,8 @@ pub unsafe extern "C" fn weft_mesh_from_grid(
 /// finite.
 ///
 /// # Safety
-/// `mesh` is a live handle; `heights` holds `height_count` doubles;
-/// `out_mesh` is writable.
+/// `mesh` is NULL or a live handle; `heights` holds `height_count` doubles;
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_stellate(
     mesh: *const WeftMesh,
@@ -429,21 +410,22 @@ pub unsafe extern "C" fn weft_stellate(
     height_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        // The count is checked before the buffer is viewed.
-        if height_count != 1 {
-            check_height_count(height_count, mesh.face_count())?;
-        }
-        let heights = input_slice(heights, height_count, "heights")?;
-        let heights = match heights {
-            [one] => Heights::One(*one),
-            many => Heights::PerFace(many),
-        };
-        WeftMesh::write(out, stellate(mesh, heights)?);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `heights` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            // The count is checked before the buffer is viewed.
+            if height_count != 1 {
+                check_height_count(height_count, mesh.face_count())?;
+            }
+            let heights = input_slice(heights, height_count, "heights")?;
+            let heights = match heights {
+                [one] => Heights::One(*one),
+                many => Heights::PerFace(many),
+            };
+            Ok(stellate(mesh, heights)?)
+        })
+    }
 }
 
 /// Makes a flat rectangle of `size_x × size_y` on the XY plane, centred on
@@ -456,7 +438,7 @@ pub unsafe extern "C" fn weft_stellate(
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
-/// `out_mesh` is writable.
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_plane_grid(
     size_x: f64,
@@ -465,11 +447,13 @@ pub unsafe extern "C" fn weft_plane_grid(
     v_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        WeftMesh::write(out, plane_grid(size_x, size_y, u_count, v_count)?);
-        Ok(())
-    })
+    // SAFETY: `out_mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            Ok(plane_grid(size_x, size_y, u_count, v_count)?)
+        })
+    }
 }
 
 /// Makes a closed, welded box centred on the origin whose sides are divided
@@ -482,7 +466,7 @@ pub unsafe extern "C" fn weft_plane_grid(
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
-/// `out_mesh` is writable.
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_box(
     size_x: f64,
@@ -493,12 +477,14 @@ pub unsafe extern "C" fn weft_box(
     w_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let size = DVec3::new(size_x, size_y, size_z);
-        WeftMesh::write(out, box_grid(size, u_count, v_count, w_count)?);
-        Ok(())
-    })
+    // SAFETY: `out_mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let size = DVec3::new(size_x, size_y, size_z);
+            Ok(box_grid(size, u_count, v_count, w_count)?)
+        })
+    }
 }
 
 /// Makes a sphere of `radius` centred on the origin with `u_count` segments
@@ -511,7 +497,7 @@ pub unsafe extern "C" fn weft_box(
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
-/// `out_mesh` is writable.
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_uv_sphere(
     radius: f64,
@@ -519,11 +505,9 @@ pub unsafe extern "C" fn weft_uv_sphere(
     v_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        WeftMesh::write(out, uv_sphere(radius, u_count, v_count)?);
-        Ok(())
-    })
+    // SAFETY: `out_mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { make_mesh(out_mesh, || Ok(uv_sphere(radius, u_count, v_count)?)) }
 }
 
 /// Makes a platonic solid centred on the origin with its vertices on the
@@ -535,31 +519,33 @@ pub unsafe extern "C" fn weft_uv_sphere(
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
-/// `out_mesh` is writable.
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_platonic(
     kind: u32,
     radius: f64,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let kind = enum_arg(
-            kind,
-            "kind",
-            |k| match k {
-                WEFT_PLATONIC_TETRAHEDRON => Some(Platonic::Tetrahedron),
-                WEFT_PLATONIC_HEXAHEDRON => Some(Platonic::Hexahedron),
-                WEFT_PLATONIC_OCTAHEDRON => Some(Platonic::Octahedron),
-                WEFT_PLATONIC_DODECAHEDRON => Some(Platonic::Dodecahedron),
-                WEFT_PLATONIC_ICOSAHEDRON => Some(Platonic::Icosahedron),
-                _ => None,
-            },
-            "a WEFT_PLATONIC_* value (0 to 4)",
-        )?;
-        WeftMesh::write(out, platonic(kind, radius)?);
-        Ok(())
-    })
+    // SAFETY: `out_mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let kind = enum_arg(
+                kind,
+                "kind",
+                |k| match k {
+                    WEFT_PLATONIC_TETRAHEDRON => Some(Platonic::Tetrahedron),
+                    WEFT_PLATONIC_HEXAHEDRON => Some(Platonic::Hexahedron),
+                    WEFT_PLATONIC_OCTAHEDRON => Some(Platonic::Octahedron),
+                    WEFT_PLATONIC_DODECAHEDRON => Some(Platonic::Dodecahedron),
+                    WEFT_PLATONIC_ICOSAHEDRON => Some(Platonic::Icosahedron),
+                    _ => None,
+                },
+                "a WEFT_PLATONIC_* value (0 to 4)",
+            )?;
+            Ok(platonic(kind, radius)?)
+        })
+    }
 }
 
 /// Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
@@ -574,7 +560,7 @@ pub unsafe extern "C" fn weft_platonic(
 /// `out_mesh` receives the new mesh on success; it must not be NULL.
 ///
 /// # Safety
-/// `out_mesh` is writable.
+/// `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_sided_solid(
     kind: u32,
@@ -583,21 +569,23 @@ pub unsafe extern "C" fn weft_sided_solid(
     height: f64,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let kind = enum_arg(
-            kind,
-            "kind",
-            |k| match k {
-                WEFT_SIDED_PRISM => Some(Sided::Prism),
-                WEFT_SIDED_ANTIPRISM => Some(Sided::Antiprism),
-                WEFT_SIDED_PYRAMID => Some(Sided::Pyramid),
-                WEFT_SIDED_DIPYRAMID => Some(Sided::Dipyramid),
-                _ => None,
-            },
-            "a WEFT_SIDED_* value (0 to 3)",
-        )?;
-        WeftMesh::write(out, sided(kind, sides, radius, height)?);
-        Ok(())
-    })
+    // SAFETY: `out_mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let kind = enum_arg(
+                kind,
+                "kind",
+                |k| match k {
+                    WEFT_SIDED_PRISM => Some(Sided::Prism),
+                    WEFT_SIDED_ANTIPRISM => Some(Sided::Antiprism),
+                    WEFT_SIDED_PYRAMID => Some(Sided::Pyramid),
+                    WEFT_SIDED_DIPYRAMID => Some(Sided::Dipyramid),
+                    _ => None,
+                },
+                "a WEFT_SIDED_* value (0 to 3)",
+            )?;
+            Ok(sided(kind, sides, radius, height)?)
+        })
+    }
 }

@@ -5,8 +5,7 @@
 
 use glam::DVec3;
 
-use crate::ffi::boundary::{guard, input_slice, output_slice, Failure, WeftStatus};
-use crate::ffi::make::points_arg;
+use crate::ffi::boundary::{guard, input_slice, output_slice, points_arg, Failure, WeftStatus};
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::weld;
 
@@ -16,36 +15,40 @@ use crate::weld;
 /// # Safety
 /// `lines` is NULL or holds `6 * count` doubles.
 unsafe fn lines_arg(lines: *const f64, count: usize) -> Result<Vec<[DVec3; 2]>, Failure> {
-    let length = count.checked_mul(6).ok_or_else(|| {
-        Failure::new(
-            WeftStatus::InputTooLarge,
-            format!("line_count {count} is larger than memory can hold"),
-        )
-    })?;
-    let flat = input_slice(lines, length, "lines")?;
-    let mut out = Vec::new();
-    out.try_reserve_exact(count).map_err(|_| {
-        Failure::new(
-            WeftStatus::OutOfMemory,
-            format!("could not copy the {count} lines"),
-        )
-    })?;
-    for (i, c) in flat.chunks_exact(6).enumerate() {
-        let ends = [DVec3::new(c[0], c[1], c[2]), DVec3::new(c[3], c[4], c[5])];
-        for (end, p) in ["start", "end"].iter().zip(ends) {
-            if !p.is_finite() {
-                return Err(Failure::new(
-                    WeftStatus::NonFiniteCoordinate,
-                    format!(
-                        "lines: the {end} of line {i} has a non-finite coordinate ({}, {}, {})",
-                        p.x, p.y, p.z
-                    ),
-                ));
+    // SAFETY: `lines` is as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        let length = count.checked_mul(6).ok_or_else(|| {
+            Failure::new(
+                WeftStatus::InputTooLarge,
+                format!("line_count {count} is larger than memory can hold"),
+            )
+        })?;
+        let flat = input_slice(lines, length, "lines")?;
+        let mut out = Vec::new();
+        out.try_reserve_exact(count).map_err(|_| {
+            Failure::new(
+                WeftStatus::OutOfMemory,
+                format!("could not copy the {count} lines"),
+            )
+        })?;
+        for (i, c) in flat.chunks_exact(6).enumerate() {
+            let ends = [DVec3::new(c[0], c[1], c[2]), DVec3::new(c[3], c[4], c[5])];
+            for (end, p) in ["start", "end"].iter().zip(ends) {
+                if !p.is_finite() {
+                    return Err(Failure::new(
+                        WeftStatus::NonFiniteCoordinate,
+                        format!(
+                            "lines: the {end} of line {i} has a non-finite coordinate ({}, {}, {})",
+                            p.x, p.y, p.z
+                        ),
+                    ));
+                }
             }
+            out.push(ends);
         }
-        out.push(ends);
+        Ok(out)
     }
-    Ok(out)
 }
 
 /// Finds, for each point, the nearest vertex of the mesh within a tolerance
@@ -79,14 +82,18 @@ pub unsafe extern "C" fn weft_match_points_to_vertices(
     tolerance: f64,
     out_vertices: *mut u32,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let points = points_arg(points, point_count, "points")?;
-        let out = output_slice(out_vertices, point_count, "out_vertices")?;
-        let vertices = weld::match_points_to_vertices(mesh, &points, tolerance)?;
-        out.copy_from_slice(&vertices);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `points` and `out_vertices` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let points = points_arg(points, point_count, "points")?;
+            let out = output_slice(out_vertices, point_count, "out_vertices")?;
+            let vertices = weld::match_points_to_vertices(mesh, &points, tolerance)?;
+            out.copy_from_slice(&vertices);
+            Ok(())
+        })
+    }
 }
 
 /// Finds, for each line, the edge of the mesh whose end points lie within a
@@ -122,15 +129,19 @@ pub unsafe extern "C" fn weft_match_lines_to_edges(
     tolerance: f64,
     out_vertex_pairs: *mut u32,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let lines = lines_arg(lines, line_count)?;
-        // `lines_arg` has checked that 6 * line_count fits, so 2 * line_count does.
-        let out = output_slice(out_vertex_pairs, 2 * line_count, "out_vertex_pairs")?;
-        let pairs = weld::match_lines_to_edges(mesh, &lines, tolerance)?;
-        for (slot, pair) in out.chunks_exact_mut(2).zip(pairs) {
-            slot.copy_from_slice(&pair);
-        }
-        Ok(())
-    })
+    // SAFETY: `mesh`, `lines` and `out_vertex_pairs` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let lines = lines_arg(lines, line_count)?;
+            // `lines_arg` has checked that 6 * line_count fits, so 2 * line_count does.
+            let out = output_slice(out_vertex_pairs, 2 * line_count, "out_vertex_pairs")?;
+            let pairs = weld::match_lines_to_edges(mesh, &lines, tolerance)?;
+            for (slot, pair) in out.chunks_exact_mut(2).zip(pairs) {
+                slot.copy_from_slice(&pair);
+            }
+            Ok(())
+        })
+    }
 }

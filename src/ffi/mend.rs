@@ -4,7 +4,8 @@
 use crate::analysis;
 use crate::cull;
 use crate::ffi::boundary::{
-    check_room, guard, input_slice, out_param, output_slice, Failure, WeftStatus,
+    check_room, counted_mesh_op, guard, input_slice, make_mesh, mesh_op, out_param, output_slice,
+    write_optional, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::mesh::Mesh;
@@ -48,16 +49,6 @@ pub struct WeftTNode {
     pub parameter: f64,
 }
 
-/// Writes an optional count out-parameter.
-///
-/// # Safety
-/// `pointer` is NULL or writable.
-unsafe fn write_optional<T>(pointer: *mut T, value: T) {
-    if let Some(slot) = pointer.as_mut() {
-        *slot = value;
-    }
-}
-
 /// Joins meshes into one: the vertices of each follow those of the meshes
 /// before it and its face indices are offset to match; faces keep their order.
 ///
@@ -78,16 +69,18 @@ pub unsafe extern "C" fn weft_join(
     count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let handles = input_slice(meshes, count, "meshes")?;
-        let mut parts: Vec<&Mesh> = Vec::with_capacity(handles.len());
-        for (i, &handle) in handles.iter().enumerate() {
-            parts.push(mesh_ref(handle, &format!("meshes[{i}]"))?);
-        }
-        WeftMesh::write(out, weld::join(&parts)?);
-        Ok(())
-    })
+    // SAFETY: `meshes` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let handles = input_slice(meshes, count, "meshes")?;
+            let mut parts: Vec<&Mesh> = Vec::with_capacity(handles.len());
+            for (i, &handle) in handles.iter().enumerate() {
+                parts.push(mesh_ref(handle, &format!("meshes[{i}]"))?);
+            }
+            Ok(weld::join(&parts)?)
+        })
+    }
 }
 
 /// The tolerance to weld `mesh` with when the host has none of its own: a
@@ -176,7 +169,7 @@ pub unsafe extern "C" fn weft_remove_unused_vertices(
 /// tolerance.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_report` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_weld(
     mesh: *const WeftMesh,
@@ -184,21 +177,22 @@ pub unsafe extern "C" fn weft_weld(
     out_mesh: *mut *mut WeftMesh,
     out_report: *mut WeftWeldReport,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (welded, report) = weld::weld(mesh, tolerance)?;
-        WeftMesh::write(out, welded);
-        write_optional(
-            out_report,
-            WeftWeldReport {
-                merged_vertex_count: report.merged_vertex_count,
-                removed_face_count: report.removed_face_count,
-                unused_vertex_count: report.unused_vertex_count,
-            },
-        );
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_report` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            let (welded, report) = weld::weld(mesh, tolerance)?;
+            write_optional(
+                out_report,
+                WeftWeldReport {
+                    merged_vertex_count: report.merged_vertex_count,
+                    removed_face_count: report.removed_face_count,
+                    unused_vertex_count: report.unused_vertex_count,
+                },
+            );
+            Ok(welded)
+        })
+    }
 }
 
 /// Finds the T-nodes: vertices on the naked boundary that lie within
@@ -219,8 +213,8 @@ pub unsafe extern "C" fn weft_weld(
 /// `out_count` receives the number of T-nodes; it must not be NULL.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_nodes` is NULL or has room for `capacity`
-/// elements; `out_count` is writable.
+/// `mesh` is NULL or a live handle; `out_nodes` is NULL or has room for `capacity`
+/// elements; `out_count` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_find_t_nodes(
     mesh: *const WeftMesh,
@@ -229,26 +223,30 @@ pub unsafe extern "C" fn weft_find_t_nodes(
     capacity: usize,
     out_count: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let count_out = out_param(out_count, "out_count")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let nodes = t_nodes::find_t_nodes(mesh, tolerance)?;
-        if !out_nodes.is_null() {
-            check_room("out_nodes", capacity, nodes.len())?;
-            let out = output_slice(out_nodes, capacity, "out_nodes")?;
-            for (slot, node) in out.iter_mut().zip(&nodes) {
-                *slot = WeftTNode {
-                    vertex: node.vertex,
-                    edge_start: node.edge[0],
-                    edge_end: node.edge[1],
-                    face: node.face,
-                    parameter: node.parameter,
-                };
+    // SAFETY: `mesh`, `out_nodes` and `out_count` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let count_out = out_param(out_count, "out_count")?;
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let nodes = t_nodes::find_t_nodes(mesh, tolerance)?;
+            if !out_nodes.is_null() {
+                check_room("out_nodes", capacity, nodes.len())?;
+                let out = output_slice(out_nodes, capacity, "out_nodes")?;
+                for (slot, node) in out.iter_mut().zip(&nodes) {
+                    *slot = WeftTNode {
+                        vertex: node.vertex,
+                        edge_start: node.edge[0],
+                        edge_end: node.edge[1],
+                        face: node.face,
+                        parameter: node.parameter,
+                    };
+                }
             }
-        }
-        *count_out = nodes.len();
-        Ok(())
-    })
+            *count_out = nodes.len();
+            Ok(())
+        })
+    }
 }
 
 /// Repairs the T-nodes that `weft_find_t_nodes` reports: each vertex is
@@ -266,7 +264,7 @@ pub unsafe extern "C" fn weft_find_t_nodes(
 /// tolerance.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_mesh` is writable; `out_inserted` is NULL or writable.
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_inserted` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_repair_t_nodes(
     mesh: *const WeftMesh,
@@ -274,14 +272,13 @@ pub unsafe extern "C" fn weft_repair_t_nodes(
     out_mesh: *mut *mut WeftMesh,
     out_inserted: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (repaired, inserted) = t_nodes::repair_t_nodes(mesh, tolerance)?;
-        WeftMesh::write(out, repaired);
-        write_optional(out_inserted, inserted);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_inserted` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        counted_mesh_op(mesh, out_mesh, out_inserted, |m| {
+            Ok(t_nodes::repair_t_nodes(m, tolerance)?)
+        })
+    }
 }
 
 /// Removes every face that has a twin with the same vertices (in either
@@ -294,21 +291,16 @@ pub unsafe extern "C" fn weft_repair_t_nodes(
 /// `out_removed` receives the number of faces removed; it may be NULL.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_removed` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_cull_adjacent(
     mesh: *const WeftMesh,
     out_mesh: *mut *mut WeftMesh,
     out_removed: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (culled, removed) = cull::cull_adjacent(mesh);
-        WeftMesh::write(out, culled);
-        write_optional(out_removed, removed);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_removed` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe { counted_mesh_op(mesh, out_mesh, out_removed, |m| Ok(cull::cull_adjacent(m))) }
 }
 
 /// Gives every connected piece one consistent winding, flipping the fewest
@@ -322,21 +314,20 @@ pub unsafe extern "C" fn weft_cull_adjacent(
 /// `out_flipped` receives the number of faces reversed; it may be NULL.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_mesh` is writable; `out_flipped` is NULL or writable.
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_flipped` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_unify_orientation(
     mesh: *const WeftMesh,
     out_mesh: *mut *mut WeftMesh,
     out_flipped: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (unified, flipped) = orient::unify_orientation(mesh);
-        WeftMesh::write(out, unified);
-        write_optional(out_flipped, flipped);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_flipped` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        counted_mesh_op(mesh, out_mesh, out_flipped, |m| {
+            Ok(orient::unify_orientation(m))
+        })
+    }
 }
 
 /// What `weft_orient_outward` found and changed; a piece is a set of faces
@@ -402,18 +393,15 @@ pub unsafe extern "C" fn weft_orient_outward(
 /// must not be NULL and is written on success only.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_mesh` is writable.
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
 #[no_mangle]
 pub unsafe extern "C" fn weft_flip(
     mesh: *const WeftMesh,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        WeftMesh::write(out, orient::flip(mesh));
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe { mesh_op(mesh, out_mesh, |mesh| Ok(orient::flip(mesh))) }
 }
 
 /// Copies `vectors`, three doubles each into a caller buffer.
@@ -426,12 +414,16 @@ unsafe fn write_vectors(
     capacity: usize,
     name: &str,
 ) -> Result<(), Failure> {
-    check_room(name, capacity, vectors.len() * 3)?;
-    let out = output_slice(out, capacity, name)?;
-    for (chunk, v) in out.chunks_exact_mut(3).zip(vectors) {
-        chunk.copy_from_slice(&v.to_array());
+    // SAFETY: `out` is as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        check_room(name, capacity, vectors.len() * 3)?;
+        let out = output_slice(out, capacity, name)?;
+        for (chunk, v) in out.chunks_exact_mut(3).zip(vectors) {
+            chunk.copy_from_slice(&v.to_array());
+        }
+        Ok(())
     }
-    Ok(())
 }
 
 /// Computes the unit normal of each face by Newell's method (robust on
@@ -443,7 +435,7 @@ unsafe fn write_vectors(
 /// too small the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+/// `mesh` is NULL or a live handle; `out_normals` has room for `capacity` doubles
 /// (or is NULL with 0).
 #[no_mangle]
 pub unsafe extern "C" fn weft_face_normals(
@@ -451,16 +443,20 @@ pub unsafe extern "C" fn weft_face_normals(
     out_normals: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        check_room("out_normals", capacity, mesh.face_count() * 3)?;
-        write_vectors(
-            &analysis::face_normals(mesh),
-            out_normals,
-            capacity,
-            "out_normals",
-        )
-    })
+    // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            check_room("out_normals", capacity, mesh.face_count() * 3)?;
+            write_vectors(
+                &analysis::face_normals(mesh),
+                out_normals,
+                capacity,
+                "out_normals",
+            )
+        })
+    }
 }
 
 /// Computes the unit normal of each vertex: the face normals weighted by the
@@ -474,7 +470,7 @@ pub unsafe extern "C" fn weft_face_normals(
 /// nothing.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_normals` has room for `capacity` doubles
+/// `mesh` is NULL or a live handle; `out_normals` has room for `capacity` doubles
 /// (or is NULL with 0).
 #[no_mangle]
 pub unsafe extern "C" fn weft_vertex_normals(
@@ -482,16 +478,20 @@ pub unsafe extern "C" fn weft_vertex_normals(
     out_normals: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        check_room("out_normals", capacity, mesh.vertex_count() * 3)?;
-        write_vectors(
-            &analysis::vertex_normals(mesh),
-            out_normals,
-            capacity,
-            "out_normals",
-        )
-    })
+    // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            check_room("out_normals", capacity, mesh.vertex_count() * 3)?;
+            write_vectors(
+                &analysis::vertex_normals(mesh),
+                out_normals,
+                capacity,
+                "out_normals",
+            )
+        })
+    }
 }
 
 /// Computes, per face, the largest distance of its corners from its
@@ -505,7 +505,7 @@ pub unsafe extern "C" fn weft_vertex_normals(
 /// fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_deviations` has room for `capacity`
+/// `mesh` is NULL or a live handle; `out_deviations` has room for `capacity`
 /// doubles (or is NULL with 0).
 #[no_mangle]
 pub unsafe extern "C" fn weft_planarity(
@@ -513,15 +513,19 @@ pub unsafe extern "C" fn weft_planarity(
     out_deviations: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        check_room("out_deviations", capacity, mesh.face_count())?;
-        let out = output_slice(out_deviations, capacity, "out_deviations")?;
-        for (slot, d) in out.iter_mut().zip(analysis::planarity_deviations(mesh)) {
-            *slot = d;
-        }
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_deviations` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            check_room("out_deviations", capacity, mesh.face_count())?;
+            let out = output_slice(out_deviations, capacity, "out_deviations")?;
+            for (slot, d) in out.iter_mut().zip(analysis::planarity_deviations(mesh)) {
+                *slot = d;
+            }
+            Ok(())
+        })
+    }
 }
 
 /// Chains the naked edges (edges with one face) into polylines. On a
@@ -548,7 +552,7 @@ pub unsafe extern "C" fn weft_planarity(
 /// `out_polyline_count` receives the number of polylines; must not be NULL.
 ///
 /// # Safety
-/// `mesh` is a live handle; each buffer is NULL or has room for its capacity.
+/// `mesh` is NULL or a live handle; each buffer is NULL or has room for its capacity.
 #[no_mangle]
 pub unsafe extern "C" fn weft_naked_boundaries(
     mesh: *const WeftMesh,
@@ -560,40 +564,45 @@ pub unsafe extern "C" fn weft_naked_boundaries(
     out_point_total: *mut usize,
     out_polyline_count: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let total_out = out_param(out_point_total, "out_point_total")?;
-        let count_out = out_param(out_polyline_count, "out_polyline_count")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let polylines = analysis::naked_boundaries(mesh);
-        let total: usize = polylines.iter().map(|p| p.vertices.len()).sum();
-        if !out_points.is_null() {
-            out_param(out_point_counts, "out_point_counts")?;
-            check_room("out_points", points_capacity, total * 3)?;
-            check_room("out_point_counts", polylines_capacity, polylines.len())?;
-            let points = output_slice(out_points, points_capacity, "out_points")?;
-            let counts = output_slice(out_point_counts, polylines_capacity, "out_point_counts")?;
-            let closed = if out_closed.is_null() {
-                None
-            } else {
-                Some(output_slice(out_closed, polylines_capacity, "out_closed")?)
-            };
-            let mut chunks = points.chunks_exact_mut(3);
-            for (i, polyline) in polylines.iter().enumerate() {
-                counts[i] = polyline.vertices.len();
-                for (chunk, &v) in chunks.by_ref().zip(&polyline.vertices) {
-                    chunk.copy_from_slice(&mesh.positions()[v as usize].to_array());
+    // SAFETY: `mesh`, `out_points`, `out_point_counts`, `out_closed`, `out_point_total` and `out_polyline_count` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let total_out = out_param(out_point_total, "out_point_total")?;
+            let count_out = out_param(out_polyline_count, "out_polyline_count")?;
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let polylines = analysis::naked_boundaries(mesh);
+            let total: usize = polylines.iter().map(|p| p.vertices.len()).sum();
+            if !out_points.is_null() {
+                out_param(out_point_counts, "out_point_counts")?;
+                check_room("out_points", points_capacity, total * 3)?;
+                check_room("out_point_counts", polylines_capacity, polylines.len())?;
+                let points = output_slice(out_points, points_capacity, "out_points")?;
+                let counts =
+                    output_slice(out_point_counts, polylines_capacity, "out_point_counts")?;
+                let closed = if out_closed.is_null() {
+                    None
+                } else {
+                    Some(output_slice(out_closed, polylines_capacity, "out_closed")?)
+                };
+                let mut chunks = points.chunks_exact_mut(3);
+                for (i, polyline) in polylines.iter().enumerate() {
+                    counts[i] = polyline.vertices.len();
+                    for (chunk, &v) in chunks.by_ref().zip(&polyline.vertices) {
+                        chunk.copy_from_slice(&mesh.positions()[v as usize].to_array());
+                    }
+                }
+                if let Some(closed) = closed {
+                    for (slot, polyline) in closed.iter_mut().zip(&polylines) {
+                        *slot = polyline.closed;
+                    }
                 }
             }
-            if let Some(closed) = closed {
-                for (slot, polyline) in closed.iter_mut().zip(&polylines) {
-                    *slot = polyline.closed;
-                }
-            }
-        }
-        *total_out = total;
-        *count_out = polylines.len();
-        Ok(())
-    })
+            *total_out = total;
+            *count_out = polylines.len();
+            Ok(())
+        })
+    }
 }
 
 #[cfg(test)]

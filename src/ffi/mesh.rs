@@ -4,8 +4,8 @@
 use std::ffi::c_char;
 
 use crate::ffi::boundary::{
-    check_room, guard, input_slice, last_error_ptr, out_param, output_slice, required, Failure,
-    WeftStatus,
+    check_room, guard, input_slice, last_error_ptr, make_mesh, out_param, output_slice, required,
+    Failure, WeftStatus,
 };
 use crate::mesh::{check_element_counts, Mesh};
 use crate::topology::Topology;
@@ -34,7 +34,8 @@ impl WeftMesh {
     /// # Safety
     /// `out` is a valid, writable pointer.
     pub(crate) unsafe fn write(out: *mut *mut WeftMesh, mesh: Mesh) {
-        *out = WeftMesh::into_raw(mesh);
+        // SAFETY: `out` is valid and writable, as the caller promises.
+        unsafe { *out = WeftMesh::into_raw(mesh) };
     }
 }
 
@@ -64,7 +65,9 @@ pub(crate) fn finite_result(mesh: Mesh, what: &str) -> Result<Mesh, Failure> {
 /// # Safety
 /// `mesh` is NULL or a live handle from this library.
 pub(crate) unsafe fn mesh_ref<'a>(mesh: *const WeftMesh, name: &str) -> Result<&'a Mesh, Failure> {
-    Ok(&required(mesh, name)?.mesh)
+    // SAFETY: `mesh` is as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe { Ok(&required(mesh, name)?.mesh) }
 }
 
 /// Counts and flags of a mesh's topology, filled by `weft_mesh_info`.
@@ -142,24 +145,26 @@ pub unsafe extern "C" fn weft_mesh_new(
     index_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        // Every count is checked before any buffer is viewed: a slice longer
-        // than the caller's buffer is undefined behaviour even if never read.
-        check_element_counts(vertex_count, face_count, index_count)?;
-        let coordinate_count = vertex_count.checked_mul(3).ok_or_else(|| {
-            Failure::new(
-                WeftStatus::InputTooLarge,
-                format!("vertex_count {vertex_count} is larger than memory can hold"),
-            )
-        })?;
-        let positions = input_slice(positions, coordinate_count, "positions")?;
-        let face_sizes = input_slice(face_sizes, face_count, "face_sizes")?;
-        let face_indices = input_slice(face_indices, index_count, "face_indices")?;
-        let mesh = Mesh::from_flat(positions, face_sizes, face_indices)?;
-        WeftMesh::write(out, mesh);
-        Ok(())
-    })
+    // SAFETY: `positions`, `face_sizes`, `face_indices` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            // Every count is checked before any buffer is viewed: a slice longer
+            // than the caller's buffer is undefined behaviour even if never read.
+            check_element_counts(vertex_count, face_count, index_count)?;
+            let coordinate_count = vertex_count.checked_mul(3).ok_or_else(|| {
+                Failure::new(
+                    WeftStatus::InputTooLarge,
+                    format!("vertex_count {vertex_count} is larger than memory can hold"),
+                )
+            })?;
+            let positions = input_slice(positions, coordinate_count, "positions")?;
+            let face_sizes = input_slice(face_sizes, face_count, "face_sizes")?;
+            let face_indices = input_slice(face_indices, index_count, "face_indices")?;
+            let mesh = Mesh::from_flat(positions, face_sizes, face_indices)?;
+            Ok(mesh)
+        })
+    }
 }
 
 /// Frees a mesh made by Weft. NULL is ignored.
@@ -169,9 +174,13 @@ pub unsafe extern "C" fn weft_mesh_new(
 /// call it and every pointer obtained from it are invalid.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_free(mesh: *mut WeftMesh) {
-    if !mesh.is_null() {
-        // Dropping cannot panic for these plain vectors; still keep unwinding out of the host.
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(mesh)));
+    // SAFETY: `mesh` is NULL or a handle from this library not yet
+    // freed, as the `# Safety` section above requires.
+    unsafe {
+        if !mesh.is_null() {
+            // Dropping cannot panic for these plain vectors; still keep unwinding out of the host.
+            let _ = std::panic::catch_unwind(|| drop(Box::from_raw(mesh)));
+        }
     }
 }
 
@@ -181,7 +190,9 @@ pub unsafe extern "C" fn weft_mesh_free(mesh: *mut WeftMesh) {
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_vertex_count(mesh: *const WeftMesh) -> usize {
-    mesh.as_ref().map_or(0, |m| m.mesh.vertex_count())
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { mesh.as_ref().map_or(0, |m| m.mesh.vertex_count()) }
 }
 
 /// Returns the number of faces, or 0 when `mesh` is NULL.
@@ -190,7 +201,9 @@ pub unsafe extern "C" fn weft_mesh_vertex_count(mesh: *const WeftMesh) -> usize 
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_face_count(mesh: *const WeftMesh) -> usize {
-    mesh.as_ref().map_or(0, |m| m.mesh.face_count())
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { mesh.as_ref().map_or(0, |m| m.mesh.face_count()) }
 }
 
 /// Returns the number of face corners (the sum of the face sizes), or 0 when
@@ -200,7 +213,9 @@ pub unsafe extern "C" fn weft_mesh_face_count(mesh: *const WeftMesh) -> usize {
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_index_count(mesh: *const WeftMesh) -> usize {
-    mesh.as_ref().map_or(0, |m| m.mesh.index_count())
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { mesh.as_ref().map_or(0, |m| m.mesh.index_count()) }
 }
 
 /// Returns the positions, `3 * vertex_count` doubles, or NULL when `mesh` is
@@ -212,9 +227,13 @@ pub unsafe extern "C" fn weft_mesh_index_count(mesh: *const WeftMesh) -> usize {
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_positions(mesh: *const WeftMesh) -> *const f64 {
-    match mesh.as_ref() {
-        Some(m) if m.mesh.vertex_count() > 0 => m.mesh.positions().as_ptr().cast(),
-        _ => std::ptr::null(),
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        match mesh.as_ref() {
+            Some(m) if m.mesh.vertex_count() > 0 => m.mesh.positions().as_ptr().cast(),
+            _ => std::ptr::null(),
+        }
     }
 }
 
@@ -227,9 +246,13 @@ pub unsafe extern "C" fn weft_mesh_positions(mesh: *const WeftMesh) -> *const f6
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_face_sizes(mesh: *const WeftMesh) -> *const u32 {
-    match mesh.as_ref() {
-        Some(m) if m.mesh.face_count() > 0 => m.mesh.face_sizes().as_ptr(),
-        _ => std::ptr::null(),
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        match mesh.as_ref() {
+            Some(m) if m.mesh.face_count() > 0 => m.mesh.face_sizes().as_ptr(),
+            _ => std::ptr::null(),
+        }
     }
 }
 
@@ -242,9 +265,13 @@ pub unsafe extern "C" fn weft_mesh_face_sizes(mesh: *const WeftMesh) -> *const u
 /// `mesh` is NULL or a live handle.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_face_indices(mesh: *const WeftMesh) -> *const u32 {
-    match mesh.as_ref() {
-        Some(m) if m.mesh.index_count() > 0 => m.mesh.face_indices().as_ptr(),
-        _ => std::ptr::null(),
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe {
+        match mesh.as_ref() {
+            Some(m) if m.mesh.index_count() > 0 => m.mesh.face_indices().as_ptr(),
+            _ => std::ptr::null(),
+        }
     }
 }
 
@@ -263,16 +290,20 @@ pub unsafe extern "C" fn weft_mesh_copy_positions(
     out_positions: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let needed = mesh.vertex_count() * 3;
-        check_room("out_positions", capacity, needed)?;
-        let out = output_slice(out_positions, capacity, "out_positions")?;
-        for (chunk, p) in out.chunks_exact_mut(3).zip(mesh.positions()) {
-            chunk.copy_from_slice(&p.to_array());
-        }
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_positions` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let needed = mesh.vertex_count() * 3;
+            check_room("out_positions", capacity, needed)?;
+            let out = output_slice(out_positions, capacity, "out_positions")?;
+            for (chunk, p) in out.chunks_exact_mut(3).zip(mesh.positions()) {
+                chunk.copy_from_slice(&p.to_array());
+            }
+            Ok(())
+        })
+    }
 }
 
 /// Copies the faces into caller buffers.
@@ -294,16 +325,20 @@ pub unsafe extern "C" fn weft_mesh_copy_faces(
     out_face_indices: *mut u32,
     indices_capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let mesh = mesh_ref(mesh, "mesh")?;
-        check_room("out_face_sizes", sizes_capacity, mesh.face_count())?;
-        check_room("out_face_indices", indices_capacity, mesh.index_count())?;
-        let sizes = output_slice(out_face_sizes, sizes_capacity, "out_face_sizes")?;
-        let indices = output_slice(out_face_indices, indices_capacity, "out_face_indices")?;
-        sizes[..mesh.face_count()].copy_from_slice(mesh.face_sizes());
-        indices[..mesh.index_count()].copy_from_slice(mesh.face_indices());
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_face_sizes` and `out_face_indices` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            check_room("out_face_sizes", sizes_capacity, mesh.face_count())?;
+            check_room("out_face_indices", indices_capacity, mesh.index_count())?;
+            let sizes = output_slice(out_face_sizes, sizes_capacity, "out_face_sizes")?;
+            let indices = output_slice(out_face_indices, indices_capacity, "out_face_indices")?;
+            sizes[..mesh.face_count()].copy_from_slice(mesh.face_sizes());
+            indices[..mesh.index_count()].copy_from_slice(mesh.face_indices());
+            Ok(())
+        })
+    }
 }
 
 /// Computes the counts and flags of a mesh's topology.
@@ -311,30 +346,34 @@ pub unsafe extern "C" fn weft_mesh_copy_faces(
 /// `mesh` and `out_info` must not be NULL; `out_info` is written on success only.
 ///
 /// # Safety
-/// `mesh` is a live handle; `out_info` points to a writable `WeftMeshInfo`.
+/// `mesh` is NULL or a live handle; `out_info` is NULL or points to a writable `WeftMeshInfo`.
 #[no_mangle]
 pub unsafe extern "C" fn weft_mesh_info(
     mesh: *const WeftMesh,
     out_info: *mut WeftMeshInfo,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_info, "out_info")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let info = Topology::new(mesh).info(mesh);
-        *out = WeftMeshInfo {
-            vertex_count: info.vertex_count,
-            edge_count: info.edge_count,
-            face_count: info.face_count,
-            naked_edge_count: info.naked_edge_count,
-            non_manifold_edge_count: info.non_manifold_edge_count,
-            non_manifold_vertex_count: info.non_manifold_vertex_count,
-            component_count: info.component_count,
-            is_closed: info.is_closed,
-            is_orientable: info.is_orientable,
-            is_oriented: info.is_oriented,
-        };
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_info` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let out = out_param(out_info, "out_info")?;
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let info = Topology::new(mesh).info(mesh);
+            *out = WeftMeshInfo {
+                vertex_count: info.vertex_count,
+                edge_count: info.edge_count,
+                face_count: info.face_count,
+                naked_edge_count: info.naked_edge_count,
+                non_manifold_edge_count: info.non_manifold_edge_count,
+                non_manifold_vertex_count: info.non_manifold_vertex_count,
+                component_count: info.component_count,
+                is_closed: info.is_closed,
+                is_orientable: info.is_orientable,
+                is_oriented: info.is_oriented,
+            };
+            Ok(())
+        })
+    }
 }
 
 #[cfg(test)]

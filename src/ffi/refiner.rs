@@ -4,8 +4,10 @@
 use glam::DVec3;
 
 use crate::ffi::boundary::{
-    check_room, guard, input_slice, out_param, output_slice, required, Failure, WeftStatus,
+    check_room, guard, input_slice, make_mesh, out_param, output_slice, required, Failure,
+    WeftStatus,
 };
+use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
 use crate::subdivide::Refiner;
@@ -47,15 +49,55 @@ pub unsafe extern "C" fn weft_refiner_new(
     naked_edges: u32,
     out_refiner: *mut *mut WeftRefiner,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_refiner, "out_refiner")?;
-        let cage = mesh_ref(cage, "cage")?;
-        let scheme = scheme_arg(scheme)?;
-        let naked_edges = naked_edges_arg(naked_edges)?;
-        let refiner = Refiner::new(cage, scheme, levels, naked_edges)?;
-        *out = Box::into_raw(Box::new(WeftRefiner { refiner }));
-        Ok(())
-    })
+    // SAFETY: `cage` and `out_refiner` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let out = out_param(out_refiner, "out_refiner")?;
+            let cage = mesh_ref(cage, "cage")?;
+            let scheme = scheme_arg(scheme)?;
+            let naked_edges = naked_edges_arg(naked_edges)?;
+            let refiner = Refiner::new(cage, scheme, levels, naked_edges)?;
+            *out = Box::into_raw(Box::new(WeftRefiner { refiner }));
+            Ok(())
+        })
+    }
+}
+
+/// Plans a subdivision with the scheme, naked-edge mode, creases and corners
+/// of `options` once, for re-evaluation with `weft_refiner_evaluate` (the
+/// other `weft_refiner_*` functions work on it as on one from
+/// `weft_refiner_new`).
+///
+/// `cage` and `options` must not be NULL; the cage's positions are kept for
+/// `weft_refiner_mesh`. `out_refiner` receives the refiner on success (free
+/// it with `weft_refiner_free`) and is left untouched on failure; it must
+/// not be NULL.
+///
+/// Fails as `weft_subdivide_ex`.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
+/// `out_refiner` is NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_refiner_new_ex(
+    cage: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_refiner: *mut *mut WeftRefiner,
+) -> WeftStatus {
+    // SAFETY: `cage`, `options` and `out_refiner` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let out = out_param(out_refiner, "out_refiner")?;
+            let cage = mesh_ref(cage, "cage")?;
+            let (scheme, options) = options_arg(options)?;
+            let refiner = Refiner::with_options(cage, scheme, levels, &options)?;
+            *out = WeftRefiner::boxed(refiner);
+            Ok(())
+        })
+    }
 }
 
 /// Computes the refined positions for new cage positions, without
@@ -86,36 +128,40 @@ pub unsafe extern "C" fn weft_refiner_evaluate(
     out_positions: *mut f64,
     out_len: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let refiner = &required(refiner, "refiner")?.refiner;
-        if vertex_count != refiner.cage_vertex_count() {
-            return Err(Failure::new(
-                WeftStatus::CountMismatch,
-                format!(
-                    "vertex_count is {vertex_count} but the refiner's cage has {} vertices",
-                    refiner.cage_vertex_count()
-                ),
-            ));
-        }
-        let needed = 3 * refiner.vertex_count();
-        check_room("out_positions", out_len, needed)?;
-        let cage = input_slice(cage_positions, 3 * vertex_count, "cage_positions")?;
-        let out = output_slice(out_positions, out_len, "out_positions")?;
-        if let Some(i) = cage.iter().position(|c| !c.is_finite()) {
-            return Err(Failure::new(
-                WeftStatus::NonFiniteCoordinate,
-                format!("cage vertex {} has a non-finite coordinate", i / 3),
-            ));
-        }
-        // DVec3 is three f64 in a row (`#[repr(C)]`, alignment of f64).
-        let cage = std::slice::from_raw_parts(cage.as_ptr().cast::<DVec3>(), vertex_count);
-        let out = std::slice::from_raw_parts_mut(
-            out.as_mut_ptr().cast::<DVec3>(),
-            refiner.vertex_count(),
-        );
-        refiner.evaluate(cage, out)?;
-        Ok(())
-    })
+    // SAFETY: `refiner`, `cage_positions` and `out_positions` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let refiner = &required(refiner, "refiner")?.refiner;
+            if vertex_count != refiner.cage_vertex_count() {
+                return Err(Failure::new(
+                    WeftStatus::CountMismatch,
+                    format!(
+                        "vertex_count is {vertex_count} but the refiner's cage has {} vertices",
+                        refiner.cage_vertex_count()
+                    ),
+                ));
+            }
+            let needed = 3 * refiner.vertex_count();
+            check_room("out_positions", out_len, needed)?;
+            let cage = input_slice(cage_positions, 3 * vertex_count, "cage_positions")?;
+            let out = output_slice(out_positions, out_len, "out_positions")?;
+            if let Some(i) = cage.iter().position(|c| !c.is_finite()) {
+                return Err(Failure::new(
+                    WeftStatus::NonFiniteCoordinate,
+                    format!("cage vertex {} has a non-finite coordinate", i / 3),
+                ));
+            }
+            // DVec3 is three f64 in a row (`#[repr(C)]`, alignment of f64).
+            let cage = std::slice::from_raw_parts(cage.as_ptr().cast::<DVec3>(), vertex_count);
+            let out = std::slice::from_raw_parts_mut(
+                out.as_mut_ptr().cast::<DVec3>(),
+                refiner.vertex_count(),
+            );
+            refiner.evaluate(cage, out)?;
+            Ok(())
+        })
+    }
 }
 
 /// Makes the refined mesh at the cage positions the refiner was built from.
@@ -134,12 +180,14 @@ pub unsafe extern "C" fn weft_refiner_mesh(
     refiner: *const WeftRefiner,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let refiner = &required(refiner, "refiner")?.refiner;
-        WeftMesh::write(out, finite_result(refiner.mesh()?, "subdivision")?);
-        Ok(())
-    })
+    // SAFETY: `refiner` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let refiner = &required(refiner, "refiner")?.refiner;
+            finite_result(refiner.mesh()?, "subdivision")
+        })
+    }
 }
 
 /// Returns the number of refined vertices (the output of
@@ -149,7 +197,9 @@ pub unsafe extern "C" fn weft_refiner_mesh(
 /// `refiner` is NULL or live.
 #[no_mangle]
 pub unsafe extern "C" fn weft_refiner_vertex_count(refiner: *const WeftRefiner) -> usize {
-    refiner.as_ref().map_or(0, |r| r.refiner.vertex_count())
+    // SAFETY: `refiner` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { refiner.as_ref().map_or(0, |r| r.refiner.vertex_count()) }
 }
 
 /// Returns the number of refined faces, or 0 when `refiner` is NULL.
@@ -158,7 +208,9 @@ pub unsafe extern "C" fn weft_refiner_vertex_count(refiner: *const WeftRefiner) 
 /// `refiner` is NULL or live.
 #[no_mangle]
 pub unsafe extern "C" fn weft_refiner_face_count(refiner: *const WeftRefiner) -> usize {
-    refiner.as_ref().map_or(0, |r| r.refiner.face_count())
+    // SAFETY: `refiner` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { refiner.as_ref().map_or(0, |r| r.refiner.face_count()) }
 }
 
 /// Frees a refiner. NULL is ignored.
@@ -167,7 +219,11 @@ pub unsafe extern "C" fn weft_refiner_face_count(refiner: *const WeftRefiner) ->
 /// `refiner` is NULL or a refiner not yet freed; it is invalid afterwards.
 #[no_mangle]
 pub unsafe extern "C" fn weft_refiner_free(refiner: *mut WeftRefiner) {
-    if !refiner.is_null() {
-        let _ = std::panic::catch_unwind(|| drop(Box::from_raw(refiner)));
+    // SAFETY: `refiner` is NULL or a handle from this library not yet
+    // freed, as the `# Safety` section above requires.
+    unsafe {
+        if !refiner.is_null() {
+            let _ = std::panic::catch_unwind(|| drop(Box::from_raw(refiner)));
+        }
     }
 }

@@ -2,7 +2,8 @@
 //! face of every refined face, and triangulation for chaining into Loop.
 
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, out_param, output_slice, Failure, WeftStatus,
+    check_room, counted_mesh_op, enum_arg, guard, mesh_op, out_param, output_slice, Failure,
+    WeftStatus,
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::subdivide::{self, NakedEdges, Scheme};
@@ -23,7 +24,12 @@ pub(crate) fn naked_edges_arg(value: u32) -> Result<NakedEdges, Failure> {
     enum_arg(
         value,
         "naked_edges",
-        NakedEdges::from_u32,
+        |v| match v {
+            WEFT_NAKED_EDGES_FIXED => Some(NakedEdges::Fixed),
+            WEFT_NAKED_EDGES_SMOOTH => Some(NakedEdges::Smooth),
+            WEFT_NAKED_EDGES_CORNER_FIXED => Some(NakedEdges::CornerFixed),
+            _ => None,
+        },
         "WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1) or WEFT_NAKED_EDGES_CORNER_FIXED (2)",
     )
 }
@@ -32,7 +38,11 @@ pub(crate) fn scheme_arg(value: u32) -> Result<Scheme, Failure> {
     enum_arg(
         value,
         "scheme",
-        Scheme::from_u32,
+        |v| match v {
+            WEFT_SCHEME_CATMULL_CLARK => Some(Scheme::CatmullClark),
+            WEFT_SCHEME_LOOP => Some(Scheme::Loop),
+            _ => None,
+        },
         "WEFT_SCHEME_CATMULL_CLARK (0) or WEFT_SCHEME_LOOP (1)",
     )
 }
@@ -69,7 +79,9 @@ pub unsafe extern "C" fn weft_catmull_clark(
     naked_edges: u32,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    run_scheme(mesh, Scheme::CatmullClark, levels, naked_edges, out_mesh)
+    // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe { run_scheme(mesh, Scheme::CatmullClark, levels, naked_edges, out_mesh) }
 }
 
 /// Subdivides a triangle mesh with Loop, `levels` times, as OpenSubdiv's
@@ -93,9 +105,15 @@ pub unsafe extern "C" fn weft_loop(
     naked_edges: u32,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    run_scheme(mesh, Scheme::Loop, levels, naked_edges, out_mesh)
+    // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe { run_scheme(mesh, Scheme::Loop, levels, naked_edges, out_mesh) }
 }
 
+/// Subdivides with `scheme`: the body of `weft_catmull_clark` and `weft_loop`.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
 unsafe fn run_scheme(
     mesh: *const WeftMesh,
     scheme: Scheme,
@@ -103,14 +121,15 @@ unsafe fn run_scheme(
     naked_edges: u32,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let naked_edges = naked_edges_arg(naked_edges)?;
-        let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
-        WeftMesh::write(out, finite_result(result, "subdivision")?);
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_mesh` are as this function's `# Safety` section
+    // requires, which its callers promise.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            let naked_edges = naked_edges_arg(naked_edges)?;
+            let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
+            finite_result(result, "subdivision")
+        })
+    }
 }
 
 /// Gives the number of faces `levels` steps of `scheme` make from `cage`,
@@ -131,13 +150,17 @@ pub unsafe extern "C" fn weft_subdivision_face_count(
     levels: u32,
     out_face_count: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_face_count, "out_face_count")?;
-        let cage = mesh_ref(cage, "cage")?;
-        let scheme = scheme_arg(scheme)?;
-        *out = subdivide::refined_face_count(cage, scheme, levels)?;
-        Ok(())
-    })
+    // SAFETY: `cage` and `out_face_count` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let out = out_param(out_face_count, "out_face_count")?;
+            let cage = mesh_ref(cage, "cage")?;
+            let scheme = scheme_arg(scheme)?;
+            *out = subdivide::refined_face_count(cage, scheme, levels)?;
+            Ok(())
+        })
+    }
 }
 
 /// Writes, for every face of the mesh that `levels` steps of `scheme` make
@@ -164,16 +187,20 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces(
     out_parents: *mut u32,
     capacity: usize,
 ) -> WeftStatus {
-    guard(|| {
-        let cage = mesh_ref(cage, "cage")?;
-        let scheme = scheme_arg(scheme)?;
-        let needed = subdivide::refined_face_count(cage, scheme, levels)?;
-        check_room("out_parents", capacity, needed)?;
-        let out = output_slice(out_parents, capacity, "out_parents")?;
-        let parents = subdivide::parent_faces(cage, scheme, levels)?;
-        out[..needed].copy_from_slice(&parents);
-        Ok(())
-    })
+    // SAFETY: `cage` and `out_parents` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let cage = mesh_ref(cage, "cage")?;
+            let scheme = scheme_arg(scheme)?;
+            let needed = subdivide::refined_face_count(cage, scheme, levels)?;
+            check_room("out_parents", capacity, needed)?;
+            let out = output_slice(out_parents, capacity, "out_parents")?;
+            let parents = subdivide::parent_faces(cage, scheme, levels)?;
+            out[..needed].copy_from_slice(&parents);
+            Ok(())
+        })
+    }
 }
 
 /// Triangulates every face: triangles stay, a quad is split along its
@@ -195,13 +222,14 @@ pub unsafe extern "C" fn weft_triangulate(
     mesh: *const WeftMesh,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let result = triangulate(mesh)?;
-        WeftMesh::write(out, result.mesh);
-        Ok(())
-    })
+    // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            let result = triangulate(mesh)?;
+            Ok(result.mesh)
+        })
+    }
 }
 
 /// Triangulates every face as `weft_triangulate` does, and gives the face
@@ -227,21 +255,22 @@ pub unsafe extern "C" fn weft_triangulate_ex(
     out_mesh: *mut *mut WeftMesh,
     out_parent_faces: *mut u32,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let result = triangulate(mesh)?;
-        if !out_parent_faces.is_null() {
-            let parents = output_slice(
-                out_parent_faces,
-                result.parent_faces.len(),
-                "out_parent_faces",
-            )?;
-            parents.copy_from_slice(&result.parent_faces);
-        }
-        WeftMesh::write(out, result.mesh);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_parent_faces` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            let result = triangulate(mesh)?;
+            if !out_parent_faces.is_null() {
+                let parents = output_slice(
+                    out_parent_faces,
+                    result.parent_faces.len(),
+                    "out_parent_faces",
+                )?;
+                parents.copy_from_slice(&result.parent_faces);
+            }
+            Ok(result.mesh)
+        })
+    }
 }
 
 /// Gives the mesh as triangles, for the operations that need them (Loop,
@@ -266,16 +295,14 @@ pub unsafe extern "C" fn weft_as_triangles(
     out_mesh: *mut *mut WeftMesh,
     out_split_faces: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (result, split_faces) = as_triangles(mesh)?;
-        if !out_split_faces.is_null() {
-            *out_split_faces = split_faces;
-        }
-        WeftMesh::write(out, result.mesh);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_split_faces` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        counted_mesh_op(mesh, out_mesh, out_split_faces, |m| {
+            let (triangles, split_faces) = as_triangles(m)?;
+            Ok((triangles.mesh, split_faces))
+        })
+    }
 }
 
 #[cfg(test)]

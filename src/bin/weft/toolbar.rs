@@ -5,29 +5,27 @@
 
 use std::path::{Path, PathBuf};
 
-use clap::{Subcommand, ValueEnum};
+use clap::Subcommand;
 
 use weft::extract::DualMode;
 use weft::primitives::{Platonic, Sided};
 use weft::smooth::{HcOptions, SmoothDirection};
 use weft::stellate::Heights;
 use weft::tile::{TileFaces, TileFill};
-use weft::transform::{InsetMode, OffsetType};
 use weft::{DVec3, Mesh};
 
-use super::{io, mesh_path, operation_failed, read, with_progress, write, Cli, Failure};
-use super::{NakedEdges, NakedEdgesArg};
+mod choices;
 
-/// A mesh file in and a mesh file out, the arguments every command shares.
-#[derive(clap::Args)]
-pub(crate) struct InOut {
-    /// The mesh file to read (.obj, .ply, .stl, .off).
-    #[arg(value_parser = mesh_path)]
-    input: PathBuf,
-    /// The mesh file to write (.obj, .ply, .stl, .off).
-    #[arg(value_parser = mesh_path)]
-    output: PathBuf,
-}
+use choices::{
+    inset_mode, offset_type, DirectionArg, FacesArg, FillArg, InsetArg, OffsetArg, PrimitiveKind,
+    SmoothMethod,
+};
+
+use crate::args::{mesh_path, InOut, NakedEdgesArg};
+use crate::files::{operation_failed, read, with_progress, write};
+use crate::{Cli, Failure};
+use weft::io;
+use weft::subdivide::NakedEdges;
 
 /// How many times a repeated operation runs.
 #[derive(clap::Args)]
@@ -327,92 +325,6 @@ pub(crate) enum ToolbarCommand {
     },
 }
 
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum SmoothMethod {
-    Laplacian,
-    Hc,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum DirectionArg {
-    Free,
-    AlongNormal,
-    Tangential,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum OffsetArg {
-    Diagonal,
-    HypotenuseAverage,
-    PlanesIntersection,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum InsetArg {
-    EdgeFraction,
-    Parallelogram,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum FillArg {
-    Skip,
-    Best,
-    TriangleFan,
-    TriangleHand,
-    TriangleKnit,
-    TriangleZigzag,
-    QuadStitch,
-    QuadFan,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum FacesArg {
-    All,
-    QuadsAndMore,
-    PentagonsAndMore,
-    Triangles,
-    Quads,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum PrimitiveKind {
-    Plane,
-    Box,
-    Sphere,
-    Tetrahedron,
-    Cube,
-    Octahedron,
-    Dodecahedron,
-    Icosahedron,
-    Prism,
-    Antiprism,
-    Pyramid,
-    Dipyramid,
-}
-
-fn naked(arg: NakedEdgesArg) -> NakedEdges {
-    match arg {
-        NakedEdgesArg::Fixed => NakedEdges::Fixed,
-        NakedEdgesArg::Smooth => NakedEdges::Smooth,
-        NakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
-    }
-}
-
-fn offset_type(arg: OffsetArg) -> OffsetType {
-    match arg {
-        OffsetArg::Diagonal => OffsetType::Diagonal,
-        OffsetArg::HypotenuseAverage => OffsetType::HypotenuseAverage,
-        OffsetArg::PlanesIntersection => OffsetType::PlanesIntersection,
-    }
-}
-
-fn inset_mode(arg: InsetArg) -> InsetMode {
-    match arg {
-        InsetArg::EdgeFraction => InsetMode::EdgeFraction,
-        InsetArg::Parallelogram => InsetMode::Parallelogram,
-    }
-}
-
 /// Reads `files.input`, applies `op` (named `what` in messages) and writes
 /// `files.output`.
 fn apply(
@@ -513,13 +425,13 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             direction,
         } => apply(cli, files, "smooth", |m| match method {
             SmoothMethod::Laplacian => {
-                weft::smooth::laplacian(m, *iterations, *blend, naked(*naked_edges))
+                weft::smooth::laplacian(m, *iterations, *blend, NakedEdges::from(*naked_edges))
             }
             SmoothMethod::Hc => {
                 let options = HcOptions {
                     alpha: *alpha,
                     beta: *beta,
-                    naked: naked(*naked_edges),
+                    naked: NakedEdges::from(*naked_edges),
                     direction: match direction {
                         DirectionArg::Free => SmoothDirection::Free,
                         DirectionArg::AlongNormal => SmoothDirection::AlongNormal,

@@ -1,0 +1,142 @@
+//! The mending commands: `weld` (join and weld), `cull-adjacent`, `flip`
+//! and `t-nodes`.
+
+use std::path::{Path, PathBuf};
+
+use weft::io;
+use weft::Mesh;
+
+use crate::args::InOut;
+use crate::files::{operation_failed, read, with_progress, write};
+use crate::{Cli, Failure};
+
+/// Joins the inputs and merges vertices closer than `tolerance` (by
+/// default relative to the mesh's size); refuses, writing nothing, when
+/// faces would collapse, unless `allow_collapse`.
+pub fn weld(
+    cli: &Cli,
+    inputs: &[PathBuf],
+    output: &Path,
+    tolerance: Option<f64>,
+    allow_collapse: bool,
+) -> Result<(), Failure> {
+    let meshes = inputs
+        .iter()
+        .map(|path| read(cli, path))
+        .collect::<Result<Vec<_>, _>>()?;
+    let parts: Vec<&Mesh> = meshes.iter().collect();
+    let joined = weft::weld::join(&parts)
+        .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?;
+    let tolerance = tolerance.unwrap_or_else(|| weft::weld::relative_tolerance(&joined));
+    let (welded, report) = with_progress("welding", || weft::weld::weld(&joined, tolerance))
+        .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
+    if report.removed_face_count > 0 && !allow_collapse {
+        return Err(Failure::Failed(format!(
+            "welding at tolerance {tolerance} would collapse {} of {} faces (the median edge \
+             is {:.6} long); nothing was written. Give a smaller --tolerance, or \
+             --allow-collapse to remove them",
+            report.removed_face_count,
+            joined.face_count(),
+            weft::analysis::median_edge_length(&joined)
+        )));
+    }
+    eprintln!(
+        "joined {} meshes ({} vertices, {} faces); welded at tolerance {tolerance}: merged {} vertices, removed {} collapsed faces and {} unused vertices",
+        meshes.len(),
+        joined.vertex_count(),
+        joined.face_count(),
+        report.merged_vertex_count,
+        report.removed_face_count,
+        report.unused_vertex_count
+    );
+    write(output, &welded, &io::WriteOptions::default())
+}
+
+/// Removes every face that has a twin.
+pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
+    let mesh = read(cli, &files.input)?;
+    let (culled, removed) = with_progress("culling", || weft::cull::cull_adjacent(&mesh));
+    // The culled faces' vertices go with them; bare vertices of the input too.
+    let (culled, unused) = weft::weld::remove_unused_vertices(&culled);
+    eprintln!(
+        "{}: removed {removed} of {} faces that had a twin, and {unused} vertices no face uses",
+        files.input.display(),
+        mesh.face_count()
+    );
+    write(&files.output, &culled, &io::WriteOptions::default())
+}
+
+/// Flips every face, or with `unify` the fewest for one orientation.
+pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), Failure> {
+    let mesh = read(cli, &files.input)?;
+    let flipped = if outward {
+        let (oriented, report) =
+            with_progress("orienting", || weft::orient::orient_outward(&mesh));
+        eprintln!(
+            "{}: {} pieces: turned {} closed ones outward, {} open (unified only), {} not orientable; flipped {} of {} faces",
+            files.input.display(),
+            report.pieces,
+            report.turned_outward,
+            report.open_pieces,
+            report.non_orientable_pieces,
+            report.flipped_faces,
+            mesh.face_count()
+        );
+        if report.open_pieces > 0 && report.open_pieces == mesh.face_count() && mesh.face_count() > 1 {
+            eprintln!(
+                "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
+                files.input.display()
+            );
+        }
+        oriented
+    } else if unify {
+        let (unified, count) = with_progress("unifying", || weft::orient::unify_orientation(&mesh));
+        eprintln!(
+            "{}: flipped {count} of {} faces to unify the orientation{}",
+            files.input.display(),
+            mesh.face_count(),
+            if weft::orient::is_orientable(&mesh) {
+                ""
+            } else {
+                " (the mesh is not orientable: some edges still disagree)"
+            }
+        );
+        unified
+    } else {
+        weft::orient::flip(&mesh)
+    };
+    write(&files.output, &flipped, &io::WriteOptions::default())
+}
+
+/// Lists the T-nodes, and with `repair` writes them inserted into their edges.
+pub fn t_nodes(
+    cli: &Cli,
+    input: &Path,
+    repair: Option<&Path>,
+    tolerance: Option<f64>,
+) -> Result<(), Failure> {
+    let mesh = read(cli, input)?;
+    let tolerance = tolerance.unwrap_or_else(|| weft::weld::relative_tolerance(&mesh));
+    let found = with_progress("searching", || {
+        weft::t_nodes::find_t_nodes(&mesh, tolerance)
+    })
+    .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
+    println!(
+        "{}: {} T-nodes within {tolerance}",
+        input.display(),
+        found.len()
+    );
+    for t in &found {
+        println!(
+            "  vertex {} lies on edge {}-{} of face {} at {:.4} of its length",
+            t.vertex, t.edge[0], t.edge[1], t.face, t.parameter
+        );
+    }
+    if let Some(output) = repair {
+        let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, tolerance)
+            .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
+        eprintln!("inserted {inserted} vertices into edges");
+        write(output, &repaired, &io::WriteOptions::default())?;
+    }
+    Ok(())
+}

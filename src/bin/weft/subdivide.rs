@@ -1,0 +1,154 @@
+//! `weft subdivide`: Catmull-Clark or Loop on a mesh file, with its creases,
+//! corners, vertex colours and UVs carried, and the limit surface on request.
+
+use std::path::PathBuf;
+
+use weft::io::{self, MeshFile};
+use weft::subdivide::{self, NakedEdges, Scheme, SubdivisionOptions};
+
+use crate::args::{angle, CreasingArg, InOut, NakedEdgesArg, SchemeArg, UvLinearArg};
+use crate::files::{
+    operation_failed, read_file, read_file_welded, require_faces, with_progress, write_file,
+};
+use crate::{carry, Cli, Failure};
+
+/// The arguments of `weft subdivide`.
+#[derive(clap::Args)]
+pub struct Subdivide {
+    #[command(flatten)]
+    pub files: InOut,
+    /// The subdivision scheme.
+    #[arg(long, value_enum, default_value = "catmull-clark")]
+    pub scheme: SchemeArg,
+    /// How many times to subdivide (0 copies the mesh).
+    #[arg(long, default_value_t = 1)]
+    pub levels: u32,
+    /// What happens along naked edges: fixed keeps the boundary polyline,
+    /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners.
+    #[arg(long, value_enum, default_value = "fixed")]
+    pub naked_edges: NakedEdgesArg,
+    /// A crease side file (format below) with creases and corners to add.
+    #[arg(long, value_name = "FILE")]
+    pub creases: Option<PathBuf>,
+    /// Weld vertices at identical positions and make hard creases of the
+    /// seams that were unwelded and of edges whose faces fold more than
+    /// this many degrees (180 creases only the seams).
+    #[arg(long, value_name = "DEG", value_parser = angle)]
+    pub crease_angle: Option<f64>,
+    /// How semi-sharp creases soften: uniform takes one level off each
+    /// edge, chaikin also averages sharpness along a crease.
+    #[arg(long, value_enum, default_value = "uniform")]
+    pub creasing: CreasingArg,
+    /// Where UVs are interpolated linearly (OpenSubdiv's options; all is
+    /// OpenSubdiv's default and keeps a texture's layout).
+    #[arg(long, value_enum, default_value = "all")]
+    pub uv_linear: UvLinearArg,
+    /// Move the result onto the limit surface and write its normals
+    /// (OBJ `vn`, PLY nx ny nz).
+    #[arg(long)]
+    pub limit: bool,
+}
+
+pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
+    let Subdivide {
+        files,
+        scheme,
+        levels,
+        naked_edges,
+        creases,
+        crease_angle,
+        creasing,
+        uv_linear,
+        limit,
+    } = args;
+    let mut file = read_file(cli, &files.input)?;
+    require_faces(&files.input, &file.mesh)?;
+    if crease_angle.is_some() && !file.has_attributes() && corners_split_by_format(&file.mesh) {
+        // Every corner its own vertex (STL, an unwelded OBJ): every edge
+        // would be a seam, and so a crease. Joined first, as --weld does.
+        let before = file.mesh.vertex_count();
+        file = read_file_welded(&files.input, true)?;
+        eprintln!(
+            "{}: no two faces share a vertex, as the format stores them: welded {} corners at identical positions first (as --weld), so that only folds crease",
+            files.input.display(),
+            before - file.mesh.vertex_count()
+        );
+    }
+    file.check_creases().map_err(|e| e.in_file(&files.input))?;
+    let info = weft::Topology::new(&file.mesh).info(&file.mesh);
+    if info.is_orientable && !info.is_oriented {
+        eprintln!(
+            "{}: warning: neighbouring faces disagree on their orientation, which subdivision reads as creases; `weft flip {} FIXED.obj --unify` makes it consistent",
+            files.input.display(),
+            files.input.display()
+        );
+    }
+    if let Some(side) = creases {
+        let side_file = io::creases::read(side)?;
+        io::check_creases(&file.mesh, &side_file.creases, &side_file.corners)
+            .map_err(|e| e.in_file(side))?;
+        eprintln!(
+            "{}: {} creases and {} corners",
+            side.display(),
+            side_file.creases.len(),
+            side_file.corners.len()
+        );
+        file.creases.extend(side_file.creases);
+        file.corners.extend(side_file.corners);
+    }
+    let scheme = Scheme::from(*scheme);
+    let naked_edges = NakedEdges::from(*naked_edges);
+    if let Some(angle) = crease_angle {
+        let before = file.mesh.vertex_count();
+        let (welded, found) = carry::crease_by_angle(&file, *angle)
+            .map_err(|e| operation_failed(&files.input, "find creases", e))?;
+        file = welded;
+        eprintln!(
+            "{}: welded {} vertices at identical positions; {found} edges creased (unwelded seams and folds over {angle}°)",
+            files.input.display(),
+            before - file.mesh.vertex_count()
+        );
+    }
+    if scheme == Scheme::Loop {
+        let before = file.mesh.face_count();
+        let split;
+        (file, split) = carry::as_triangles(&file)
+            .map_err(|e| operation_failed(&files.input, "triangulate", e))?;
+        if split > 0 {
+            eprintln!(
+                "{}: Loop needs triangles: triangulated {split} of {before} faces into {} triangles",
+                files.input.display(),
+                file.mesh.face_count()
+            );
+        }
+    }
+    let carry = carry::Carry {
+        scheme,
+        levels: *levels,
+        options: SubdivisionOptions {
+            naked_edges,
+            creasing: (*creasing).into(),
+            ..SubdivisionOptions::default()
+        },
+        uv_linear: (*uv_linear).into(),
+        limit: *limit,
+    };
+    let refined = if carry::is_plain(&file, &carry) {
+        with_progress("subdividing", || {
+            subdivide::subdivide(&file.mesh, scheme, *levels, naked_edges)
+        })
+        .map(MeshFile::new)
+    } else {
+        with_progress("subdividing", || carry::subdivide(&file, &carry))
+    }
+    .map_err(|e| operation_failed(&files.input, "subdivide", e))?;
+    write_file(&files.output, &refined, &io::WriteOptions::default())
+}
+
+/// Whether no vertex is shared by two faces, as STL and some OBJ writers
+/// store a mesh (every triangle with corners of its own).
+fn corners_split_by_format(mesh: &weft::Mesh) -> bool {
+    let mut used = vec![false; mesh.vertex_count()];
+    mesh.face_count() > 1
+        && mesh.face_indices().iter().all(|&v| !std::mem::replace(&mut used[v as usize], true))
+}
