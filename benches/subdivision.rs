@@ -29,8 +29,9 @@ use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, SamplingMode};
 use rayon::ThreadPool;
+use weft::mesh::shapes;
 use weft::subdivide::{subdivide, NakedEdges, Refiner, Scheme};
-use weft::{shapes, DVec3, Mesh};
+use weft::{DVec3, Mesh};
 use weft_reference::{
     openmesh_catmull_clark, openmesh_loop, BoundaryInterpolation, OsdOptions, OsdRefiner,
     OsdStencils, RefMesh, Scheme as OsdScheme,
@@ -327,7 +328,7 @@ fn peak_child(spec: &str) {
     let all = pool(std::thread::available_parallelism().map_or(1, |n| n.get()));
     // Starts the pool's threads on a small mesh, so that no memory the
     // measured call could reuse is left free on the heap.
-    let warm_up = weft::shapes::icosahedron();
+    let warm_up = weft::mesh::shapes::icosahedron();
     all.install(|| drop(subdivide(&warm_up, case.scheme, 1, NakedEdges::Smooth)));
     std::fs::write("/proc/self/clear_refs", "5").expect("reset the peak resident size");
     let before = status_kib("VmRSS:") * 1024;

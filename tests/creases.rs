@@ -8,7 +8,7 @@
 //! of face f contiguous, child i at corner i), so vertices are matched
 //! through the faces: corner k of refined face f is the same vertex in both.
 
-use weft::shapes;
+use weft::mesh::shapes;
 use weft::subdivide::FaceVaryingLinear;
 use weft::subdivide::{
     subdivide, subdivide_with, Crease, Creasing, NakedEdges, Scheme, Subdivider, SubdivisionOptions,

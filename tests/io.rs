@@ -5,7 +5,8 @@
 use std::path::PathBuf;
 
 use weft::io::{self, Format, IoError, Location, PlyEncoding, WriteOptions};
-use weft::{shapes, DVec3, Mesh};
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh};
 
 fn shapes_to_test() -> Vec<(&'static str, Mesh)> {
     let mut far = shapes::cube();

@@ -1,13 +1,14 @@
 //! The mending chain on named shapes: join and weld, cull adjacent faces,
 //! orientation, planarity, T-nodes and the naked boundary.
 
-use weft::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
-use weft::cull::cull_adjacent;
-use weft::orient::{is_orientable, signed_volume, unify_orientation};
+use weft::mend::cull::cull_adjacent;
+use weft::mend::orient::{is_orientable, signed_volume, unify_orientation};
+use weft::mend::t_nodes::{find_t_nodes, repair_t_nodes};
+use weft::mend::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
+use weft::mesh::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
+use weft::mesh::shapes;
 use weft::subdivide::{catmull_clark, NakedEdges};
-use weft::t_nodes::{find_t_nodes, repair_t_nodes};
-use weft::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
-use weft::{shapes, DVec3, Mesh, MeshInfo, Topology};
+use weft::{DVec3, Mesh, MeshInfo, Topology};
 
 fn info(mesh: &Mesh) -> MeshInfo {
     Topology::new(mesh).info(mesh)

@@ -9,7 +9,8 @@
 use std::collections::{HashMap, HashSet};
 
 use proptest::prelude::*;
-use weft::{shapes, DVec3, Mesh, Topology};
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh, Topology};
 
 /// A random closed, oriented manifold of known Euler characteristic: a torus
 /// or a sphere-like box of random resolution, jittered, with random quads
@@ -366,7 +367,7 @@ fn a_box_whose_sides_do_not_meet_is_open_along_its_seams() {
         .sum();
     assert_eq!(edge_uses, mesh.index_count());
     // The vertices of the finer grids lie on the coarser grids' naked edges.
-    let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, 0.02).unwrap();
+    let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&mesh, 0.02).unwrap();
     assert!(inserted > 0);
     let fixed = Topology::new(&repaired).info(&repaired);
     assert!(fixed.is_closed && fixed.is_oriented, "{fixed:?}");
@@ -399,13 +400,13 @@ fn the_polygon_generator_mixes_triangles_quads_and_n_gons() {
 
 mod operations {
     use super::*;
-    use weft::cull::cull_adjacent;
-    use weft::orient::{flip, signed_volume, unify_orientation};
+    use weft::mend::cull::cull_adjacent;
+    use weft::mend::orient::{flip, signed_volume, unify_orientation};
+    use weft::mend::weld::{join, weld, WeldReport};
+    use weft::mesh::triangulate::triangulate;
     use weft::subdivide::{
         catmull_clark, loop_subdivision, refined_counts, subdivide, NakedEdges, Refiner, Scheme,
     };
-    use weft::triangulate::triangulate;
-    use weft::weld::{join, weld, WeldReport};
 
     fn euler(mesh: &Mesh) -> i64 {
         let info = Topology::new(mesh).info(mesh);

@@ -1,11 +1,11 @@
 //! Subdivision's counts, order, naked-edge modes, refiner and triangulation.
 
-use weft::shapes;
+use weft::mesh::shapes;
+use weft::mesh::triangulate::triangulate;
 use weft::subdivide::{
     catmull_clark, loop_subdivision, parent_faces, refined_counts, subdivide, NakedEdges, Refiner,
     Scheme,
 };
-use weft::triangulate::triangulate;
 use weft::{DVec3, Error, Mesh, Topology};
 
 const MODES: [NakedEdges; 3] = [

@@ -51,7 +51,7 @@ enum Command {
         #[arg(long)]
         json: bool,
         /// Distance from its best-fit plane under which a face counts as planar.
-        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        #[arg(long, default_value_t = weft::mend::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         planarity_tolerance: f64,
     },
     /// A shaded picture: front faces blue-grey (or in the file's vertex
@@ -147,7 +147,7 @@ weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaik
         #[arg(short, long, value_parser = mesh_path)]
         output: PathBuf,
         /// Vertices at most this far apart become one.
-        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        #[arg(long, default_value_t = weft::mend::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         tolerance: f64,
     },
     /// Removes every face that has a twin with the same vertices (either
@@ -194,7 +194,7 @@ weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaik
         #[arg(long, value_parser = mesh_path)]
         repair: Option<PathBuf>,
         /// How close to an edge a vertex must be.
-        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        #[arg(long, default_value_t = weft::mend::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         tolerance: f64,
     },
     /// Runs the design workflows on built-in inputs: each stage as a mesh
@@ -545,10 +545,10 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 .map(|path| read(cli, path))
                 .collect::<Result<Vec<_>, _>>()?;
             let parts: Vec<&Mesh> = meshes.iter().collect();
-            let joined = weft::weld::join(&parts)
+            let joined = weft::mend::weld::join(&parts)
                 .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?;
             let (welded, report) =
-                with_progress("welding", || weft::weld::weld(&joined, *tolerance))
+                with_progress("welding", || weft::mend::weld::weld(&joined, *tolerance))
                     .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
             eprintln!(
                 "joined {} meshes ({} vertices, {} faces); merged {} vertices, removed {} collapsed faces and {} unused vertices",
@@ -563,7 +563,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         }
         Command::CullAdjacent { input, output } => {
             let mesh = read(cli, input)?;
-            let (culled, removed) = with_progress("culling", || weft::cull::cull_adjacent(&mesh));
+            let (culled, removed) =
+                with_progress("culling", || weft::mend::cull::cull_adjacent(&mesh));
             eprintln!(
                 "{}: removed {removed} of {} faces that had a twin",
                 input.display(),
@@ -579,12 +580,12 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             let mesh = read(cli, input)?;
             let flipped = if *unify {
                 let (unified, count) =
-                    with_progress("unifying", || weft::orient::unify_orientation(&mesh));
+                    with_progress("unifying", || weft::mend::orient::unify_orientation(&mesh));
                 eprintln!(
                     "{}: flipped {count} of {} faces to unify the orientation{}",
                     input.display(),
                     mesh.face_count(),
-                    if weft::orient::is_orientable(&mesh) {
+                    if weft::mend::orient::is_orientable(&mesh) {
                         ""
                     } else {
                         " (the mesh is not orientable: some edges still disagree)"
@@ -592,7 +593,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 );
                 unified
             } else {
-                weft::orient::flip(&mesh)
+                weft::mend::orient::flip(&mesh)
             };
             write(output, &flipped, &io::WriteOptions::default())
         }
@@ -603,7 +604,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
         } => {
             let mesh = read(cli, input)?;
             let found = with_progress("searching", || {
-                weft::t_nodes::find_t_nodes(&mesh, *tolerance)
+                weft::mend::t_nodes::find_t_nodes(&mesh, *tolerance)
             })
             .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
             println!(
@@ -618,8 +619,9 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 );
             }
             if let Some(output) = repair {
-                let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, *tolerance)
-                    .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
+                let (repaired, inserted) =
+                    weft::mend::t_nodes::repair_t_nodes(&mesh, *tolerance)
+                        .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
                 eprintln!("inserted {inserted} vertices into edges");
                 write(output, &repaired, &io::WriteOptions::default())?;
             }
@@ -771,7 +773,7 @@ struct Report {
 }
 
 fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
-    let deviations = weft::analysis::planarity_deviations(mesh);
+    let deviations = weft::mesh::analysis::planarity_deviations(mesh);
     let info = Topology::new(mesh).info(mesh);
     let count = |size: u32| mesh.face_sizes().iter().filter(|&&s| s == size).count();
     let (triangles, quads) = (count(3), count(4));

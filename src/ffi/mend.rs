@@ -1,16 +1,16 @@
 //! Mending exports: join and weld, T-nodes, cull adjacent faces,
 //! orientation, normals, planarity and the naked boundary.
 
-use crate::analysis;
-use crate::cull;
 use crate::ffi::boundary::{
     check_room, guard, input_slice, out_param, output_slice, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::mend::cull;
+use crate::mend::orient;
+use crate::mend::t_nodes;
+use crate::mend::weld;
+use crate::mesh::analysis;
 use crate::mesh::Mesh;
-use crate::orient;
-use crate::t_nodes;
-use crate::weld;
 
 /// The weld tolerance to use when the host has none: 0.001 model units,
 /// Rhino's default absolute tolerance (a millimetre in a model in metres).

@@ -5,8 +5,8 @@ use crate::ffi::boundary::{
     check_room, enum_arg, guard, out_param, output_slice, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
+use crate::mesh::triangulate::triangulate;
 use crate::subdivide::{self, NakedEdges, Scheme};
-use crate::triangulate::triangulate;
 
 /// Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
 pub const WEFT_NAKED_EDGES_FIXED: u32 = 0;

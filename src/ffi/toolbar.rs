@@ -5,16 +5,16 @@
 
 use glam::DVec3;
 
-use crate::extract::{self, DualMode};
 use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, out_param, output_slice, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
-use crate::split;
-use crate::tile::{self, TileFaces, TileFill};
-use crate::topology::Topology;
-use crate::transform::{self, InsetMode, OffsetType};
+use crate::mesh::topology::Topology;
+use crate::toolbar::extract::{self, DualMode};
+use crate::toolbar::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
+use crate::toolbar::split;
+use crate::toolbar::tile::{self, TileFaces, TileFill};
+use crate::toolbar::transform::{self, InsetMode, OffsetType};
 
 /// Offset type: each vertex moves by the distance along its vertex normal.
 pub const WEFT_OFFSET_DIAGONAL: u32 = 0;

@@ -16,8 +16,8 @@ use glam::DVec3;
 
 use super::{write_atomically, IoError};
 use crate::error::{try_vec, Error};
+use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
-use crate::topology::Topology;
 
 /// Largest picture side, in pixels.
 pub const MAX_SIDE: u32 = 4096;
@@ -245,7 +245,7 @@ fn render_with(
         let first = mesh.face_offsets()[f] as usize;
         corners.clear();
         corners.extend(mesh.face_positions(f));
-        let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
+        let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
         let front = normal.dot(camera.eye - centroid) >= 0.0;
         let face_colour = colours.map(|colours| {

@@ -461,7 +461,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
             "the crease angle is {angle_degrees} degrees; it must be 0 or more"
         )));
     }
-    let topology = crate::topology::Topology::new(mesh);
+    let topology = crate::mesh::topology::Topology::new(mesh);
     // Adding 0.0 turns -0.0 into 0.0, so equal numbers have equal bits.
     let bits = |p: glam::DVec3| {
         [
@@ -494,7 +494,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
         .map(|f| f.iter().map(|&v| remap[v as usize]).collect())
         .collect();
     let welded = Mesh::from_polygons(positions, faces)?;
-    let topology = crate::topology::Topology::new(&welded);
+    let topology = crate::mesh::topology::Topology::new(&welded);
     let cos_limit = angle_degrees.to_radians().cos();
     let normal = |f: usize| {
         let face = welded.face(f);

@@ -392,7 +392,7 @@ impl Gathers for RefinedGathers<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes;
+    use crate::mesh::shapes;
     use crate::subdivide::catmull_clark;
     use crate::subdivide::rules::{cage_tags, child_tags};
     use crate::subdivide::NakedEdges;

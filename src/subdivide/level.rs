@@ -4,7 +4,7 @@
 //! The connectivity is flat index arrays, without the mesh's positions, so
 //! that a refiner can plan every level before it sees a single coordinate.
 //! The cage's is found by bucketing every face corner under its lower vertex
-//! (as in [`crate::topology`]); every refined level's is written
+//! (as in [`crate::mesh::topology`]); every refined level's is written
 //! arithmetically from its parent's ([`Connectivity::refine`]): the child
 //! edges, corners and rings of each parent vertex, edge and face have a known
 //! place, so no sorting of the whole level is needed.
@@ -919,7 +919,7 @@ mod tests {
     /// arithmetic exactly as through the offsets.
     #[test]
     fn uniform_faces_match_their_offsets() {
-        use crate::shapes;
+        use crate::mesh::shapes;
         for mesh in [
             shapes::cube(),
             shapes::icosahedron(),
@@ -994,7 +994,7 @@ mod tests {
     /// on closed, open, mixed and non-manifold shapes, over three levels.
     #[test]
     fn refined_connectivity_equals_bucketing() {
-        use crate::shapes;
+        use crate::mesh::shapes;
         let pillow = crate::Mesh::from_polygons(
             vec![crate::DVec3::ZERO, crate::DVec3::X, crate::DVec3::Y],
             [[0u32, 1, 2], [1, 0, 2]],

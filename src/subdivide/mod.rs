@@ -137,7 +137,7 @@ pub fn catmull_clark(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Resul
 ///
 /// # Errors
 /// [`Error::NotTriangles`] naming the first face that is not a triangle
-/// (triangulate first with [`crate::triangulate::triangulate`]);
+/// (triangulate first with [`crate::mesh::triangulate::triangulate`]);
 /// [`Error::ResultTooLarge`]; [`Error::OutOfMemory`];
 /// [`Error::DegenerateInput`] as [`catmull_clark`].
 pub fn loop_subdivision(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
@@ -255,7 +255,7 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
 /// As [`refined_face_count`]; [`Error::OutOfMemory`].
 pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<RefinedCounts> {
     let face_count = refined_face_count(cage, scheme, levels)?;
-    let edges = crate::topology::Topology::new(cage).edge_count() as u64;
+    let edges = crate::mesh::topology::Topology::new(cage).edge_count() as u64;
     let (vertices, faces, indices) = check_counts(
         scheme,
         cage.vertex_count() as u64,
@@ -340,7 +340,7 @@ fn too_large(requested: u32, level: u32, faces: u64, indices: u64) -> Error {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes;
+    use crate::mesh::shapes;
 
     #[test]
     fn level_zero_is_a_copy() {

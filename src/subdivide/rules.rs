@@ -321,7 +321,7 @@ pub(crate) fn loop_smooth_weights(valence: usize) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes;
+    use crate::mesh::shapes;
 
     fn tags_of(mesh: &crate::Mesh, naked: NakedEdges) -> Tags {
         let faces = Faces::of_mesh(mesh);

@@ -12,7 +12,7 @@ use weft::subdivide::{
 /// Triangulates `file`'s mesh; colours and creases keep their vertices, UVs
 /// follow each triangle's corners back to its polygon's.
 pub fn triangulate(file: &MeshFile) -> weft::Result<MeshFile> {
-    let triangulation = weft::triangulate::triangulate(&file.mesh)?;
+    let triangulation = weft::mesh::triangulate::triangulate(&file.mesh)?;
     let uvs = file.uvs.as_ref().map(|uvs| {
         let offsets = file.mesh.face_offsets();
         let mut indices = Vec::with_capacity(triangulation.mesh.index_count());

@@ -7,12 +7,12 @@ use std::path::{Path, PathBuf};
 
 use clap::{Subcommand, ValueEnum};
 
-use weft::extract::DualMode;
-use weft::primitives::{Platonic, Sided};
-use weft::smooth::{HcOptions, SmoothDirection};
-use weft::stellate::Heights;
-use weft::tile::{TileFaces, TileFill};
-use weft::transform::{InsetMode, OffsetType};
+use weft::make::primitives::{Platonic, Sided};
+use weft::make::stellate::Heights;
+use weft::toolbar::extract::DualMode;
+use weft::toolbar::smooth::{HcOptions, SmoothDirection};
+use weft::toolbar::tile::{TileFaces, TileFill};
+use weft::toolbar::transform::{InsetMode, OffsetType};
 use weft::{DVec3, Mesh};
 
 use super::{io, mesh_path, operation_failed, read, with_progress, write, Cli, Failure};
@@ -433,7 +433,7 @@ fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Option<Mesh>> {
     let Some((face, size)) = mesh.first_non_triangle() else {
         return Ok(None);
     };
-    let triangulated = weft::triangulate::triangulate(mesh)?.mesh;
+    let triangulated = weft::mesh::triangulate::triangulate(mesh)?.mesh;
     eprintln!(
         "{}: splitting triangles needs triangles (face {face} has {size} corners): triangulated {} faces into {}",
         input.display(),
@@ -472,7 +472,7 @@ impl ToolbarCommand {
 }
 
 pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
-    use weft::{extract, split, transform};
+    use weft::toolbar::{extract, split, transform};
     match command {
         ToolbarCommand::SplitPolygons { files, levels } => {
             apply(cli, files, "split polygons", |m| {
@@ -517,7 +517,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             direction,
         } => apply(cli, files, "smooth", |m| match method {
             SmoothMethod::Laplacian => {
-                weft::smooth::laplacian(m, *iterations, *blend, naked(*naked_edges))
+                weft::toolbar::smooth::laplacian(m, *iterations, *blend, naked(*naked_edges))
             }
             SmoothMethod::Hc => {
                 let options = HcOptions {
@@ -531,7 +531,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                     },
                     activation: None,
                 };
-                weft::smooth::laplacian_hc_with(m, *iterations, &options)
+                weft::toolbar::smooth::laplacian_hc_with(m, *iterations, &options)
             }
         }),
         ToolbarCommand::Offset {
@@ -582,7 +582,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             Ok(extract::reroute_faces(m, *shift))
         }),
         ToolbarCommand::Stellate { files, height } => apply(cli, files, "stellate", |m| {
-            weft::stellate::stellate(m, Heights::One(*height))
+            weft::make::stellate::stellate(m, Heights::One(*height))
         }),
         ToolbarCommand::Tile { files, fill, faces } => apply(cli, files, "tile", |m| {
             let fill = match fill {
@@ -602,7 +602,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                 FacesArg::Triangles => TileFaces::Triangles,
                 FacesArg::Quads => TileFaces::Quads,
             };
-            weft::tile::tile(m, fill, faces)
+            weft::toolbar::tile::tile(m, fill, faces)
         }),
         ToolbarCommand::Primitive {
             kind,
@@ -613,7 +613,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             sides,
             height,
         } => {
-            use weft::primitives as p;
+            use weft::make::primitives as p;
             let size = *size;
             let built = match kind {
                 PrimitiveKind::Plane => {
