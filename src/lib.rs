@@ -26,6 +26,7 @@
 //! Everything outside `ffi` is safe Rust.
 #![deny(unsafe_code)]
 
+mod buffers;
 /// cbindgen:ignore
 pub mod error;
 /// cbindgen:ignore

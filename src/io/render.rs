@@ -15,7 +15,8 @@ use std::path::Path;
 use glam::DVec3;
 
 use super::{write_atomically, IoError};
-use crate::error::{try_vec, Error};
+use crate::buffers::try_vec;
+use crate::error::Error;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
@@ -228,7 +229,7 @@ fn render_with(
     let fill = (camera.right * 0.6 - camera.forward * 0.4).normalize();
     let edges = options.edges.unwrap_or(mesh.face_count() < EDGE_FACE_LIMIT);
 
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let side = |corner: usize| {
         if topology.is_naked_edge(topology.corner_edges()[corner] as usize) {
             Side::Naked

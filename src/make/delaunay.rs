@@ -8,7 +8,8 @@
 use glam::DVec3;
 use spade::{DelaunayTriangulation, InsertionError, Point2, Triangulation};
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::make::plane::{check_points, Plane};
 use crate::mesh::Mesh;
 

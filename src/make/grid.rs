@@ -3,7 +3,8 @@
 
 use glam::DVec3;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::make::plane::check_points;
 use crate::mesh::Mesh;
 

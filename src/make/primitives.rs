@@ -12,7 +12,8 @@ use std::f64::consts::TAU;
 
 use glam::DVec3;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::make::grid::mesh_from_grid;
 use crate::mesh::Mesh;
 

@@ -4,7 +4,8 @@ use glam::DVec3;
 
 use crate::mesh::analysis::newell_vector;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 
 /// The height of each face's apex above its centroid, along its normal.

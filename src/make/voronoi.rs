@@ -18,7 +18,8 @@ use geo::{BooleanOps, Coord, LineString, Polygon};
 use glam::{DVec2, DVec3};
 use spade::Triangulation;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::make::delaunay::project_and_triangulate;
 use crate::make::plane::{check_points, Plane};
 use crate::mesh::Mesh;

@@ -16,7 +16,8 @@
 
 use glam::DVec3;
 
-use crate::error::{try_vec, Result};
+use crate::buffers::try_vec;
+use crate::error::Result;
 use crate::mend::weld::{check_tolerance, within, Cell, CellGrid, CellMap};
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
@@ -104,7 +105,7 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
 /// The T-nodes with the corner whose edge each lies on, sorted by corner and parameter.
 fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
     check_tolerance(tolerance)?;
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let naked: Vec<u32> = topology.naked_edges();
     if naked.is_empty() {
         return Ok(Vec::new());

@@ -16,7 +16,8 @@ use std::hash::{BuildHasherDefault, Hash, Hasher};
 use glam::DVec3;
 use rayon::slice::ParallelSliceMut;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::Mesh;
 

@@ -5,6 +5,7 @@
 //! its input, so operations may rely on in-range indices, faces of at least
 //! three distinct vertices and finite coordinates.
 
+pub(crate) mod adjacency;
 pub mod analysis;
 pub(crate) mod linalg;
 pub mod shapes;
@@ -135,9 +136,9 @@ impl Mesh {
         use rayon::prelude::*;
         const CHUNK: usize = 16384;
         let face_count = face_indices.len() / size as usize;
-        let mut face_sizes = crate::error::try_vec(face_count, "face sizes")?;
+        let mut face_sizes = crate::buffers::try_vec(face_count, "face sizes")?;
         face_sizes.par_extend(rayon::iter::repeat_n(size, face_count).with_min_len(CHUNK));
-        let mut face_offsets = crate::error::try_vec(face_count + 1, "face offsets")?;
+        let mut face_offsets = crate::buffers::try_vec(face_count + 1, "face offsets")?;
         face_offsets.par_extend(
             (0..face_count as u32 + 1)
                 .into_par_iter()

@@ -1,14 +1,17 @@
 //! Edges, adjacency, boundary and manifoldness of a [`Mesh`].
 //!
 //! Everything is flat index arrays built by bucketing, never by hashing
-//! pairs or comparing all faces: the edges are found by bucketing every face
-//! corner under its lower vertex, so a mesh of a million faces takes a few
-//! tens of milliseconds.
+//! pairs or comparing all faces: the edges come from the one builder in
+//! [`crate::mesh::adjacency`], which the subdivision's levels share, so a
+//! mesh of a million faces takes a few tens of milliseconds.
 //!
 //! Names used throughout: a *corner* is a position in [`Mesh::face_indices`];
 //! the *edge of a corner* runs from that corner's vertex to the next corner's
 //! vertex in the same face.
 
+use crate::buffers::{try_copy, try_vec};
+use crate::error::Result;
+use crate::mesh::adjacency::Adjacency;
 use crate::mesh::Mesh;
 
 /// Edges and adjacency of one mesh. Build it with [`Topology::new`]; it does
@@ -67,71 +70,39 @@ pub struct Orientation {
 
 impl Topology {
     /// Finds the edges and adjacency of `mesh`.
+    ///
+    /// # Panics
+    /// When memory for the arrays runs out; [`Topology::try_new`] returns
+    /// that as an error instead.
     pub fn new(mesh: &Mesh) -> Topology {
+        Topology::try_new(mesh).unwrap_or_else(|error| panic!("{error}"))
+    }
+
+    /// Finds the edges and adjacency of `mesh`, reporting rather than
+    /// aborting when memory runs out.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
+    pub fn try_new(mesh: &Mesh) -> Result<Topology> {
         let corner_count = mesh.index_count();
         let indices = mesh.face_indices();
-        let mut corner_faces = Vec::with_capacity(corner_count);
-        let mut corner_next = Vec::with_capacity(corner_count);
+        let mut corner_faces = try_vec(corner_count, "corner faces")?;
+        let mut corner_next = try_vec(corner_count, "next corners")?;
         for (f, w) in mesh.face_offsets().windows(2).enumerate() {
             let (start, end) = (w[0], w[1]);
             corner_faces.extend(std::iter::repeat_n(f as u32, (end - start) as usize));
             corner_next.extend(start + 1..end);
             corner_next.push(start);
         }
-
-        // Bucket every corner's edge under its lower vertex, then sort each
-        // small bucket by the higher vertex: edges come out sorted.
-        let vertex_count = mesh.vertex_count();
-        let mut bucket_offsets = vec![0u32; vertex_count + 1];
-        for c in 0..corner_count {
-            let (a, b) = (indices[c], indices[corner_next[c] as usize]);
-            bucket_offsets[a.min(b) as usize + 1] += 1;
-        }
-        prefix_sum(&mut bucket_offsets);
-        let mut fill = bucket_offsets.clone();
-        let mut bucket: Vec<(u32, u32)> = vec![(0, 0); corner_count];
-        for c in 0..corner_count {
-            let (a, b) = (indices[c], indices[corner_next[c] as usize]);
-            let slot = &mut fill[a.min(b) as usize];
-            bucket[*slot as usize] = (a.max(b), c as u32);
-            *slot += 1;
-        }
-        let mut edges = Vec::new();
-        let mut edge_offsets = vec![0u32];
-        let mut edge_corners = Vec::with_capacity(corner_count);
-        let mut corner_edges = vec![0u32; corner_count];
-        for low in 0..vertex_count {
-            let range = bucket_offsets[low] as usize..bucket_offsets[low + 1] as usize;
-            let entries = &mut bucket[range];
-            entries.sort_unstable();
-            for (i, &(high, corner)) in entries.iter().enumerate() {
-                if i == 0 || entries[i - 1].0 != high {
-                    if i > 0 {
-                        edge_offsets.push(edge_corners.len() as u32);
-                    }
-                    edges.push([low as u32, high]);
-                }
-                corner_edges[corner as usize] = edges.len() as u32 - 1;
-                edge_corners.push(corner);
-            }
-            if !entries.is_empty() {
-                edge_offsets.push(edge_corners.len() as u32);
-            }
-        }
-
-        let mut vertex_offsets = vec![0u32; vertex_count + 1];
-        for &v in indices {
-            vertex_offsets[v as usize + 1] += 1;
-        }
-        prefix_sum(&mut vertex_offsets);
-        let mut fill = vertex_offsets.clone();
-        let mut vertex_corners = vec![0u32; corner_count];
-        for (c, &v) in indices.iter().enumerate() {
-            vertex_corners[fill[v as usize] as usize] = c as u32;
-            fill[v as usize] += 1;
-        }
-
-        Topology {
+        let Adjacency {
+            edges,
+            corner_edges,
+            edge_offsets,
+            edge_corners,
+            vertex_offsets,
+            vertex_corners,
+        } = Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
+        Ok(Topology {
             edges,
             corner_edges,
             corner_faces,
@@ -140,8 +111,8 @@ impl Topology {
             edge_corners,
             vertex_offsets,
             vertex_corners,
-            face_vertices: indices.to_vec(),
-        }
+            face_vertices: try_copy(indices, "corner vertices")?,
+        })
     }
 
     /// Number of unique edges.
@@ -445,12 +416,6 @@ impl Topology {
             is_orientable: orientation.component_orientable.iter().all(|&o| o),
             is_oriented,
         }
-    }
-}
-
-fn prefix_sum(counts: &mut [u32]) {
-    for i in 1..counts.len() {
-        counts[i] += counts[i - 1];
     }
 }
 

@@ -5,7 +5,8 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::error::{try_vec, Result};
+use crate::buffers::try_vec;
+use crate::error::Result;
 use crate::mesh::analysis::newell_vector;
 use crate::mesh::Mesh;
 

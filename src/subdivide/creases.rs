@@ -11,10 +11,12 @@
 //! softens. As in OpenSubdiv, sharpness is kept at single precision, so the
 //! same inputs give the same surface.
 
-use super::level::{zeroed, Connectivity, Faces};
+use super::level::{Connectivity, Faces};
 use super::rules::forced_sharpness;
 use super::{NakedEdges, Scheme};
-use crate::error::{try_vec, Error, Result};
+use crate::buffers::try_vec;
+use crate::buffers::zeroed;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// The sharpness OpenSubdiv treats as infinite (`Sdc::Crease::SHARPNESS_INFINITE`):
@@ -208,7 +210,7 @@ fn vertex_edges(vertex_count: usize, connectivity: &Connectivity) -> Result<(Vec
         offsets[a as usize + 1] += 1;
         offsets[b as usize + 1] += 1;
     }
-    super::level::prefix_sum(&mut offsets);
+    crate::buffers::prefix_sum(&mut offsets);
     let mut fill = offsets.clone();
     let mut edges: Vec<u32> = zeroed(2 * connectivity.edge_count(), "vertex edges")?;
     for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
@@ -461,7 +463,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
             "the crease angle is {angle_degrees} degrees; it must be 0 or more"
         )));
     }
-    let topology = crate::mesh::topology::Topology::new(mesh);
+    let topology = crate::mesh::topology::Topology::try_new(mesh)?;
     // Adding 0.0 turns -0.0 into 0.0, so equal numbers have equal bits.
     let bits = |p: glam::DVec3| {
         [
@@ -494,7 +496,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
         .map(|f| f.iter().map(|&v| remap[v as usize]).collect())
         .collect();
     let welded = Mesh::from_polygons(positions, faces)?;
-    let topology = crate::mesh::topology::Topology::new(&welded);
+    let topology = crate::mesh::topology::Topology::try_new(&welded)?;
     let cos_limit = angle_degrees.to_radians().cos();
     let normal = |f: usize| {
         let face = welded.face(f);

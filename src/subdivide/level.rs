@@ -9,13 +9,12 @@
 //! edges, corners and rings of each parent vertex, edge and face have a known
 //! place, so no sorting of the whole level is needed.
 
-use rayon::prelude::*;
-
 use super::Scheme;
-use crate::error::{try_vec, Result};
-
-/// Items per rayon task: small enough to balance, large enough to amortise.
-const CHUNK: usize = 4096;
+use crate::buffers::{
+    fill_by_offsets, flatten, par_map, par_offsets, prefix_sum, try_copy, try_vec, zeroed,
+};
+use crate::error::Result;
+use crate::mesh::adjacency::Adjacency;
 
 /// Marks a missing index (a sharp edge has no wings).
 pub(crate) const NONE: u32 = u32::MAX;
@@ -131,7 +130,6 @@ impl Connectivity {
     pub(crate) fn new(faces: &Faces) -> Result<Connectivity> {
         let corner_count = faces.corner_count();
         let vertex_count = faces.vertex_count;
-        let indices = &faces.indices;
 
         let mut corner_faces = Vec::new();
         if faces.size == 0 {
@@ -144,74 +142,14 @@ impl Connectivity {
             0 => corner_faces[c] as usize,
             size => c / size as usize,
         };
-
-        // Bucket each corner's edge under its lower vertex; sorting each small
-        // bucket by the higher vertex gives the edges in sorted order.
-        let mut bucket_offsets = zeroed(vertex_count + 1, "edge buckets")?;
-        let edge_end = |c: usize| {
-            let a = indices[c];
-            let b = indices[faces.next(c, face_of(c))];
-            (a.min(b), a.max(b))
-        };
-        for c in 0..corner_count {
-            bucket_offsets[edge_end(c).0 as usize + 1] += 1;
-        }
-        prefix_sum(&mut bucket_offsets);
-        let mut fill = try_vec(vertex_count + 1, "edge buckets")?;
-        fill.extend_from_slice(&bucket_offsets);
-        let mut bucket: Vec<u64> = zeroed(corner_count, "edge buckets")?;
-        for c in 0..corner_count {
-            let (low, high) = edge_end(c);
-            let slot = &mut fill[low as usize];
-            bucket[*slot as usize] = (u64::from(high) << 32) | c as u64;
-            *slot += 1;
-        }
-        drop(fill);
-
-        let mut edges = try_vec(corner_count, "edges")?;
-        let mut edge_offsets = try_vec(corner_count + 1, "edge offsets")?;
-        let mut edge_corners = try_vec(corner_count, "edge corners")?;
-        let mut corner_edges = zeroed(corner_count, "corner edges")?;
-        edge_offsets.push(0u32);
-        for low in 0..vertex_count {
-            let entries =
-                &mut bucket[bucket_offsets[low] as usize..bucket_offsets[low + 1] as usize];
-            entries.sort_unstable();
-            let mut previous_high = u32::MAX;
-            for &entry in entries.iter() {
-                let (high, corner) = ((entry >> 32) as u32, entry as u32);
-                if high != previous_high {
-                    if previous_high != u32::MAX {
-                        edge_offsets.push(edge_corners.len() as u32);
-                    }
-                    edges.push([low as u32, high]);
-                    previous_high = high;
-                }
-                corner_edges[corner as usize] = edges.len() as u32 - 1;
-                edge_corners.push(corner);
-            }
-            if previous_high != u32::MAX {
-                edge_offsets.push(edge_corners.len() as u32);
-            }
-        }
-        drop(bucket);
-        edges.shrink_to_fit();
-        edge_offsets.shrink_to_fit();
-
-        let mut vertex_offsets = zeroed(vertex_count + 1, "vertex corners")?;
-        for &v in indices {
-            vertex_offsets[v as usize + 1] += 1;
-        }
-        prefix_sum(&mut vertex_offsets);
-        let mut fill = try_vec(vertex_count + 1, "vertex corners")?;
-        fill.extend_from_slice(&vertex_offsets);
-        let mut vertex_corners = zeroed(corner_count, "vertex corners")?;
-        for (c, &v) in indices.iter().enumerate() {
-            vertex_corners[fill[v as usize] as usize] = c as u32;
-            fill[v as usize] += 1;
-        }
-
-        drop(fill);
+        let Adjacency {
+            edges,
+            corner_edges,
+            edge_offsets,
+            edge_corners,
+            vertex_offsets,
+            vertex_corners,
+        } = Adjacency::build(vertex_count, &faces.indices, |c| faces.next(c, face_of(c)))?;
         let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&edges, vertex_count)?;
 
         Ok(Connectivity {
@@ -716,8 +654,7 @@ fn vertex_edges_of(edges: &[[u32; 2]], vertex_count: usize) -> Result<(Vec<u32>,
         offsets[b as usize + 1] += 1;
     }
     prefix_sum(&mut offsets);
-    let mut fill = try_vec(vertex_count + 1, "vertex edges")?;
-    fill.extend_from_slice(&offsets);
+    let mut fill = try_copy(&offsets, "vertex edges")?;
     let mut list = zeroed(2 * edges.len(), "vertex edges")?;
     for (e, &[a, b]) in edges.iter().enumerate() {
         for v in [a as usize, b as usize] {
@@ -780,117 +717,6 @@ impl Plan {
     pub(crate) fn ring(&self, v: usize) -> &[u32] {
         &self.vertex_ring
             [self.vertex_ring_offsets[v] as usize..self.vertex_ring_offsets[v + 1] as usize]
-    }
-}
-
-/// A vector of `n` zeros, reserved fallibly and filled in parallel (filling
-/// is what faults the fresh pages in, and the kernel zeroes each page on the
-/// thread that touches it first).
-pub(crate) fn zeroed<T: Default + Clone + Send + Sync>(n: usize, what: &str) -> Result<Vec<T>> {
-    let mut v = try_vec(n, what)?;
-    v.par_extend(rayon::iter::repeat_n(T::default(), n).with_min_len(4 * CHUNK));
-    Ok(v)
-}
-
-/// The indices of fixed-size groups (a quad's, a triangle's children's) as
-/// one list, in place: the buffer is reinterpreted, not copied.
-pub(crate) fn flatten<const N: usize>(groups: Vec<[u32; N]>) -> Vec<u32> {
-    // `[u32; N]` and `u32` share their alignment and N divides the bytes:
-    // the cast cannot fail.
-    bytemuck::cast_vec(groups)
-}
-
-/// `f(0), …, f(n - 1)`, reserved fallibly and written in parallel, each
-/// element once.
-pub(crate) fn par_map<T: Send>(
-    n: usize,
-    what: &str,
-    f: impl Fn(usize) -> T + Sync + Send,
-) -> Result<Vec<T>> {
-    let mut values = try_vec(n, what)?;
-    values.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(f));
-    Ok(values)
-}
-
-/// The offsets of `n` items of `count(i)` values each (one longer than `n`),
-/// counted and summed in parallel.
-pub(crate) fn par_offsets(
-    n: usize,
-    what: &str,
-    count: impl Fn(usize) -> u32 + Sync + Send,
-) -> Result<Vec<u32>> {
-    let mut offsets = try_vec(n + 1, what)?;
-    offsets.push(0);
-    offsets.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(count));
-    // Each block's total, then each block summed from the totals before it.
-    let block = (4 * CHUNK).max(n.div_ceil(4 * rayon::current_num_threads().max(1)));
-    let totals: Vec<u32> = offsets[1..]
-        .par_chunks(block)
-        .map(|b| b.iter().sum())
-        .collect();
-    let mut bases = Vec::with_capacity(totals.len());
-    let mut sum = 0u32;
-    for total in totals {
-        bases.push(sum);
-        sum += total;
-    }
-    offsets[1..]
-        .par_chunks_mut(block)
-        .zip(bases)
-        .for_each(|(b, mut sum)| {
-            for x in b {
-                sum += *x;
-                *x = sum;
-            }
-        });
-    Ok(offsets)
-}
-
-/// A vector of `offsets[n]` values, item i's `offsets[i]..offsets[i + 1]`
-/// written by `fill(i, part)`, blocks of items in parallel.
-pub(crate) fn fill_by_offsets<T: Default + Clone + Send + Sync>(
-    offsets: &[u32],
-    what: &str,
-    fill: impl Fn(usize, &mut [T]) + Sync + Send,
-) -> Result<Vec<T>> {
-    let mut values = zeroed(offsets.last().map_or(0, |&n| n as usize), what)?;
-    split_by_offsets(&mut values, offsets, CHUNK)
-        .into_par_iter()
-        .for_each(|(items, block)| {
-            let base = offsets[items.start] as usize;
-            for i in items {
-                fill(
-                    i,
-                    &mut block[offsets[i] as usize - base..offsets[i + 1] as usize - base],
-                );
-            }
-        });
-    Ok(values)
-}
-
-/// Splits `values` into the parts owned by each block of `block` items,
-/// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
-/// its items.
-pub(crate) fn split_by_offsets<'a, T>(
-    mut values: &'a mut [T],
-    offsets: &[u32],
-    block: usize,
-) -> Vec<(std::ops::Range<usize>, &'a mut [T])> {
-    let items = offsets.len().saturating_sub(1);
-    let mut parts = Vec::with_capacity(items.div_ceil(block));
-    for first in (0..items).step_by(block) {
-        let last = (first + block).min(items);
-        let len = (offsets[last] - offsets[first]) as usize;
-        let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
-        parts.push((first..last, part));
-        values = rest;
-    }
-    parts
-}
-
-pub(crate) fn prefix_sum(counts: &mut [u32]) {
-    for i in 1..counts.len() {
-        counts[i] += counts[i - 1];
     }
 }
 

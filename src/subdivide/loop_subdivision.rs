@@ -16,9 +16,11 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{flatten, par_map, Connectivity, Faces, VertexRule, NONE};
+use super::level::{Connectivity, Faces, VertexRule, NONE};
 use super::rules::loop_smooth_weights;
-use crate::error::{try_vec, Result};
+use crate::buffers::try_vec;
+use crate::buffers::{flatten, par_map};
+use crate::error::Result;
 
 const CHUNK: usize = 2048;
 

@@ -57,7 +57,8 @@ pub use refiner::Refiner;
 use refiner::Step;
 pub use stencils::{subdivide_with, Subdivider};
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
 
 /// What happens along naked edges (edges with one face), the `S` input of
@@ -255,7 +256,7 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
 /// As [`refined_face_count`]; [`Error::OutOfMemory`].
 pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<RefinedCounts> {
     let face_count = refined_face_count(cage, scheme, levels)?;
-    let edges = crate::mesh::topology::Topology::new(cage).edge_count() as u64;
+    let edges = crate::mesh::topology::Topology::try_new(cage)?.edge_count() as u64;
     let (vertices, faces, indices) = check_counts(
         scheme,
         cage.vertex_count() as u64,

@@ -14,7 +14,8 @@ use super::{
     catmull_clark, check_counts, loop_subdivision, scale, NakedEdges, Scheme, Subdivider,
     SubdivisionOptions,
 };
-use crate::error::{try_vec, Error, Result};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// What depends only on a cage's faces: the plans of every level and the

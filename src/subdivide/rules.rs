@@ -26,14 +26,11 @@
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, LevelGathers};
-use super::level::{
-    fill_by_offsets, par_map, par_offsets, zeroed, Connectivity, Faces, Plan, VertexRule,
-};
+use super::level::{Connectivity, Faces, Plan, VertexRule};
 use super::{NakedEdges, Scheme};
-use crate::error::{try_vec, Result};
-
-/// Items per rayon task: small enough to balance, large enough to amortise.
-const CHUNK: usize = 4096;
+use crate::buffers::try_vec;
+use crate::buffers::{fill_by_offsets, par_map, par_offsets, zeroed, CHUNK};
+use crate::error::Result;
 
 /// Sharpness of every edge and rule of every vertex of one level.
 #[derive(Debug, Clone)]

@@ -16,10 +16,12 @@ use super::creases::{
     cage_sharpness, child_sharpness, child_sharpness_around, fractional_weight, is_sharp, Rule,
     Sharpness, SubdivisionOptions,
 };
-use super::level::{zeroed, Connectivity, Faces};
+use super::level::{Connectivity, Faces};
 use super::rules::loop_smooth_weights;
 use super::{catmull_clark, check_counts, loop_subdivision, scale, Scheme};
-use crate::error::{try_vec, Error, Result};
+use crate::buffers::try_vec;
+use crate::buffers::zeroed;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// Rows per rayon task.

@@ -8,7 +8,8 @@
 
 use glam::DVec3;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::triangulate::triangulate;
 use crate::mesh::Mesh;
 

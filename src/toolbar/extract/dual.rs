@@ -38,7 +38,7 @@ pub enum DualMode {
 /// keeping the size scales a vertex past `f64` (coordinates near
 /// `f64::MAX`).
 pub fn dual(mesh: &Mesh, mode: DualMode) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let fans: Vec<_> = vertex_fans(mesh, &topology)
         .into_iter()
         .filter(|f| f.closed && f.corners.len() >= 3)

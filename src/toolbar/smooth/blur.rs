@@ -1,6 +1,7 @@
 //! Blur: smoothing of per-vertex values (colours, weights) over the mesh.
 
-use crate::error::{try_vec, Error, Result};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 use super::{check_iterations, check_unit, NakedEdges, Neighbours};

@@ -4,7 +4,8 @@
 
 use glam::DVec3;
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 

@@ -29,7 +29,7 @@ pub fn constant_quads_split(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn split_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let (v, e) = (mesh.vertex_count() as u64, topology.edge_count() as u64);
     let (mut centres, mut faces, mut indices) = (0u64, 0u64, 0u64);
     for &size in mesh.face_sizes() {

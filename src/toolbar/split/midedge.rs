@@ -35,7 +35,7 @@ pub fn midedge(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn midedge_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let fans = vertex_fans(mesh, &topology);
     let e = topology.edge_count() as u64;
     let fan_indices: u64 = fans.iter().map(|f| f.corners.len() as u64 + 2).sum();

@@ -26,7 +26,7 @@ pub fn split_polygons(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn split_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let (v, e, f, corners) = (
         mesh.vertex_count() as u64,
         topology.edge_count() as u64,

@@ -24,7 +24,7 @@ pub fn sierpinski_triangles(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn sierpinski_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let (v, e, corners) = (
         mesh.vertex_count() as u64,
         topology.edge_count() as u64,

@@ -33,7 +33,7 @@ fn check_fraction(fraction: f64, below: f64) -> Result<()> {
 /// [`Error::ResultTooLarge`] past the size cap.
 pub fn bevel_vertices(mesh: &Mesh, fraction: f64) -> Result<Mesh> {
     check_fraction(fraction, 0.5)?;
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let fans = vertex_fans(mesh, &topology);
     let e = topology.edge_count() as u64;
     let fan_indices: u64 = fans.iter().map(|f| f.corners.len() as u64 + 2).sum();
@@ -110,7 +110,7 @@ pub fn bevel_vertices(mesh: &Mesh, fraction: f64) -> Result<Mesh> {
 /// [`Error::ResultTooLarge`] past the size cap.
 pub fn bevel_edges(mesh: &Mesh, fraction: f64) -> Result<Mesh> {
     check_fraction(fraction, 1.0)?;
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let fans: Vec<_> = vertex_fans(mesh, &topology)
         .into_iter()
         .filter(|f| f.closed && f.corners.len() >= 3)

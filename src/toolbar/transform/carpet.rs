@@ -31,7 +31,7 @@ pub fn sierpinski_carpet(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 
 #[allow(clippy::needless_range_loop)] // (i, j) are grid coordinates, not just indices
 fn carpet_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let (v, e, f) = (
         mesh.vertex_count() as u64,
         topology.edge_count() as u64,

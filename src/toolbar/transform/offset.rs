@@ -43,7 +43,7 @@ fn offset_positions(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Vec<
     let normals: Vec<DVec3> = (0..mesh.face_count())
         .map(|f| face_normal(mesh, f))
         .collect();
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let faces = topology.corner_faces();
     let mut out = mesh.positions().to_vec();
     for (v, p) in out.iter_mut().enumerate() {
@@ -123,7 +123,7 @@ pub fn offset(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Mesh> {
 /// [`Error::ResultTooLarge`] past the size cap.
 pub fn thicken(mesh: &Mesh, distance: f64, kind: OffsetType) -> Result<Mesh> {
     let positions = offset_positions(mesh, distance, kind)?;
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let next = topology.corner_next();
     let naked: Vec<usize> = (0..mesh.index_count())
         .filter(|&c| topology.is_naked_edge(topology.corner_edges()[c] as usize))
