@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 
 use weft::io::{self, Format, IoError, Location, PlyEncoding, WriteOptions};
+use weft::mend::weld;
 use weft::mesh::shapes;
 use weft::{DVec3, Mesh};
 
@@ -88,8 +89,8 @@ fn stl_round_trips_triangles_unwelded() {
                 }
             }
             // Welding identical corners gives back the shared vertices.
-            let (welded, dropped) = io::weld_identical(&back);
-            assert_eq!(dropped, 0);
+            let (welded, report) = weld::weld(&back, 0.0).unwrap();
+            assert_eq!(report.removed_face_count, 0);
             let mut used: Vec<u32> = mesh.face_indices().to_vec();
             used.sort_unstable();
             used.dedup();

@@ -235,6 +235,28 @@ fn weld_merges_chains_drops_collapsed_faces_and_is_idempotent() {
     assert_eq!(welded.positions()[0], DVec3::ZERO);
 }
 
+/// At tolerance 0 only identical positions merge, and -0 is the same
+/// position as +0 even when other vertices sort between them.
+#[test]
+fn weld_at_tolerance_zero_merges_identical_positions_and_signed_zeros() {
+    let positions = vec![
+        DVec3::new(-0.0, 1.0, 0.0),
+        DVec3::new(-0.0, 2.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 1e-300),
+    ];
+    let mesh = Mesh::from_polygons(positions, [[0u32, 2, 1], [3, 4, 5]]).unwrap();
+    let (welded, report) = weld(&mesh, 0.0).unwrap();
+    assert_eq!(report.merged_vertex_count, 2);
+    assert_eq!(welded.vertex_count(), 4);
+    assert_eq!(welded.face(0), &[0, 2, 1]);
+    assert_eq!(welded.face(1), &[0, 2, 3]);
+    // The merged vertex keeps its first vertex's position, sign and all.
+    assert!(welded.positions()[0].x.is_sign_negative());
+}
+
 #[test]
 fn t_nodes_between_grids_of_4x4_and_4x7_quads_are_found_and_repaired() {
     let left = grid(4, 4, [0.0, 0.0], [4.0, 4.0], |_, _| 0.0);

@@ -255,6 +255,8 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         if group.len() > 1 {
             group.sort_unstable_by(|&a, &b| {
                 let (pa, pb) = (positions[a as usize], positions[b as usize]);
+                // Adding 0 makes -0 and +0 one key: they are one position.
+                let (pa, pb) = (pa + 0.0, pb + 0.0);
                 pa.x.total_cmp(&pb.x)
                     .then(pa.y.total_cmp(&pb.y))
                     .then(pa.z.total_cmp(&pb.z))
