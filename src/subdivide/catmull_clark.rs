@@ -17,9 +17,9 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, RefinedGathers};
-use super::level::{Connectivity, Faces, VertexRule, NONE};
-use crate::buffers::try_vec;
-use crate::buffers::{flatten, par_map};
+use super::level::{Connectivity, Faces, NONE};
+use super::scheme::VertexRule;
+use crate::buffers::{flatten, par_map, try_vec};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.

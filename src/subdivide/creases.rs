@@ -13,9 +13,8 @@
 
 use super::level::{Connectivity, Faces};
 use super::rules::forced_sharpness;
-use super::{NakedEdges, Scheme};
-use crate::buffers::try_vec;
-use crate::buffers::zeroed;
+use super::scheme::{NakedEdges, Scheme};
+use crate::buffers::{try_vec, zeroed};
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
@@ -328,10 +327,7 @@ pub(crate) fn child_sharpness(
 ) -> Result<Sharpness> {
     let parent_vertices = parent_faces.vertex_count;
     let parent_edges = parent.edges.len();
-    let face_points = match scheme {
-        Scheme::CatmullClark => parent_faces.face_count(),
-        Scheme::Loop => 0,
-    };
+    let face_points = scheme.face_point_count(parent_faces.face_count());
     let child_vertices = parent_vertices + parent_edges + face_points;
 
     // The sharpness of both halves of every parent edge, at its low and high end.
