@@ -18,7 +18,8 @@ use glam::DVec3;
 
 use crate::buffers::try_vec;
 use crate::error::Result;
-use crate::mend::weld::{check_tolerance, within, Cell, CellGrid, CellMap};
+use crate::mend::weld::{within, Cell, CellGrid, CellMap};
+use crate::mesh::check_tolerance;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 

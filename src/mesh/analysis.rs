@@ -4,7 +4,7 @@
 use glam::{DMat3, DVec3};
 
 use crate::error::Result;
-use crate::mend::weld::check_tolerance;
+use crate::mesh::check_tolerance;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 

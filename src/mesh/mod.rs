@@ -14,7 +14,7 @@ pub mod triangulate;
 
 use glam::DVec3;
 
-use crate::error::{MeshError, MAX_ELEMENTS};
+use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
 
 /// A validated polygon mesh.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -392,6 +392,18 @@ fn offsets(face_sizes: &[u32]) -> Vec<u32> {
         offsets.push(total);
     }
     offsets
+}
+
+/// Checks a distance tolerance (weld, T-nodes, planarity): finite and not
+/// negative.
+pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
+    if tolerance.is_finite() && tolerance >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument(format!(
+            "tolerance is {tolerance}; it must be a finite distance of 0 or more"
+        )))
+    }
 }
 
 #[cfg(test)]
