@@ -230,6 +230,22 @@ fn jitter(bits: u64) -> f64 {
     ((bits % 1000) as f64 / 1000.0 - 0.5) * 0.01
 }
 
+/// `mesh` with face f reversed where bit `f % 64` of `pick` is set.
+fn reverse_picked_faces(mesh: &Mesh, pick: u64) -> Mesh {
+    let faces: Vec<Vec<u32>> = mesh
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if (pick >> (f % 64)) & 1 == 1 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -257,18 +273,7 @@ proptest! {
 
     #[test]
     fn reversing_random_faces_keeps_orientability((mesh, _) in polygon_mesh(), pick in any::<u64>()) {
-        let faces: Vec<Vec<u32>> = mesh
-            .faces()
-            .enumerate()
-            .map(|(f, face)| {
-                let mut face = face.to_vec();
-                if (pick >> (f % 64)) & 1 == 1 {
-                    face.reverse();
-                }
-                face
-            })
-            .collect();
-        let flipped = Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap();
+        let flipped = reverse_picked_faces(&mesh, pick);
         let topology = Topology::new(&flipped);
         let orientation = topology.orientation();
         prop_assert!(orientation.component_orientable.iter().all(|&o| o));
@@ -746,18 +751,7 @@ mod operations {
 
         #[test]
         fn unify_makes_every_manifold_edge_consistent_and_faces_out((mesh, _) in polygon_mesh(), pick in any::<u64>()) {
-            let faces: Vec<Vec<u32>> = mesh
-                .faces()
-                .enumerate()
-                .map(|(f, face)| {
-                    let mut face = face.to_vec();
-                    if (pick >> (f % 64)) & 1 == 1 {
-                        face.reverse();
-                    }
-                    face
-                })
-                .collect();
-            let scrambled = Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap();
+            let scrambled = reverse_picked_faces(&mesh, pick);
             let (unified, flipped) = unify_orientation(&scrambled);
             prop_assert!(flipped <= scrambled.face_count());
             prop_assert!(Topology::new(&unified).info(&unified).is_oriented);

@@ -19,6 +19,17 @@ fn area_of(cells: &[Vec<DVec3>]) -> f64 {
     cells.iter().map(|c| signed_area(&flat(c))).sum()
 }
 
+/// Checks the cells (see [`check_cells`]) and that together they cover the
+/// boundary's area exactly.
+fn check_tiling(sites: &[DVec2], cells: &[Vec<DVec3>], boundary: &[DVec2]) {
+    let total = check_cells(sites, cells, boundary);
+    let expected = signed_area(boundary);
+    assert!(
+        (total - expected).abs() <= 1e-9 * expected,
+        "{total} vs {expected}"
+    );
+}
+
 /// Checks the properties every diagram must have; returns the cells' total area.
 fn check_cells(sites: &[DVec2], cells: &[Vec<DVec3>], boundary: &[DVec2]) -> f64 {
     let scale = 10.0;
@@ -98,12 +109,7 @@ fn default_boundary_is_tiled_by_cells_that_contain_their_sites() {
         let (lo, hi) = bounds(&sites);
         let margin = (hi - lo).max_element() * DEFAULT_MARGIN;
         let boundary = rectangle(lo - margin, hi + margin);
-        let total = check_cells(&sites, &cells, &boundary);
-        let expected = signed_area(&boundary);
-        assert!(
-            (total - expected).abs() <= 1e-9 * expected,
-            "{total} vs {expected}"
-        );
+        check_tiling(&sites, &cells, &boundary);
     }
 }
 
@@ -127,12 +133,7 @@ fn a_convex_boundary_is_tiled_and_points_outside_get_empty_cells() {
     for (i, cell) in cells.iter().enumerate() {
         assert_eq!(cell.is_empty(), outside.contains(&i), "point {i}");
     }
-    let total = check_cells(&sites, &cells, &boundary);
-    let expected = signed_area(&boundary);
-    assert!(
-        (total - expected).abs() <= 1e-9 * expected,
-        "{total} vs {expected}"
-    );
+    check_tiling(&sites, &cells, &boundary);
 }
 
 #[test]
@@ -149,12 +150,7 @@ fn an_l_shaped_boundary_is_tiled() {
         let sites = random_sites(seed, 50, |p| p.x < 4.0 || p.y < 4.0);
         let cells = voronoi(&lift(&sites), &Plane::xy(), Some(&lift(&boundary)), None).unwrap();
         assert!(cells.iter().all(|c| c.len() >= 3));
-        let total = check_cells(&sites, &cells, &boundary);
-        let expected = signed_area(&boundary);
-        assert!(
-            (total - expected).abs() <= 1e-9 * expected,
-            "{total} vs {expected}"
-        );
+        check_tiling(&sites, &cells, &boundary);
     }
 }
 
