@@ -19,9 +19,20 @@
 //!   [`extract`](toolbar::extract) (dual, edges, reroute, mesh from lines) and
 //!   [`tile`](toolbar::tile).
 //! - [`io`]: mesh files (OBJ, PLY, STL, OFF) and pictures, for the `weft` command.
-//! - [`error`]: the one error type.
+//! - [`error`]: the one error type; `buffers`: memory reserved fallibly
+//!   (running out is an error, never an abort) and filled in parallel.
 //! - `ffi`: the C ABI declared in `include/weft.h`. It only converts and
 //!   checks; the geometry knows nothing of it.
+//! - `src/bin/weft/`: the `weft` command, which only parses, calls the
+//!   library and prints.
+//!
+//! Which layer may call which, from the bottom up: `error` and `buffers`
+//! call nothing of the crate; [`mesh`] calls only them (its one edge
+//! builder, `mesh/adjacency.rs`, serves [`Topology`] and the subdivision's
+//! levels alike); [`subdivide`], [`mend`], [`make`] and [`toolbar`] call
+//! [`mesh`] and each other's public functions; [`io`] calls the geometry to
+//! read and write files; `ffi` converts buffers and statuses and calls the
+//! geometry, which never calls `ffi`, [`io`] or the binary.
 //!
 //! Everything outside `ffi` is safe Rust.
 #![deny(unsafe_code)]
