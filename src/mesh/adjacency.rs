@@ -114,4 +114,22 @@ impl Adjacency {
             vertex_corners,
         })
     }
+
+    /// Number of unique edges.
+    #[inline]
+    pub(crate) fn edge_count(&self) -> usize {
+        self.edges.len()
+    }
+
+    /// The corners whose edge is `e`, ascending (so their faces ascend too).
+    #[inline]
+    pub(crate) fn edge_corners(&self, e: usize) -> &[u32] {
+        &self.edge_corners[self.edge_offsets[e] as usize..self.edge_offsets[e + 1] as usize]
+    }
+
+    /// The corners at vertex `v`, ascending.
+    #[inline]
+    pub(crate) fn vertex_corners(&self, v: usize) -> &[u32] {
+        &self.vertex_corners[self.vertex_offsets[v] as usize..self.vertex_offsets[v + 1] as usize]
+    }
 }

@@ -18,20 +18,13 @@ use crate::mesh::Mesh;
 /// not keep a reference to the mesh.
 #[derive(Debug, Clone)]
 pub struct Topology {
-    /// Unique edges as `[low, high]` vertex pairs, sorted.
-    edges: Vec<[u32; 2]>,
-    /// For each corner, the edge from it to the next corner of its face.
-    corner_edges: Vec<u32>,
+    /// Unique edges (`[low, high]`, sorted), each corner's edge, the corners
+    /// on each edge and at each vertex.
+    adjacency: Adjacency,
     /// For each corner, its face.
     corner_faces: Vec<u32>,
     /// For each corner, the next corner of its face.
     corner_next: Vec<u32>,
-    /// `edge_corners[edge_offsets[e]..edge_offsets[e + 1]]` are the corners whose edge is e, ascending.
-    edge_offsets: Vec<u32>,
-    edge_corners: Vec<u32>,
-    /// `vertex_corners[vertex_offsets[v]..vertex_offsets[v + 1]]` are the corners at vertex v, ascending.
-    vertex_offsets: Vec<u32>,
-    vertex_corners: Vec<u32>,
     face_vertices: Vec<u32>,
 }
 
@@ -94,23 +87,12 @@ impl Topology {
             corner_next.extend(start + 1..end);
             corner_next.push(start);
         }
-        let Adjacency {
-            edges,
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
-        } = Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
+        let adjacency =
+            Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
         Ok(Topology {
-            edges,
-            corner_edges,
+            adjacency,
             corner_faces,
             corner_next,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
             face_vertices: try_copy(indices, "corner vertices")?,
         })
     }
@@ -118,19 +100,19 @@ impl Topology {
     /// Number of unique edges.
     #[inline]
     pub fn edge_count(&self) -> usize {
-        self.edges.len()
+        self.adjacency.edges.len()
     }
 
     /// The unique edges as `[low, high]` vertex pairs, sorted.
     #[inline]
     pub fn edges(&self) -> &[[u32; 2]] {
-        &self.edges
+        &self.adjacency.edges
     }
 
     /// For each corner, the edge from it to the next corner of its face.
     #[inline]
     pub fn corner_edges(&self) -> &[u32] {
-        &self.corner_edges
+        &self.adjacency.corner_edges
     }
 
     /// For each corner, its face.
@@ -154,13 +136,13 @@ impl Topology {
     /// The corners whose edge is `e`, ascending (so their faces ascend too).
     #[inline]
     pub fn edge_corners(&self, e: usize) -> &[u32] {
-        &self.edge_corners[self.edge_offsets[e] as usize..self.edge_offsets[e + 1] as usize]
+        self.adjacency.edge_corners(e)
     }
 
     /// Where each edge's corners start in the flat corner list, plus the total.
     #[inline]
     pub fn edge_offsets(&self) -> &[u32] {
-        &self.edge_offsets
+        &self.adjacency.edge_offsets
     }
 
     /// The faces on edge `e`, ascending (a face appears once per corner on it).
@@ -173,7 +155,7 @@ impl Topology {
     /// How many face corners use edge `e`: 1 naked, 2 manifold, more non-manifold.
     #[inline]
     pub fn edge_face_count(&self, e: usize) -> usize {
-        (self.edge_offsets[e + 1] - self.edge_offsets[e]) as usize
+        (self.adjacency.edge_offsets[e + 1] - self.adjacency.edge_offsets[e]) as usize
     }
 
     /// Whether edge `e` has exactly one face.
@@ -190,18 +172,22 @@ impl Topology {
 
     /// The edge between vertices `a` and `b`, if there is one.
     pub fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
-        self.edges.binary_search(&[a.min(b), a.max(b)]).ok()
+        self.adjacency
+            .edges
+            .binary_search(&[a.min(b), a.max(b)])
+            .ok()
     }
 
     /// The corners at vertex `v`, ascending.
     #[inline]
     pub fn vertex_corners(&self, v: usize) -> &[u32] {
-        &self.vertex_corners[self.vertex_offsets[v] as usize..self.vertex_offsets[v + 1] as usize]
+        self.adjacency.vertex_corners(v)
     }
 
     /// Number of faces at each vertex (a face counts once per corner at it).
     pub fn vertex_face_counts(&self) -> Vec<u32> {
-        self.vertex_offsets
+        self.adjacency
+            .vertex_offsets
             .windows(2)
             .map(|w| w[1] - w[0])
             .collect()
@@ -209,8 +195,8 @@ impl Topology {
 
     /// Number of edges at each vertex.
     pub fn vertex_valences(&self) -> Vec<u32> {
-        let mut valence = vec![0u32; self.vertex_offsets.len() - 1];
-        for &[a, b] in &self.edges {
+        let mut valence = vec![0u32; self.adjacency.vertex_offsets.len() - 1];
+        for &[a, b] in &self.adjacency.edges {
             valence[a as usize] += 1;
             valence[b as usize] += 1;
         }
@@ -235,8 +221,8 @@ impl Topology {
 
     /// Whether each vertex is on a naked edge.
     pub fn boundary_vertices(&self) -> Vec<bool> {
-        let mut on_boundary = vec![false; self.vertex_offsets.len() - 1];
-        for (e, &[a, b]) in self.edges.iter().enumerate() {
+        let mut on_boundary = vec![false; self.adjacency.vertex_offsets.len() - 1];
+        for (e, &[a, b]) in self.adjacency.edges.iter().enumerate() {
             if self.is_naked_edge(e) {
                 on_boundary[a as usize] = true;
                 on_boundary[b as usize] = true;
@@ -250,8 +236,8 @@ impl Topology {
     pub fn non_manifold_vertices(&self) -> Vec<u32> {
         // Corners at the same vertex are in one fan when a chain of manifold
         // edges through that vertex links their faces.
-        let mut fans = UnionFind::new(self.corner_edges.len());
-        let mut on_non_manifold_edge = vec![false; self.vertex_offsets.len() - 1];
+        let mut fans = UnionFind::new(self.adjacency.corner_edges.len());
+        let mut on_non_manifold_edge = vec![false; self.adjacency.vertex_offsets.len() - 1];
         for e in 0..self.edge_count() {
             let corners = self.edge_corners(e);
             match corners {
@@ -267,13 +253,13 @@ impl Topology {
                 }
                 [_] => {}
                 _ => {
-                    let [a, b] = self.edges[e];
+                    let [a, b] = self.adjacency.edges[e];
                     on_non_manifold_edge[a as usize] = true;
                     on_non_manifold_edge[b as usize] = true;
                 }
             }
         }
-        (0..self.vertex_offsets.len() - 1)
+        (0..self.adjacency.vertex_offsets.len() - 1)
             .filter(|&v| {
                 let corners = self.vertex_corners(v);
                 on_non_manifold_edge[v]
@@ -357,7 +343,7 @@ impl Topology {
                 let start = face_first_corner[f as usize];
                 let mut c = start;
                 loop {
-                    let e = self.corner_edges[c as usize] as usize;
+                    let e = self.adjacency.corner_edges[c as usize] as usize;
                     if let &[c1, c2] = self.edge_corners(e) {
                         let other = if c1 == c { c2 } else { c1 };
                         let g = self.corner_faces[other as usize] as usize;

@@ -99,26 +99,30 @@ impl Faces {
     }
 }
 
-/// Edges and adjacency of a [`Faces`]. Edges are unique `[low, high]` vertex
-/// pairs sorted ascending: this is the order of the edge points.
+/// Edges and adjacency of a [`Faces`]: the mesh's [`Adjacency`] (read
+/// through it: `connectivity.edges`, `connectivity.edge_corners(e)`), plus
+/// each corner's face and each vertex's edges. Edges are unique
+/// `[low, high]` vertex pairs sorted ascending: this is the order of the
+/// edge points.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Connectivity {
-    pub(crate) edges: Vec<[u32; 2]>,
+    pub(crate) adjacency: Adjacency,
     /// The faces' [`Faces::size`]: when not 0, a corner's face is arithmetic.
     pub(crate) face_size: u32,
     /// For each corner, its face; empty when `face_size` is not 0 (see [`Connectivity::face_of`]).
     pub(crate) corner_faces: Vec<u32>,
-    /// For each corner, the edge from it to the next corner of its face.
-    pub(crate) corner_edges: Vec<u32>,
-    /// `edge_corners[edge_offsets[e]..edge_offsets[e + 1]]`: the corners on edge e, ascending.
-    pub(crate) edge_offsets: Vec<u32>,
-    pub(crate) edge_corners: Vec<u32>,
-    /// `vertex_corners[vertex_offsets[v]..vertex_offsets[v + 1]]`: the corners at vertex v, ascending.
-    pub(crate) vertex_offsets: Vec<u32>,
-    pub(crate) vertex_corners: Vec<u32>,
     /// `vertex_edges[vertex_edge_offsets[v]..vertex_edge_offsets[v + 1]]`: the edges at vertex v, ascending.
     pub(crate) vertex_edge_offsets: Vec<u32>,
     pub(crate) vertex_edges: Vec<u32>,
+}
+
+impl std::ops::Deref for Connectivity {
+    type Target = Adjacency;
+
+    #[inline]
+    fn deref(&self) -> &Adjacency {
+        &self.adjacency
+    }
 }
 
 impl Connectivity {
@@ -165,32 +169,16 @@ impl Connectivity {
             0 => corner_faces[c] as usize,
             size => c / size as usize,
         };
-        let Adjacency {
-            edges,
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
-        } = Adjacency::build(vertex_count, &faces.indices, |c| faces.next(c, face_of(c)))?;
-        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&edges, vertex_count)?;
-
+        let adjacency =
+            Adjacency::build(vertex_count, &faces.indices, |c| faces.next(c, face_of(c)))?;
+        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&adjacency.edges, vertex_count)?;
         Ok(Connectivity {
-            edges,
+            adjacency,
             face_size: faces.size,
             corner_faces,
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
             vertex_edge_offsets,
             vertex_edges,
         })
-    }
-
-    pub(crate) fn edge_count(&self) -> usize {
-        self.edges.len()
     }
 
     /// The face of corner `c`.
@@ -201,18 +189,6 @@ impl Connectivity {
             4 => c / 4,
             size => c / size as usize,
         }
-    }
-
-    /// The corners on edge `e`: one per face using it.
-    #[inline]
-    pub(crate) fn edge_corners(&self, e: usize) -> &[u32] {
-        &self.edge_corners[self.edge_offsets[e] as usize..self.edge_offsets[e + 1] as usize]
-    }
-
-    /// The corners at vertex `v`: one per face around it.
-    #[inline]
-    pub(crate) fn vertex_corners(&self, v: usize) -> &[u32] {
-        &self.vertex_corners[self.vertex_offsets[v] as usize..self.vertex_offsets[v + 1] as usize]
     }
 
     /// The edges at vertex `v`, ascending.

@@ -7,6 +7,7 @@
 use super::{position, Connectivity, Faces};
 use crate::buffers::{fill_by_offsets, flatten, par_map, par_offsets, try_vec};
 use crate::error::Result;
+use crate::mesh::adjacency::Adjacency;
 use crate::subdivide::scheme::Scheme;
 
 impl Connectivity {
@@ -178,14 +179,16 @@ impl Connectivity {
         let (vertex_offsets, vertex_corners) = vertex_corners?;
         let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
         Ok(Connectivity {
-            edges: edges?,
+            adjacency: Adjacency {
+                edges: edges?,
+                corner_edges: corner_edges?,
+                edge_offsets,
+                edge_corners,
+                vertex_offsets,
+                vertex_corners,
+            },
             face_size: 4,
             corner_faces: Vec::new(),
-            corner_edges: corner_edges?,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
             vertex_edge_offsets,
             vertex_edges,
         })
@@ -382,14 +385,16 @@ impl Connectivity {
         let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
             (vertex_corners?, vertex_edges?);
         Ok(Connectivity {
-            edges,
+            adjacency: Adjacency {
+                edges,
+                corner_edges,
+                edge_offsets,
+                edge_corners,
+                vertex_offsets,
+                vertex_corners,
+            },
             face_size: 3,
             corner_faces: Vec::new(),
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
             vertex_edge_offsets,
             vertex_edges,
         })
