@@ -4,7 +4,7 @@ use crate::error::Result;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{corner_prev, edge_midpoint, face_centroid, repeat, Builder};
+use super::{add_vertices_and_midpoints, corner_prev, face_centroid, repeat, Builder};
 
 /// Splits each quad into four quads through its edge midpoints and its
 /// centroid, `levels` times, so a quad mesh stays a quad mesh of the same
@@ -44,10 +44,7 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
         }
     }
     let mut out = Builder::new("constant quads split", v + e + centres, faces, indices)?;
-    out.positions.extend_from_slice(mesh.positions());
-    for &edge in topology.edges() {
-        out.vertex(edge_midpoint(mesh, edge));
-    }
+    add_vertices_and_midpoints(&mut out, mesh, &topology);
     let prev = corner_prev(mesh);
     let (edges, vertices) = (topology.corner_edges(), mesh.face_indices());
     let mid = |c: usize| v as u32 + edges[c];

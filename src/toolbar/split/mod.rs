@@ -36,6 +36,7 @@ pub use triangles::split_triangles;
 use glam::DVec3;
 
 use crate::error::{Error, Result, MAX_ELEMENTS};
+use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
 /// Applies `step` `levels` times (at most [`MAX_LEVELS`]); stops early on a
@@ -72,4 +73,13 @@ pub(crate) fn repeat(
 pub(crate) fn edge_midpoint(mesh: &Mesh, edge: [u32; 2]) -> DVec3 {
     let p = mesh.positions();
     (p[edge[0] as usize] + p[edge[1] as usize]) * 0.5
+}
+
+/// Adds `mesh`'s vertices, then one midpoint per edge in
+/// [`Topology::edges`] order: the first vertices of every linear split.
+pub(crate) fn add_vertices_and_midpoints(out: &mut Builder, mesh: &Mesh, topology: &Topology) {
+    out.positions.extend_from_slice(mesh.positions());
+    for &edge in topology.edges() {
+        out.vertex(edge_midpoint(mesh, edge));
+    }
 }

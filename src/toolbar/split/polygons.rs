@@ -4,7 +4,7 @@ use crate::error::Result;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{corner_prev, edge_midpoint, face_centroid, repeat, Builder};
+use super::{add_vertices_and_midpoints, corner_prev, face_centroid, repeat, Builder};
 
 /// Splits each n-gon into n quads through its edge midpoints and its
 /// centroid, `levels` times: the same topology as Catmull-Clark, with every
@@ -34,10 +34,7 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
         mesh.index_count() as u64,
     );
     let mut out = Builder::new("split polygons", v + e + f, corners, 4 * corners)?;
-    out.positions.extend_from_slice(mesh.positions());
-    for &edge in topology.edges() {
-        out.vertex(edge_midpoint(mesh, edge));
-    }
+    add_vertices_and_midpoints(&mut out, mesh, &topology);
     for face in 0..mesh.face_count() {
         out.vertex(face_centroid(mesh, face));
     }

@@ -4,7 +4,7 @@ use crate::error::Result;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{corner_prev, edge_midpoint, repeat, Builder};
+use super::{add_vertices_and_midpoints, corner_prev, repeat, Builder};
 
 /// Places a triangle in each corner of each face, from the corner to the
 /// midpoints of its two edges, and leaves the middle open: one new hole per
@@ -31,10 +31,7 @@ fn sierpinski_once(mesh: &Mesh) -> Result<Mesh> {
         mesh.index_count() as u64,
     );
     let mut out = Builder::new("Sierpinski triangles", v + e, corners, 3 * corners)?;
-    out.positions.extend_from_slice(mesh.positions());
-    for &edge in topology.edges() {
-        out.vertex(edge_midpoint(mesh, edge));
-    }
+    add_vertices_and_midpoints(&mut out, mesh, &topology);
     let prev = corner_prev(mesh);
     let edges = topology.corner_edges();
     for (c, &vertex) in mesh.face_indices().iter().enumerate() {

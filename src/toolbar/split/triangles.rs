@@ -4,7 +4,7 @@ use crate::error::{Error, Result};
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{edge_midpoint, repeat, Builder};
+use super::{add_vertices_and_midpoints, repeat, Builder};
 
 /// Splits each triangle into four through its edge midpoints, `levels`
 /// times; the surface and its area do not change. Output order per level:
@@ -31,10 +31,7 @@ fn split_once(mesh: &Mesh) -> Result<Mesh> {
         mesh.face_count() as u64,
     );
     let mut out = Builder::new("split triangles", v + e, 4 * f, 12 * f)?;
-    out.positions.extend_from_slice(mesh.positions());
-    for &edge in topology.edges() {
-        out.vertex(edge_midpoint(mesh, edge));
-    }
+    add_vertices_and_midpoints(&mut out, mesh, &topology);
     let edges = topology.corner_edges();
     for (face, corners) in mesh.faces().enumerate() {
         let [a, b, c] = [corners[0], corners[1], corners[2]];
