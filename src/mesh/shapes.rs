@@ -171,6 +171,21 @@ pub fn mixed_polygons() -> Mesh {
     )
 }
 
+/// A concave L-shaped hexagon in the plane z = `z`, facing +z: area 3,
+/// the shape an ear clipper must not cut across.
+pub fn l_shaped_hexagon(z: f64) -> Mesh {
+    let corners = [
+        (0.0, 0.0),
+        (2.0, 0.0),
+        (2.0, 1.0),
+        (1.0, 1.0),
+        (1.0, 2.0),
+        (0.0, 2.0),
+    ]
+    .map(|(x, y)| DVec3::new(x, y, z));
+    Mesh::from_polygons(corners.to_vec(), [[0u32, 1, 2, 3, 4, 5]]).unwrap()
+}
+
 /// Three triangles sharing the edge 0-1: a non-manifold fin.
 pub fn fin() -> Mesh {
     let p = vec![

@@ -197,17 +197,7 @@ mod tests {
 
     #[test]
     fn concave_l_shape_keeps_its_area() {
-        let p = [
-            (0.0, 0.0),
-            (2.0, 0.0),
-            (2.0, 1.0),
-            (1.0, 1.0),
-            (1.0, 2.0),
-            (0.0, 2.0),
-        ]
-        .map(|(x, y)| DVec3::new(x, y, 0.0))
-        .to_vec();
-        let mesh = Mesh::from_polygons(p, [[0u32, 1, 2, 3, 4, 5]]).unwrap();
+        let mesh = crate::mesh::shapes::l_shaped_hexagon(0.0);
         let t = triangulate(&mesh).unwrap();
         assert_eq!(t.mesh.face_count(), 4);
         assert!((area(&t.mesh) - 3.0).abs() < 1e-12);

@@ -52,44 +52,24 @@ fn uniform_faces_match_their_offsets() {
 
 fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
     assert_eq!(derived.edges, bucketed.edges, "{what}: edges");
-    let faces_of = |c: &Connectivity| {
-        (0..c.corner_edges.len())
-            .map(|k| c.face_of(k))
-            .collect::<Vec<_>>()
+    let arrays = |c: &Connectivity| {
+        let corner_faces = (0..c.corner_edges.len())
+            .map(|k| c.face_of(k) as u32)
+            .collect();
+        [
+            ("corner faces", corner_faces),
+            ("corner edges", c.corner_edges.clone()),
+            ("edge offsets", c.edge_offsets.clone()),
+            ("edge corners", c.edge_corners.clone()),
+            ("vertex offsets", c.vertex_offsets.clone()),
+            ("vertex corners", c.vertex_corners.clone()),
+            ("vertex edge offsets", c.vertex_edge_offsets.clone()),
+            ("vertex edges", c.vertex_edges.clone()),
+        ]
     };
-    assert_eq!(
-        faces_of(derived),
-        faces_of(bucketed),
-        "{what}: corner faces"
-    );
-    assert_eq!(
-        derived.corner_edges, bucketed.corner_edges,
-        "{what}: corner edges"
-    );
-    assert_eq!(
-        derived.edge_offsets, bucketed.edge_offsets,
-        "{what}: edge offsets"
-    );
-    assert_eq!(
-        derived.edge_corners, bucketed.edge_corners,
-        "{what}: edge corners"
-    );
-    assert_eq!(
-        derived.vertex_offsets, bucketed.vertex_offsets,
-        "{what}: vertex offsets"
-    );
-    assert_eq!(
-        derived.vertex_corners, bucketed.vertex_corners,
-        "{what}: vertex corners"
-    );
-    assert_eq!(
-        derived.vertex_edge_offsets, bucketed.vertex_edge_offsets,
-        "{what}: vertex edge offsets"
-    );
-    assert_eq!(
-        derived.vertex_edges, bucketed.vertex_edges,
-        "{what}: vertex edges"
-    );
+    for ((name, ours), (_, theirs)) in arrays(derived).into_iter().zip(arrays(bucketed)) {
+        assert_eq!(ours, theirs, "{what}: {name}");
+    }
 }
 
 /// The arithmetic child connectivity equals bucketing the child faces,
