@@ -191,6 +191,41 @@ fn hyperbolic_paraboloid_unit_quad_deviation_matches_the_formula() {
 }
 
 #[test]
+fn closed_is_told_per_component() {
+    let cube = shapes::cube();
+    let grid = shapes::quad_grid(3, 2);
+    let fin = shapes::fin();
+    // Components are numbered by their first face: the order of the parts.
+    for (parts, expected) in [
+        (vec![&cube, &grid], vec![true, false]),
+        (vec![&grid, &cube], vec![false, true]),
+        (vec![&cube, &fin, &cube], vec![true, false, true]),
+    ] {
+        let mesh = join(&parts).unwrap();
+        let topology = Topology::new(&mesh);
+        assert_eq!(topology.component_closed(), expected);
+        let (faces, count) = topology.face_components();
+        assert_eq!(count, expected.len());
+        // The cube's faces all lie in one closed component.
+        let first_cube = if std::ptr::eq(parts[0], &cube) {
+            0
+        } else {
+            grid.face_count()
+        };
+        assert!(expected[faces[first_cube] as usize]);
+        // The whole mesh is not closed, though one piece is.
+        assert!(!topology.info(&mesh).is_closed);
+    }
+    // A mesh of closed pieces only is closed, piece by piece and as a whole.
+    let two_cubes = join(&[&cube, &cube]).unwrap();
+    let topology = Topology::new(&two_cubes);
+    assert_eq!(topology.component_closed(), vec![true, true]);
+    assert!(topology.info(&two_cubes).is_closed);
+    // No faces, no components.
+    assert!(Topology::new(&Mesh::empty()).component_closed().is_empty());
+}
+
+#[test]
 fn weld_merges_chains_drops_collapsed_faces_and_is_idempotent() {
     // A strip of triangles whose loose copies are welded back.
     let strip = shapes::triangle_grid(5, 1);
