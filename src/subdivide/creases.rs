@@ -11,7 +11,7 @@
 //! softens. As in OpenSubdiv, sharpness is kept at single precision, so the
 //! same inputs give the same surface.
 
-use super::level::{Connectivity, Faces};
+use super::level::{vertex_edges_of, Connectivity, Faces};
 use super::rules::forced_sharpness;
 use super::scheme::{NakedEdges, Scheme};
 use crate::buffers::{try_vec, zeroed};
@@ -202,25 +202,6 @@ impl Sharpness {
     }
 }
 
-/// Vertex → incident edges (CSR, ascending edge order).
-fn vertex_edges(vertex_count: usize, connectivity: &Connectivity) -> Result<(Vec<u32>, Vec<u32>)> {
-    let mut offsets: Vec<u32> = zeroed(vertex_count + 1, "vertex edges")?;
-    for &[a, b] in &connectivity.edges {
-        offsets[a as usize + 1] += 1;
-        offsets[b as usize + 1] += 1;
-    }
-    crate::buffers::prefix_sum(&mut offsets);
-    let mut fill = offsets.clone();
-    let mut edges: Vec<u32> = zeroed(2 * connectivity.edge_count(), "vertex edges")?;
-    for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
-        for v in [a, b] {
-            edges[fill[v as usize] as usize] = e as u32;
-            fill[v as usize] += 1;
-        }
-    }
-    Ok((offsets, edges))
-}
-
 /// Sharpness of a user value: NaN and negative values are errors, values
 /// of [`SHARPNESS_INFINITE`] or more are infinite.
 fn user_sharpness(value: f64, what: impl Fn() -> String) -> Result<f32> {
@@ -249,7 +230,7 @@ pub(crate) fn cage_sharpness(
     let vertex_count = faces.vertex_count;
     let mut edges: Vec<f32> = zeroed(connectivity.edge_count(), "edge sharpness")?;
     let mut vertices: Vec<f32> = zeroed(vertex_count, "vertex sharpness")?;
-    let (vertex_edge_offsets, vertex_edges) = vertex_edges(vertex_count, connectivity)?;
+    let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&connectivity.edges, vertex_count)?;
     for (i, &([a, b], value)) in options.creases.iter().enumerate() {
         let s = user_sharpness(value, || format!("crease {i} ({a}, {b})"))?;
         let (low, high) = (a.min(b), a.max(b));
@@ -350,7 +331,7 @@ pub(crate) fn child_sharpness(
             0.0
         }
     }));
-    let (vertex_edge_offsets, vertex_edges) = vertex_edges(child_vertices, child)?;
+    let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&child.edges, child_vertices)?;
 
     let mut vertices: Vec<f32> = zeroed(child_vertices, "vertex sharpness")?;
     let mut rules = try_vec(child_vertices, "vertex rules")?;

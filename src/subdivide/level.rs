@@ -248,7 +248,10 @@ pub(super) fn position(list: &[u32], x: u32) -> u32 {
 }
 
 /// Every vertex's edges, ascending, from the sorted edges.
-fn vertex_edges_of(edges: &[[u32; 2]], vertex_count: usize) -> Result<(Vec<u32>, Vec<u32>)> {
+pub(crate) fn vertex_edges_of(
+    edges: &[[u32; 2]],
+    vertex_count: usize,
+) -> Result<(Vec<u32>, Vec<u32>)> {
     let mut offsets = zeroed(vertex_count + 1, "vertex edges")?;
     for &[a, b] in edges {
         offsets[a as usize + 1] += 1;
