@@ -7,8 +7,9 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use weft::weld::{weld, DEFAULT_WELD_TOLERANCE};
-use weft::{shapes, DVec3, Mesh, Topology};
+use weft::mend::weld::{weld, DEFAULT_WELD_TOLERANCE};
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh, Topology};
 use weft_reference::{BoundaryInterpolation, OsdOptions, OsdRefiner, RefMesh, Scheme as OsdScheme};
 
 /// A 500 × 500 quad grid whose every face has its own four vertices, each

@@ -94,8 +94,10 @@
 #define WEFT_SHARPNESS_INFINITE 10.0
 
 /**
- * The weld tolerance to use when the host has none: 0.001 model units,
- * Rhino's default absolute tolerance (a millimetre in a model in metres).
+ * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
+ * tolerance (a millimetre in a model in metres). It can collapse the faces
+ * of small or dense meshes: without a tolerance of the host's own, prefer
+ * `weft_weld_relative_tolerance`.
  */
 #define WEFT_DEFAULT_WELD_TOLERANCE 0.001
 
@@ -506,6 +508,34 @@ typedef struct WeftTNode {
 } WeftTNode;
 
 /**
+ * What `weft_orient_outward` found and changed; a piece is a set of faces
+ * connected through shared edges.
+ */
+typedef struct WeftOrientReport {
+  /**
+   * Faces reversed.
+   */
+  size_t flipped_faces;
+  /**
+   * Connected pieces.
+   */
+  size_t pieces;
+  /**
+   * Closed pieces that enclosed a negative volume and were turned outward.
+   */
+  size_t turned_outward;
+  /**
+   * Pieces with a naked or non-manifold edge: unified, with no inside to
+   * face away from.
+   */
+  size_t open_pieces;
+  /**
+   * Pieces that no winding makes consistent (a Möbius strip).
+   */
+  size_t non_orientable_pieces;
+} WeftOrientReport;
+
+/**
  * A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
  * The axes need not be unit length or orthogonal (they are
  * orthonormalised, keeping the x axis's direction); the normal, the front
@@ -675,6 +705,49 @@ WeftStatus weft_mesh_copy_faces(const struct WeftMesh *mesh, uint32_t *out_face_
  * `mesh` is NULL or a live handle; `out_info` is NULL or points to a writable `WeftMeshInfo`.
  */
 WeftStatus weft_mesh_info(const struct WeftMesh *mesh, struct WeftMeshInfo *out_info);
+
+/**
+ * Reads a mesh file, choosing the format by the extension of `path`
+ * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does. STL
+ * corners come unwelded, one vertex per triangle corner (`weft_weld` with
+ * tolerance 0 joins them); vertex colours, UVs and creases are not read.
+ *
+ * `path` is a NUL-terminated UTF-8 path; it must not be NULL.
+ * `out_mesh` receives the mesh on success (free it with `weft_mesh_free`)
+ * and is left untouched on failure; it must not be NULL.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER; WEFT_STATUS_INVALID_ARGUMENT for a
+ * path that is not UTF-8, an unknown extension, a file that cannot be
+ * read, or content that does not follow its format (the message names the
+ * file and the line, or the byte offset of a binary file); and with the
+ * status of `weft_mesh_new` (WEFT_STATUS_INDEX_OUT_OF_RANGE, …) when the
+ * file's faces do not make a valid mesh, the message naming the file, its
+ * line or byte offset and the face.
+ *
+ * # Safety
+ * `path` is NULL or a NUL-terminated string; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_read_mesh_file(const char *path, struct WeftMesh **out_mesh);
+
+/**
+ * Writes a mesh file, choosing the format by the extension of `path`
+ * (`.obj`, `.ply`, `.stl` or `.off`, any case), as `weft` does: PLY as
+ * binary little endian, STL as binary with polygons written as triangle
+ * fans. The file is written beside its destination under a temporary name
+ * and renamed into place, so a failed write leaves no partial file and an
+ * existing file as it was.
+ *
+ * `mesh` must not be NULL. `path` is a NUL-terminated UTF-8 path; it must
+ * not be NULL; its folder must exist.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, or WEFT_STATUS_INVALID_ARGUMENT for
+ * a path that is not UTF-8, an unknown extension, a missing folder or a
+ * file the system refuses to write (the message names the file).
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `path` is NULL or a NUL-terminated string.
+ */
+WeftStatus weft_write_mesh_file(const struct WeftMesh *mesh, const char *path);
 
 /**
  * Finds, for each point, the nearest vertex of the mesh within a tolerance
@@ -1162,6 +1235,48 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
 WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct WeftMesh **out_mesh);
 
 /**
+ * The tolerance to weld `mesh` with when the host has none of its own: a
+ * millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a
+ * single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never
+ * collapses the faces of a small part or a dense scan, whatever the units.
+ * The command line's `weld` and `t-nodes` use it when no tolerance is given.
+ *
+ * `mesh` must not be NULL.
+ * `out_tolerance` receives the tolerance; it must not be NULL and is
+ * written on success only.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_tolerance` is writable.
+ */
+WeftStatus weft_weld_relative_tolerance(const struct WeftMesh *mesh, double *out_tolerance);
+
+/**
+ * Returns how many vertices no face uses, or 0 when `mesh` is NULL.
+ * Subdivision keeps such bare vertices in place (OpenSubdiv cages carry
+ * them on purpose); `weft_remove_unused_vertices` leaves them out.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle.
+ */
+size_t weft_mesh_unused_vertex_count(const struct WeftMesh *mesh);
+
+/**
+ * Leaves out the vertices no face uses; the others keep their order (the
+ * face indices are renumbered to match).
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_removed` receives how many vertices were left out; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_removed` is NULL or writable.
+ */
+WeftStatus weft_remove_unused_vertices(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
+
+/**
  * Welds vertices: every two vertices at most `tolerance` apart become one,
  * transitively. The merged vertex keeps the position of its cluster's
  * lowest-index vertex (seams stay where the surface put them, and welding
@@ -1171,8 +1286,9 @@ WeftStatus weft_join(const struct WeftMesh *const *meshes, size_t count, struct 
  *
  * `mesh` must not be NULL.
  * `tolerance` is a distance in model units, finite and not negative; 0
- * merges exact duplicates only; WEFT_DEFAULT_WELD_TOLERANCE (0.001) suits
- * most models.
+ * merges exact duplicates only; `weft_weld_relative_tolerance` gives one
+ * that suits the mesh's size (WEFT_DEFAULT_WELD_TOLERANCE, an absolute
+ * 0.001, suits models of ordinary size in metres or millimetres).
  * `out_mesh` receives the welded mesh (free it with `weft_mesh_free`); it
  * must not be NULL and is written on success only.
  * `out_report` receives what changed; it may be NULL.
@@ -1259,6 +1375,22 @@ WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out
  * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_flipped` is NULL or writable.
  */
 WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * As `weft_unify_orientation` (one consistent winding per piece, closed
+ * pieces turned to enclose a positive volume), reporting the pieces. The
+ * triangles of an STL file share no vertices: weld them first
+ * (`weft_weld`), or every triangle is an open piece of its own.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_report` receives the pieces found and changed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
 
 /**
  * Reverses every face, keeping its first corner first ({a, b, c, d}

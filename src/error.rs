@@ -76,23 +76,3 @@ pub type Result<T, E = Error> = std::result::Result<T, E>;
 /// must fit a `u32`, and the memory for it must stay within reach of a
 /// desktop machine (2^31 indices is 8 GiB of indices alone).
 pub const MAX_ELEMENTS: u64 = (1 << 31) - 1;
-
-/// Reserve `additional` elements or report, rather than abort, that memory ran out.
-pub fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(capacity).map_err(|_| {
-        Error::OutOfMemory(format!(
-            "could not reserve {capacity} elements of {} bytes for {what}",
-            std::mem::size_of::<T>()
-        ))
-    })?;
-    // Large results are written once into fresh memory: with 4 KiB pages,
-    // faulting it in costs more than the arithmetic that fills it.
-    if capacity.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE_ADVICE_BYTES {
-        weft_pages::advise_huge_pages(v.spare_capacity_mut());
-    }
-    Ok(v)
-}
-
-/// Buffers from this size up are advised for transparent huge pages.
-const HUGE_PAGE_ADVICE_BYTES: usize = 8 << 20;

@@ -5,7 +5,7 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 
 use weft::io;
-use weft::shapes;
+use weft::mesh::shapes;
 
 /// A fresh folder for one test under the system's temporary folder.
 fn folder(name: &str) -> PathBuf {

@@ -8,7 +8,7 @@
 //! of face f contiguous, child i at corner i), so vertices are matched
 //! through the faces: corner k of refined face f is the same vertex in both.
 
-use weft::shapes;
+use weft::mesh::shapes;
 use weft::subdivide::FaceVaryingLinear;
 use weft::subdivide::{
     subdivide, subdivide_with, Crease, Creasing, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
@@ -228,6 +228,26 @@ fn naked_edge_modes(closed: bool) -> &'static [NakedEdges] {
         ]
     }
 }
+/// Both creasing rules with each naked-edge mode of `modes`, each with
+/// these creases and corners.
+fn option_sets(
+    creases: &[Crease],
+    corners: &[(u32, f64)],
+    modes: &[NakedEdges],
+) -> Vec<SubdivisionOptions> {
+    [Creasing::Uniform, Creasing::Chaikin]
+        .into_iter()
+        .flat_map(|creasing| {
+            modes.iter().map(move |&naked_edges| SubdivisionOptions {
+                naked_edges,
+                creases: creases.to_vec(),
+                corners: corners.to_vec(),
+                creasing,
+            })
+        })
+        .collect()
+}
+
 #[test]
 fn creases_and_corners_equal_opensubdiv() {
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
@@ -236,33 +256,26 @@ fn creases_and_corners_equal_opensubdiv() {
             let reference_cage = to_ref(&cage);
             for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
                 let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
-                for creasing in [Creasing::Uniform, Creasing::Chaikin] {
-                    for &naked_edges in modes {
-                        let options = SubdivisionOptions {
-                            naked_edges,
-                            creases: creases.clone(),
-                            corners: corners.clone(),
-                            creasing,
-                        };
-                        let osd = osd_options(scheme, &options, &reference_cage);
-                        for levels in 1..=3 {
-                            let what = format!(
-                                "{scheme:?} {name} {set} {creasing:?} {naked_edges:?} level {levels}"
-                            );
-                            let ours = subdivide_with(&cage, scheme, levels, &options).unwrap();
-                            let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
-                            let map = vertex_map(&ours, &theirs, &what);
-                            let flat: Vec<f64> =
-                                ours.positions().iter().flat_map(|p| p.to_array()).collect();
-                            assert_rows_close(
-                                &flat,
-                                &theirs.positions,
-                                3,
-                                &map,
-                                tolerance(&ours),
-                                &what,
-                            );
-                        }
+                for options in option_sets(&creases, &corners, modes) {
+                    let (creasing, naked_edges) = (options.creasing, options.naked_edges);
+                    let osd = osd_options(scheme, &options, &reference_cage);
+                    for levels in 1..=3 {
+                        let what = format!(
+                            "{scheme:?} {name} {set} {creasing:?} {naked_edges:?} level {levels}"
+                        );
+                        let ours = subdivide_with(&cage, scheme, levels, &options).unwrap();
+                        let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                        let map = vertex_map(&ours, &theirs, &what);
+                        let flat: Vec<f64> =
+                            ours.positions().iter().flat_map(|p| p.to_array()).collect();
+                        assert_rows_close(
+                            &flat,
+                            &theirs.positions,
+                            3,
+                            &map,
+                            tolerance(&ours),
+                            &what,
+                        );
                     }
                 }
             }
@@ -309,32 +322,25 @@ fn carried_vertex_data_equals_opensubdiv() {
                     [x.sin(), (0.3 * x).cos(), 0.1 * x, x * x * 0.01, 1.0]
                 })
                 .collect();
-            for creasing in [Creasing::Uniform, Creasing::Chaikin] {
-                for &naked_edges in modes {
-                    let options = SubdivisionOptions {
-                        naked_edges,
-                        creases: creases.clone(),
-                        corners: corners.clone(),
-                        creasing,
-                    };
-                    let osd = osd_options(scheme, &options, &reference_cage);
-                    for levels in 1..=3 {
-                        let what = format!(
-                            "{scheme:?} {name} {creasing:?} {naked_edges:?} vertex data level {levels}"
-                        );
-                        let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
-                        let ours = subdivider.vertex_data(&data, width).unwrap();
-                        let refiner = OsdRefiner::new(&reference_cage, &osd, levels).unwrap();
-                        let theirs = refiner.interpolate(&data, width);
-                        let mut faces = refiner.faces();
-                        faces.positions = refiner.interpolate(&reference_cage.positions, 3);
-                        let map = vertex_map(&subdivider.mesh().unwrap(), &faces, &what);
-                        assert_rows_close(&ours, &theirs, width, &map, 1e-12, &what);
-                        // The constant column stays 1.
-                        assert!(ours
-                            .chunks_exact(width)
-                            .all(|row| (row[4] - 1.0).abs() < 1e-12));
-                    }
+            for options in option_sets(&creases, &corners, modes) {
+                let (creasing, naked_edges) = (options.creasing, options.naked_edges);
+                let osd = osd_options(scheme, &options, &reference_cage);
+                for levels in 1..=3 {
+                    let what = format!(
+                        "{scheme:?} {name} {creasing:?} {naked_edges:?} vertex data level {levels}"
+                    );
+                    let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
+                    let ours = subdivider.vertex_data(&data, width).unwrap();
+                    let refiner = OsdRefiner::new(&reference_cage, &osd, levels).unwrap();
+                    let theirs = refiner.interpolate(&data, width);
+                    let mut faces = refiner.faces();
+                    faces.positions = refiner.interpolate(&reference_cage.positions, 3);
+                    let map = vertex_map(&subdivider.mesh().unwrap(), &faces, &what);
+                    assert_rows_close(&ours, &theirs, width, &map, 1e-12, &what);
+                    // The constant column stays 1.
+                    assert!(ours
+                        .chunks_exact(width)
+                        .all(|row| (row[4] - 1.0).abs() < 1e-12));
                 }
             }
         }

@@ -5,7 +5,9 @@
 use std::path::PathBuf;
 
 use weft::io::{self, Format, IoError, Location, PlyEncoding, WriteOptions};
-use weft::{shapes, DVec3, Mesh};
+use weft::mend::weld;
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh};
 
 fn shapes_to_test() -> Vec<(&'static str, Mesh)> {
     let mut far = shapes::cube();
@@ -87,8 +89,8 @@ fn stl_round_trips_triangles_unwelded() {
                 }
             }
             // Welding identical corners gives back the shared vertices.
-            let (welded, dropped) = io::weld_identical(&back);
-            assert_eq!(dropped, 0);
+            let (welded, report) = weld::weld(&back, 0.0).unwrap();
+            assert_eq!(report.removed_face_count, 0);
             let mut used: Vec<u32> = mesh.face_indices().to_vec();
             used.sort_unstable();
             used.dedup();
@@ -532,78 +534,69 @@ fn ply_reads_float_and_integer_colours_and_writes_normals() {
     assert!(text.contains("\n1 1 1 0 0 1\n"), "{text}");
 }
 
-fn attribute_error(format: Format, data: &[u8]) -> (Location, String) {
-    // The mesh alone reads; with its attributes the file is refused.
+/// The mesh alone reads; with its attributes the file is refused at `line`
+/// with a message that says `expected`.
+fn assert_attribute_error(format: Format, data: &[u8], line: usize, expected: &str) {
     io::parse_mesh(format, data).expect("the mesh alone reads");
     let err = io::parse_mesh_file(format, data).expect_err("malformed attributes must fail");
-    (err.location().expect("a place"), err.to_string())
+    let msg = err.to_string();
+    assert_eq!(err.location(), Some(Location::Line(line)), "{msg}");
+    assert!(msg.contains(expected), "{msg}");
 }
 
 #[test]
 fn malformed_attributes_name_their_line() {
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
-    );
-    assert_eq!(at, Location::Line(2), "{msg}");
-    assert!(msg.contains("every vertex must have a colour"), "{msg}");
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0 1 0 red\nv 1 0 0 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
-    );
-    assert_eq!(at, Location::Line(1), "{msg}");
-    assert!(msg.contains("expected a number for blue"), "{msg}");
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 2 4 3\n",
-    );
-    assert_eq!(at, Location::Line(7), "{msg}");
-    assert!(msg.contains("every corner must name one"), "{msg}");
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n",
-    );
-    assert_eq!(at, Location::Line(5), "{msg}");
-    assert!(
-        msg.contains("texture coordinate index 2 is past the last \"vt\" (1)"),
-        "{msg}"
-    );
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 3 inf\n",
-    );
-    assert_eq!(at, Location::Line(5), "{msg}");
-    assert!(msg.contains("vertex 3 is past the last vertex"), "{msg}");
-
-    let (at, msg) = attribute_error(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1\n");
-    assert_eq!(at, Location::Line(5), "{msg}");
-    assert!(msg.contains("at least 2 vertex indices"), "{msg}");
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 sharp\n",
-    );
-    assert_eq!(at, Location::Line(5), "{msg}");
-    assert!(msg.contains("expected a sharpness"), "{msg}");
-
-    let (at, msg) = attribute_error(
-        Format::Obj,
-        b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 0\n",
-    );
-    assert_eq!(at, Location::Line(5), "{msg}");
-    assert!(msg.contains("t corner 1/1/0 v sharpness"), "{msg}");
-
+    // (file, line named, what the message says)
+    let obj_cases: [(&[u8], usize, &str); 8] = [
+        (
+            b"v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
+            2,
+            "every vertex must have a colour",
+        ),
+        (
+            b"v 0 0 0 1 0 red\nv 1 0 0 1 0 0\nv 0 1 0 0 0 1\nf 1 2 3\n",
+            1,
+            "expected a number for blue",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nf 1/1 2/1 3/1\nf 2 4 3\n",
+            7,
+            "every corner must name one",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/2 3/1\n",
+            5,
+            "texture coordinate index 2 is past the last \"vt\" (1)",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 3 inf\n",
+            5,
+            "vertex 3 is past the last vertex",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1\n",
+            5,
+            "at least 2 vertex indices",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt crease 2/1/0 0 1 sharp\n",
+            5,
+            "expected a sharpness",
+        ),
+        (
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 0\n",
+            5,
+            "t corner 1/1/0 v sharpness",
+        ),
+    ];
+    for (data, line, expected) in obj_cases {
+        assert_attribute_error(Format::Obj, data, line, expected);
+    }
     let ply = b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
         property float z\nproperty uchar red\nproperty uchar green\n\
         element face 1\nproperty list uchar int vertex_indices\nend_header\n\
         0 0 0 1 1\n1 0 0 1 1\n0 1 0 1 1\n3 0 1 2\n";
-    let (at, msg) = attribute_error(Format::Ply, ply);
-    assert_eq!(at, Location::Line(3), "{msg}");
-    assert!(msg.contains("red, green and blue"), "{msg}");
+    assert_attribute_error(Format::Ply, ply, 3, "red, green and blue");
 }
 
 #[test]

@@ -6,8 +6,9 @@
 use std::time::{Duration, Instant};
 
 use weft::error::MAX_ELEMENTS;
-use weft::primitives::{box_grid, plane_grid, sided, uv_sphere, Sided};
-use weft::{shapes, DVec3, Error, Mesh, Result};
+use weft::make::primitives::{box_grid, plane_grid, sided, uv_sphere, Sided};
+use weft::mesh::shapes;
+use weft::{DVec3, Error, Mesh, Result};
 
 /// Runs the request, checks it is refused as too large in well under a
 /// second (nothing of that size was built), and returns the sentence.
@@ -58,13 +59,13 @@ fn small_requests_still_succeed() {
 #[test]
 fn deep_linear_subdivisions_are_refused() {
     let cube = shapes::cube();
-    let message = refused(|| weft::split::split_polygons(&cube, 20));
+    let message = refused(|| weft::toolbar::split::split_polygons(&cube, 20));
     assert!(message.contains("20 levels"), "{message}");
-    refused(|| weft::split::split_triangles(&shapes::icosahedron(), 20));
-    refused(|| weft::split::constant_quads_split(&cube, 20));
-    refused(|| weft::split::inner_polygons(&cube, 20, 0.2));
-    refused(|| weft::split::sierpinski_triangles(&shapes::icosahedron(), 20));
-    refused(|| weft::transform::sierpinski_carpet(&cube, 20));
+    refused(|| weft::toolbar::split::split_triangles(&shapes::icosahedron(), 20));
+    refused(|| weft::toolbar::split::constant_quads_split(&cube, 20));
+    refused(|| weft::toolbar::split::inner_polygons(&cube, 20, 0.2));
+    refused(|| weft::toolbar::split::sierpinski_triangles(&shapes::icosahedron(), 20));
+    refused(|| weft::toolbar::transform::sierpinski_carpet(&cube, 20));
 }
 
 #[test]

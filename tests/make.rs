@@ -1,11 +1,11 @@
 //! The making tools together: Voronoi cells on a plane become n-gon faces,
 //! each gets a pyramid, and (welded) they form the Voronoi skin's one piece.
 
-use weft::plane::Plane;
-use weft::stellate::{stellate, Heights};
+use weft::make::plane::Plane;
+use weft::make::stellate::{stellate, Heights};
+use weft::make::voronoi::{cells_to_mesh, voronoi};
+use weft::mend::weld::{join, weld};
 use weft::subdivide::{catmull_clark, NakedEdges};
-use weft::voronoi::{cells_to_mesh, voronoi};
-use weft::weld::{join, weld};
 use weft::{DVec3, Mesh, Topology};
 
 fn random_points(seed: u64, n: usize, accept: impl Fn(DVec3) -> bool) -> Vec<DVec3> {

@@ -1,15 +1,15 @@
 //! The mending chain on named shapes: join and weld, cull adjacent faces,
 //! orientation, planarity, T-nodes and the naked boundary.
 
-use weft::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
-use weft::cull::cull_adjacent;
-use weft::orient::{is_orientable, signed_volume, unify_orientation};
+use weft::mend::cull::cull_adjacent;
+use weft::mend::matching::{match_lines_to_edges, match_points_to_vertices};
+use weft::mend::orient::{is_orientable, signed_volume, unify_orientation};
+use weft::mend::t_nodes::{find_t_nodes, repair_t_nodes};
+use weft::mend::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
+use weft::mesh::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
+use weft::mesh::shapes;
 use weft::subdivide::{catmull_clark, NakedEdges};
-use weft::t_nodes::{find_t_nodes, repair_t_nodes};
-use weft::weld::{
-    join, match_lines_to_edges, match_points_to_vertices, weld, DEFAULT_WELD_TOLERANCE,
-};
-use weft::{shapes, DVec3, Mesh, MeshInfo, Topology};
+use weft::{DVec3, Mesh, MeshInfo, Topology};
 
 fn info(mesh: &Mesh) -> MeshInfo {
     Topology::new(mesh).info(mesh)
@@ -192,6 +192,41 @@ fn hyperbolic_paraboloid_unit_quad_deviation_matches_the_formula() {
 }
 
 #[test]
+fn closed_is_told_per_component() {
+    let cube = shapes::cube();
+    let grid = shapes::quad_grid(3, 2);
+    let fin = shapes::fin();
+    // Components are numbered by their first face: the order of the parts.
+    for (parts, expected) in [
+        (vec![&cube, &grid], vec![true, false]),
+        (vec![&grid, &cube], vec![false, true]),
+        (vec![&cube, &fin, &cube], vec![true, false, true]),
+    ] {
+        let mesh = join(&parts).unwrap();
+        let topology = Topology::new(&mesh);
+        assert_eq!(topology.component_closed(), expected);
+        let (faces, count) = topology.face_components();
+        assert_eq!(count, expected.len());
+        // The cube's faces all lie in one closed component.
+        let first_cube = if std::ptr::eq(parts[0], &cube) {
+            0
+        } else {
+            grid.face_count()
+        };
+        assert!(expected[faces[first_cube] as usize]);
+        // The whole mesh is not closed, though one piece is.
+        assert!(!topology.info(&mesh).is_closed);
+    }
+    // A mesh of closed pieces only is closed, piece by piece and as a whole.
+    let two_cubes = join(&[&cube, &cube]).unwrap();
+    let topology = Topology::new(&two_cubes);
+    assert_eq!(topology.component_closed(), vec![true, true]);
+    assert!(topology.info(&two_cubes).is_closed);
+    // No faces, no components.
+    assert!(Topology::new(&Mesh::empty()).component_closed().is_empty());
+}
+
+#[test]
 fn weld_merges_chains_drops_collapsed_faces_and_is_idempotent() {
     // A strip of triangles whose loose copies are welded back.
     let strip = shapes::triangle_grid(5, 1);
@@ -234,6 +269,28 @@ fn weld_merges_chains_drops_collapsed_faces_and_is_idempotent() {
     assert_eq!(welded.face(0), &[0, 2, 1]);
     assert_eq!(welded.face(1), &[0, 2, 1]); // the quad lost its merged corner
     assert_eq!(welded.positions()[0], DVec3::ZERO);
+}
+
+/// At tolerance 0 only identical positions merge, and -0 is the same
+/// position as +0 even when other vertices sort between them.
+#[test]
+fn weld_at_tolerance_zero_merges_identical_positions_and_signed_zeros() {
+    let positions = vec![
+        DVec3::new(-0.0, 1.0, 0.0),
+        DVec3::new(-0.0, 2.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(0.0, 1.0, 0.0),
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, 1.0, 1e-300),
+    ];
+    let mesh = Mesh::from_polygons(positions, [[0u32, 2, 1], [3, 4, 5]]).unwrap();
+    let (welded, report) = weld(&mesh, 0.0).unwrap();
+    assert_eq!(report.merged_vertex_count, 2);
+    assert_eq!(welded.vertex_count(), 4);
+    assert_eq!(welded.face(0), &[0, 2, 1]);
+    assert_eq!(welded.face(1), &[0, 2, 3]);
+    // The merged vertex keeps its first vertex's position, sign and all.
+    assert!(welded.positions()[0].x.is_sign_negative());
 }
 
 #[test]

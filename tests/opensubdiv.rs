@@ -13,9 +13,9 @@
 //! weights instead of the cubic B-spline's (1,6,1)/8, so it is no reference
 //! on open quad meshes: it is compared on closed shapes only.
 
-use weft::shapes;
+use weft::mesh::shapes;
+use weft::mesh::triangulate::triangulate;
 use weft::subdivide::{subdivide, NakedEdges, Scheme};
-use weft::triangulate::triangulate;
 use weft::Mesh;
 use weft_reference::{
     openmesh_catmull_clark, openmesh_loop, opensubdiv_refine, BoundaryInterpolation, OsdOptions,

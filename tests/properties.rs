@@ -9,7 +9,8 @@
 use std::collections::{HashMap, HashSet};
 
 use proptest::prelude::*;
-use weft::{shapes, DVec3, Mesh, Topology};
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh, Topology};
 
 /// A random closed, oriented manifold of known Euler characteristic: a torus
 /// or a sphere-like box of random resolution, jittered, with random quads
@@ -229,6 +230,22 @@ fn jitter(bits: u64) -> f64 {
     ((bits % 1000) as f64 / 1000.0 - 0.5) * 0.01
 }
 
+/// `mesh` with face f reversed where bit `f % 64` of `pick` is set.
+fn reverse_picked_faces(mesh: &Mesh, pick: u64) -> Mesh {
+    let faces: Vec<Vec<u32>> = mesh
+        .faces()
+        .enumerate()
+        .map(|(f, face)| {
+            let mut face = face.to_vec();
+            if (pick >> (f % 64)) & 1 == 1 {
+                face.reverse();
+            }
+            face
+        })
+        .collect();
+    Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap()
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, failure_persistence: None, ..ProptestConfig::default() })]
 
@@ -256,18 +273,7 @@ proptest! {
 
     #[test]
     fn reversing_random_faces_keeps_orientability((mesh, _) in polygon_mesh(), pick in any::<u64>()) {
-        let faces: Vec<Vec<u32>> = mesh
-            .faces()
-            .enumerate()
-            .map(|(f, face)| {
-                let mut face = face.to_vec();
-                if (pick >> (f % 64)) & 1 == 1 {
-                    face.reverse();
-                }
-                face
-            })
-            .collect();
-        let flipped = Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap();
+        let flipped = reverse_picked_faces(&mesh, pick);
         let topology = Topology::new(&flipped);
         let orientation = topology.orientation();
         prop_assert!(orientation.component_orientable.iter().all(|&o| o));
@@ -366,7 +372,7 @@ fn a_box_whose_sides_do_not_meet_is_open_along_its_seams() {
         .sum();
     assert_eq!(edge_uses, mesh.index_count());
     // The vertices of the finer grids lie on the coarser grids' naked edges.
-    let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, 0.02).unwrap();
+    let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&mesh, 0.02).unwrap();
     assert!(inserted > 0);
     let fixed = Topology::new(&repaired).info(&repaired);
     assert!(fixed.is_closed && fixed.is_oriented, "{fixed:?}");
@@ -399,13 +405,13 @@ fn the_polygon_generator_mixes_triangles_quads_and_n_gons() {
 
 mod operations {
     use super::*;
-    use weft::cull::cull_adjacent;
-    use weft::orient::{flip, signed_volume, unify_orientation};
+    use weft::mend::cull::cull_adjacent;
+    use weft::mend::orient::{flip, signed_volume, unify_orientation};
+    use weft::mend::weld::{join, weld, WeldReport};
+    use weft::mesh::triangulate::triangulate;
     use weft::subdivide::{
         catmull_clark, loop_subdivision, refined_counts, subdivide, NakedEdges, Refiner, Scheme,
     };
-    use weft::triangulate::triangulate;
-    use weft::weld::{join, weld, WeldReport};
 
     fn euler(mesh: &Mesh) -> i64 {
         let info = Topology::new(mesh).info(mesh);
@@ -745,18 +751,7 @@ mod operations {
 
         #[test]
         fn unify_makes_every_manifold_edge_consistent_and_faces_out((mesh, _) in polygon_mesh(), pick in any::<u64>()) {
-            let faces: Vec<Vec<u32>> = mesh
-                .faces()
-                .enumerate()
-                .map(|(f, face)| {
-                    let mut face = face.to_vec();
-                    if (pick >> (f % 64)) & 1 == 1 {
-                        face.reverse();
-                    }
-                    face
-                })
-                .collect();
-            let scrambled = Mesh::from_polygons(mesh.positions().to_vec(), faces).unwrap();
+            let scrambled = reverse_picked_faces(&mesh, pick);
             let (unified, flipped) = unify_orientation(&scrambled);
             prop_assert!(flipped <= scrambled.face_count());
             prop_assert!(Topology::new(&unified).info(&unified).is_oriented);

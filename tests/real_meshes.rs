@@ -2,9 +2,10 @@
 
 use weft::io::render::{render, RenderOptions, Up, View};
 use weft::io::{parse_mesh, Format};
-use weft::primitives::uv_sphere;
-use weft::weld::{relative_tolerance, weld, DEFAULT_WELD_TOLERANCE};
-use weft::{shapes, DVec3, Mesh};
+use weft::make::primitives::uv_sphere;
+use weft::mend::weld::{relative_tolerance, weld, DEFAULT_WELD_TOLERANCE};
+use weft::mesh::shapes;
+use weft::{DVec3, Mesh};
 
 #[test]
 fn the_relative_tolerance_keeps_every_face_of_a_small_dense_sphere() {
@@ -107,7 +108,7 @@ fn face_edges_are_drawn_by_default_only_where_faces_have_room() {
 
 #[test]
 fn an_inset_wider_than_a_face_is_refused_naming_the_face() {
-    use weft::transform::{picture_frame, window, InsetMode};
+    use weft::toolbar::transform::{picture_frame, window, InsetMode};
     // A triangle's inset turns over past a third of its edges.
     let triangle = Mesh::new(
         vec![DVec3::ZERO, DVec3::X, DVec3::Y],
@@ -132,7 +133,7 @@ fn an_inset_wider_than_a_face_is_refused_naming_the_face() {
 /// `count` unit cubes in a row, every third inside out, as one mesh with
 /// each triangle's corners of its own (as STL stores them).
 fn boxes_as_stl_triangles(count: usize) -> Mesh {
-    let cube = weft::triangulate::triangulate(&shapes::cube())
+    let cube = weft::mesh::triangulate::triangulate(&shapes::cube())
         .unwrap()
         .mesh;
     let mut positions = Vec::new();
@@ -157,7 +158,7 @@ fn boxes_as_stl_triangles(count: usize) -> Mesh {
 
 #[test]
 fn welded_boxes_some_inside_out_are_all_turned_outward() {
-    use weft::orient::{orient_outward, signed_volume};
+    use weft::mend::orient::{orient_outward, signed_volume};
     let stl = boxes_as_stl_triangles(9);
     // Unwelded, every triangle is an open piece of its own: nothing to turn.
     let (_, unwelded) = orient_outward(&stl);
@@ -336,19 +337,54 @@ fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
     let welded = weft::io::read_mesh(dir.join("welded.obj")).unwrap();
     assert_eq!(welded.face_count(), 2048);
 
-    let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "coarse.obj", "--tolerance", "0.001"]);
+    let (code, err) = weft_in(
+        &dir,
+        &[
+            "weld",
+            "sphere.obj",
+            "-o",
+            "coarse.obj",
+            "--tolerance",
+            "0.001",
+        ],
+    );
     assert_eq!(code, 1, "{err}");
-    assert!(err.contains("would collapse") && err.contains("of 2048 faces"), "{err}");
-    assert!(err.contains("median edge") && err.contains("tolerance 0.001"), "{err}");
-    assert!(!dir.join("coarse.obj").exists(), "a refused weld writes nothing");
+    assert!(
+        err.contains("would collapse") && err.contains("of 2048 faces"),
+        "{err}"
+    );
+    assert!(
+        err.contains("median edge") && err.contains("tolerance 0.001"),
+        "{err}"
+    );
+    assert!(
+        !dir.join("coarse.obj").exists(),
+        "a refused weld writes nothing"
+    );
 
-    let args = ["weld", "sphere.obj", "-o", "coarse.obj", "--tolerance", "0.001", "--allow-collapse"];
+    let args = [
+        "weld",
+        "sphere.obj",
+        "-o",
+        "coarse.obj",
+        "--tolerance",
+        "0.001",
+        "--allow-collapse",
+    ];
     let (code, err) = weft_in(&dir, &args);
     assert_eq!(code, 0, "{err}");
-    assert!(weft::io::read_mesh(dir.join("coarse.obj")).unwrap().face_count() < 2048);
+    assert!(
+        weft::io::read_mesh(dir.join("coarse.obj"))
+            .unwrap()
+            .face_count()
+            < 2048
+    );
 
     // A negative number reaches Weft's own check, not the parser's advice.
-    let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "x.obj", "--tolerance", "-1"]);
+    let (code, err) = weft_in(
+        &dir,
+        &["weld", "sphere.obj", "-o", "x.obj", "--tolerance", "-1"],
+    );
     assert_eq!(code, 2);
     assert!(err.contains("expected a distance of 0 or more"), "{err}");
     assert!(!err.contains("-- -1"), "{err}");
@@ -367,7 +403,7 @@ fn info_counts_unused_vertices_and_cull_adjacent_drops_them() {
     assert!(json.contains("\"unused_vertices\": 2"), "{json}");
     // Two boxes sharing a wall: culling removes the wall's two copies and
     // the vertices only they used (none here), and the two bare vertices.
-    let boxes = weft::weld::join(&[&shapes::cube(), &{
+    let boxes = weft::mend::weld::join(&[&shapes::cube(), &{
         let mut b = shapes::cube();
         b.positions_mut().iter_mut().for_each(|p| p.x += 1.0);
         b
@@ -376,37 +412,69 @@ fn info_counts_unused_vertices_and_cull_adjacent_drops_them() {
     let (welded, _) = weld(&boxes, 1e-9).unwrap();
     let mut positions = welded.positions().to_vec();
     positions.push(DVec3::splat(9.0));
-    let bare = Mesh::new(positions, welded.face_sizes().to_vec(), welded.face_indices().to_vec()).unwrap();
+    let bare = Mesh::new(
+        positions,
+        welded.face_sizes().to_vec(),
+        welded.face_indices().to_vec(),
+    )
+    .unwrap();
     write_obj(&dir.join("boxes.obj"), &bare);
     let (code, err) = weft_in(&dir, &["cull-adjacent", "boxes.obj", "hull.obj"]);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("removed 2 of 12 faces") && err.contains("1 vertices no face uses"), "{err}");
+    assert!(
+        err.contains("removed 2 of 12 faces") && err.contains("1 vertices no face uses"),
+        "{err}"
+    );
     let hull = weft::io::read_mesh(dir.join("hull.obj")).unwrap();
-    assert_eq!(weft::weld::unused_vertex_count(&hull), 0);
+    assert_eq!(weft::mend::weld::unused_vertex_count(&hull), 0);
     assert_eq!(hull.vertex_count(), 12);
 }
 
 #[test]
 fn flip_outward_turns_welded_stl_boxes_outward() {
-    use weft::orient::signed_volume;
+    use weft::mend::orient::signed_volume;
     let dir = scratch("outward");
     let stl = boxes_as_stl_triangles(6);
     weft::io::write_mesh(dir.join("boxes.stl"), &stl).unwrap();
     let (code, err) = weft_in(&dir, &["flip", "boxes.stl", "plain.obj", "--outward"]);
     assert_eq!(code, 0, "{err}");
     assert!(err.contains("add --weld"), "{err}");
-    let (code, err) = weft_in(&dir, &["flip", "boxes.stl", "out.obj", "--outward", "--weld"]);
+    let (code, err) = weft_in(
+        &dir,
+        &["flip", "boxes.stl", "out.obj", "--outward", "--weld"],
+    );
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("6 pieces: turned 2 closed ones outward"), "{err}");
+    assert!(
+        err.contains("6 pieces: turned 2 closed ones outward"),
+        "{err}"
+    );
     let out = weft::io::read_mesh(dir.join("out.obj")).unwrap();
-    assert!((signed_volume(&out) - 6.0).abs() < 1e-6, "{}", signed_volume(&out));
+    assert!(
+        (signed_volume(&out) - 6.0).abs() < 1e-6,
+        "{}",
+        signed_volume(&out)
+    );
 }
 
 #[test]
 fn odd_input_gets_a_clear_answer() {
     let dir = scratch("odd");
-    std::fs::write(dir.join("points.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n").unwrap();
-    let args = ["subdivide", "points.obj", "out.obj", "--scheme", "catmull-clark", "--levels", "1", "--naked-edges", "smooth"];
+    std::fs::write(
+        dir.join("points.obj"),
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n",
+    )
+    .unwrap();
+    let args = [
+        "subdivide",
+        "points.obj",
+        "out.obj",
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "1",
+        "--naked-edges",
+        "smooth",
+    ];
     let (code, err) = weft_in(&dir, &args);
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("has no faces"), "{err}");
@@ -416,13 +484,40 @@ fn odd_input_gets_a_clear_answer() {
     let grid = shapes::quad_grid(2, 1);
     let mut faces: Vec<Vec<u32>> = grid.faces().map(|f| f.to_vec()).collect();
     faces[0].reverse();
-    write_obj(&dir.join("mixed.obj"), &Mesh::from_polygons(grid.positions().to_vec(), faces).unwrap());
-    let args = ["subdivide", "mixed.obj", "out.obj", "--scheme", "catmull-clark", "--levels", "1", "--naked-edges", "smooth"];
+    write_obj(
+        &dir.join("mixed.obj"),
+        &Mesh::from_polygons(grid.positions().to_vec(), faces).unwrap(),
+    );
+    let args = [
+        "subdivide",
+        "mixed.obj",
+        "out.obj",
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "1",
+        "--naked-edges",
+        "smooth",
+    ];
     let (code, err) = weft_in(&dir, &args);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("disagree on their orientation") && err.contains("--unify"), "{err}");
+    assert!(
+        err.contains("disagree on their orientation") && err.contains("--unify"),
+        "{err}"
+    );
 
-    let (code, err) = weft_in(&dir, &["render", "mixed.obj", "top.png", "--view", "top", "--up", "y"]);
+    let (code, err) = weft_in(
+        &dir,
+        &[
+            "render",
+            "mixed.obj",
+            "top.png",
+            "--view",
+            "top",
+            "--up",
+            "y",
+        ],
+    );
     assert_eq!(code, 0, "{err}");
     assert!(dir.join("top.png").exists());
 }
@@ -430,14 +525,25 @@ fn odd_input_gets_a_clear_answer() {
 #[test]
 fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
     let dir = scratch("crease-angle");
-    let cube = weft::triangulate::triangulate(&shapes::cube()).unwrap().mesh;
+    let cube = weft::mesh::triangulate::triangulate(&shapes::cube())
+        .unwrap()
+        .mesh;
     let mut positions = Vec::new();
     for &v in cube.face_indices() {
         positions.push(cube.positions()[v as usize]);
     }
     let split = Mesh::new(positions, cube.face_sizes().to_vec(), (0..36).collect()).unwrap();
     weft::io::write_mesh(dir.join("cube.stl"), &split).unwrap();
-    let common = ["--scheme", "catmull-clark", "--levels", "2", "--naked-edges", "smooth", "--crease-angle", "30"];
+    let common = [
+        "--scheme",
+        "catmull-clark",
+        "--levels",
+        "2",
+        "--naked-edges",
+        "smooth",
+        "--crease-angle",
+        "30",
+    ];
     let run = |out: &str, weld: bool| {
         let mut args = vec!["subdivide", "cube.stl", out];
         args.extend(common);
@@ -448,7 +554,10 @@ fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
     };
     let (code, err) = run("plain.obj", false);
     assert_eq!(code, 0, "{err}");
-    assert!(err.contains("welded") && err.contains("12 edges creased"), "{err}");
+    assert!(
+        err.contains("welded") && err.contains("12 edges creased"),
+        "{err}"
+    );
     let (code, err) = run("welded.obj", true);
     assert_eq!(code, 0, "{err}");
     assert_eq!(

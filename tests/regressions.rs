@@ -34,7 +34,7 @@ fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
         ],
         &[&[3, 0, 1], &[3, 0, 1, 2], &[1, 0, 2]],
     );
-    let once = weft::split::midedge(&m, 1).unwrap();
+    let once = weft::toolbar::split::midedge(&m, 1).unwrap();
     assert_valid(&once);
     // 6 edge midpoints and the 4 vertices kept at broken fans; 3 face
     // polygons and 8 vertex polygons.
@@ -42,7 +42,7 @@ fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
     assert_eq!(once.face_count(), 11);
     // Midpoint 0 is edge 0-1, 3 is edge 1-2, 7 is vertex 1 kept.
     assert!(once.faces().any(|f| f == [0, 3, 7]));
-    let twice = weft::split::midedge(&m, 2).unwrap();
+    let twice = weft::toolbar::split::midedge(&m, 2).unwrap();
     assert_valid(&twice);
     assert_eq!(twice.face_count(), 32);
 }
@@ -53,7 +53,7 @@ fn midedge_fan_around_a_non_manifold_edge_uses_its_midpoint_once() {
 /// faces are now found on the unit solid and scaled afterwards.
 #[test]
 fn platonic_solids_at_extreme_radii() {
-    use weft::primitives::{platonic, Platonic};
+    use weft::make::primitives::{platonic, Platonic};
     let expected = [
         (Platonic::Tetrahedron, 4, 4),
         (Platonic::Hexahedron, 8, 6),
@@ -108,8 +108,8 @@ fn assert_degenerate_naming_a_vertex(result: weft::Result<Mesh>) {
 
 #[test]
 fn overflowing_coordinates_are_refused_not_returned() {
-    use weft::smooth::{laplacian, laplacian_hc, NakedEdges};
-    use weft::transform::{offset, OffsetType};
+    use weft::toolbar::smooth::{laplacian, laplacian_hc, NakedEdges};
+    use weft::toolbar::transform::{offset, OffsetType};
     let fan = huge_fan();
     assert_degenerate_naming_a_vertex(laplacian(&fan, 1, 1.0, NakedEdges::Smooth));
     assert_degenerate_naming_a_vertex(laplacian_hc(&fan, 1, 0.5, 0.5, NakedEdges::Smooth));
@@ -123,7 +123,11 @@ fn overflowing_coordinates_are_refused_not_returned() {
         &[&[0, 1, 2]],
     );
     assert_degenerate_naming_a_vertex(offset(&far, 1e308, OffsetType::Diagonal));
-    assert_degenerate_naming_a_vertex(weft::transform::thicken(&far, 1e308, OffsetType::Diagonal));
+    assert_degenerate_naming_a_vertex(weft::toolbar::transform::thicken(
+        &far,
+        1e308,
+        OffsetType::Diagonal,
+    ));
     // The same shape at an ordinary scale smooths and offsets as before.
     let small = fan.with_positions(fan.positions().iter().map(|p| *p * 1e-300).collect());
     let small = small.unwrap();
@@ -148,7 +152,7 @@ fn t_nodes_at_tiny_coordinates_stay_linear() {
         ],
         &[&[1, 2, 3], &[1, 0, 2]],
     );
-    let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&m, 0.0).unwrap();
+    let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&m, 0.0).unwrap();
     assert_eq!(inserted, 0);
     assert_eq!(repaired, m);
     // A vertex in the middle of a naked edge is still found at that scale.
@@ -163,7 +167,7 @@ fn t_nodes_at_tiny_coordinates_stay_linear() {
         ],
         &[&[0, 1, 2], &[4, 5, 1, 3, 0]],
     );
-    let nodes = weft::t_nodes::find_t_nodes(&seam, 1e-310).unwrap();
+    let nodes = weft::mend::t_nodes::find_t_nodes(&seam, 1e-310).unwrap();
     assert_eq!(nodes.len(), 1);
     assert_eq!((nodes[0].vertex, nodes[0].edge), (3, [0, 1]));
 }
@@ -183,10 +187,10 @@ fn weld_keeps_its_meaning_at_extreme_scales() {
             ],
             &[&[0, 1, 2], &[2, 1, 3]],
         );
-        let (welded, _) = weft::weld::weld(&strip, scale).unwrap();
+        let (welded, _) = weft::mend::weld::weld(&strip, scale).unwrap();
         assert_eq!(welded, strip, "at scale {scale:e}");
         // 1.6 tolerances: the 1.5 edges weld, every face collapses.
-        let (welded, _) = weft::weld::weld(&strip, 1.6 * scale).unwrap();
+        let (welded, _) = weft::mend::weld::weld(&strip, 1.6 * scale).unwrap();
         assert_eq!(welded.face_count(), 0, "at scale {scale:e}");
     }
 }
@@ -258,7 +262,9 @@ fn subdivision_at_the_top_of_the_f64_range_is_exactly_the_scaled_result() {
         assert_eq!(got.positions(), scaled_points(expected.positions(), HUGE));
         assert_eq!(got.face_indices(), expected.face_indices());
     }
-    let triangles = weft::triangulate::triangulate(&ordinary).unwrap().mesh;
+    let triangles = weft::mesh::triangulate::triangulate(&ordinary)
+        .unwrap()
+        .mesh;
     let huge_triangles = triangles
         .with_positions(scaled_points(triangles.positions(), HUGE))
         .unwrap();

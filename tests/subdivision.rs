@@ -1,11 +1,11 @@
 //! Subdivision's counts, order, naked-edge modes, refiner and triangulation.
 
-use weft::shapes;
+use weft::mesh::shapes;
+use weft::mesh::triangulate::{as_triangles, triangulate};
 use weft::subdivide::{
     catmull_clark, loop_subdivision, parent_faces, refined_counts, subdivide, NakedEdges, Refiner,
     Scheme,
 };
-use weft::triangulate::{as_triangles, triangulate};
 use weft::{DVec3, Error, Mesh, Topology};
 
 const MODES: [NakedEdges; 3] = [
@@ -375,20 +375,7 @@ fn triangulate_keeps_area_and_maps_parents() {
     };
     assert!((area(&t.mesh) - 12.0).abs() < 1e-12);
     // A concave L-shaped hexagon: 4 triangles, area 3.
-    let l_shape = Mesh::from_polygons(
-        [
-            (0.0, 0.0),
-            (2.0, 0.0),
-            (2.0, 1.0),
-            (1.0, 1.0),
-            (1.0, 2.0),
-            (0.0, 2.0),
-        ]
-        .map(|(x, y)| DVec3::new(x, y, 0.5))
-        .to_vec(),
-        [[0u32, 1, 2, 3, 4, 5]],
-    )
-    .unwrap();
+    let l_shape = shapes::l_shaped_hexagon(0.5);
     let t = triangulate(&l_shape).unwrap();
     assert_eq!(t.mesh.face_count(), 4);
     assert!((area(&t.mesh) - 3.0).abs() < 1e-12);

@@ -1,8 +1,8 @@
 //! Tile (Weaverbird's wbTile): each fill strategy's counts and pattern, and
 //! what every one keeps: the outline, the winding, the welded seams.
 
-use weft::shapes;
-use weft::tile::{tile, TileFaces, TileFill};
+use weft::mesh::shapes;
+use weft::toolbar::tile::{tile, TileFaces, TileFill};
 use weft::{DVec3, Mesh, Topology};
 
 const FILLS: [TileFill; 8] = [

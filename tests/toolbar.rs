@@ -1,16 +1,18 @@
 //! The rest of Weaverbird's toolbar on named shapes: counts, and the
 //! property that defines each operation.
 
-use weft::extract::{dual, edge_segments, mesh_edges, mesh_from_lines, reroute_faces, DualMode};
-use weft::shapes;
-use weft::smooth::{
+use weft::mesh::shapes;
+use weft::toolbar::extract::{
+    dual, edge_segments, mesh_edges, mesh_from_lines, reroute_faces, DualMode,
+};
+use weft::toolbar::smooth::{
     blur, laplacian, laplacian_hc, laplacian_hc_with, HcOptions, NakedEdges, SmoothDirection,
 };
-use weft::split::{
+use weft::toolbar::split::{
     constant_quads_split, inner_polygons, midedge, sierpinski_triangles, split_polygons,
     split_triangles,
 };
-use weft::transform::{
+use weft::toolbar::transform::{
     bevel_edges, bevel_vertices, offset, picture_frame, sierpinski_carpet, thicken, window,
     InsetMode, OffsetType,
 };
@@ -713,7 +715,7 @@ fn hc_activation_keeps_inactive_vertices_and_checks_its_length() {
 #[test]
 fn hc_direction_keeps_vertices_on_their_normal_line_or_tangent_plane() {
     let sphere = jittered_sphere();
-    let normals = weft::analysis::vertex_normals(&sphere);
+    let normals = weft::mesh::analysis::vertex_normals(&sphere);
     let run = |direction| {
         let options = HcOptions {
             alpha: 0.0,

@@ -41,8 +41,9 @@ use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, SamplingMode};
 use rayon::ThreadPool;
+use weft::mesh::shapes;
 use weft::subdivide::{NakedEdges, Refiner, Scheme};
-use weft::{shapes, DVec3, Mesh};
+use weft::{DVec3, Mesh};
 use weft_reference::{
     openmesh_catmull_clark, openmesh_loop, BoundaryInterpolation, OsdOptions, OsdParallelStencils,
     OsdRefiner, OsdStencils, RefMesh, Scheme as OsdScheme,

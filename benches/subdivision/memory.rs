@@ -42,7 +42,7 @@ pub fn child() -> Option<String> {
             let all = pool(threads());
             // Starts the pool's threads on a small mesh, so that no memory the
             // measured call could reuse is left free on the heap.
-            let warm_up = weft::shapes::icosahedron();
+            let warm_up = weft::mesh::shapes::icosahedron();
             all.install(|| drop(subdivide(&warm_up, case.scheme, 1, NakedEdges::Smooth)));
             std::fs::write("/proc/self/clear_refs", "5").expect("reset the peak resident size");
             let before = status_kib("VmRSS:") * 1024;

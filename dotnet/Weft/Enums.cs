@@ -154,15 +154,15 @@ namespace Weft
     /// <summary>The header's other constants.</summary>
     internal static class NativeConstants
     {
-        /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
-        internal const double SharpnessInfinite = 10.0;
-        /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
-        internal const double DefaultWeldTolerance = 0.001;
         /// <summary>Major version of the library this header belongs to.</summary>
         internal const uint VersionMajor = 0;
         /// <summary>Minor version of the library this header belongs to.</summary>
         internal const uint VersionMinor = 1;
         /// <summary>Patch version of the library this header belongs to.</summary>
         internal const uint VersionPatch = 0;
+        /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
+        internal const double SharpnessInfinite = 10.0;
+        /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
+        internal const double DefaultWeldTolerance = 0.001;
     }
 }

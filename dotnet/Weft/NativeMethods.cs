@@ -69,6 +69,130 @@ namespace Weft
 
         /// <summary>The outcome of every Weft function. The values are stable: new ones are only ever added at the end. /</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr weft_version();
+
+        /// <summary>Returns the UTF-8 sentence that explains the last failure on the calling thread, or an empty string when no call on this thread has failed.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr weft_last_error_message();
+
+        /// <summary>Creates a mesh by copying caller buffers; the buffers may be freed after the call.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_new(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, out WeftMeshHandle outMesh);
+
+        /// <summary>Frees a mesh made by Weft. NULL is ignored.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void weft_mesh_free(IntPtr mesh);
+
+        /// <summary>Returns the number of vertices, or 0 when <c>mesh</c> is NULL.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_mesh_vertex_count(WeftMeshHandle mesh);
+
+        /// <summary>Returns the number of faces, or 0 when <c>mesh</c> is NULL.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_mesh_face_count(WeftMeshHandle mesh);
+
+        /// <summary>Returns the number of face corners (the sum of the face sizes), or 0 when <c>mesh</c> is NULL.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_mesh_index_count(WeftMeshHandle mesh);
+
+        /// <summary>Returns the positions, <c>3 * vertex_count</c> doubles, or NULL when <c>mesh</c> is NULL or has no vertices.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr weft_mesh_positions(WeftMeshHandle mesh);
+
+        /// <summary>Returns the face sizes, <c>face_count</c> values, or NULL when <c>mesh</c> is NULL or has no faces.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr weft_mesh_face_sizes(WeftMeshHandle mesh);
+
+        /// <summary>Returns the face indices, <c>index_count</c> values, or NULL when <c>mesh</c> is NULL or has no faces.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern IntPtr weft_mesh_face_indices(WeftMeshHandle mesh);
+
+        /// <summary>Copies the positions into a caller buffer.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_copy_positions(WeftMeshHandle mesh, [Out] double[] outPositions, UIntPtr capacity);
+
+        /// <summary>Copies the faces into caller buffers.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_copy_faces(WeftMeshHandle mesh, [Out] uint[] outFaceSizes, UIntPtr sizesCapacity, [Out] uint[] outFaceIndices, UIntPtr indicesCapacity);
+
+        /// <summary>Computes the counts and flags of a mesh's topology.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_info(WeftMeshHandle mesh, out NativeMeshInfo outInfo);
+
+        /// <summary>Reads a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does. STL corners come unwelded, one vertex per triangle corner (<c>weft_weld</c> with tolerance 0 joins them); vertex colours, UVs and creases are not read.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_read_mesh_file(byte[] path, out WeftMeshHandle outMesh);
+
+        /// <summary>Writes a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does: PLY as binary little endian, STL as binary with polygons written as triangle fans. The file is written beside its destination under a temporary name and renamed into place, so a failed write leaves no partial file and an existing file as it was.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_write_mesh_file(WeftMeshHandle mesh, byte[] path);
+
+        /// <summary>Finds, for each point, the nearest vertex of the mesh within a tolerance (the lower index when two are equally near), through the spatial hash that <c>weft_weld</c> uses.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_match_points_to_vertices(WeftMeshHandle mesh, UIntPtr pointCount, double[] points, double tolerance, [Out] uint[] outVertices);
+
+        /// <summary>Finds, for each line, the edge of the mesh whose end points lie within a tolerance of the line's, in either direction. When several vertices are within reach of an end, the pair that is an edge wins, the nearest (the smallest sum of the two distances) first.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_match_lines_to_edges(WeftMeshHandle mesh, UIntPtr lineCount, double[] lines, double tolerance, [Out] uint[] outVertexPairs);
+
+        /// <summary>Subdivides a mesh with Catmull-Clark, <c>levels</c> times, as OpenSubdiv's Catmark scheme does; triangles, quads and n-gons may be mixed, and every face of the result is a quad.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_catmull_clark(WeftMeshHandle mesh, uint levels, uint nakedEdges, out WeftMeshHandle outMesh);
+
+        /// <summary>Subdivides a triangle mesh with Loop, <c>levels</c> times, as OpenSubdiv's Loop scheme does; each triangle becomes 4.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_loop(WeftMeshHandle mesh, uint levels, uint nakedEdges, out WeftMeshHandle outMesh);
+
+        /// <summary>Gives the number of faces <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, without subdividing: the length <c>weft_subdivision_parent_faces</c> needs.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_subdivision_face_count(WeftMeshHandle cage, uint scheme, uint levels, out UIntPtr outFaceCount);
+
+        /// <summary>Writes, for every face of the mesh that <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, the index of the cage face it comes from (the naked-edge mode does not change it). Only the cage's face sizes are used.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_subdivision_parent_faces(WeftMeshHandle cage, uint scheme, uint levels, [Out] uint[] outParents, UIntPtr capacity);
+
+        /// <summary>Triangulates every face: triangles stay, a quad is split along its shorter diagonal, an n-gon is ear-clipped in its best-fit plane (concave n-gons included). Vertices keep their indices and positions; the triangles of face f are consecutive, in face order (a face of n corners makes n − 2).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_triangulate(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
+
+        /// <summary>Triangulates every face as <c>weft_triangulate</c> does, and gives the face of the input that each triangle was cut from.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_triangulate_ex(WeftMeshHandle mesh, out WeftMeshHandle outMesh, [Out] uint[] outParentFaces);
+
+        /// <summary>Gives the mesh as triangles, for the operations that need them (Loop, <c>weft_split_triangles</c>): a copy when every face is a triangle, else the triangulation of <c>weft_triangulate</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_as_triangles(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outSplitFaces);
+
+        /// <summary>Plans <c>levels</c> steps of <c>scheme</c> on the faces of <c>cage</c>: everything that depends only on its topology (the faces of each level and what each new vertex is made of) is computed here, once.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_refiner_new(WeftMeshHandle cage, uint scheme, uint levels, uint nakedEdges, out WeftRefinerHandle outRefiner);
+
+        /// <summary>Plans a subdivision with the scheme, naked-edge mode, creases and corners of <c>options</c> once, for re-evaluation with <c>weft_refiner_evaluate</c> (the other <c>weft_refiner_*</c> functions work on it as on one from <c>weft_refiner_new</c>).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_refiner_new_ex(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint levels, out WeftRefinerHandle outRefiner);
+
+        /// <summary>Computes the refined positions for new cage positions, without allocating: the cage's faces must be those the refiner was built from.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_refiner_evaluate(WeftRefinerHandle refiner, double[] cagePositions, UIntPtr vertexCount, [Out] double[] outPositions, UIntPtr outLen);
+
+        /// <summary>Makes the refined mesh at the cage positions the refiner was built from.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_refiner_mesh(WeftRefinerHandle refiner, out WeftMeshHandle outMesh);
+
+        /// <summary>Returns the number of refined vertices (the output of <c>weft_refiner_evaluate</c> holds three doubles each), or 0 when <c>refiner</c> is NULL.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_refiner_vertex_count(WeftRefinerHandle refiner);
+
+        /// <summary>Returns the number of refined faces, or 0 when <c>refiner</c> is NULL.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_refiner_face_count(WeftRefinerHandle refiner);
+
+        /// <summary>Frees a refiner. NULL is ignored.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void weft_refiner_free(IntPtr refiner);
+
+        /// <summary>Subdivides a mesh <c>levels</c> times with the scheme, naked-edge mode, creases and corners of <c>options</c>, as OpenSubdiv does with the same <c>Sdc::Options</c> and <c>TopologyDescriptor</c> arrays. Output order as <c>weft_catmull_clark</c> and <c>weft_loop</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivide_ex(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, out WeftMeshHandle outMesh);
 
         /// <summary>Gives the vertex, face and face-index counts of the mesh <c>levels</c> steps of <c>scheme</c> make from <c>mesh</c> (creases do not change them), without subdividing: the sizes the buffers of <c>weft_subdivide_vertex_data</c>, <c>weft_subdivide_face_varying</c> and <c>weft_subdivide_limit</c> need.</summary>
@@ -87,10 +211,6 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivide_limit(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, [Out] double[] outPositions, [Out] double[] outNormals, UIntPtr capacity);
 
-        /// <summary>Plans a subdivision with the scheme, naked-edge mode, creases and corners of <c>options</c> once, for re-evaluation with <c>weft_refiner_evaluate</c> (the other <c>weft_refiner_*</c> functions work on it as on one from <c>weft_refiner_new</c>).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_refiner_new_ex(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint levels, out WeftRefinerHandle outRefiner);
-
         /// <summary>Prepares a mesh whose creases are unwelded seams or sharp folds for creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the same position, and lists as creases every edge that was naked before welding and has two faces after, and every edge whose faces' normals differ by more than <c>angle_degrees</c> (180 or more: no fold test). Pass the pairs as <c>crease_vertex_pairs</c> with <c>WEFT_SHARPNESS_INFINITE</c> sharpness. <c>weft_crease_edges_from_mesh_ex</c> also gives which welded vertex each input vertex became.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount);
@@ -99,13 +219,65 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh_ex(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount, [Out] uint[] outVertexMap, UIntPtr vertexMapCapacity);
 
-        /// <summary>Reads a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does. STL corners come unwelded, one vertex per triangle corner (<c>weft_weld</c> with tolerance 0 joins them); vertex colours, UVs and creases are not read.</summary>
+        /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_read_mesh_file(byte[] path, out WeftMeshHandle outMesh);
+        internal static extern uint weft_join(IntPtr[] meshes, UIntPtr count, out WeftMeshHandle outMesh);
 
-        /// <summary>Writes a mesh file, choosing the format by the extension of <c>path</c> (<c>.obj</c>, <c>.ply</c>, <c>.stl</c> or <c>.off</c>, any case), as <c>weft</c> does: PLY as binary little endian, STL as binary with polygons written as triangle fans. The file is written beside its destination under a temporary name and renamed into place, so a failed write leaves no partial file and an existing file as it was.</summary>
+        /// <summary>The tolerance to weld <c>mesh</c> with when the host has none of its own: a millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never collapses the faces of a small part or a dense scan, whatever the units. The command line's <c>weld</c> and <c>t-nodes</c> use it when no tolerance is given.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_write_mesh_file(WeftMeshHandle mesh, byte[] path);
+        internal static extern uint weft_weld_relative_tolerance(WeftMeshHandle mesh, [Out] double[] outTolerance);
+
+        /// <summary>Returns how many vertices no face uses, or 0 when <c>mesh</c> is NULL. Subdivision keeps such bare vertices in place (OpenSubdiv cages carry them on purpose); <c>weft_remove_unused_vertices</c> leaves them out.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern UIntPtr weft_mesh_unused_vertex_count(WeftMeshHandle mesh);
+
+        /// <summary>Leaves out the vertices no face uses; the others keep their order (the face indices are renumbered to match).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_remove_unused_vertices(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
+
+        /// <summary>Welds vertices: every two vertices at most <c>tolerance</c> apart become one, transitively. The merged vertex keeps the position of its cluster's lowest-index vertex (seams stay where the surface put them, and welding twice changes nothing). Faces drop repeated corners (a quad with two merged corners becomes a triangle); faces left with fewer than 3 vertices are removed; vertices no face uses are left out.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_weld(WeftMeshHandle mesh, double tolerance, out WeftMeshHandle outMesh, out WeftWeldReport outReport);
+
+        /// <summary>Finds the T-nodes: vertices on the naked boundary that lie within <c>tolerance</c> of the inside of another face's naked edge (and further than <c>tolerance</c> from its ends). They are sorted by face, then by the edge's place in the face, then by parameter.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_find_t_nodes(WeftMeshHandle mesh, double tolerance, [Out] WeftTNode[] outNodes, UIntPtr capacity, out UIntPtr outCount);
+
+        /// <summary>Repairs the T-nodes that <c>weft_find_t_nodes</c> reports: each vertex is inserted into the edge it lies on (several on one edge in order), so the face becomes an n-gon and both sides share the seam. Positions do not change.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_repair_t_nodes(WeftMeshHandle mesh, double tolerance, out WeftMeshHandle outMesh, out UIntPtr outInserted);
+
+        /// <summary>Removes every face that has a twin with the same vertices (in either orientation, from any corner): all copies go. These are the walls inside an aggregation of joined and welded boxes. Vertices are kept as they are.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_cull_adjacent(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
+
+        /// <summary>Gives every connected piece one consistent winding, flipping the fewest of its faces, then turns each closed orientable piece to face outward. A piece that cannot be oriented (a Möbius strip) is wound as consistently as it can be; <c>weft_mesh_info</c> tells whether the mesh is orientable.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_unify_orientation(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outFlipped);
+
+        /// <summary>As <c>weft_unify_orientation</c> (one consistent winding per piece, closed pieces turned to enclose a positive volume), reporting the pieces. The triangles of an STL file share no vertices: weld them first (<c>weft_weld</c>), or every triangle is an open piece of its own.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_orient_outward(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out WeftOrientReport outReport);
+
+        /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}), so that flipping twice gives the input back.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_flip(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
+
+        /// <summary>Computes the unit normal of each face by Newell's method (robust on non-planar polygons); a face of zero area gets (0, 0, 0).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_face_normals(WeftMeshHandle mesh, [Out] double[] outNormals, UIntPtr capacity);
+
+        /// <summary>Computes the unit normal of each vertex: the face normals weighted by the face's angle at the vertex (unchanged when faces are split into triangles). A vertex no face uses gets (0, 0, 0).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_vertex_normals(WeftMeshHandle mesh, [Out] double[] outNormals, UIntPtr capacity);
+
+        /// <summary>Computes, per face, the largest distance of its corners from its best-fit (least-squares) plane; 0 for triangles. A face is planar within a tolerance when its value is at most the tolerance (the planar-quad mesh check).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_planarity(WeftMeshHandle mesh, [Out] double[] outDeviations, UIntPtr capacity);
+
+        /// <summary>Chains the naked edges (edges with one face) into polylines. On a manifold mesh each border is one closed polyline running the way its faces run their edges; at a vertex with one or three or more naked edges polylines stop, and one that returns to its start is closed. A closed polyline does not repeat its first point at the end.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_naked_boundaries(WeftMeshHandle mesh, [Out] double[] outPoints, UIntPtr pointsCapacity, [Out] UIntPtr[] outPointCounts, [Out] byte[] outClosed, UIntPtr polylinesCapacity, out UIntPtr outPointTotal, out UIntPtr outPolylineCount);
 
         /// <summary>Triangulates points by the Delaunay criterion of their projections onto a plane; the mesh's vertices are the original 3-D points, its triangles front-facing along the plane's normal.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
@@ -170,178 +342,6 @@ namespace Weft
         /// <summary>Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of circumradius <c>radius</c> about the z axis, <c>height</c> tall and centred on the origin.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_sided_solid(uint kind, UIntPtr sides, double radius, double height, out WeftMeshHandle outMesh);
-
-        /// <summary>Finds, for each point, the nearest vertex of the mesh within a tolerance (the lower index when two are equally near), through the spatial hash that <c>weft_weld</c> uses.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_match_points_to_vertices(WeftMeshHandle mesh, UIntPtr pointCount, double[] points, double tolerance, [Out] uint[] outVertices);
-
-        /// <summary>Finds, for each line, the edge of the mesh whose end points lie within a tolerance of the line's, in either direction. When several vertices are within reach of an end, the pair that is an edge wins, the nearest (the smallest sum of the two distances) first.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_match_lines_to_edges(WeftMeshHandle mesh, UIntPtr lineCount, double[] lines, double tolerance, [Out] uint[] outVertexPairs);
-
-        /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_join(IntPtr[] meshes, UIntPtr count, out WeftMeshHandle outMesh);
-
-        /// <summary>The tolerance to weld <c>mesh</c> with when the host has none of its own: a millionth of the mesh's bounding-box diagonal (0 for an empty mesh or a single point). Unlike the absolute WEFT_DEFAULT_WELD_TOLERANCE, it never collapses the faces of a small part or a dense scan, whatever the units. The command line's <c>weld</c> and <c>t-nodes</c> use it when no tolerance is given.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_weld_relative_tolerance(WeftMeshHandle mesh, [Out] double[] outTolerance);
-
-        /// <summary>Returns how many vertices no face uses, or 0 when <c>mesh</c> is NULL. Subdivision keeps such bare vertices in place (OpenSubdiv cages carry them on purpose); <c>weft_remove_unused_vertices</c> leaves them out.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_mesh_unused_vertex_count(WeftMeshHandle mesh);
-
-        /// <summary>Leaves out the vertices no face uses; the others keep their order (the face indices are renumbered to match).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_remove_unused_vertices(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
-
-        /// <summary>Welds vertices: every two vertices at most <c>tolerance</c> apart become one, transitively. The merged vertex keeps the position of its cluster's lowest-index vertex (seams stay where the surface put them, and welding twice changes nothing). Faces drop repeated corners (a quad with two merged corners becomes a triangle); faces left with fewer than 3 vertices are removed; vertices no face uses are left out.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_weld(WeftMeshHandle mesh, double tolerance, out WeftMeshHandle outMesh, out WeftWeldReport outReport);
-
-        /// <summary>Finds the T-nodes: vertices on the naked boundary that lie within <c>tolerance</c> of the inside of another face's naked edge (and further than <c>tolerance</c> from its ends). They are sorted by face, then by the edge's place in the face, then by parameter.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_find_t_nodes(WeftMeshHandle mesh, double tolerance, [Out] WeftTNode[] outNodes, UIntPtr capacity, out UIntPtr outCount);
-
-        /// <summary>Repairs the T-nodes that <c>weft_find_t_nodes</c> reports: each vertex is inserted into the edge it lies on (several on one edge in order), so the face becomes an n-gon and both sides share the seam. Positions do not change.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_repair_t_nodes(WeftMeshHandle mesh, double tolerance, out WeftMeshHandle outMesh, out UIntPtr outInserted);
-
-        /// <summary>Removes every face that has a twin with the same vertices (in either orientation, from any corner): all copies go. These are the walls inside an aggregation of joined and welded boxes. Vertices are kept as they are.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_cull_adjacent(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
-
-        /// <summary>Gives every connected piece one consistent winding, flipping the fewest of its faces, then turns each closed orientable piece to face outward. A piece that cannot be oriented (a Möbius strip) is wound as consistently as it can be; <c>weft_mesh_info</c> tells whether the mesh is orientable.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_unify_orientation(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outFlipped);
-
-        /// <summary>As <c>weft_unify_orientation</c> (one consistent winding per piece, closed pieces turned to enclose a positive volume), reporting the pieces. The triangles of an STL file share no vertices: weld them first (<c>weft_weld</c>), or every triangle is an open piece of its own.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_orient_outward(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out WeftOrientReport outReport);
-
-        /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}), so that flipping twice gives the input back.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_flip(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
-
-        /// <summary>Computes the unit normal of each face by Newell's method (robust on non-planar polygons); a face of zero area gets (0, 0, 0).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_face_normals(WeftMeshHandle mesh, [Out] double[] outNormals, UIntPtr capacity);
-
-        /// <summary>Computes the unit normal of each vertex: the face normals weighted by the face's angle at the vertex (unchanged when faces are split into triangles). A vertex no face uses gets (0, 0, 0).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_vertex_normals(WeftMeshHandle mesh, [Out] double[] outNormals, UIntPtr capacity);
-
-        /// <summary>Computes, per face, the largest distance of its corners from its best-fit (least-squares) plane; 0 for triangles. A face is planar within a tolerance when its value is at most the tolerance (the planar-quad mesh check).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_planarity(WeftMeshHandle mesh, [Out] double[] outDeviations, UIntPtr capacity);
-
-        /// <summary>Chains the naked edges (edges with one face) into polylines. On a manifold mesh each border is one closed polyline running the way its faces run their edges; at a vertex with one or three or more naked edges polylines stop, and one that returns to its start is closed. A closed polyline does not repeat its first point at the end.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_naked_boundaries(WeftMeshHandle mesh, [Out] double[] outPoints, UIntPtr pointsCapacity, [Out] UIntPtr[] outPointCounts, [Out] byte[] outClosed, UIntPtr polylinesCapacity, out UIntPtr outPointTotal, out UIntPtr outPolylineCount);
-
-        /// <summary>Returns the library's version as a string such as "0.1.0".</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr weft_version();
-
-        /// <summary>Returns the UTF-8 sentence that explains the last failure on the calling thread, or an empty string when no call on this thread has failed.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr weft_last_error_message();
-
-        /// <summary>Creates a mesh by copying caller buffers; the buffers may be freed after the call.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_mesh_new(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, out WeftMeshHandle outMesh);
-
-        /// <summary>Frees a mesh made by Weft. NULL is ignored.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern void weft_mesh_free(IntPtr mesh);
-
-        /// <summary>Returns the number of vertices, or 0 when <c>mesh</c> is NULL.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_mesh_vertex_count(WeftMeshHandle mesh);
-
-        /// <summary>Returns the number of faces, or 0 when <c>mesh</c> is NULL.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_mesh_face_count(WeftMeshHandle mesh);
-
-        /// <summary>Returns the number of face corners (the sum of the face sizes), or 0 when <c>mesh</c> is NULL.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_mesh_index_count(WeftMeshHandle mesh);
-
-        /// <summary>Returns the positions, <c>3 * vertex_count</c> doubles, or NULL when <c>mesh</c> is NULL or has no vertices.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr weft_mesh_positions(WeftMeshHandle mesh);
-
-        /// <summary>Returns the face sizes, <c>face_count</c> values, or NULL when <c>mesh</c> is NULL or has no faces.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr weft_mesh_face_sizes(WeftMeshHandle mesh);
-
-        /// <summary>Returns the face indices, <c>index_count</c> values, or NULL when <c>mesh</c> is NULL or has no faces.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern IntPtr weft_mesh_face_indices(WeftMeshHandle mesh);
-
-        /// <summary>Copies the positions into a caller buffer.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_mesh_copy_positions(WeftMeshHandle mesh, [Out] double[] outPositions, UIntPtr capacity);
-
-        /// <summary>Copies the faces into caller buffers.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_mesh_copy_faces(WeftMeshHandle mesh, [Out] uint[] outFaceSizes, UIntPtr sizesCapacity, [Out] uint[] outFaceIndices, UIntPtr indicesCapacity);
-
-        /// <summary>Computes the counts and flags of a mesh's topology.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_mesh_info(WeftMeshHandle mesh, out NativeMeshInfo outInfo);
-
-        /// <summary>Plans <c>levels</c> steps of <c>scheme</c> on the faces of <c>cage</c>: everything that depends only on its topology (the faces of each level and what each new vertex is made of) is computed here, once.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_refiner_new(WeftMeshHandle cage, uint scheme, uint levels, uint nakedEdges, out WeftRefinerHandle outRefiner);
-
-        /// <summary>Computes the refined positions for new cage positions, without allocating: the cage's faces must be those the refiner was built from.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_refiner_evaluate(WeftRefinerHandle refiner, double[] cagePositions, UIntPtr vertexCount, [Out] double[] outPositions, UIntPtr outLen);
-
-        /// <summary>Makes the refined mesh at the cage positions the refiner was built from.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_refiner_mesh(WeftRefinerHandle refiner, out WeftMeshHandle outMesh);
-
-        /// <summary>Returns the number of refined vertices (the output of <c>weft_refiner_evaluate</c> holds three doubles each), or 0 when <c>refiner</c> is NULL.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_refiner_vertex_count(WeftRefinerHandle refiner);
-
-        /// <summary>Returns the number of refined faces, or 0 when <c>refiner</c> is NULL.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern UIntPtr weft_refiner_face_count(WeftRefinerHandle refiner);
-
-        /// <summary>Frees a refiner. NULL is ignored.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern void weft_refiner_free(IntPtr refiner);
-
-        /// <summary>Subdivides a mesh with Catmull-Clark, <c>levels</c> times, as OpenSubdiv's Catmark scheme does; triangles, quads and n-gons may be mixed, and every face of the result is a quad.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_catmull_clark(WeftMeshHandle mesh, uint levels, uint nakedEdges, out WeftMeshHandle outMesh);
-
-        /// <summary>Subdivides a triangle mesh with Loop, <c>levels</c> times, as OpenSubdiv's Loop scheme does; each triangle becomes 4.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_loop(WeftMeshHandle mesh, uint levels, uint nakedEdges, out WeftMeshHandle outMesh);
-
-        /// <summary>Gives the number of faces <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, without subdividing: the length <c>weft_subdivision_parent_faces</c> needs.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_subdivision_face_count(WeftMeshHandle cage, uint scheme, uint levels, out UIntPtr outFaceCount);
-
-        /// <summary>Writes, for every face of the mesh that <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, the index of the cage face it comes from (the naked-edge mode does not change it). Only the cage's face sizes are used.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_subdivision_parent_faces(WeftMeshHandle cage, uint scheme, uint levels, [Out] uint[] outParents, UIntPtr capacity);
-
-        /// <summary>Triangulates every face: triangles stay, a quad is split along its shorter diagonal, an n-gon is ear-clipped in its best-fit plane (concave n-gons included). Vertices keep their indices and positions; the triangles of face f are consecutive, in face order (a face of n corners makes n − 2).</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_triangulate(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
-
-        /// <summary>Triangulates every face as <c>weft_triangulate</c> does, and gives the face of the input that each triangle was cut from.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_triangulate_ex(WeftMeshHandle mesh, out WeftMeshHandle outMesh, [Out] uint[] outParentFaces);
-
-        /// <summary>Gives the mesh as triangles, for the operations that need them (Loop, <c>weft_split_triangles</c>): a copy when every face is a triangle, else the triangulation of <c>weft_triangulate</c>.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_as_triangles(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outSplitFaces);
 
         /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, <c>levels</c> times, without smoothing (Weaverbird's Split Polygons: the topology of Catmull-Clark, the surface unchanged, the result welded).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
@@ -411,6 +411,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_bevel_vertices(WeftMeshHandle mesh, double fraction, out WeftMeshHandle outMesh);
 
+        /// <summary>Re-fills the chosen faces of a mesh by a pattern of triangles or quads (Weaverbird's Tile, with its numbers for both choices). Every pattern keeps each face's outline and winding and the input's vertices (their indices too), so seams stay welded and a closed mesh stays closed; the fans' centroids follow the input's vertices, one per filled face.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_tile(WeftMeshHandle mesh, uint fill, uint faces, out WeftMeshHandle outMesh);
+
         /// <summary>The dual mesh: a vertex per face, a face per interior vertex joining the faces around it (Weaverbird's Dual). Vertices on naked or non-manifold edges get no face.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_dual(WeftMeshHandle mesh, uint dualMode, out WeftMeshHandle outMesh);
@@ -434,9 +438,5 @@ namespace Weft
         /// <summary>Builds the faces a set of line segments encloses (Weaverbird's Mesh From Lines): endpoints within <c>tolerance</c> are welded, dangling segments ignored, and the smallest cycles of the segments, seen in their best-fit plane, become faces wound about its normal.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_mesh_from_lines(double[] segments, UIntPtr segmentCount, double tolerance, uint maxValence, out WeftMeshHandle outMesh);
-
-        /// <summary>Re-fills the chosen faces of a mesh by a pattern of triangles or quads (Weaverbird's Tile, with its numbers for both choices). Every pattern keeps each face's outline and winding and the input's vertices (their indices too), so seams stay welded and a closed mesh stays closed; the fans' centroids follow the input's vertices, one per filled face.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_tile(WeftMeshHandle mesh, uint fill, uint faces, out WeftMeshHandle outMesh);
     }
 }

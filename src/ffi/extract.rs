@@ -4,13 +4,13 @@
 
 use glam::DVec3;
 
-use crate::extract::{self, DualMode};
 use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, make_mesh, mesh_op, out_param, output_slice, Failure,
     WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::topology::Topology;
+use crate::mesh::topology::Topology;
+use crate::toolbar::extract::{self, DualMode};
 
 /// Dual mode: a vertex at each face's centroid.
 pub const WEFT_DUAL_VERTEX_AVERAGE: u32 = 0;

@@ -8,17 +8,17 @@
 
 use glam::DVec3;
 
-use crate::delaunay::delaunay;
 use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, make_mesh, mesh_op, out_param, output_slice,
     point_count_arg, points_arg, required, Failure, WeftStatus,
 };
 use crate::ffi::mesh::WeftMesh;
-use crate::grid::{check_grid_counts, mesh_from_grid};
-use crate::plane::Plane;
-use crate::primitives::{box_grid, plane_grid, platonic, sided, uv_sphere, Platonic, Sided};
-use crate::stellate::{check_height_count, stellate, Heights};
-use crate::voronoi::{cells_to_mesh, voronoi};
+use crate::make::delaunay::delaunay;
+use crate::make::grid::{check_grid_counts, mesh_from_grid};
+use crate::make::plane::Plane;
+use crate::make::primitives::{box_grid, plane_grid, platonic, sided, uv_sphere, Platonic, Sided};
+use crate::make::stellate::{check_height_count, stellate, Heights};
+use crate::make::voronoi::{cells_to_mesh, voronoi};
 
 /// A plane for `weft_delaunay` and `weft_voronoi`: an origin and two axes.
 /// The axes need not be unit length or orthogonal (they are

@@ -7,7 +7,7 @@ use glam::DVec3;
 
 use crate::ffi::boundary::{guard, input_slice, output_slice, points_arg, Failure, WeftStatus};
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::weld;
+use crate::mend::matching;
 
 /// Reads `count` lines of six doubles (start x, y, z, end x, y, z), naming
 /// the first end point that is not finite.
@@ -89,7 +89,7 @@ pub unsafe extern "C" fn weft_match_points_to_vertices(
             let mesh = mesh_ref(mesh, "mesh")?;
             let points = points_arg(points, point_count, "points")?;
             let out = output_slice(out_vertices, point_count, "out_vertices")?;
-            let vertices = weld::match_points_to_vertices(mesh, &points, tolerance)?;
+            let vertices = matching::match_points_to_vertices(mesh, &points, tolerance)?;
             out.copy_from_slice(&vertices);
             Ok(())
         })
@@ -137,7 +137,7 @@ pub unsafe extern "C" fn weft_match_lines_to_edges(
             let lines = lines_arg(lines, line_count)?;
             // `lines_arg` has checked that 6 * line_count fits, so 2 * line_count does.
             let out = output_slice(out_vertex_pairs, 2 * line_count, "out_vertex_pairs")?;
-            let pairs = weld::match_lines_to_edges(mesh, &lines, tolerance)?;
+            let pairs = matching::match_lines_to_edges(mesh, &lines, tolerance)?;
             for (slot, pair) in out.chunks_exact_mut(2).zip(pairs) {
                 slot.copy_from_slice(&pair);
             }

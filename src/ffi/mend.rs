@@ -1,17 +1,17 @@
 //! Mending exports: join and weld, T-nodes, cull adjacent faces,
 //! orientation, normals, planarity and the naked boundary.
 
-use crate::analysis;
-use crate::cull;
 use crate::ffi::boundary::{
     check_room, counted_mesh_op, guard, input_slice, make_mesh, mesh_op, out_param, output_slice,
     write_optional, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::mend::cull;
+use crate::mend::orient;
+use crate::mend::t_nodes;
+use crate::mend::weld;
+use crate::mesh::analysis;
 use crate::mesh::Mesh;
-use crate::orient;
-use crate::t_nodes;
-use crate::weld;
 
 /// An absolute weld tolerance: 0.001 model units, Rhino's default absolute
 /// tolerance (a millimetre in a model in metres). It can collapse the faces
@@ -104,8 +104,9 @@ pub unsafe extern "C" fn weft_weld_relative_tolerance(
 ) -> WeftStatus {
     guard(|| {
         let out = out_param(out_tolerance, "out_tolerance")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        // SAFETY: `out_param` refused NULL; the caller guarantees the rest.
+        // SAFETY: `mesh` is NULL or a live handle, as the `# Safety` section requires.
+        let mesh = unsafe { mesh_ref(mesh, "mesh") }?;
+        // SAFETY: `out_param` refused NULL; the caller guarantees it is writable.
         unsafe { out.write(weld::relative_tolerance(mesh)) };
         Ok(())
     })
@@ -139,14 +140,13 @@ pub unsafe extern "C" fn weft_remove_unused_vertices(
     out_mesh: *mut *mut WeftMesh,
     out_removed: *mut usize,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (compact, removed) = weld::remove_unused_vertices(mesh);
-        WeftMesh::write(out, compact);
-        write_optional(out_removed, removed);
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_removed` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        counted_mesh_op(mesh, out_mesh, out_removed, |m| {
+            Ok(weld::remove_unused_vertices(m))
+        })
+    }
 }
 
 /// Welds vertices: every two vertices at most `tolerance` apart become one,
@@ -366,23 +366,24 @@ pub unsafe extern "C" fn weft_orient_outward(
     out_mesh: *mut *mut WeftMesh,
     out_report: *mut WeftOrientReport,
 ) -> WeftStatus {
-    guard(|| {
-        let out = out_param(out_mesh, "out_mesh")?;
-        let mesh = mesh_ref(mesh, "mesh")?;
-        let (oriented, report) = orient::orient_outward(mesh);
-        WeftMesh::write(out, oriented);
-        write_optional(
-            out_report,
-            WeftOrientReport {
-                flipped_faces: report.flipped_faces,
-                pieces: report.pieces,
-                turned_outward: report.turned_outward,
-                open_pieces: report.open_pieces,
-                non_orientable_pieces: report.non_orientable_pieces,
-            },
-        );
-        Ok(())
-    })
+    // SAFETY: `mesh`, `out_mesh` and `out_report` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        mesh_op(mesh, out_mesh, |mesh| {
+            let (oriented, report) = orient::orient_outward(mesh);
+            write_optional(
+                out_report,
+                WeftOrientReport {
+                    flipped_faces: report.flipped_faces,
+                    pieces: report.pieces,
+                    turned_outward: report.turned_outward,
+                    open_pieces: report.open_pieces,
+                    non_orientable_pieces: report.non_orientable_pieces,
+                },
+            );
+            Ok(oriented)
+        })
+    }
 }
 
 /// Reverses every face, keeping its first corner first ({a, b, c, d}

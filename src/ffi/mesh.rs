@@ -7,8 +7,8 @@ use crate::ffi::boundary::{
     check_room, guard, input_slice, last_error_ptr, make_mesh, out_param, output_slice, required,
     Failure, WeftStatus,
 };
+use crate::mesh::topology::Topology;
 use crate::mesh::{check_element_counts, Mesh};
-use crate::topology::Topology;
 
 /// Major version of the library this header belongs to.
 pub const WEFT_VERSION_MAJOR: u32 = 0;

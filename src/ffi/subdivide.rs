@@ -6,8 +6,8 @@ use crate::ffi::boundary::{
     WeftStatus,
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
+use crate::mesh::triangulate::{as_triangles, triangulate};
 use crate::subdivide::{self, NakedEdges, Scheme};
-use crate::triangulate::{as_triangles, triangulate};
 
 /// Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
 pub const WEFT_NAKED_EDGES_FIXED: u32 = 0;

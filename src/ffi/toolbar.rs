@@ -8,8 +8,8 @@ use crate::ffi::boundary::{
     check_room, enum_arg, guard, input_slice, mesh_op, output_slice, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
-use crate::split;
+use crate::toolbar::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
+use crate::toolbar::split;
 
 /// Smoothing direction: vertices move freely (the published HC algorithm).
 pub const WEFT_SMOOTH_DIRECTION_FREE: u32 = 0;

@@ -4,8 +4,8 @@
 
 use crate::ffi::boundary::{enum_arg, input_slice, mesh_op, Failure, WeftStatus};
 use crate::ffi::mesh::WeftMesh;
-use crate::tile::{self, TileFaces, TileFill};
-use crate::transform::{self, InsetMode, OffsetType};
+use crate::toolbar::tile::{self, TileFaces, TileFill};
+use crate::toolbar::transform::{self, InsetMode, OffsetType};
 
 /// Offset type: each vertex moves by the distance along its vertex normal.
 pub const WEFT_OFFSET_DIAGONAL: u32 = 0;

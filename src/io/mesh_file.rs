@@ -5,9 +5,9 @@
 use glam::DVec3;
 
 use super::{IoError, Location};
+use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 use crate::subdivide::{Crease, SHARPNESS_INFINITE};
-use crate::topology::Topology;
 
 /// A mesh and the data a file carries with it. Every part but the mesh is
 /// optional; what a format cannot hold is listed by [`MeshFile::dropped_by`].

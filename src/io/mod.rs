@@ -30,6 +30,7 @@ use glam::DVec3;
 use thiserror::Error;
 
 use crate::error::MeshError;
+use crate::mend::weld::weld;
 use crate::mesh::Mesh;
 
 pub use mesh_file::{
@@ -86,6 +87,9 @@ pub enum IoError {
         location: Location,
         message: String,
     },
+    /// Welding the mesh read failed (memory ran out).
+    #[error("{}: cannot weld: {source}", .path.display())]
+    Weld { path: PathBuf, source: crate::Error },
     /// The file is well formed but its faces do not make a valid mesh.
     #[error("{}{location}: {source}", file_prefix(.file))]
     InvalidMesh {
@@ -188,7 +192,8 @@ pub enum PlyEncoding {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ReadOptions {
     /// Merge vertices at identical positions (STL stores every triangle's
-    /// corners separately). Faces that collapse are dropped.
+    /// corners separately), as [`weld`] at tolerance 0 does: faces that
+    /// collapse are dropped, the vertices no face uses are left out.
     pub weld: bool,
 }
 
@@ -222,11 +227,11 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         source,
     })?;
     let mesh = parse_mesh(format, &bytes).map_err(|e| e.in_file(path))?;
-    Ok(if options.weld {
-        weld_identical(&mesh).0
+    if options.weld {
+        weld_identical(path, &mesh)
     } else {
-        mesh
-    })
+        Ok(mesh)
+    }
 }
 
 /// Reads a mesh file with its colours, UVs and creases (what its format
@@ -244,11 +249,23 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         source,
     })?;
     let file = parse_mesh_file(format, &bytes).map_err(|e| e.in_file(path))?;
-    Ok(if options.weld {
-        MeshFile::new(weld_identical(&file.mesh).0)
+    if options.weld {
+        Ok(MeshFile::new(weld_identical(path, &file.mesh)?))
     } else {
-        file
-    })
+        Ok(file)
+    }
+}
+
+/// The weld of [`ReadOptions::weld`]: the library's [`weld`] at tolerance 0,
+/// which merges vertices at identical positions and drops faces that
+/// collapse.
+fn weld_identical(path: &Path, mesh: &Mesh) -> Result<Mesh, IoError> {
+    weld(mesh, 0.0)
+        .map(|(welded, _)| welded)
+        .map_err(|source| IoError::Weld {
+            path: path.to_path_buf(),
+            source,
+        })
 }
 
 /// Parses the bytes of a mesh file of the given format with its colours,
@@ -469,47 +486,6 @@ pub fn write_atomically(
         let _ = fs::remove_file(&temporary);
     }
     result
-}
-
-/// Merges vertices at bit-identical positions and drops faces that collapse
-/// to fewer than three distinct corners. Returns the mesh and how many faces
-/// were dropped. Unused vertices are removed.
-pub fn weld_identical(mesh: &Mesh) -> (Mesh, usize) {
-    use std::collections::HashMap;
-    let key = |p: DVec3| {
-        // +0.0 and -0.0 are one position.
-        let c = |x: f64| if x == 0.0 { 0u64 } else { x.to_bits() };
-        (c(p.x), c(p.y), c(p.z))
-    };
-    let mut slot = HashMap::with_capacity(mesh.vertex_count());
-    let mut positions = Vec::new();
-    let mut sizes = Vec::with_capacity(mesh.face_count());
-    let mut indices = Vec::with_capacity(mesh.index_count());
-    let mut dropped = 0;
-    let mut face = Vec::new();
-    for corners in mesh.faces() {
-        face.clear();
-        for &v in corners {
-            let p = mesh.positions()[v as usize];
-            let next = positions.len() as u32;
-            let id = *slot.entry(key(p)).or_insert_with(|| {
-                positions.push(p);
-                next
-            });
-            // Drop repeats, keeping the first occurrence's place.
-            if !face.contains(&id) {
-                face.push(id);
-            }
-        }
-        if face.len() < 3 {
-            dropped += 1;
-            continue;
-        }
-        sizes.push(face.len() as u32);
-        indices.extend_from_slice(&face);
-    }
-    let welded = Mesh::new(positions, sizes, indices).expect("welding keeps a mesh valid");
-    (welded, dropped)
 }
 
 /// Builds the mesh a reader collected, turning a validation error into one at

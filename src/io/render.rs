@@ -16,9 +16,10 @@ use std::path::Path;
 use glam::DVec3;
 
 use super::{write_atomically, IoError};
-use crate::error::{try_vec, Error};
+use crate::buffers::try_vec;
+use crate::error::Error;
+use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
-use crate::topology::Topology;
 
 /// Largest picture side, in pixels.
 pub const MAX_SIDE: u32 = 4096;
@@ -312,7 +313,7 @@ fn render_with(
         mesh.face_count() < EDGE_FACE_LIMIT && mesh.face_count() * EDGE_PIXELS_PER_FACE <= pixels,
     );
 
-    let topology = Topology::new(mesh);
+    let topology = Topology::try_new(mesh)?;
     let mut marked = vec![false; topology.edge_count()];
     for &[a, b] in &options.marked_edges {
         if let Some(e) = topology.find_edge(a, b) {
@@ -338,7 +339,7 @@ fn render_with(
         let first = mesh.face_offsets()[f] as usize;
         corners.clear();
         corners.extend(mesh.face_positions(f));
-        let normal = crate::analysis::newell_vector(&corners).normalize_or_zero();
+        let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();
         let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
         if let Some(cut) = &options.section {
             if (centroid - cut.point).dot(cut.normal) > 0.0 {

@@ -1,6 +1,6 @@
 //! STL, ASCII and binary: a soup of triangles, each with its own three
 //! corners. Read as such (3 vertices per triangle, unwelded); weld them with
-//! [`super::weld_identical`] or the `weld` operation. Written as triangles:
+//! [`super::ReadOptions::weld`] or the `weld` operation. Written as triangles:
 //! polygons are split into fans.
 //!
 //! A file is binary when its size is exactly 84 + 50 × the triangle count at

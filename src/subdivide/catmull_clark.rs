@@ -17,8 +17,10 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, RefinedGathers};
-use super::level::{flatten, par_map, Connectivity, Faces, VertexRule, NONE};
-use crate::error::{try_vec, Result};
+use super::level::{Connectivity, Faces, NONE};
+use super::scheme::VertexRule;
+use crate::buffers::{flatten, par_map, try_vec};
+use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
 const CHUNK: usize = 2048;

@@ -11,10 +11,11 @@
 //! softens. As in OpenSubdiv, sharpness is kept at single precision, so the
 //! same inputs give the same surface.
 
-use super::level::{zeroed, Connectivity, Faces};
+use super::level::{vertex_edges_of, Connectivity, Faces};
 use super::rules::forced_sharpness;
-use super::{NakedEdges, Scheme};
-use crate::error::{try_vec, Error, Result};
+use super::scheme::{NakedEdges, Scheme};
+use crate::buffers::{try_vec, zeroed};
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// The sharpness OpenSubdiv treats as infinite (`Sdc::Crease::SHARPNESS_INFINITE`):
@@ -201,25 +202,6 @@ impl Sharpness {
     }
 }
 
-/// Vertex → incident edges (CSR, ascending edge order).
-fn vertex_edges(vertex_count: usize, connectivity: &Connectivity) -> Result<(Vec<u32>, Vec<u32>)> {
-    let mut offsets: Vec<u32> = zeroed(vertex_count + 1, "vertex edges")?;
-    for &[a, b] in &connectivity.edges {
-        offsets[a as usize + 1] += 1;
-        offsets[b as usize + 1] += 1;
-    }
-    super::level::prefix_sum(&mut offsets);
-    let mut fill = offsets.clone();
-    let mut edges: Vec<u32> = zeroed(2 * connectivity.edge_count(), "vertex edges")?;
-    for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
-        for v in [a, b] {
-            edges[fill[v as usize] as usize] = e as u32;
-            fill[v as usize] += 1;
-        }
-    }
-    Ok((offsets, edges))
-}
-
 /// Sharpness of a user value: NaN and negative values are errors, values
 /// of [`SHARPNESS_INFINITE`] or more are infinite.
 fn user_sharpness(value: f64, what: impl Fn() -> String) -> Result<f32> {
@@ -248,7 +230,7 @@ pub(crate) fn cage_sharpness(
     let vertex_count = faces.vertex_count;
     let mut edges: Vec<f32> = zeroed(connectivity.edge_count(), "edge sharpness")?;
     let mut vertices: Vec<f32> = zeroed(vertex_count, "vertex sharpness")?;
-    let (vertex_edge_offsets, vertex_edges) = vertex_edges(vertex_count, connectivity)?;
+    let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&connectivity.edges, vertex_count)?;
     for (i, &([a, b], value)) in options.creases.iter().enumerate() {
         let s = user_sharpness(value, || format!("crease {i} ({a}, {b})"))?;
         let (low, high) = (a.min(b), a.max(b));
@@ -326,10 +308,7 @@ pub(crate) fn child_sharpness(
 ) -> Result<Sharpness> {
     let parent_vertices = parent_faces.vertex_count;
     let parent_edges = parent.edges.len();
-    let face_points = match scheme {
-        Scheme::CatmullClark => parent_faces.face_count(),
-        Scheme::Loop => 0,
-    };
+    let face_points = scheme.face_point_count(parent_faces.face_count());
     let child_vertices = parent_vertices + parent_edges + face_points;
 
     // The sharpness of both halves of every parent edge, at its low and high end.
@@ -352,7 +331,7 @@ pub(crate) fn child_sharpness(
             0.0
         }
     }));
-    let (vertex_edge_offsets, vertex_edges) = vertex_edges(child_vertices, child)?;
+    let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&child.edges, child_vertices)?;
 
     let mut vertices: Vec<f32> = zeroed(child_vertices, "vertex sharpness")?;
     let mut rules = try_vec(child_vertices, "vertex rules")?;
@@ -461,7 +440,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
             "the crease angle is {angle_degrees} degrees; it must be 0 or more"
         )));
     }
-    let topology = crate::topology::Topology::new(mesh);
+    let topology = crate::mesh::topology::Topology::try_new(mesh)?;
     // Adding 0.0 turns -0.0 into 0.0, so equal numbers have equal bits.
     let bits = |p: glam::DVec3| {
         [
@@ -494,7 +473,7 @@ pub fn creases_from_mesh(mesh: &Mesh, angle_degrees: f64) -> Result<CreasedMesh>
         .map(|f| f.iter().map(|&v| remap[v as usize]).collect())
         .collect();
     let welded = Mesh::from_polygons(positions, faces)?;
-    let topology = crate::topology::Topology::new(&welded);
+    let topology = crate::mesh::topology::Topology::try_new(&welded)?;
     let cos_limit = angle_degrees.to_radians().cos();
     let normal = |f: usize| {
         let face = welded.face(f);

@@ -17,8 +17,10 @@
 
 use super::creases::{fractional_weight, Sharpness, SHARPNESS_INFINITE};
 use super::level::{Connectivity, Faces};
-use super::stencils::{edge_weights, vertex_mask, KeptLevel, Subdivider};
-use super::{scale, Scheme};
+use super::scale;
+use super::scheme::Scheme;
+use super::stencils::{edge_weights, vertex_mask};
+use super::subdivider::{KeptLevel, Subdivider};
 use crate::error::{Error, Result};
 
 /// Where face-varying values are interpolated linearly (OpenSubdiv's

@@ -1,6 +1,7 @@
-//! Where the arithmetic pass finds the old points each new point gathers.
+//! Plans and gathers: where the arithmetic pass finds the old points each
+//! new point gathers.
 //!
-//! A [`Plan`] stores the gathers of a level once, for a refiner to re-apply
+//! A [`Plan`] (made by [`plan`]) stores the gathers of a level once, for a refiner to re-apply
 //! to new positions. A one-shot subdivision applies each level once, so it
 //! reads the same gathers where they already lie: [`LevelGathers`] from the
 //! level's faces, connectivity and tags, and for Catmull-Clark's last level
@@ -8,9 +9,101 @@
 //! connectivity is never built. All give the same gathers in the same
 //! order, so all give the same bits.
 
-use super::level::{Connectivity, Faces, Plan, VertexRule, NONE};
+use super::level::{Connectivity, Faces, NONE};
 use super::rules::Tags;
-use super::Scheme;
+use super::scheme::{Scheme, VertexRule};
+use crate::buffers::{fill_by_offsets, par_map, par_offsets};
+use crate::error::Result;
+
+/// What the arithmetic pass needs to make one level from the previous one:
+/// every new point as a gather of old points (and, for Catmull-Clark, of the
+/// new face points).
+#[derive(Debug, Clone)]
+pub(crate) struct Plan {
+    pub(crate) scheme: Scheme,
+    /// Vertex count of the level the plan reads.
+    pub(crate) vertex_count: usize,
+    /// The faces of the level the plan reads (for face points; empty for Loop).
+    pub(crate) face_offsets: Vec<u32>,
+    pub(crate) face_indices: Vec<u32>,
+    /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
+    /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
+    /// [`NONE`] for a sharp edge, whose point is the midpoint.
+    pub(crate) edges: Vec<[u32; 4]>,
+    pub(crate) vertex_rules: Vec<VertexRule>,
+    /// `vertex_ring[vertex_ring_offsets[v]..]`: a smooth vertex's neighbours
+    /// (then, for Catmull-Clark, its faces); a crease vertex's two sharp
+    /// neighbours; nothing for a corner.
+    pub(crate) vertex_ring_offsets: Vec<u32>,
+    pub(crate) vertex_ring: Vec<u32>,
+}
+
+impl Plan {
+    /// The ring of vertex `v` (see [`Plan::vertex_ring`]).
+    #[inline]
+    pub(crate) fn ring(&self, v: usize) -> &[u32] {
+        &self.vertex_ring
+            [self.vertex_ring_offsets[v] as usize..self.vertex_ring_offsets[v + 1] as usize]
+    }
+}
+
+/// The gathers that make the next level's points from this level's, stored
+/// (see [`LevelGathers`] for where each is found).
+pub(crate) fn plan(
+    scheme: Scheme,
+    faces: &Faces,
+    connectivity: &Connectivity,
+    tags: &Tags,
+) -> Result<Plan> {
+    let level = LevelGathers {
+        scheme,
+        faces,
+        connectivity,
+        tags,
+    };
+    let vertex_count = faces.vertex_count;
+    let edges = par_map(connectivity.edge_count(), "edge stencils", |e| {
+        level.edge(e)
+    })?;
+
+    let per_neighbour = scheme.ring_stride() as u32;
+    let ring_offsets = par_offsets(vertex_count, "vertex stencils", |v| {
+        match tags.vertex_rules[v] {
+            VertexRule::Smooth => per_neighbour * connectivity.vertex_corners(v).len() as u32,
+            VertexRule::Crease => 2,
+            VertexRule::Corner => 0,
+        }
+    })?;
+    let ring = fill_by_offsets(&ring_offsets, "vertex stencils", |v, slot| {
+        match tags.vertex_rules[v] {
+            VertexRule::Smooth => {
+                let n = slot.len() / per_neighbour as usize;
+                let mut i = 0;
+                level.around(v, |u, f| {
+                    slot[i] = u;
+                    if per_neighbour == 2 {
+                        slot[n + i] = f;
+                    }
+                    i += 1;
+                });
+            }
+            VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
+            VertexRule::Corner => {}
+        }
+    })?;
+
+    // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
+    Ok(Plan {
+        scheme,
+        vertex_count,
+        face_offsets: Vec::new(),
+        face_indices: Vec::new(),
+        edges,
+        vertex_rules: tags.vertex_rules.clone(),
+        vertex_ring_offsets: ring_offsets,
+        vertex_ring: ring,
+    })
+}
 
 /// The gathers of one level, as the scheme's point rules read them.
 pub(crate) trait Gathers: Sync {
@@ -72,7 +165,7 @@ impl Gathers for Plan {
     #[inline]
     fn around(&self, v: usize, mut visit: impl FnMut(u32, u32)) -> usize {
         let ring = self.ring(v);
-        let n = ring.len() / self.ring_stride();
+        let n = ring.len() / self.scheme.ring_stride();
         for i in 0..n {
             visit(ring[i], if n < ring.len() { ring[n + i] } else { NONE });
         }
@@ -142,10 +235,7 @@ impl Gathers for LevelGathers<'_> {
     }
 
     fn face_count(&self) -> usize {
-        match self.scheme {
-            Scheme::CatmullClark => self.faces.face_count(),
-            Scheme::Loop => 0,
-        }
+        self.scheme.face_point_count(self.faces.face_count())
     }
 
     #[inline]
@@ -390,109 +480,4 @@ impl Gathers for RefinedGathers<'_> {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::shapes;
-    use crate::subdivide::catmull_clark;
-    use crate::subdivide::rules::{cage_tags, child_tags};
-    use crate::subdivide::NakedEdges;
-    use glam::DVec3;
-
-    /// Reading a level's gathers from its parent gives what building the
-    /// level and reading it gives: every face, edge, rule and ring, on
-    /// closed, open, mixed and non-manifold shapes, in every naked-edge mode.
-    #[test]
-    fn refined_gathers_equal_the_built_level() {
-        let shapes = [
-            shapes::cube(),
-            shapes::quad_grid(3, 2),
-            shapes::quad_grid_with_hole(),
-            shapes::mixed_polygons(),
-            shapes::fin(),
-            shapes::bow_tie(),
-            shapes::mobius_strip(6),
-            shapes::tetrahedron(),
-            // Two triangles on the same three vertices, closed; and the same
-            // quad twice, every edge run the same way by both.
-            crate::Mesh::from_polygons(
-                vec![DVec3::ZERO, DVec3::X, DVec3::Y],
-                [[0u32, 1, 2], [1, 0, 2]],
-            )
-            .unwrap(),
-            crate::Mesh::from_polygons(
-                vec![DVec3::ZERO, DVec3::X, DVec3::ONE, DVec3::Y],
-                [[0u32, 1, 2, 3], [0, 1, 2, 3]],
-            )
-            .unwrap(),
-        ];
-        for (s, mesh) in shapes.iter().enumerate() {
-            for naked in [
-                NakedEdges::Fixed,
-                NakedEdges::Smooth,
-                NakedEdges::CornerFixed,
-            ] {
-                let faces = Faces::of_mesh(mesh);
-                let connectivity = Connectivity::new(&faces).unwrap();
-                let tags = cage_tags(&faces, &connectivity, naked).unwrap();
-                let child = catmull_clark::child_faces(&faces, &connectivity, true).unwrap();
-                let child_connectivity = connectivity
-                    .refine(Scheme::CatmullClark, &faces, true)
-                    .unwrap();
-                let child_tags =
-                    child_tags(Scheme::CatmullClark, &tags, &faces, &child_connectivity).unwrap();
-                let parent = LevelGathers {
-                    scheme: Scheme::CatmullClark,
-                    faces: &faces,
-                    connectivity: &connectivity,
-                    tags: &tags,
-                };
-                let refined = RefinedGathers { parent };
-                let built = LevelGathers {
-                    scheme: Scheme::CatmullClark,
-                    faces: &child,
-                    connectivity: &child_connectivity,
-                    tags: &child_tags,
-                };
-                let what = format!("shape {s} {naked:?}");
-                let grandchild =
-                    catmull_clark::child_faces(&child, &child_connectivity, false).unwrap();
-                assert_eq!(
-                    catmull_clark::grandchild_faces(&refined).unwrap().indices,
-                    grandchild.indices,
-                    "{what}: grandchild faces"
-                );
-                assert_eq!(refined.vertex_count(), built.vertex_count(), "{what}");
-                assert_eq!(refined.edge_count(), built.edge_count(), "{what}");
-                assert_eq!(refined.face_count(), built.face_count(), "{what}");
-                for f in 0..built.face_count() {
-                    assert!(refined.face(f).eq(built.face(f)), "{what}: face {f}");
-                    let edges: Vec<u32> = (4 * f..4 * f + 4)
-                        .map(|c| child_connectivity.corner_edges[c])
-                        .collect();
-                    assert_eq!(refined.quad_edges(f).to_vec(), edges, "{what}: face {f}");
-                }
-                for e in 0..built.edge_count() {
-                    assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
-                }
-                for v in 0..built.vertex_count() {
-                    let rule = built.rule(v);
-                    assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
-                    match rule {
-                        VertexRule::Crease => assert_eq!(
-                            refined.crease_neighbours(v),
-                            built.crease_neighbours(v),
-                            "{what}: vertex {v}"
-                        ),
-                        VertexRule::Smooth => {
-                            let (mut a, mut b) = (Vec::new(), Vec::new());
-                            let n = refined.around(v, |u, f| a.push((u, f)));
-                            assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
-                            assert_eq!(a, b, "{what}: vertex {v}");
-                        }
-                        VertexRule::Corner => {}
-                    }
-                }
-            }
-        }
-    }
-}
+mod tests;

@@ -1,21 +1,19 @@
-//! One level of a subdivision: its faces, their connectivity, and the plan
-//! that turns the level's positions into the next level's.
+//! One level of a subdivision: its faces and their connectivity.
 //!
 //! The connectivity is flat index arrays, without the mesh's positions, so
 //! that a refiner can plan every level before it sees a single coordinate.
 //! The cage's is found by bucketing every face corner under its lower vertex
-//! (as in [`crate::topology`]); every refined level's is written
+//! (as in [`crate::mesh::topology`]); every refined level's is written
 //! arithmetically from its parent's ([`Connectivity::refine`]): the child
 //! edges, corners and rings of each parent vertex, edge and face have a known
 //! place, so no sorting of the whole level is needed.
 
-use rayon::prelude::*;
+mod refine;
 
-use super::Scheme;
-use crate::error::{try_vec, Result};
-
-/// Items per rayon task: small enough to balance, large enough to amortise.
-const CHUNK: usize = 4096;
+use super::scheme::{check_counts, Scheme};
+use crate::buffers::{prefix_sum, try_copy, try_vec, zeroed};
+use crate::error::Result;
+use crate::mesh::adjacency::Adjacency;
 
 /// Marks a missing index (a sharp edge has no wings).
 pub(crate) const NONE: u32 = u32::MAX;
@@ -101,29 +99,57 @@ impl Faces {
     }
 }
 
-/// Edges and adjacency of a [`Faces`]. Edges are unique `[low, high]` vertex
-/// pairs sorted ascending: this is the order of the edge points.
+/// Edges and adjacency of a [`Faces`]: the mesh's [`Adjacency`] (read
+/// through it: `connectivity.edges`, `connectivity.edge_corners(e)`), plus
+/// each corner's face and each vertex's edges. Edges are unique
+/// `[low, high]` vertex pairs sorted ascending: this is the order of the
+/// edge points.
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Connectivity {
-    pub(crate) edges: Vec<[u32; 2]>,
+    pub(crate) adjacency: Adjacency,
     /// The faces' [`Faces::size`]: when not 0, a corner's face is arithmetic.
     pub(crate) face_size: u32,
     /// For each corner, its face; empty when `face_size` is not 0 (see [`Connectivity::face_of`]).
     pub(crate) corner_faces: Vec<u32>,
-    /// For each corner, the edge from it to the next corner of its face.
-    pub(crate) corner_edges: Vec<u32>,
-    /// `edge_corners[edge_offsets[e]..edge_offsets[e + 1]]`: the corners on edge e, ascending.
-    pub(crate) edge_offsets: Vec<u32>,
-    pub(crate) edge_corners: Vec<u32>,
-    /// `vertex_corners[vertex_offsets[v]..vertex_offsets[v + 1]]`: the corners at vertex v, ascending.
-    pub(crate) vertex_offsets: Vec<u32>,
-    pub(crate) vertex_corners: Vec<u32>,
     /// `vertex_edges[vertex_edge_offsets[v]..vertex_edge_offsets[v + 1]]`: the edges at vertex v, ascending.
     pub(crate) vertex_edge_offsets: Vec<u32>,
     pub(crate) vertex_edges: Vec<u32>,
 }
 
+impl std::ops::Deref for Connectivity {
+    type Target = Adjacency;
+
+    #[inline]
+    fn deref(&self) -> &Adjacency {
+        &self.adjacency
+    }
+}
+
 impl Connectivity {
+    /// The faces and connectivity of a cage that `levels` levels of
+    /// `scheme` will refine, once every level's size is checked.
+    ///
+    /// # Errors
+    /// [`crate::Error::ResultTooLarge`] when a level would pass the size cap;
+    /// [`crate::Error::OutOfMemory`].
+    pub(crate) fn of_cage(
+        cage: &crate::Mesh,
+        scheme: Scheme,
+        levels: u32,
+    ) -> Result<(Faces, Connectivity)> {
+        let faces = Faces::of_mesh(cage);
+        let connectivity = Connectivity::new(&faces)?;
+        check_counts(
+            scheme,
+            cage.vertex_count() as u64,
+            connectivity.edge_count() as u64,
+            cage.face_count() as u64,
+            cage.index_count() as u64,
+            levels,
+        )?;
+        Ok((faces, connectivity))
+    }
+
     /// Finds the edges and adjacency of `faces`.
     ///
     /// # Errors
@@ -131,7 +157,6 @@ impl Connectivity {
     pub(crate) fn new(faces: &Faces) -> Result<Connectivity> {
         let corner_count = faces.corner_count();
         let vertex_count = faces.vertex_count;
-        let indices = &faces.indices;
 
         let mut corner_faces = Vec::new();
         if faces.size == 0 {
@@ -144,477 +169,16 @@ impl Connectivity {
             0 => corner_faces[c] as usize,
             size => c / size as usize,
         };
-
-        // Bucket each corner's edge under its lower vertex; sorting each small
-        // bucket by the higher vertex gives the edges in sorted order.
-        let mut bucket_offsets = zeroed(vertex_count + 1, "edge buckets")?;
-        let edge_end = |c: usize| {
-            let a = indices[c];
-            let b = indices[faces.next(c, face_of(c))];
-            (a.min(b), a.max(b))
-        };
-        for c in 0..corner_count {
-            bucket_offsets[edge_end(c).0 as usize + 1] += 1;
-        }
-        prefix_sum(&mut bucket_offsets);
-        let mut fill = try_vec(vertex_count + 1, "edge buckets")?;
-        fill.extend_from_slice(&bucket_offsets);
-        let mut bucket: Vec<u64> = zeroed(corner_count, "edge buckets")?;
-        for c in 0..corner_count {
-            let (low, high) = edge_end(c);
-            let slot = &mut fill[low as usize];
-            bucket[*slot as usize] = (u64::from(high) << 32) | c as u64;
-            *slot += 1;
-        }
-        drop(fill);
-
-        let mut edges = try_vec(corner_count, "edges")?;
-        let mut edge_offsets = try_vec(corner_count + 1, "edge offsets")?;
-        let mut edge_corners = try_vec(corner_count, "edge corners")?;
-        let mut corner_edges = zeroed(corner_count, "corner edges")?;
-        edge_offsets.push(0u32);
-        for low in 0..vertex_count {
-            let entries =
-                &mut bucket[bucket_offsets[low] as usize..bucket_offsets[low + 1] as usize];
-            entries.sort_unstable();
-            let mut previous_high = u32::MAX;
-            for &entry in entries.iter() {
-                let (high, corner) = ((entry >> 32) as u32, entry as u32);
-                if high != previous_high {
-                    if previous_high != u32::MAX {
-                        edge_offsets.push(edge_corners.len() as u32);
-                    }
-                    edges.push([low as u32, high]);
-                    previous_high = high;
-                }
-                corner_edges[corner as usize] = edges.len() as u32 - 1;
-                edge_corners.push(corner);
-            }
-            if previous_high != u32::MAX {
-                edge_offsets.push(edge_corners.len() as u32);
-            }
-        }
-        drop(bucket);
-        edges.shrink_to_fit();
-        edge_offsets.shrink_to_fit();
-
-        let mut vertex_offsets = zeroed(vertex_count + 1, "vertex corners")?;
-        for &v in indices {
-            vertex_offsets[v as usize + 1] += 1;
-        }
-        prefix_sum(&mut vertex_offsets);
-        let mut fill = try_vec(vertex_count + 1, "vertex corners")?;
-        fill.extend_from_slice(&vertex_offsets);
-        let mut vertex_corners = zeroed(corner_count, "vertex corners")?;
-        for (c, &v) in indices.iter().enumerate() {
-            vertex_corners[fill[v as usize] as usize] = c as u32;
-            fill[v as usize] += 1;
-        }
-
-        drop(fill);
-        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&edges, vertex_count)?;
-
+        let adjacency =
+            Adjacency::build(vertex_count, &faces.indices, |c| faces.next(c, face_of(c)))?;
+        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&adjacency.edges, vertex_count)?;
         Ok(Connectivity {
-            edges,
+            adjacency,
             face_size: faces.size,
             corner_faces,
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
             vertex_edge_offsets,
             vertex_edges,
         })
-    }
-
-    /// The connectivity of the level `scheme` makes from `faces`, whose
-    /// connectivity is `self`, written from the parent's without sorting. Equal
-    /// to [`Connectivity::new`] of the child faces. The vertices' edges, only
-    /// needed to refine once more (as the one-shot's refined gathers do
-    /// without building the result), are left empty unless `vertex_edges`.
-    ///
-    /// # Errors
-    /// [`crate::Error::OutOfMemory`].
-    pub(crate) fn refine(
-        &self,
-        scheme: Scheme,
-        faces: &Faces,
-        vertex_edges: bool,
-    ) -> Result<Connectivity> {
-        match scheme {
-            Scheme::CatmullClark => self.refine_catmull_clark(faces, vertex_edges),
-            Scheme::Loop => self.refine_loop(faces, vertex_edges),
-        }
-    }
-
-    /// Catmull-Clark: parent corner c of face f becomes quad c =
-    /// `[v_c, V + e_c, V + E + f, V + e_prev]`. The child edges, sorted, are
-    /// `[v, V + e]` for every vertex v and its edges e in order (the slots of
-    /// `vertex_edges`), then `[V + e, V + E + f]` for every edge e and its
-    /// corners in order (the slots of `edge_corners`).
-    fn refine_catmull_clark(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
-        let (v_count, e_count, c_count) =
-            (faces.vertex_count, self.edge_count(), faces.corner_count());
-        let idx = &faces.indices;
-        let (v_base, f_base, two_e) = (v_count as u32, (v_count + e_count) as u32, 2 * e_count);
-        let next = |c: usize| faces.next(c, self.face_of(c));
-        let edge_slots = two_e + c_count;
-        // Child edge s < 2E is [v, V + e] for vertex-edge slot s; child edge
-        // 2E + k is [V + e, F + f] for edge-corner slot k (corner c on e, in
-        // face f). Every array below is written slot by slot in parallel.
-        let slot_vertex = |s: usize| self.slot_vertex(s);
-
-        // The arrays are independent of each other: built side by side.
-        let build_edges = || -> Result<Vec<[u32; 2]>> {
-            par_map(edge_slots, "edges", |s| match s.checked_sub(two_e) {
-                None => [slot_vertex(s), v_base + self.vertex_edges[s]],
-                Some(k) => {
-                    let c = self.edge_corners[k] as usize;
-                    [
-                        v_base + self.corner_edges[c],
-                        f_base + self.face_of(c) as u32,
-                    ]
-                }
-            })
-        };
-
-        // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
-        let build_corner_edges = || -> Result<Vec<u32>> {
-            let quads = par_map(c_count, "corner edges", |c| self.child_quad_edges(faces, c))?;
-            Ok(flatten(quads))
-        };
-
-        let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let edge_offsets = par_offsets(edge_slots, "edge offsets", |s| {
-                if s < two_e {
-                    self.edge_corners(self.vertex_edges[s] as usize).len() as u32
-                } else {
-                    2
-                }
-            })?;
-            let edge_corners = fill_by_offsets(&edge_offsets, "edge corners", |s, out| {
-                if s < two_e {
-                    let v = slot_vertex(s);
-                    let corners = self.edge_corners(self.vertex_edges[s] as usize);
-                    for (out, &c) in out.iter_mut().zip(corners) {
-                        let c = c as usize;
-                        *out = if idx[c] == v {
-                            4 * c as u32
-                        } else {
-                            4 * next(c) as u32 + 3
-                        };
-                    }
-                    out.sort_unstable();
-                } else {
-                    let c = self.edge_corners[s - two_e] as usize;
-                    let (a, b) = (4 * c as u32 + 1, 4 * next(c) as u32 + 2);
-                    out.copy_from_slice(&[a.min(b), a.max(b)]);
-                }
-            })?;
-            Ok((edge_offsets, edge_corners))
-        };
-
-        // Child vertex u is parent vertex u, then the points of the parent's
-        // edges (from V), then of its faces (from V + E).
-        let child_vertices = v_count + e_count + faces.face_count();
-        let build_vertex_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let vertex_offsets = par_offsets(child_vertices, "vertex corners", |u| {
-                (match u {
-                    u if u < v_count => self.vertex_corners(u).len(),
-                    u if u < v_count + e_count => 2 * self.edge_corners(u - v_count).len(),
-                    u => faces.corners(u - v_count - e_count).len(),
-                }) as u32
-            })?;
-            let vertex_corners = fill_by_offsets(&vertex_offsets, "vertex corners", |u, out| {
-                if u < v_count {
-                    for (out, &c) in out.iter_mut().zip(self.vertex_corners(u)) {
-                        *out = 4 * c;
-                    }
-                } else if u < v_count + e_count {
-                    let corners = self.edge_corners(u - v_count);
-                    for (pair, &c) in out.chunks_exact_mut(2).zip(corners) {
-                        pair.copy_from_slice(&[4 * c + 1, 4 * next(c as usize) as u32 + 3]);
-                    }
-                    out.sort_unstable();
-                } else {
-                    for (out, c) in out.iter_mut().zip(faces.corners(u - v_count - e_count)) {
-                        *out = 4 * c as u32 + 2;
-                    }
-                }
-            })?;
-            Ok((vertex_offsets, vertex_corners))
-        };
-
-        let build_vertex_edges = || -> Result<(Vec<u32>, Vec<u32>)> {
-            if !with_vertex_edges {
-                return Ok((Vec::new(), Vec::new()));
-            }
-            let vertex_edge_offsets = par_offsets(child_vertices, "vertex edges", |u| {
-                (match u {
-                    u if u < v_count => self.vertex_edges(u).len(),
-                    u if u < v_count + e_count => 2 + self.edge_corners(u - v_count).len(),
-                    u => faces.corners(u - v_count - e_count).len(),
-                }) as u32
-            })?;
-            let vertex_edges = fill_by_offsets(&vertex_edge_offsets, "vertex edges", |u, out| {
-                if u < v_count {
-                    let slots = self.vertex_edge_offsets[u]..self.vertex_edge_offsets[u + 1];
-                    for (out, slot) in out.iter_mut().zip(slots) {
-                        *out = slot;
-                    }
-                } else if u < v_count + e_count {
-                    let e = u - v_count;
-                    let [a, b] = self.edges[e];
-                    out[0] = self.vertex_edge_slot(a, e as u32);
-                    out[1] = self.vertex_edge_slot(b, e as u32);
-                    let slots = self.edge_offsets[e]..self.edge_offsets[e + 1];
-                    for (out, slot) in out[2..].iter_mut().zip(slots) {
-                        *out = two_e as u32 + slot;
-                    }
-                } else {
-                    let corners = faces.corners(u - v_count - e_count);
-                    for (out, c) in out.iter_mut().zip(corners) {
-                        *out = two_e as u32 + self.edge_corner_slot(c);
-                    }
-                    out.sort_unstable();
-                }
-            })?;
-            Ok((vertex_edge_offsets, vertex_edges))
-        };
-
-        let ((edges, corner_edges), ((edge_corners, vertex_corners), vertex_edges)) = rayon::join(
-            || rayon::join(build_edges, build_corner_edges),
-            || {
-                rayon::join(
-                    || rayon::join(build_edge_corners, build_vertex_corners),
-                    build_vertex_edges,
-                )
-            },
-        );
-        let (edge_offsets, edge_corners) = edge_corners?;
-        let (vertex_offsets, vertex_corners) = vertex_corners?;
-        let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
-        Ok(Connectivity {
-            edges: edges?,
-            face_size: 4,
-            corner_faces: Vec::new(),
-            corner_edges: corner_edges?,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
-            vertex_edge_offsets,
-            vertex_edges,
-        })
-    }
-
-    /// Loop: triangle f = `[v0, v1, v2]` with edges `e_i = v_i v_(i+1)` and
-    /// `E_i = V + e_i` becomes `T_i = [v_i, E_i, E_(i-1)]` (i < 3) and
-    /// `T_3 = [E0, E1, E2]`. The child edges, sorted, are `[v, V + e]` as for
-    /// Catmull-Clark, then the edges inside the triangles, `[V + m, V + h]`
-    /// grouped by the lower parent edge m and sorted by h (two triangles that
-    /// share two edges share that child edge).
-    fn refine_loop(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
-        let (v_count, e_count, f_count) =
-            (faces.vertex_count, self.edge_count(), faces.face_count());
-        let idx = &faces.indices;
-        let v_base = v_count as u32;
-        let two_e = 2 * e_count as u32;
-        let face_edges = |f: usize| -> [u32; 3] {
-            [
-                self.corner_edges[3 * f],
-                self.corner_edges[3 * f + 1],
-                self.corner_edges[3 * f + 2],
-            ]
-        };
-
-        // Inside edges grouped by their lower parent edge.
-        let mut inner_offsets = try_vec(e_count + 1, "edges")?;
-        let mut inner_high = try_vec(3 * f_count, "edges")?;
-        inner_offsets.push(0u32);
-        for m in 0..e_count as u32 {
-            let start = inner_high.len();
-            for &c in self.edge_corners(m as usize) {
-                let (f, i) = (c as usize / 3, c as usize % 3);
-                let edges = face_edges(f);
-                inner_high.extend(
-                    [edges[(i + 1) % 3], edges[(i + 2) % 3]]
-                        .into_iter()
-                        .filter(|&h| h > m),
-                );
-            }
-            sort_and_dedup_from(&mut inner_high, start);
-            inner_offsets.push(inner_high.len() as u32);
-        }
-        let inner = |x: u32, y: u32| -> u32 {
-            let (m, h) = (x.min(y) as usize, x.max(y));
-            let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
-            two_e + inner_offsets[m] + position(block, h)
-        };
-
-        let edge_slots = 2 * e_count + inner_high.len();
-        // The arrays are independent of each other: built side by side.
-        let build_edges = || -> Result<(Vec<[u32; 2]>, Vec<u32>)> {
-            let mut edges = try_vec(edge_slots, "edges")?;
-            for v in 0..v_count {
-                edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
-            }
-            for m in 0..e_count {
-                let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
-                edges.extend(block.iter().map(|&h| [v_base + m as u32, v_base + h]));
-            }
-
-            let mut corner_edges = try_vec(12 * f_count, "corner edges")?;
-            for f in 0..f_count {
-                let e = face_edges(f);
-                for i in 0..3 {
-                    let (v, e_previous) = (idx[3 * f + i], e[(i + 2) % 3]);
-                    corner_edges.extend_from_slice(&[
-                        self.vertex_edge_slot(v, e[i]),
-                        inner(e[i], e_previous),
-                        self.vertex_edge_slot(v, e_previous),
-                    ]);
-                }
-                corner_edges.extend_from_slice(&[
-                    inner(e[0], e[1]),
-                    inner(e[1], e[2]),
-                    inner(e[2], e[0]),
-                ]);
-            }
-            Ok((edges, corner_edges))
-        };
-
-        let build_edge_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let mut edge_offsets = try_vec(edge_slots + 1, "edge offsets")?;
-            let mut edge_corners = try_vec(12 * f_count, "edge corners")?;
-            edge_offsets.push(0);
-            for v in 0..v_count {
-                for &e in self.vertex_edges(v) {
-                    let start = edge_corners.len();
-                    edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
-                        let (f, i) = (c / 3, c % 3);
-                        if idx[c as usize] == v as u32 {
-                            12 * f + 3 * i
-                        } else {
-                            12 * f + 3 * ((i + 1) % 3) + 2
-                        }
-                    }));
-                    edge_corners[start..].sort_unstable();
-                    edge_offsets.push(edge_corners.len() as u32);
-                }
-            }
-            for m in 0..e_count {
-                for &h in &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize] {
-                    let start = edge_corners.len();
-                    for &c in self.edge_corners(m) {
-                        let (f, i) = (c / 3, c % 3);
-                        let e = face_edges(f as usize);
-                        // The inside edge {E_j, E_(j+1)} is T_(j+1)'s corner 1 and T_3's corner j.
-                        let j = if e[(i as usize + 1) % 3] == h {
-                            i
-                        } else if e[(i as usize + 2) % 3] == h {
-                            (i + 2) % 3
-                        } else {
-                            continue;
-                        };
-                        edge_corners
-                            .extend_from_slice(&[12 * f + 3 * ((j + 1) % 3) + 1, 12 * f + 9 + j]);
-                    }
-                    edge_corners[start..].sort_unstable();
-                    edge_offsets.push(edge_corners.len() as u32);
-                }
-            }
-            Ok((edge_offsets, edge_corners))
-        };
-
-        let child_vertices = v_count + e_count;
-        let build_vertex_corners = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let mut vertex_offsets = try_vec(child_vertices + 1, "vertex corners")?;
-            let mut vertex_corners = try_vec(12 * f_count, "vertex corners")?;
-            vertex_offsets.push(0);
-            for v in 0..v_count {
-                vertex_corners.extend(
-                    self.vertex_corners(v)
-                        .iter()
-                        .map(|&c| 12 * (c / 3) + 3 * (c % 3)),
-                );
-                vertex_offsets.push(vertex_corners.len() as u32);
-            }
-            for e in 0..e_count {
-                let start = vertex_corners.len();
-                for &c in self.edge_corners(e) {
-                    let (f, i) = (c / 3, c % 3);
-                    vertex_corners.extend_from_slice(&[
-                        12 * f + 3 * i + 1,
-                        12 * f + 3 * ((i + 1) % 3) + 2,
-                        12 * f + 9 + i,
-                    ]);
-                }
-                vertex_corners[start..].sort_unstable();
-                vertex_offsets.push(vertex_corners.len() as u32);
-            }
-            Ok((vertex_offsets, vertex_corners))
-        };
-
-        let build_vertex_edges = || -> Result<(Vec<u32>, Vec<u32>)> {
-            let (mut vertex_edge_offsets, mut vertex_edges) = (Vec::new(), Vec::new());
-            if with_vertex_edges {
-                vertex_edge_offsets = try_vec(child_vertices + 1, "vertex edges")?;
-                vertex_edges = try_vec(2 * edge_slots, "vertex edges")?;
-                vertex_edge_offsets.push(0);
-                for v in 0..v_count {
-                    vertex_edges
-                        .extend(self.vertex_edge_offsets[v]..self.vertex_edge_offsets[v + 1]);
-                    vertex_edge_offsets.push(vertex_edges.len() as u32);
-                }
-                for (e, &[a, b]) in self.edges.iter().enumerate() {
-                    let e32 = e as u32;
-                    vertex_edges.extend_from_slice(&[
-                        self.vertex_edge_slot(a, e32),
-                        self.vertex_edge_slot(b, e32),
-                    ]);
-                    let start = vertex_edges.len();
-                    for &c in self.edge_corners(e) {
-                        let (f, i) = (c as usize / 3, c as usize % 3);
-                        let edges = face_edges(f);
-                        for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
-                            if x < e32 {
-                                vertex_edges.push(inner(x, e32));
-                            }
-                        }
-                    }
-                    sort_and_dedup_from(&mut vertex_edges, start);
-                    vertex_edges.extend(two_e + inner_offsets[e]..two_e + inner_offsets[e + 1]);
-                    vertex_edge_offsets.push(vertex_edges.len() as u32);
-                }
-            }
-            Ok((vertex_edge_offsets, vertex_edges))
-        };
-
-        let ((edges, edge_corners), (vertex_corners, vertex_edges)) = rayon::join(
-            || rayon::join(build_edges, build_edge_corners),
-            || rayon::join(build_vertex_corners, build_vertex_edges),
-        );
-        let ((edges, corner_edges), (edge_offsets, edge_corners)) = (edges?, edge_corners?);
-        let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
-            (vertex_corners?, vertex_edges?);
-        Ok(Connectivity {
-            edges,
-            face_size: 3,
-            corner_faces: Vec::new(),
-            corner_edges,
-            edge_offsets,
-            edge_corners,
-            vertex_offsets,
-            vertex_corners,
-            vertex_edge_offsets,
-            vertex_edges,
-        })
-    }
-
-    pub(crate) fn edge_count(&self) -> usize {
-        self.edges.len()
     }
 
     /// The face of corner `c`.
@@ -625,18 +189,6 @@ impl Connectivity {
             4 => c / 4,
             size => c / size as usize,
         }
-    }
-
-    /// The corners on edge `e`: one per face using it.
-    #[inline]
-    pub(crate) fn edge_corners(&self, e: usize) -> &[u32] {
-        &self.edge_corners[self.edge_offsets[e] as usize..self.edge_offsets[e + 1] as usize]
-    }
-
-    /// The corners at vertex `v`: one per face around it.
-    #[inline]
-    pub(crate) fn vertex_corners(&self, v: usize) -> &[u32] {
-        &self.vertex_corners[self.vertex_offsets[v] as usize..self.vertex_offsets[v + 1] as usize]
     }
 
     /// The edges at vertex `v`, ascending.
@@ -689,35 +241,24 @@ impl Connectivity {
     }
 }
 
-/// Sorts `list[start..]` and drops its repeats.
-fn sort_and_dedup_from(list: &mut Vec<u32>, start: usize) {
-    list[start..].sort_unstable();
-    let mut kept = start;
-    for k in start..list.len() {
-        if k == start || list[k] != list[kept - 1] {
-            list[kept] = list[k];
-            kept += 1;
-        }
-    }
-    list.truncate(kept);
-}
-
 /// The index of `x` in the short list `list`, which holds it.
 #[inline]
-fn position(list: &[u32], x: u32) -> u32 {
+pub(super) fn position(list: &[u32], x: u32) -> u32 {
     list.iter().position(|&y| y == x).unwrap_or(0) as u32
 }
 
 /// Every vertex's edges, ascending, from the sorted edges.
-fn vertex_edges_of(edges: &[[u32; 2]], vertex_count: usize) -> Result<(Vec<u32>, Vec<u32>)> {
+pub(crate) fn vertex_edges_of(
+    edges: &[[u32; 2]],
+    vertex_count: usize,
+) -> Result<(Vec<u32>, Vec<u32>)> {
     let mut offsets = zeroed(vertex_count + 1, "vertex edges")?;
     for &[a, b] in edges {
         offsets[a as usize + 1] += 1;
         offsets[b as usize + 1] += 1;
     }
     prefix_sum(&mut offsets);
-    let mut fill = try_vec(vertex_count + 1, "vertex edges")?;
-    fill.extend_from_slice(&offsets);
+    let mut fill = try_copy(&offsets, "vertex edges")?;
     let mut list = zeroed(2 * edges.len(), "vertex edges")?;
     for (e, &[a, b]) in edges.iter().enumerate() {
         for v in [a as usize, b as usize] {
@@ -728,337 +269,5 @@ fn vertex_edges_of(edges: &[[u32; 2]], vertex_count: usize) -> Result<(Vec<u32>,
     Ok((offsets, list))
 }
 
-/// How a vertex point is made from its neighbourhood (OpenSubdiv's
-/// `Sdc::Crease::Rule`, with the dart folded into smooth, which shares its mask).
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-#[repr(u8)]
-pub(crate) enum VertexRule {
-    /// Interior manifold vertex: the scheme's smooth mask.
-    Smooth = 0,
-    /// On exactly two sharp edges: 3/4 the vertex, 1/8 each sharp neighbour.
-    Crease = 1,
-    /// Infinitely sharp: the vertex stays where it is.
-    Corner = 2,
-}
-
-/// What the arithmetic pass needs to make one level from the previous one:
-/// every new point as a gather of old points (and, for Catmull-Clark, of the
-/// new face points).
-#[derive(Debug, Clone)]
-pub(crate) struct Plan {
-    pub(crate) scheme: Scheme,
-    /// Vertex count of the level the plan reads.
-    pub(crate) vertex_count: usize,
-    /// The faces of the level the plan reads (for face points; empty for Loop).
-    pub(crate) face_offsets: Vec<u32>,
-    pub(crate) face_indices: Vec<u32>,
-    /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
-    /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
-    /// [`NONE`] for a sharp edge, whose point is the midpoint.
-    pub(crate) edges: Vec<[u32; 4]>,
-    pub(crate) vertex_rules: Vec<VertexRule>,
-    /// `vertex_ring[vertex_ring_offsets[v]..]`: a smooth vertex's neighbours
-    /// (then, for Catmull-Clark, its faces); a crease vertex's two sharp
-    /// neighbours; nothing for a corner.
-    pub(crate) vertex_ring_offsets: Vec<u32>,
-    pub(crate) vertex_ring: Vec<u32>,
-}
-
-impl Plan {
-    /// Ring entries per neighbour of a smooth vertex: Catmull-Clark's rings
-    /// hold the faces too.
-    #[inline]
-    pub(crate) fn ring_stride(&self) -> usize {
-        match self.scheme {
-            Scheme::CatmullClark => 2,
-            Scheme::Loop => 1,
-        }
-    }
-
-    /// The ring of vertex `v` (see [`Plan::vertex_ring`]).
-    #[inline]
-    pub(crate) fn ring(&self, v: usize) -> &[u32] {
-        &self.vertex_ring
-            [self.vertex_ring_offsets[v] as usize..self.vertex_ring_offsets[v + 1] as usize]
-    }
-}
-
-/// A vector of `n` zeros, reserved fallibly and filled in parallel (filling
-/// is what faults the fresh pages in, and the kernel zeroes each page on the
-/// thread that touches it first).
-pub(crate) fn zeroed<T: Default + Clone + Send + Sync>(n: usize, what: &str) -> Result<Vec<T>> {
-    let mut v = try_vec(n, what)?;
-    v.par_extend(rayon::iter::repeat_n(T::default(), n).with_min_len(4 * CHUNK));
-    Ok(v)
-}
-
-/// The indices of fixed-size groups (a quad's, a triangle's children's) as
-/// one list, in place: the buffer is reinterpreted, not copied.
-pub(crate) fn flatten<const N: usize>(groups: Vec<[u32; N]>) -> Vec<u32> {
-    // `[u32; N]` and `u32` share their alignment and N divides the bytes:
-    // the cast cannot fail.
-    bytemuck::cast_vec(groups)
-}
-
-/// `f(0), …, f(n - 1)`, reserved fallibly and written in parallel, each
-/// element once.
-pub(crate) fn par_map<T: Send>(
-    n: usize,
-    what: &str,
-    f: impl Fn(usize) -> T + Sync + Send,
-) -> Result<Vec<T>> {
-    let mut values = try_vec(n, what)?;
-    values.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(f));
-    Ok(values)
-}
-
-/// The offsets of `n` items of `count(i)` values each (one longer than `n`),
-/// counted and summed in parallel.
-pub(crate) fn par_offsets(
-    n: usize,
-    what: &str,
-    count: impl Fn(usize) -> u32 + Sync + Send,
-) -> Result<Vec<u32>> {
-    let mut offsets = try_vec(n + 1, what)?;
-    offsets.push(0);
-    offsets.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(count));
-    // Each block's total, then each block summed from the totals before it.
-    let block = (4 * CHUNK).max(n.div_ceil(4 * rayon::current_num_threads().max(1)));
-    let totals: Vec<u32> = offsets[1..]
-        .par_chunks(block)
-        .map(|b| b.iter().sum())
-        .collect();
-    let mut bases = Vec::with_capacity(totals.len());
-    let mut sum = 0u32;
-    for total in totals {
-        bases.push(sum);
-        sum += total;
-    }
-    offsets[1..]
-        .par_chunks_mut(block)
-        .zip(bases)
-        .for_each(|(b, mut sum)| {
-            for x in b {
-                sum += *x;
-                *x = sum;
-            }
-        });
-    Ok(offsets)
-}
-
-/// A vector of `offsets[n]` values, item i's `offsets[i]..offsets[i + 1]`
-/// written by `fill(i, part)`, blocks of items in parallel.
-pub(crate) fn fill_by_offsets<T: Default + Clone + Send + Sync>(
-    offsets: &[u32],
-    what: &str,
-    fill: impl Fn(usize, &mut [T]) + Sync + Send,
-) -> Result<Vec<T>> {
-    let mut values = zeroed(offsets.last().map_or(0, |&n| n as usize), what)?;
-    split_by_offsets(&mut values, offsets, CHUNK)
-        .into_par_iter()
-        .for_each(|(items, block)| {
-            let base = offsets[items.start] as usize;
-            for i in items {
-                fill(
-                    i,
-                    &mut block[offsets[i] as usize - base..offsets[i + 1] as usize - base],
-                );
-            }
-        });
-    Ok(values)
-}
-
-/// Splits `values` into the parts owned by each block of `block` items,
-/// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
-/// its items.
-pub(crate) fn split_by_offsets<'a, T>(
-    mut values: &'a mut [T],
-    offsets: &[u32],
-    block: usize,
-) -> Vec<(std::ops::Range<usize>, &'a mut [T])> {
-    let items = offsets.len().saturating_sub(1);
-    let mut parts = Vec::with_capacity(items.div_ceil(block));
-    for first in (0..items).step_by(block) {
-        let last = (first + block).min(items);
-        let len = (offsets[last] - offsets[first]) as usize;
-        let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
-        parts.push((first..last, part));
-        values = rest;
-    }
-    parts
-}
-
-pub(crate) fn prefix_sum(counts: &mut [u32]) {
-    for i in 1..counts.len() {
-        counts[i] += counts[i - 1];
-    }
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn connectivity_of_two_triangles() {
-        let faces = Faces {
-            vertex_count: 4,
-            size: 0,
-            offsets: vec![0, 3, 6],
-            indices: vec![0, 1, 2, 0, 2, 3],
-        };
-        let c = Connectivity::new(&faces).unwrap();
-        assert_eq!(c.edges, vec![[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]]);
-        let diagonal = c.edges.iter().position(|&e| e == [0, 2]).unwrap();
-        assert_eq!(c.edge_corners(diagonal), &[2, 3]);
-        assert_eq!(c.vertex_corners(0), &[0, 3]);
-        assert_eq!(c.corner_edges, vec![0, 3, 1, 1, 4, 2]);
-        assert_eq!(c.vertex_edges(2), &[1, 3, 4]);
-    }
-
-    /// On faces of one size, corners find their face and neighbours by
-    /// arithmetic exactly as through the offsets.
-    #[test]
-    fn uniform_faces_match_their_offsets() {
-        use crate::shapes;
-        for mesh in [
-            shapes::cube(),
-            shapes::icosahedron(),
-            shapes::quad_grid(3, 2),
-        ] {
-            let uniform = Faces::of_mesh(&mesh);
-            assert_ne!(uniform.size, 0);
-            let general = Faces {
-                size: 0,
-                ..uniform.clone()
-            };
-            let (a, b) = (
-                Connectivity::new(&uniform).unwrap(),
-                Connectivity::new(&general).unwrap(),
-            );
-            assert!(a.corner_faces.is_empty());
-            assert_same(&a, &b, "uniform");
-            for c in 0..uniform.corner_count() {
-                let f = b.face_of(c);
-                assert_eq!(uniform.next(c, f), general.next(c, f), "next of {c}");
-                assert_eq!(uniform.prev(c, f), general.prev(c, f), "prev of {c}");
-                assert_eq!(uniform.face(f), general.face(f));
-            }
-            assert_eq!(uniform.face_count(), general.face_count());
-        }
-        assert_eq!(Faces::of_mesh(&shapes::mixed_polygons()).size, 0);
-    }
-
-    fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
-        assert_eq!(derived.edges, bucketed.edges, "{what}: edges");
-        let faces_of = |c: &Connectivity| {
-            (0..c.corner_edges.len())
-                .map(|k| c.face_of(k))
-                .collect::<Vec<_>>()
-        };
-        assert_eq!(
-            faces_of(derived),
-            faces_of(bucketed),
-            "{what}: corner faces"
-        );
-        assert_eq!(
-            derived.corner_edges, bucketed.corner_edges,
-            "{what}: corner edges"
-        );
-        assert_eq!(
-            derived.edge_offsets, bucketed.edge_offsets,
-            "{what}: edge offsets"
-        );
-        assert_eq!(
-            derived.edge_corners, bucketed.edge_corners,
-            "{what}: edge corners"
-        );
-        assert_eq!(
-            derived.vertex_offsets, bucketed.vertex_offsets,
-            "{what}: vertex offsets"
-        );
-        assert_eq!(
-            derived.vertex_corners, bucketed.vertex_corners,
-            "{what}: vertex corners"
-        );
-        assert_eq!(
-            derived.vertex_edge_offsets, bucketed.vertex_edge_offsets,
-            "{what}: vertex edge offsets"
-        );
-        assert_eq!(
-            derived.vertex_edges, bucketed.vertex_edges,
-            "{what}: vertex edges"
-        );
-    }
-
-    /// The arithmetic child connectivity equals bucketing the child faces,
-    /// on closed, open, mixed and non-manifold shapes, over three levels.
-    #[test]
-    fn refined_connectivity_equals_bucketing() {
-        use crate::shapes;
-        let pillow = crate::Mesh::from_polygons(
-            vec![crate::DVec3::ZERO, crate::DVec3::X, crate::DVec3::Y],
-            [[0u32, 1, 2], [1, 0, 2]],
-        )
-        .unwrap();
-        let polygons = [
-            ("cube", shapes::cube()),
-            ("grid", shapes::quad_grid(3, 2)),
-            ("grid with hole", shapes::quad_grid_with_hole()),
-            ("mixed", shapes::mixed_polygons()),
-            ("fin", shapes::fin()),
-            ("bow tie", shapes::bow_tie()),
-            ("mobius", shapes::mobius_strip(6)),
-        ];
-        let triangles = [
-            ("tetrahedron", shapes::tetrahedron()),
-            ("icosahedron", shapes::icosahedron()),
-            ("triangle grid", shapes::triangle_grid(3, 2)),
-            ("triangle grid with hole", shapes::triangle_grid_with_hole()),
-            ("pillow", pillow),
-        ];
-        let cases = polygons
-            .into_iter()
-            .map(|(n, m)| (n, m, Scheme::CatmullClark))
-            .chain(
-                triangles
-                    .clone()
-                    .into_iter()
-                    .map(|(n, m)| (n, m, Scheme::Loop)),
-            )
-            .chain(
-                triangles
-                    .into_iter()
-                    .map(|(n, m)| (n, m, Scheme::CatmullClark)),
-            );
-        for (name, mesh, scheme) in cases {
-            if scheme == Scheme::Loop && mesh.first_non_triangle().is_some() {
-                continue;
-            }
-            let mut faces = Faces::of_mesh(&mesh);
-            let mut connectivity = Connectivity::new(&faces).unwrap();
-            for level in 1..=3 {
-                let child = match scheme {
-                    Scheme::CatmullClark => {
-                        super::super::catmull_clark::child_faces(&faces, &connectivity, true)
-                    }
-                    Scheme::Loop => {
-                        super::super::loop_subdivision::child_faces(&faces, &connectivity, true)
-                    }
-                }
-                .unwrap();
-                let derived = connectivity.refine(scheme, &faces, true).unwrap();
-                // Bucketed through the offsets, not the faces' uniform size.
-                let offsets_only = Faces {
-                    size: 0,
-                    ..child.clone()
-                };
-                assert_same(
-                    &derived,
-                    &Connectivity::new(&offsets_only).unwrap(),
-                    &format!("{name} {scheme:?} level {level}"),
-                );
-                (faces, connectivity) = (child, derived);
-            }
-        }
-    }
-}
+mod tests;

@@ -14,8 +14,10 @@
 use glam::DVec3;
 
 use super::creases::{is_sharp, Rule};
-use super::stencils::{walk_around, Subdivider};
-use super::{scale, Scheme};
+use super::scale;
+use super::scheme::Scheme;
+use super::stencils::walk_around;
+use super::subdivider::Subdivider;
 use crate::error::{Error, Result};
 
 /// Limit positions, tangents and unit normals, one per vertex of the last

@@ -16,9 +16,10 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{flatten, par_map, Connectivity, Faces, VertexRule, NONE};
-use super::rules::loop_smooth_weights;
-use crate::error::{try_vec, Result};
+use super::level::{Connectivity, Faces, NONE};
+use super::scheme::{loop_smooth_weights, VertexRule};
+use crate::buffers::{flatten, par_map, try_vec};
+use crate::error::Result;
 
 const CHUNK: usize = 2048;
 

@@ -10,6 +10,22 @@
 //! where they lie, Catmull-Clark's last level from the level before it
 //! (`gathers.rs`), so the largest connectivity is never built.
 //!
+//! # Layers
+//! Each file reads only the ones below it:
+//! 1. `scheme.rs`: the vocabulary — [`Scheme`] (with what one level makes of
+//!    a level's counts and sizes), [`NakedEdges`], the vertex rules, the size
+//!    cap; `scale.rs`, the exact scaling of huge coordinates.
+//! 2. `level.rs`: a level's faces and connectivity (the cage's from the
+//!    mesh's one builder, refined levels' written arithmetically).
+//! 3. `rules.rs` (boundary and non-manifold tags) and `creases.rs`
+//!    (sharpness).
+//! 4. `gathers.rs`: plans and gathers, where each new point finds its old
+//!    points; `stencils.rs`, the weighted sums of the creased path.
+//! 5. `catmull_clark.rs`, `loop_subdivision.rs`: each scheme's faces and
+//!    point rules; `point_rules.rs` puts both behind one call.
+//! 6. `refiner.rs` and `subdivider.rs` (with `face_varying.rs`, `limit.rs`),
+//!    and on top this file's one-shot drivers.
+//!
 //! # Output order
 //! One level of V vertices, E edges and F faces makes, in order: the V
 //! vertex points (the input's vertices keep their indices), the E edge points
@@ -41,10 +57,13 @@ mod gathers;
 mod level;
 mod limit;
 mod loop_subdivision;
+mod point_rules;
 mod refiner;
 pub(crate) mod rules;
 mod scale;
+mod scheme;
 mod stencils;
+mod subdivider;
 
 use glam::DVec3;
 
@@ -55,66 +74,14 @@ pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
 pub use refiner::Refiner;
 use refiner::Step;
-pub use stencils::{subdivide_with, Subdivider};
+pub(crate) use scheme::check_counts;
+use scheme::too_large;
+pub use scheme::{NakedEdges, RefinedCounts, Scheme};
+pub use subdivider::{subdivide_with, Subdivider};
 
-use crate::error::{try_vec, Error, Result, MAX_ELEMENTS};
+use crate::buffers::try_vec;
+use crate::error::{Result, MAX_ELEMENTS};
 use crate::mesh::Mesh;
-
-/// What happens along naked edges (edges with one face), the `S` input of
-/// Weaverbird's components. The values are stable (the C ABI uses them).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
-#[repr(u32)]
-pub enum NakedEdges {
-    /// The boundary polyline stays: boundary vertices keep their place, new boundary vertices are edge midpoints.
-    #[default]
-    Fixed = 0,
-    /// The boundary tends to a cubic B-spline and every boundary vertex moves (OpenSubdiv `VTX_BOUNDARY_EDGE_ONLY`).
-    Smooth = 1,
-    /// As Smooth, but a boundary vertex with one face stays (OpenSubdiv `VTX_BOUNDARY_EDGE_AND_CORNER`).
-    CornerFixed = 2,
-}
-
-impl NakedEdges {
-    /// The mode of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<NakedEdges> {
-        match value {
-            0 => Some(NakedEdges::Fixed),
-            1 => Some(NakedEdges::Smooth),
-            2 => Some(NakedEdges::CornerFixed),
-            _ => None,
-        }
-    }
-}
-
-/// A subdivision scheme. The values are stable (the C ABI uses them).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
-#[repr(u32)]
-pub enum Scheme {
-    /// Catmull-Clark: any polygons in, quads out.
-    CatmullClark = 0,
-    /// Loop: triangles in, triangles out.
-    Loop = 1,
-}
-
-impl Scheme {
-    /// The scheme of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<Scheme> {
-        match value {
-            0 => Some(Scheme::CatmullClark),
-            1 => Some(Scheme::Loop),
-            _ => None,
-        }
-    }
-}
-
-/// Sizes of a refined mesh.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct RefinedCounts {
-    pub vertex_count: usize,
-    pub face_count: usize,
-    /// Sum of the face sizes.
-    pub index_count: usize,
-}
 
 /// Catmull-Clark subdivision, `levels` times (0 returns a copy).
 ///
@@ -122,9 +89,9 @@ pub struct RefinedCounts {
 /// a quad. Rules as OpenSubdiv's Catmark scheme; order as in the module doc.
 ///
 /// # Errors
-/// [`Error::ResultTooLarge`] when a level would make more than
+/// [`crate::Error::ResultTooLarge`] when a level would make more than
 /// [`MAX_ELEMENTS`] vertices, faces or indices (checked before allocating);
-/// [`Error::OutOfMemory`]; [`Error::DegenerateInput`] naming the vertex when
+/// [`crate::Error::OutOfMemory`]; [`crate::Error::DegenerateInput`] naming the vertex when
 /// a refined point lies beyond the largest `f64` (coordinates near
 /// `f64::MAX` are subdivided at an exactly scaled-down size, so sums inside
 /// the rules never overflow).
@@ -136,10 +103,10 @@ pub fn catmull_clark(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Resul
 /// mesh; each triangle becomes 4. Rules as OpenSubdiv's Loop scheme.
 ///
 /// # Errors
-/// [`Error::NotTriangles`] naming the first face that is not a triangle
-/// (triangulate first with [`crate::triangulate::triangulate`]);
-/// [`Error::ResultTooLarge`]; [`Error::OutOfMemory`];
-/// [`Error::DegenerateInput`] as [`catmull_clark`].
+/// [`crate::Error::NotTriangles`] naming the first face that is not a triangle
+/// (triangulate first with [`crate::mesh::triangulate::triangulate`]);
+/// [`crate::Error::ResultTooLarge`]; [`crate::Error::OutOfMemory`];
+/// [`crate::Error::DegenerateInput`] as [`catmull_clark`].
 pub fn loop_subdivision(mesh: &Mesh, levels: u32, naked_edges: NakedEdges) -> Result<Mesh> {
     subdivide(mesh, Scheme::Loop, levels, naked_edges)
 }
@@ -166,8 +133,8 @@ pub fn subdivide(
     let faces = refiner::gather_levels(mesh, scheme, levels, naked_edges, |step| {
         let source = positions.as_deref().unwrap_or(mesh.positions());
         let next = match &step {
-            Step::Level(level) => refiner::points(scheme, level, source)?,
-            Step::Refined(level) => refiner::points(scheme, level, source)?,
+            Step::Level(level) => point_rules::points(scheme, level, source)?,
+            Step::Refined(level) => point_rules::points(scheme, level, source)?,
         };
         positions = Some(next);
         Ok(())
@@ -186,18 +153,14 @@ pub fn subdivide(
         return Ok(Mesh::from_valid_parts(positions, sizes, faces.indices));
     }
     // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
-    let size = match scheme {
-        Scheme::CatmullClark => 4,
-        Scheme::Loop => 3,
-    };
-    Mesh::from_valid_uniform_parts(positions, size, faces.indices)
+    Mesh::from_valid_uniform_parts(positions, scheme.refined_face_size(), faces.indices)
 }
 
 /// The cage face each face of the refined mesh comes from, in the refined
 /// mesh's face order. Needs only the cage's face sizes.
 ///
 /// # Errors
-/// [`Error::NotTriangles`] for Loop on a non-triangle; [`Error::ResultTooLarge`].
+/// [`crate::Error::NotTriangles`] for Loop on a non-triangle; [`crate::Error::ResultTooLarge`].
 pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>> {
     let face_count = refined_face_count(cage, scheme, levels)?;
     let mut parents = try_vec(face_count, "parent faces")?;
@@ -208,10 +171,7 @@ pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>
     // Every level after the first splits each face into exactly 4.
     let repeat = 1usize << (2 * (levels as usize - 1));
     for (f, &size) in cage.face_sizes().iter().enumerate() {
-        let children = match scheme {
-            Scheme::CatmullClark => size as usize,
-            Scheme::Loop => 4,
-        };
+        let children = scheme.children_of_face(size);
         parents.extend(std::iter::repeat_n(f as u32, children * repeat));
     }
     Ok(parents)
@@ -221,25 +181,18 @@ pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>
 /// alone (`Σ size · 4^(levels-1)` for Catmull-Clark, `4^levels · F` for Loop).
 ///
 /// # Errors
-/// [`Error::NotTriangles`] for Loop on a non-triangle; [`Error::ResultTooLarge`]
+/// [`crate::Error::NotTriangles`] for Loop on a non-triangle; [`crate::Error::ResultTooLarge`]
 /// past [`MAX_ELEMENTS`].
 pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<usize> {
-    if scheme == Scheme::Loop {
-        if let Some((face, size)) = cage.first_non_triangle() {
-            return Err(Error::NotTriangles { face, size });
-        }
-    }
+    scheme.check_cage(cage)?;
     let mut faces = cage.face_count() as u64;
     let mut corners = cage.index_count() as u64;
     for level in 1..=levels {
         if faces == 0 {
             break;
         }
-        faces = match scheme {
-            Scheme::CatmullClark => corners,
-            Scheme::Loop => 4 * faces,
-        };
-        corners = faces * if scheme == Scheme::Loop { 3 } else { 4 };
+        let [_, _, f, c] = scheme.next_counts([0, 0, faces, corners]);
+        (faces, corners) = (f, c);
         if faces > MAX_ELEMENTS || corners > MAX_ELEMENTS {
             return Err(too_large(levels, level, faces, corners));
         }
@@ -252,10 +205,10 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
 /// result is allocated.
 ///
 /// # Errors
-/// As [`refined_face_count`]; [`Error::OutOfMemory`].
+/// As [`refined_face_count`]; [`crate::Error::OutOfMemory`].
 pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<RefinedCounts> {
     let face_count = refined_face_count(cage, scheme, levels)?;
-    let edges = crate::topology::Topology::new(cage).edge_count() as u64;
+    let edges = crate::mesh::topology::Topology::try_new(cage)?.edge_count() as u64;
     let (vertices, faces, indices) = check_counts(
         scheme,
         cage.vertex_count() as u64,
@@ -299,48 +252,11 @@ fn loop_vertex_count(cage: &Mesh, edges: u64, levels: u32) -> Result<u64> {
     Ok(v)
 }
 
-/// Checks every level's size against [`MAX_ELEMENTS`] and returns the last
-/// level's vertex, face and index counts. The vertex and edge counts are
-/// exact for Catmull-Clark, and for Loop unless two triangles have the same
-/// three vertices (then an upper bound; see [`loop_vertex_count`]).
-/// Catmull-Clark: V' = V + E + F, F' = Σ sizes, E' = 2E + Σ sizes.
-/// Loop: V' = V + E, F' = 4F, E' = 2E + 3F.
-pub(crate) fn check_counts(
-    scheme: Scheme,
-    vertices: u64,
-    edges: u64,
-    faces: u64,
-    corners: u64,
-    levels: u32,
-) -> Result<(u64, u64, u64)> {
-    let (mut v, mut e, mut f, mut c) = (vertices, edges, faces, corners);
-    for level in 1..=levels {
-        (v, e, f, c) = match scheme {
-            Scheme::CatmullClark => (v + e + f, 2 * e + c, c, 4 * c),
-            Scheme::Loop => (v + e, 2 * e + 3 * f, 4 * f, 12 * f),
-        };
-        if f > MAX_ELEMENTS || c > MAX_ELEMENTS || v > MAX_ELEMENTS || e > MAX_ELEMENTS {
-            return Err(too_large(levels, level, f, c));
-        }
-    }
-    Ok((v, f, c))
-}
-
-/// The refusal of `requested` levels whose `level` is the first past the cap.
-fn too_large(requested: u32, level: u32, faces: u64, indices: u64) -> Error {
-    let plural = if requested == 1 { "" } else { "s" };
-    Error::ResultTooLarge(format!(
-        "{requested} level{plural} of subdivision: level {level} would make {faces} faces \
-         ({indices} face indices), past the limit of {MAX_ELEMENTS} vertices, faces or indices; \
-         use at most {} levels",
-        level - 1
-    ))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes;
+    use crate::mesh::shapes;
+    use crate::Error;
 
     #[test]
     fn level_zero_is_a_copy() {

@@ -7,14 +7,16 @@ use std::sync::Mutex;
 
 use glam::DVec3;
 
-use super::gathers::{Gathers, LevelGathers, RefinedGathers};
-use super::level::{Connectivity, Faces, Plan};
-use super::rules::{cage_tags, child_tags, plan, Tags};
-use super::{
-    catmull_clark, check_counts, loop_subdivision, scale, NakedEdges, Scheme, Subdivider,
-    SubdivisionOptions,
-};
-use crate::error::{try_vec, Error, Result};
+use super::creases::SubdivisionOptions;
+use super::gathers::{plan, LevelGathers, Plan, RefinedGathers};
+use super::level::{Connectivity, Faces};
+use super::point_rules::{apply, child_faces};
+use super::rules::{cage_tags, child_tags, Tags};
+use super::scheme::{NakedEdges, Scheme};
+use super::subdivider::Subdivider;
+use super::{catmull_clark, scale};
+use crate::buffers::try_vec;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// What depends only on a cage's faces: the plans of every level and the
@@ -239,23 +241,6 @@ fn face_sizes(faces: &Faces) -> Vec<u32> {
     faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
-/// Applies one level's gathers of `scheme` into a new vector, each point
-/// written once.
-pub(crate) fn points(scheme: Scheme, level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
-    match scheme {
-        Scheme::CatmullClark => catmull_clark::points(level, points),
-        Scheme::Loop => loop_subdivision::points(level, points),
-    }
-}
-
-/// Applies one plan of `scheme`.
-pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
-    match scheme {
-        Scheme::CatmullClark => catmull_clark::apply(plan, points, out),
-        Scheme::Loop => loop_subdivision::apply(plan, points, out),
-    }
-}
-
 /// A level handed on by [`gather_levels`].
 pub(crate) enum Step<'a> {
     /// A level's gathers, read from the level.
@@ -274,40 +259,13 @@ fn cage_level(
     levels: u32,
     naked_edges: NakedEdges,
 ) -> Result<Option<(Faces, Connectivity, Tags)>> {
-    if scheme == Scheme::Loop {
-        if let Some((face, size)) = cage.first_non_triangle() {
-            return Err(Error::NotTriangles { face, size });
-        }
-    }
+    scheme.check_cage(cage)?;
     if levels == 0 || cage.face_count() == 0 {
         return Ok(None);
     }
-    let faces = Faces::of_mesh(cage);
-    let connectivity = Connectivity::new(&faces)?;
-    check_counts(
-        scheme,
-        cage.vertex_count() as u64,
-        connectivity.edge_count() as u64,
-        cage.face_count() as u64,
-        cage.index_count() as u64,
-        levels,
-    )?;
+    let (faces, connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
     let tags = cage_tags(&faces, &connectivity, naked_edges)?;
     Ok(Some((faces, connectivity, tags)))
-}
-
-/// The faces of the level `scheme` makes from `faces`, with their offsets
-/// when `with_offsets`.
-fn child_faces(
-    scheme: Scheme,
-    faces: &Faces,
-    connectivity: &Connectivity,
-    with_offsets: bool,
-) -> Result<Faces> {
-    match scheme {
-        Scheme::CatmullClark => catmull_clark::child_faces(faces, connectivity, with_offsets),
-        Scheme::Loop => loop_subdivision::child_faces(faces, connectivity, with_offsets),
-    }
 }
 
 /// Plans every level in turn, handing each plan to `each`, and returns the

@@ -25,15 +25,10 @@
 
 use rayon::prelude::*;
 
-use super::gathers::{Gathers, LevelGathers};
-use super::level::{
-    fill_by_offsets, par_map, par_offsets, zeroed, Connectivity, Faces, Plan, VertexRule,
-};
-use super::{NakedEdges, Scheme};
-use crate::error::{try_vec, Result};
-
-/// Items per rayon task: small enough to balance, large enough to amortise.
-const CHUNK: usize = 4096;
+use super::level::{Connectivity, Faces};
+use super::scheme::{NakedEdges, Scheme, VertexRule};
+use crate::buffers::{try_vec, zeroed, CHUNK};
+use crate::error::Result;
 
 /// Sharpness of every edge and rule of every vertex of one level.
 #[derive(Debug, Clone)]
@@ -217,10 +212,7 @@ pub(crate) fn child_tags(
                     && parent.edge_sharp[high as usize - parent_vertices]
             }),
     );
-    let face_points = match scheme {
-        Scheme::CatmullClark => parent_faces.face_count(),
-        Scheme::Loop => 0,
-    };
+    let face_points = scheme.face_point_count(parent_faces.face_count());
     let mut vertex_rules = try_vec(parent_vertices + parent_edges + face_points, "vertex tags")?;
     vertex_rules.par_extend(parent.vertex_rules.par_iter().with_min_len(CHUNK).copied());
     vertex_rules.par_extend(
@@ -244,84 +236,11 @@ pub(crate) fn child_tags(
     })
 }
 
-/// The gathers that make the next level's points from this level's, stored
-/// (see [`LevelGathers`] for where each is found).
-pub(crate) fn plan(
-    scheme: Scheme,
-    faces: &Faces,
-    connectivity: &Connectivity,
-    tags: &Tags,
-) -> Result<Plan> {
-    let level = LevelGathers {
-        scheme,
-        faces,
-        connectivity,
-        tags,
-    };
-    let vertex_count = faces.vertex_count;
-    let edges = par_map(connectivity.edge_count(), "edge stencils", |e| {
-        level.edge(e)
-    })?;
-
-    let per_neighbour = match scheme {
-        Scheme::CatmullClark => 2,
-        Scheme::Loop => 1,
-    };
-    let ring_offsets = par_offsets(vertex_count, "vertex stencils", |v| {
-        match tags.vertex_rules[v] {
-            VertexRule::Smooth => per_neighbour * connectivity.vertex_corners(v).len() as u32,
-            VertexRule::Crease => 2,
-            VertexRule::Corner => 0,
-        }
-    })?;
-    let ring = fill_by_offsets(&ring_offsets, "vertex stencils", |v, slot| {
-        match tags.vertex_rules[v] {
-            VertexRule::Smooth => {
-                let n = slot.len() / per_neighbour as usize;
-                let mut i = 0;
-                level.around(v, |u, f| {
-                    slot[i] = u;
-                    if per_neighbour == 2 {
-                        slot[n + i] = f;
-                    }
-                    i += 1;
-                });
-            }
-            VertexRule::Crease => slot.copy_from_slice(&level.crease_neighbours(v)),
-            VertexRule::Corner => {}
-        }
-    })?;
-
-    // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
-    Ok(Plan {
-        scheme,
-        vertex_count,
-        face_offsets: Vec::new(),
-        face_indices: Vec::new(),
-        edges,
-        vertex_rules: tags.vertex_rules.clone(),
-        vertex_ring_offsets: ring_offsets,
-        vertex_ring: ring,
-    })
-}
-
-/// Loop's smooth vertex weights `(vertex, each neighbour)` for `valence`
-/// neighbours (Loop 1987, as OpenSubdiv's `Scheme<SCHEME_LOOP>` computes them).
-#[inline]
-pub(crate) fn loop_smooth_weights(valence: usize) -> (f64, f64) {
-    if valence == 6 {
-        return (0.625, 0.0625);
-    }
-    let n = valence as f64;
-    let beta = 0.25 * (std::f64::consts::TAU / n).cos() + 0.375;
-    let neighbour = (0.625 - beta * beta) / n;
-    (1.0 - neighbour * n, neighbour)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes;
+    use crate::mesh::shapes;
+    use crate::subdivide::scheme::loop_smooth_weights;
 
     fn tags_of(mesh: &crate::Mesh, naked: NakedEdges) -> Tags {
         let faces = Faces::of_mesh(mesh);

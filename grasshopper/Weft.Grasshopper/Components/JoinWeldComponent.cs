@@ -40,8 +40,10 @@ namespace Weft.Grasshopper
                     SetMesh(DA, 0, joined);
                     return;
                 }
-                using (WeftMesh welded = Mending.Weld(joined, tolerance))
+                WeftWeldReport report;
+                using (WeftMesh welded = Mending.Weld(joined, tolerance, out report))
                 {
+                    WarnOfCollapse(report, joined.FaceCount, tolerance);
                     SetMesh(DA, 0, welded);
                 }
             }

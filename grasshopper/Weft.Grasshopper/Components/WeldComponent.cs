@@ -22,7 +22,11 @@ namespace Weft.Grasshopper
 
         protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
-            return Mending.Weld(mesh, GetTolerance(DA, 1));
+            double tolerance = GetTolerance(DA, 1);
+            WeftWeldReport report;
+            WeftMesh welded = Mending.Weld(mesh, tolerance, out report);
+            WarnOfCollapse(report, mesh.FaceCount, tolerance);
+            return welded;
         }
     }
 }

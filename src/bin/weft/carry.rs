@@ -9,11 +9,11 @@ use weft::subdivide::{
     creases_from_mesh, CreasedMesh, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions,
 };
 
-/// `file` as triangles (see [`weft::triangulate::as_triangles`]) and the
+/// `file` as triangles (see [`weft::mesh::triangulate::as_triangles`]) and the
 /// number of faces that were split; colours and creases keep their vertices, UVs
 /// follow each triangle's corners back to its polygon's.
 pub fn as_triangles(file: &MeshFile) -> weft::Result<(MeshFile, usize)> {
-    let (triangulation, split) = weft::triangulate::as_triangles(&file.mesh)?;
+    let (triangulation, split) = weft::mesh::triangulate::as_triangles(&file.mesh)?;
     let uvs = file.uvs.as_ref().map(|uvs| {
         let offsets = file.mesh.face_offsets();
         let mut indices = Vec::with_capacity(triangulation.mesh.index_count());

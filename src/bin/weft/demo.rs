@@ -164,7 +164,13 @@ impl Demo<'_> {
 
     /// As [`Demo::save`], the picture cut away beyond `section` to show
     /// what is inside (the mesh file is whole).
-    fn save_cut(&mut self, name: &str, caption: &str, mesh: &Mesh, section: render::Section) -> Step<()> {
+    fn save_cut(
+        &mut self,
+        name: &str,
+        caption: &str,
+        mesh: &Mesh,
+        section: render::Section,
+    ) -> Step<()> {
         let options = RenderOptions {
             section: Some(section),
             ..RenderOptions::default()

@@ -33,13 +33,13 @@ pub struct Report {
 }
 
 pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
-    let deviations = weft::analysis::planarity_deviations(mesh);
+    let deviations = weft::mesh::analysis::planarity_deviations(mesh);
     let info = Topology::new(mesh).info(mesh);
     let count = |size: u32| mesh.face_sizes().iter().filter(|&&s| s == size).count();
     let (triangles, quads) = (count(3), count(4));
     Report {
         vertices: info.vertex_count,
-        unused_vertices: weft::weld::unused_vertex_count(mesh),
+        unused_vertices: weft::mend::weld::unused_vertex_count(mesh),
         faces: info.face_count,
         triangles,
         quads,

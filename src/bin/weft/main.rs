@@ -53,7 +53,7 @@ enum Command {
         #[arg(long)]
         json: bool,
         /// Distance from its best-fit plane under which a face counts as planar.
-        #[arg(long, default_value_t = weft::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
+        #[arg(long, default_value_t = weft::mend::weld::DEFAULT_WELD_TOLERANCE, value_parser = tolerance)]
         planarity_tolerance: f64,
     },
     /// A shaded picture: front faces blue-grey (or in the file's vertex
@@ -243,10 +243,11 @@ fn with_negative_numbers(command: clap::Command) -> clap::Command {
         .get_subcommands()
         .map(|sub| sub.get_name().to_owned())
         .collect();
-    names.into_iter().fold(
-        command.allow_negative_numbers(true),
-        |command, name| command.mut_subcommand(name, with_negative_numbers),
-    )
+    names
+        .into_iter()
+        .fold(command.allow_negative_numbers(true), |command, name| {
+            command.mut_subcommand(name, with_negative_numbers)
+        })
 }
 
 fn main() -> ExitCode {

@@ -25,10 +25,10 @@ pub fn weld(
         .map(|path| read(cli, path))
         .collect::<Result<Vec<_>, _>>()?;
     let parts: Vec<&Mesh> = meshes.iter().collect();
-    let joined = weft::weld::join(&parts)
+    let joined = weft::mend::weld::join(&parts)
         .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?;
-    let tolerance = tolerance.unwrap_or_else(|| weft::weld::relative_tolerance(&joined));
-    let (welded, report) = with_progress("welding", || weft::weld::weld(&joined, tolerance))
+    let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&joined));
+    let (welded, report) = with_progress("welding", || weft::mend::weld::weld(&joined, tolerance))
         .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
     if report.removed_face_count > 0 && !allow_collapse {
         return Err(Failure::Failed(format!(
@@ -37,7 +37,7 @@ pub fn weld(
              --allow-collapse to remove them",
             report.removed_face_count,
             joined.face_count(),
-            weft::analysis::median_edge_length(&joined)
+            weft::mesh::analysis::median_edge_length(&joined)
         )));
     }
     eprintln!(
@@ -55,9 +55,9 @@ pub fn weld(
 /// Removes every face that has a twin.
 pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
     let mesh = read(cli, &files.input)?;
-    let (culled, removed) = with_progress("culling", || weft::cull::cull_adjacent(&mesh));
+    let (culled, removed) = with_progress("culling", || weft::mend::cull::cull_adjacent(&mesh));
     // The culled faces' vertices go with them; bare vertices of the input too.
-    let (culled, unused) = weft::weld::remove_unused_vertices(&culled);
+    let (culled, unused) = weft::mend::weld::remove_unused_vertices(&culled);
     eprintln!(
         "{}: removed {removed} of {} faces that had a twin, and {unused} vertices no face uses",
         files.input.display(),
@@ -71,7 +71,7 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
     let mesh = read(cli, &files.input)?;
     let flipped = if outward {
         let (oriented, report) =
-            with_progress("orienting", || weft::orient::orient_outward(&mesh));
+            with_progress("orienting", || weft::mend::orient::orient_outward(&mesh));
         eprintln!(
             "{}: {} pieces: turned {} closed ones outward, {} open (unified only), {} not orientable; flipped {} of {} faces",
             files.input.display(),
@@ -82,7 +82,10 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
             report.flipped_faces,
             mesh.face_count()
         );
-        if report.open_pieces > 0 && report.open_pieces == mesh.face_count() && mesh.face_count() > 1 {
+        if report.open_pieces > 0
+            && report.open_pieces == mesh.face_count()
+            && mesh.face_count() > 1
+        {
             eprintln!(
                 "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
                 files.input.display()
@@ -90,12 +93,13 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
         }
         oriented
     } else if unify {
-        let (unified, count) = with_progress("unifying", || weft::orient::unify_orientation(&mesh));
+        let (unified, count) =
+            with_progress("unifying", || weft::mend::orient::unify_orientation(&mesh));
         eprintln!(
             "{}: flipped {count} of {} faces to unify the orientation{}",
             files.input.display(),
             mesh.face_count(),
-            if weft::orient::is_orientable(&mesh) {
+            if weft::mend::orient::is_orientable(&mesh) {
                 ""
             } else {
                 " (the mesh is not orientable: some edges still disagree)"
@@ -103,7 +107,7 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
         );
         unified
     } else {
-        weft::orient::flip(&mesh)
+        weft::mend::orient::flip(&mesh)
     };
     write(&files.output, &flipped, &io::WriteOptions::default())
 }
@@ -116,9 +120,9 @@ pub fn t_nodes(
     tolerance: Option<f64>,
 ) -> Result<(), Failure> {
     let mesh = read(cli, input)?;
-    let tolerance = tolerance.unwrap_or_else(|| weft::weld::relative_tolerance(&mesh));
+    let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&mesh));
     let found = with_progress("searching", || {
-        weft::t_nodes::find_t_nodes(&mesh, tolerance)
+        weft::mend::t_nodes::find_t_nodes(&mesh, tolerance)
     })
     .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
     println!(
@@ -133,7 +137,7 @@ pub fn t_nodes(
         );
     }
     if let Some(output) = repair {
-        let (repaired, inserted) = weft::t_nodes::repair_t_nodes(&mesh, tolerance)
+        let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&mesh, tolerance)
             .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
         eprintln!("inserted {inserted} vertices into edges");
         write(output, &repaired, &io::WriteOptions::default())?;

@@ -150,5 +150,8 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
 fn corners_split_by_format(mesh: &weft::Mesh) -> bool {
     let mut used = vec![false; mesh.vertex_count()];
     mesh.face_count() > 1
-        && mesh.face_indices().iter().all(|&v| !std::mem::replace(&mut used[v as usize], true))
+        && mesh
+            .face_indices()
+            .iter()
+            .all(|&v| !std::mem::replace(&mut used[v as usize], true))
 }

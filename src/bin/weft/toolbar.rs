@@ -7,11 +7,11 @@ use std::path::{Path, PathBuf};
 
 use clap::Subcommand;
 
-use weft::extract::DualMode;
-use weft::primitives::{Platonic, Sided};
-use weft::smooth::{HcOptions, SmoothDirection};
-use weft::stellate::Heights;
-use weft::tile::{TileFaces, TileFill};
+use weft::make::primitives::{Platonic, Sided};
+use weft::make::stellate::Heights;
+use weft::toolbar::extract::DualMode;
+use weft::toolbar::smooth::{HcOptions, SmoothDirection};
+use weft::toolbar::tile::{TileFaces, TileFill};
 use weft::{DVec3, Mesh};
 
 mod choices;
@@ -342,7 +342,7 @@ fn apply(
 /// The mesh as triangles for the commands that need them, saying how many
 /// faces were triangulated when there were any.
 fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Mesh> {
-    let (triangles, split) = weft::triangulate::as_triangles(mesh)?;
+    let (triangles, split) = weft::mesh::triangulate::as_triangles(mesh)?;
     if split > 0 {
         eprintln!(
             "{}: splitting triangles needs triangles: triangulated {split} of {} faces into {} triangles",
@@ -383,7 +383,7 @@ impl ToolbarCommand {
 }
 
 pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
-    use weft::{extract, split, transform};
+    use weft::toolbar::{extract, split, transform};
     match command {
         ToolbarCommand::SplitPolygons { files, levels } => {
             apply(cli, files, "split polygons", |m| {
@@ -424,9 +424,12 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             beta,
             direction,
         } => apply(cli, files, "smooth", |m| match method {
-            SmoothMethod::Laplacian => {
-                weft::smooth::laplacian(m, *iterations, *blend, NakedEdges::from(*naked_edges))
-            }
+            SmoothMethod::Laplacian => weft::toolbar::smooth::laplacian(
+                m,
+                *iterations,
+                *blend,
+                NakedEdges::from(*naked_edges),
+            ),
             SmoothMethod::Hc => {
                 let options = HcOptions {
                     alpha: *alpha,
@@ -439,7 +442,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                     },
                     activation: None,
                 };
-                weft::smooth::laplacian_hc_with(m, *iterations, &options)
+                weft::toolbar::smooth::laplacian_hc_with(m, *iterations, &options)
             }
         }),
         ToolbarCommand::Offset {
@@ -490,7 +493,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             Ok(extract::reroute_faces(m, *shift))
         }),
         ToolbarCommand::Stellate { files, height } => apply(cli, files, "stellate", |m| {
-            weft::stellate::stellate(m, Heights::One(*height))
+            weft::make::stellate::stellate(m, Heights::One(*height))
         }),
         ToolbarCommand::Tile { files, fill, faces } => apply(cli, files, "tile", |m| {
             let fill = match fill {
@@ -510,7 +513,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                 FacesArg::Triangles => TileFaces::Triangles,
                 FacesArg::Quads => TileFaces::Quads,
             };
-            weft::tile::tile(m, fill, faces)
+            weft::toolbar::tile::tile(m, fill, faces)
         }),
         ToolbarCommand::Primitive {
             kind,
@@ -521,7 +524,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             sides,
             height,
         } => {
-            use weft::primitives as p;
+            use weft::make::primitives as p;
             let size = *size;
             let built = match kind {
                 PrimitiveKind::Plane => {

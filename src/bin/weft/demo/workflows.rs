@@ -4,8 +4,8 @@
 use std::collections::HashMap;
 
 use weft::io::{self, render};
-use weft::plane::Plane;
-use weft::stellate::{stellate, Heights};
+use weft::make::plane::Plane;
+use weft::make::stellate::{stellate, Heights};
 use weft::subdivide::{
     catmull_clark, loop_subdivision, subdivide_with, FaceVaryingLinear, NakedEdges, Scheme,
     Subdivider, SubdivisionOptions, SHARPNESS_INFINITE,
@@ -43,7 +43,7 @@ fn surface_patch(
     }
     op(
         "mesh from grid",
-        weft::grid::mesh_from_grid(&points, u_count, v_count, false, false, triangles),
+        weft::make::grid::mesh_from_grid(&points, u_count, v_count, false, false, triangles),
     )
 }
 
@@ -93,7 +93,7 @@ pub fn loop_levels(demo: &mut Demo) -> Step<()> {
         )?;
     }
     demo.section("A triangle mesh with a hole comes out rounded");
-    let holed = weft::shapes::triangle_grid_with_hole();
+    let holed = weft::mesh::shapes::triangle_grid_with_hole();
     demo.save("hole-0-cage", "a triangle grid with a square hole", &holed)?;
     let rounded = op("Loop", loop_subdivision(&holed, 3, NakedEdges::Smooth))?;
     demo.save(
@@ -110,13 +110,13 @@ pub fn surfaces(demo: &mut Demo) -> Step<()> {
     for (k, x0) in [0.0, 3.0, 6.0].into_iter().enumerate() {
         let part = surface_patch(x0, x0 + 3.0, 4, 0.0, 5.0, 6, false)?;
         parts.push(if k == 1 {
-            weft::orient::flip(&part)
+            weft::mend::orient::flip(&part)
         } else {
             part
         });
     }
     let refs: Vec<&Mesh> = parts.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
+    let joined = op("join", weft::mend::weld::join(&refs))?;
     demo.save(
         "surfaces-joined",
         "three surface meshes joined; the middle one is flipped",
@@ -124,9 +124,9 @@ pub fn surfaces(demo: &mut Demo) -> Step<()> {
     )?;
     let (welded, report) = op(
         "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
-    let (unified, flipped) = weft::orient::unify_orientation(&welded);
+    let (unified, flipped) = weft::mend::orient::unify_orientation(&welded);
     demo.save(
         "surfaces-welded",
         &format!(
@@ -158,15 +158,18 @@ pub fn t_nodes(demo: &mut Demo) -> Step<()> {
         surface_patch(6.0, 9.0, 4, 0.0, 5.0, 6, false)?,
     ];
     let refs: Vec<&Mesh> = parts.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
+    let joined = op("join", weft::mend::weld::join(&refs))?;
     let (welded, _) = op(
         "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
     // The seams are curved: a vertex of one strip lies on the curve, off the
     // straight edge of the other by up to about 0.02.
     let tolerance = 0.05;
-    let found = op("T-nodes", weft::t_nodes::find_t_nodes(&welded, tolerance))?;
+    let found = op(
+        "T-nodes",
+        weft::mend::t_nodes::find_t_nodes(&welded, tolerance),
+    )?;
     demo.save(
         "t-nodes-welded",
         &format!(
@@ -188,7 +191,7 @@ pub fn t_nodes(demo: &mut Demo) -> Step<()> {
     )?;
     let (repaired, inserted) = op(
         "T-node repair",
-        weft::t_nodes::repair_t_nodes(&welded, tolerance),
+        weft::mend::t_nodes::repair_t_nodes(&welded, tolerance),
     )?;
     let smooth = op(
         "Catmull-Clark",
@@ -215,14 +218,14 @@ pub fn voronoi_skin(demo: &mut Demo) -> Step<()> {
         .collect();
     let cells = op(
         "Voronoi",
-        weft::voronoi::voronoi(&points, &Plane::xy(), None, None),
+        weft::make::voronoi::voronoi(&points, &Plane::xy(), None, None),
     )?;
-    let cell_mesh = op("Voronoi cells", weft::voronoi::cells_to_mesh(&cells))?;
+    let cell_mesh = op("Voronoi cells", weft::make::voronoi::cells_to_mesh(&cells))?;
     // Shown welded, so that neighbouring cells share their edges and only
     // the outline is naked (red).
     let (shown, _) = op(
         "weld",
-        weft::weld::weld(&cell_mesh, weft::weld::relative_tolerance(&cell_mesh)),
+        weft::mend::weld::weld(&cell_mesh, weft::mend::weld::relative_tolerance(&cell_mesh)),
     )?;
     demo.save(
         "voronoi-cells",
@@ -233,7 +236,7 @@ pub fn voronoi_skin(demo: &mut Demo) -> Step<()> {
     let pyramids = op("stellate", stellate(&cell_mesh, Heights::One(-0.9)))?;
     let (welded, report) = op(
         "weld",
-        weft::weld::weld(&pyramids, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&pyramids, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
     demo.save(
         "voronoi-pyramids",
@@ -296,7 +299,7 @@ pub fn fading_pattern(demo: &mut Demo, gray: &Gray) -> Step<()> {
     let pyramids = op("stellate", stellate(&panels, Heights::PerFace(&heights)))?;
     let (welded, _) = op(
         "weld",
-        weft::weld::weld(&pyramids, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&pyramids, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
     demo.save(
         "fading-pyramids",
@@ -336,7 +339,7 @@ pub fn boxes(demo: &mut Demo) -> Step<()> {
     let cubes: Vec<Mesh> = cells
         .iter()
         .map(|&(x, y, z)| {
-            let mut cube = weft::shapes::cube();
+            let mut cube = weft::mesh::shapes::cube();
             for p in cube.positions_mut() {
                 *p += DVec3::new(x as f64, y as f64, z as f64);
             }
@@ -344,10 +347,10 @@ pub fn boxes(demo: &mut Demo) -> Step<()> {
         })
         .collect();
     let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
+    let joined = op("join", weft::mend::weld::join(&refs))?;
     let (welded, _) = op(
         "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
     // Cut away above the middle of the first layer: the walls inside show.
     let cut = render::Section {
@@ -366,8 +369,8 @@ pub fn boxes(demo: &mut Demo) -> Step<()> {
     )?;
     // The walls inside, hidden from outside: one face of each twin pair.
     let walls = inner_walls(&welded)?;
-    let (culled, removed) = weft::cull::cull_adjacent(&welded);
-    let (culled, _) = weft::weld::remove_unused_vertices(&culled);
+    let (culled, removed) = weft::mend::cull::cull_adjacent(&welded);
+    let (culled, _) = weft::mend::weld::remove_unused_vertices(&culled);
     demo.save(
         "boxes-inner",
         &format!(
@@ -413,7 +416,7 @@ fn inner_walls(mesh: &Mesh) -> Step<Mesh> {
             faces
                 .iter()
                 .copied()
-                .find(|&f| weft::analysis::face_normal(mesh, f).dot(toward_viewer) > 0.0)
+                .find(|&f| weft::mesh::analysis::face_normal(mesh, f).dot(toward_viewer) > 0.0)
                 .unwrap_or(faces[0])
         })
         .collect();
@@ -426,7 +429,7 @@ fn inner_walls(mesh: &Mesh) -> Step<Mesh> {
         )
         .map_err(Error::from),
     )?;
-    Ok(weft::weld::remove_unused_vertices(&walls).0)
+    Ok(weft::mend::weld::remove_unused_vertices(&walls).0)
 }
 
 /// An L-shaped block of three cubes (joined, welded, inner faces culled),
@@ -435,7 +438,7 @@ fn l_block(height: f64) -> Step<Mesh> {
     let cubes: Vec<Mesh> = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0)]
         .iter()
         .map(|&(x, y)| {
-            let mut cube = weft::shapes::cube();
+            let mut cube = weft::mesh::shapes::cube();
             for p in cube.positions_mut() {
                 *p = DVec3::new(p.x + x, p.y + y, p.z * height);
             }
@@ -443,13 +446,13 @@ fn l_block(height: f64) -> Step<Mesh> {
         })
         .collect();
     let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
+    let joined = op("join", weft::mend::weld::join(&refs))?;
     let (welded, _) = op(
         "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
     )?;
-    let (culled, _) = weft::cull::cull_adjacent(&welded);
-    Ok(weft::weld::remove_unused_vertices(&culled).0)
+    let (culled, _) = weft::mend::cull::cull_adjacent(&welded);
+    Ok(weft::mend::weld::remove_unused_vertices(&culled).0)
 }
 
 pub fn creases(demo: &mut Demo) -> Step<()> {

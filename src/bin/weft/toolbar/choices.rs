@@ -3,7 +3,7 @@
 
 use clap::ValueEnum;
 
-use weft::transform::{InsetMode, OffsetType};
+use weft::toolbar::transform::{InsetMode, OffsetType};
 
 #[derive(Clone, Copy, ValueEnum)]
 pub(crate) enum SmoothMethod {

@@ -1,0 +1,98 @@
+//! Cull adjacent faces: the walls inside an aggregation of joined boxes.
+//!
+//! When boxes that touch are joined and welded, each shared wall appears
+//! twice, once from each box and in opposite windings. Those twins lie inside
+//! the aggregate; removing every copy leaves its outer skin, which is what
+//! subdivision should see.
+
+use crate::mesh::Mesh;
+
+/// Removes every face that has a twin with the same set of vertices, in
+/// either orientation and from any starting corner; all copies go, not all
+/// but one. Returns the culled mesh and the number of faces removed.
+///
+/// Twins are found by sorting the faces by their sorted vertex lists, so the
+/// cost is O(n log n) comparisons of short lists, never a comparison of all
+/// pairs. Faces are compared by vertex index: weld first so that coincident
+/// corners share an index.
+///
+/// The vertices are kept as they are, even those no remaining face uses, so
+/// that the indices stay those of the input; [`crate::mend::weld::remove_unused_vertices`]
+/// leaves the unused ones out.
+pub fn cull_adjacent(mesh: &Mesh) -> (Mesh, usize) {
+    let face_count = mesh.face_count();
+    let offsets = mesh.face_offsets();
+    let mut sorted_corners = mesh.face_indices().to_vec();
+    for w in offsets.windows(2) {
+        sorted_corners[w[0] as usize..w[1] as usize].sort_unstable();
+    }
+    let key = |f: u32| {
+        let f = f as usize;
+        &sorted_corners[offsets[f] as usize..offsets[f + 1] as usize]
+    };
+    let mut order: Vec<u32> = (0..face_count as u32).collect();
+    order.sort_unstable_by(|&a, &b| key(a).cmp(key(b)));
+
+    let mut remove = vec![false; face_count];
+    let mut start = 0;
+    for i in 1..=order.len() {
+        if i == order.len() || key(order[i]) != key(order[start]) {
+            if i - start > 1 {
+                for &f in &order[start..i] {
+                    remove[f as usize] = true;
+                }
+            }
+            start = i;
+        }
+    }
+    let removed = remove.iter().filter(|&&r| r).count();
+    if removed == 0 {
+        return (mesh.clone(), 0);
+    }
+    let mut face_sizes = Vec::with_capacity(face_count - removed);
+    let mut face_indices = Vec::with_capacity(mesh.index_count());
+    for (f, face) in mesh.faces().enumerate() {
+        if !remove[f] {
+            face_sizes.push(face.len() as u32);
+            face_indices.extend_from_slice(face);
+        }
+    }
+    (
+        Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices),
+        removed,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    #[test]
+    fn twins_in_any_orientation_and_start_all_go() {
+        let p = (0..6).map(|i| DVec3::new(i as f64, (i * i) as f64, 0.0));
+        let mesh = Mesh::from_polygons(
+            p.collect(),
+            [
+                vec![0, 1, 2, 3],
+                vec![2, 1, 0, 3], // reversed, other start
+                vec![1, 2, 3, 0], // same winding, other start
+                vec![0, 1, 2],    // a subset is not a twin
+                vec![3, 4, 5],
+            ],
+        )
+        .unwrap();
+        let (culled, removed) = cull_adjacent(&mesh);
+        assert_eq!(removed, 3);
+        assert_eq!(culled.face_count(), 2);
+        assert_eq!(culled.face(0), &[0, 1, 2]);
+        assert_eq!(culled.face(1), &[3, 4, 5]);
+        assert_eq!(culled.vertex_count(), 6);
+    }
+
+    #[test]
+    fn nothing_to_cull_returns_the_mesh() {
+        let cube = crate::mesh::shapes::cube();
+        assert_eq!(cull_adjacent(&cube), (cube, 0));
+    }
+}

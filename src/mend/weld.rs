@@ -1,0 +1,469 @@
+//! Join meshes and weld their vertices.
+//!
+//! [`join`](crate::mend::weld::join) concatenates meshes;
+//! [`weld`](crate::mend::weld::weld) merges vertices that lie within a tolerance
+//! of each other, in transitive clusters found through a spatial
+//! hash (cells as wide as the tolerance, each vertex compared only with the
+//! 27 cells around its own), so a million vertices weld in a fraction of a
+//! second and no pair of distant vertices is ever compared.
+//!
+//! T-nodes, the vertices that lie inside another face's edge and so cannot
+//! weld, are found and repaired in [`crate::mend::t_nodes`].
+
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hash, Hasher};
+
+use glam::DVec3;
+use rayon::slice::ParallelSliceMut;
+
+use crate::buffers::try_vec;
+use crate::error::{Error, Result, MAX_ELEMENTS};
+use crate::mesh::topology::UnionFind;
+use crate::mesh::{check_tolerance, Mesh};
+
+/// The weld tolerance to use when the host gives none: 0.001 model units.
+///
+/// It is Rhino's default absolute tolerance, the distance under which Rhino
+/// itself treats two points as one: a millimetre in a model drawn in metres,
+/// a thousandth of an inch in one drawn in inches. Surface meshes that meet
+/// along a seam put their seam vertices far closer than that, while distinct
+/// vertices of a design are far further apart.
+pub const DEFAULT_WELD_TOLERANCE: f64 = 0.001;
+
+/// The share of a mesh's bounding-box diagonal that [`relative_tolerance`]
+/// takes: a millionth, far above the round-off of coordinates written to
+/// files (about 1e-15 of the model's size in doubles, 1e-7 in the floats of
+/// STL) and far below the spacing of any vertices a model means to keep
+/// apart, whatever its units or size.
+pub const RELATIVE_TOLERANCE: f64 = 1e-6;
+
+/// The tolerance to weld `mesh` with when none is given: [`RELATIVE_TOLERANCE`]
+/// times its bounding-box diagonal (0 for an empty mesh or a single point,
+/// which then merges exact duplicates only). A dense scan and a 5 cm part
+/// keep every vertex they mean to keep, where an absolute 0.001 would
+/// collapse their faces.
+pub fn relative_tolerance(mesh: &Mesh) -> f64 {
+    mesh.bounding_box()
+        .map_or(0.0, |(lo, hi)| (hi - lo).length() * RELATIVE_TOLERANCE)
+}
+
+/// What [`weld`] changed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct WeldReport {
+    /// Vertices that merged into another vertex: the input's vertex count
+    /// minus the number of clusters.
+    pub merged_vertex_count: usize,
+    /// Faces left with fewer than 3 distinct vertices, and so removed.
+    pub removed_face_count: usize,
+    /// Clusters that no remaining face uses, and so were left out.
+    pub unused_vertex_count: usize,
+}
+
+/// Concatenates meshes: the vertices of each follow those of the ones before
+/// it, and its face indices are offset to match. Faces keep their order.
+///
+/// # Errors
+/// [`Error::ResultTooLarge`] when the joined vertex or index count passes
+/// [`MAX_ELEMENTS`]; [`Error::OutOfMemory`] when the result cannot be allocated.
+pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
+    let vertex_total: u64 = meshes.iter().map(|m| m.vertex_count() as u64).sum();
+    let index_total: u64 = meshes.iter().map(|m| m.index_count() as u64).sum();
+    let face_total: u64 = meshes.iter().map(|m| m.face_count() as u64).sum();
+    for (what, total) in [("vertices", vertex_total), ("face corners", index_total)] {
+        if total > MAX_ELEMENTS {
+            return Err(Error::ResultTooLarge(format!(
+                "joining {} meshes gives {total} {what}, more than the limit of {MAX_ELEMENTS}",
+                meshes.len()
+            )));
+        }
+    }
+    let mut positions = try_vec(vertex_total as usize, "the joined positions")?;
+    let mut face_sizes = try_vec(face_total as usize, "the joined face sizes")?;
+    let mut face_indices = try_vec(index_total as usize, "the joined face indices")?;
+    for mesh in meshes {
+        let offset = positions.len() as u32;
+        positions.extend_from_slice(mesh.positions());
+        face_sizes.extend_from_slice(mesh.face_sizes());
+        face_indices.extend(mesh.face_indices().iter().map(|&v| v + offset));
+    }
+    Ok(Mesh::from_valid_parts(positions, face_sizes, face_indices))
+}
+
+/// Merges every two vertices at most `tolerance` apart, transitively: when a
+/// is within the tolerance of b and b of c, all three become one vertex even
+/// if a and c are further apart. A tolerance of 0 merges exact duplicates.
+///
+/// The merged vertex keeps the position of the cluster's **first** vertex
+/// (the lowest input index), not the average. Seams of surface meshes must
+/// stay where the surface put them: an average would pull each seam vertex
+/// towards whichever piece happened to contribute more copies, and along a
+/// transitive chain it would drift further than the tolerance. The first
+/// vertex keeps every output position an input position, and it makes weld
+/// idempotent: two clusters are more than the tolerance apart everywhere, so
+/// their first vertices are too, and welding again changes nothing.
+///
+/// Faces keep their order and winding. A face keeps the first occurrence of
+/// each vertex and drops repeats (a quad with two merged corners becomes a
+/// triangle); a face left with fewer than 3 distinct vertices is removed.
+/// Vertices that no remaining face uses are left out, so the result is ready
+/// to subdivide; the others keep the order of their first input vertex.
+///
+/// Clusters are found with a spatial hash of cells as wide as the tolerance:
+/// each vertex is compared with the vertices of the 27 cells around it, and
+/// exact duplicates are merged by sorting before any distance is measured.
+/// A cell whose vertices all lie within the tolerance of each other merges
+/// without comparing them. The cost is linear in the vertex count unless
+/// many distinct vertices crowd into cells without all being that close.
+/// Distances are compared without squaring the coordinates' differences, so
+/// welding means the same near 1e-300 and near 1e300.
+///
+/// # Errors
+/// [`Error::InvalidArgument`] when `tolerance` is negative, NaN or infinite;
+/// [`Error::OutOfMemory`] when the result cannot be allocated.
+pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
+    check_tolerance(tolerance)?;
+    let positions = mesh.positions();
+    let vertex_count = positions.len();
+    let clusters = vertex_clusters(positions, tolerance)?;
+
+    // The cluster of each vertex, numbered in order of its first vertex.
+    let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
+    let mut first_vertex: Vec<u32> = Vec::new();
+    {
+        let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
+        label.resize(vertex_count, u32::MAX);
+        let mut clusters = clusters;
+        for v in 0..vertex_count as u32 {
+            let root = clusters.find(v) as usize;
+            if label[root] == u32::MAX {
+                label[root] = first_vertex.len() as u32;
+                first_vertex.push(v);
+            }
+            cluster_of.push(label[root]);
+        }
+    }
+    let cluster_count = first_vertex.len();
+
+    // Faces over clusters, repeats dropped, collapsed faces removed.
+    let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the welded face sizes")?;
+    let mut face_indices = try_vec::<u32>(mesh.index_count(), "the welded face indices")?;
+    let mut seen_in_face = vec![u32::MAX; cluster_count];
+    let mut removed_face_count = 0;
+    for (f, face) in mesh.faces().enumerate() {
+        let start = face_indices.len();
+        for &v in face {
+            let c = cluster_of[v as usize];
+            if seen_in_face[c as usize] != f as u32 {
+                seen_in_face[c as usize] = f as u32;
+                face_indices.push(c);
+            }
+        }
+        let size = face_indices.len() - start;
+        if size < 3 {
+            face_indices.truncate(start);
+            removed_face_count += 1;
+        } else {
+            face_sizes.push(size as u32);
+        }
+    }
+
+    // Keep only the clusters some face uses, in order of their first vertex.
+    let mut new_index = vec![u32::MAX; cluster_count];
+    for &c in &face_indices {
+        new_index[c as usize] = 0;
+    }
+    let mut out_positions = try_vec::<DVec3>(cluster_count, "the welded positions")?;
+    for (c, slot) in new_index.iter_mut().enumerate() {
+        if *slot == 0 {
+            *slot = out_positions.len() as u32;
+            out_positions.push(positions[first_vertex[c] as usize]);
+        }
+    }
+    for c in &mut face_indices {
+        *c = new_index[*c as usize];
+    }
+    let report = WeldReport {
+        merged_vertex_count: vertex_count - cluster_count,
+        removed_face_count,
+        unused_vertex_count: cluster_count - out_positions.len(),
+    };
+    Ok((
+        Mesh::from_valid_parts(out_positions, face_sizes, face_indices),
+        report,
+    ))
+}
+
+/// How many vertices no face uses.
+pub fn unused_vertex_count(mesh: &Mesh) -> usize {
+    let mut used = vec![false; mesh.vertex_count()];
+    for &v in mesh.face_indices() {
+        used[v as usize] = true;
+    }
+    used.iter().filter(|&&u| !u).count()
+}
+
+/// Leaves out the vertices no face uses; the others keep their order.
+/// Returns the compacted mesh and how many vertices were left out.
+pub fn remove_unused_vertices(mesh: &Mesh) -> (Mesh, usize) {
+    let mut new_index = vec![u32::MAX; mesh.vertex_count()];
+    for &v in mesh.face_indices() {
+        new_index[v as usize] = 0;
+    }
+    let mut positions = Vec::with_capacity(mesh.vertex_count());
+    for (v, slot) in new_index.iter_mut().enumerate() {
+        if *slot == 0 {
+            *slot = positions.len() as u32;
+            positions.push(mesh.positions()[v]);
+        }
+    }
+    let removed = mesh.vertex_count() - positions.len();
+    let indices = mesh
+        .face_indices()
+        .iter()
+        .map(|&v| new_index[v as usize])
+        .collect();
+    (
+        Mesh::from_valid_parts(positions, mesh.face_sizes().to_vec(), indices),
+        removed,
+    )
+}
+
+/// Whether `p` and `q` are at most `tolerance` apart. The difference is
+/// scaled by its largest coordinate before it is squared, so the test holds
+/// for coordinates near 1e-300 (whose squares underflow to 0, which would
+/// weld distinct vertices at tolerance 0) and near 1e300 (whose squares
+/// overflow).
+#[inline]
+pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
+    let d = p - q;
+    let unit = d.abs().max_element();
+    unit == 0.0 || unit * (d / unit).length() <= tolerance
+}
+
+/// Unions every two vertices at most `tolerance` apart.
+fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
+    let grid = CellGrid::new(positions.iter().copied(), tolerance);
+    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
+    entries.extend(
+        positions
+            .iter()
+            .enumerate()
+            .map(|(v, &p)| (grid.cell(p), v as u32)),
+    );
+    entries.par_sort_unstable();
+    let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
+    order.extend(entries.iter().map(|&(_, v)| v));
+
+    let mut clusters = UnionFind::new(positions.len());
+    // Distinct positions ("sites"), each standing for its exact duplicates.
+    let mut sites: Vec<u32> = Vec::with_capacity(positions.len());
+    // Sites of each occupied cell: cell_sites[cell_starts[k]..cell_starts[k + 1]].
+    let mut cell_keys: Vec<Cell> = Vec::new();
+    let mut cell_starts: Vec<u32> = Vec::new();
+    let mut start = 0;
+    while start < entries.len() {
+        let key = entries[start].0;
+        let end = start + entries[start..].partition_point(|e| e.0 == key);
+        // Within the cell by exact position, then index: duplicates become
+        // neighbours with their lowest index first.
+        let group = &mut order[start..end];
+        if group.len() > 1 {
+            group.sort_unstable_by(|&a, &b| {
+                let (pa, pb) = (positions[a as usize], positions[b as usize]);
+                // Adding 0 makes -0 and +0 one key: they are one position.
+                let (pa, pb) = (pa + 0.0, pb + 0.0);
+                pa.x.total_cmp(&pb.x)
+                    .then(pa.y.total_cmp(&pb.y))
+                    .then(pa.z.total_cmp(&pb.z))
+                    .then(a.cmp(&b))
+            });
+        }
+        cell_keys.push(key);
+        cell_starts.push(sites.len() as u32);
+        let first_site = sites.len();
+        for &v in group.iter() {
+            match sites[first_site..].last() {
+                Some(&site) if positions[site as usize] == positions[v as usize] => {
+                    clusters.union(site, v);
+                }
+                _ => sites.push(v),
+            }
+        }
+        start = end;
+    }
+    cell_starts.push(sites.len() as u32);
+    if tolerance == 0.0 {
+        return Ok(clusters);
+    }
+
+    let mut cell_lookup: CellMap<u32> = CellMap::default();
+    cell_lookup.reserve(cell_keys.len());
+    for (k, &key) in cell_keys.iter().enumerate() {
+        cell_lookup.insert(key, k as u32);
+    }
+    let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
+    // A cell whose sites all lie within the tolerance of each other (its
+    // box's diagonal is short enough) is one cluster without comparing its
+    // pairs, and two such cells need only one close pair to become one.
+    // This keeps crowded cells, down to a tolerance larger than the whole
+    // mesh, linear.
+    let tight: Vec<bool> = (0..cell_keys.len())
+        .map(|k| {
+            let here = cell_sites(k);
+            let first = positions[here[0] as usize];
+            let (lo, hi) = here.iter().fold((first, first), |(lo, hi), &v| {
+                let p = positions[v as usize];
+                (lo.min(p), hi.max(p))
+            });
+            within(lo, hi, tolerance)
+        })
+        .collect();
+    for (k, &key) in cell_keys.iter().enumerate() {
+        let here = cell_sites(k);
+        if tight[k] {
+            for &b in &here[1..] {
+                clusters.union(here[0], b);
+            }
+        } else {
+            for (i, &a) in here.iter().enumerate() {
+                let pa = positions[a as usize];
+                for &b in &here[i + 1..] {
+                    if within(pa, positions[b as usize], tolerance) {
+                        clusters.union(a, b);
+                    }
+                }
+            }
+        }
+        // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
+        for offset in FORWARD_NEIGHBOURS {
+            let Some(&other) = cell_lookup.get(&key.offset(offset)) else {
+                continue;
+            };
+            let there = cell_sites(other as usize);
+            let both_tight = tight[k] && tight[other as usize];
+            if both_tight && clusters.find(here[0]) == clusters.find(there[0]) {
+                continue;
+            }
+            'pairs: for &a in here {
+                let pa = positions[a as usize];
+                for &b in there {
+                    if within(pa, positions[b as usize], tolerance) {
+                        clusters.union(a, b);
+                        if both_tight {
+                            break 'pairs;
+                        }
+                    }
+                }
+            }
+        }
+    }
+    Ok(clusters)
+}
+
+/// The 13 of the 26 neighbouring cell offsets that come after (0, 0, 0) in
+/// lexicographic order; with their mirror images they make all 26.
+const FORWARD_NEIGHBOURS: [[i64; 3]; 13] = [
+    [0, 0, 1],
+    [0, 1, -1],
+    [0, 1, 0],
+    [0, 1, 1],
+    [1, -1, -1],
+    [1, -1, 0],
+    [1, -1, 1],
+    [1, 0, -1],
+    [1, 0, 0],
+    [1, 0, 1],
+    [1, 1, -1],
+    [1, 1, 0],
+    [1, 1, 1],
+];
+
+/// A cell of a uniform grid, by its integer coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+pub(crate) struct Cell(pub(crate) [i64; 3]);
+
+impl Cell {
+    #[inline]
+    pub(crate) fn offset(self, d: [i64; 3]) -> Cell {
+        Cell([self.0[0] + d[0], self.0[1] + d[1], self.0[2] + d[2]])
+    }
+
+    /// How many face-to-face steps lead from this cell to `other` (the
+    /// Manhattan distance, saturating).
+    pub(crate) fn steps_to(self, other: Cell) -> u64 {
+        (0..3).fold(0u64, |total, i| {
+            total.saturating_add(self.0[i].abs_diff(other.0[i]))
+        })
+    }
+}
+
+impl Hash for Cell {
+    #[inline]
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        // Large odd multipliers spread neighbouring cells over the table.
+        let [x, y, z] = self.0;
+        let h = (x as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
+            ^ (y as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
+            ^ (z as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
+        state.write_u64(h ^ (h >> 29));
+    }
+}
+
+/// Passes a [`Cell`]'s own mixed hash through unchanged.
+#[derive(Default)]
+pub(crate) struct CellHasher(u64);
+
+impl Hasher for CellHasher {
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = (self.0.rotate_left(8) ^ b as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        }
+    }
+    #[inline]
+    fn write_u64(&mut self, value: u64) {
+        self.0 = value;
+    }
+}
+
+/// A hash map keyed by grid cells.
+pub(crate) type CellMap<V> = HashMap<Cell, V, BuildHasherDefault<CellHasher>>;
+
+/// A uniform grid over space: cells of a given size, never smaller than what
+/// keeps every cell coordinate well inside `i64` for the points it serves.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct CellGrid {
+    pub(crate) size: f64,
+}
+
+impl CellGrid {
+    /// A grid of cells at least `size` wide for points like `points`.
+    pub(crate) fn new(points: impl Iterator<Item = DVec3>, size: f64) -> CellGrid {
+        let reach = points.fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+        // 2^-40 of the coordinates' reach keeps cell numbers below 2^41, and a
+        // cell that wide is still below the round-off of the coordinates.
+        // Never below the smallest normal number: a cell width of 0 (the
+        // floor of subnormal coordinates) would put points in no cell at all.
+        let floor = if reach > 0.0 {
+            (reach * 2f64.powi(-40)).max(f64::MIN_POSITIVE)
+        } else {
+            1.0
+        };
+        CellGrid {
+            size: size.max(floor),
+        }
+    }
+
+    #[inline]
+    pub(crate) fn cell(&self, p: DVec3) -> Cell {
+        let c = (p / self.size).floor();
+        Cell([c.x as i64, c.y as i64, c.z as i64])
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,175 @@
+use super::*;
+use crate::mesh::shapes;
+
+fn mesh(positions: &[[f64; 3]], faces: &[&[u32]]) -> Mesh {
+    Mesh::from_polygons(
+        positions.iter().map(|&p| DVec3::from_array(p)).collect(),
+        faces.iter().copied(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn join_offsets_indices() {
+    let a = shapes::cube();
+    let b = shapes::tetrahedron();
+    let joined = join(&[&a, &b, &Mesh::empty()]).unwrap();
+    assert_eq!(joined.vertex_count(), 12);
+    assert_eq!(joined.face_count(), 10);
+    assert_eq!(joined.face(6), &[8, 9, 10]);
+    assert_eq!(joined.positions()[8], b.positions()[0]);
+    assert_eq!(join(&[]).unwrap(), Mesh::empty());
+}
+
+#[test]
+fn transitive_chain_merges_into_its_first_vertex() {
+    // 0.0, 0.6, 1.2, 1.8 apart by 0.6 with tolerance 0.7: one cluster of
+    // four though its ends are 1.8 apart.
+    let m = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [0.6, 0.0, 0.0],
+            [1.2, 0.0, 0.0],
+            [1.8, 0.0, 0.0],
+            [0.0, 5.0, 0.0],
+            [5.0, 5.0, 0.0],
+        ],
+        &[&[0, 5, 4], &[1, 5, 4], &[2, 5, 4], &[3, 5, 4]],
+    );
+    let (welded, report) = weld(&m, 0.7).unwrap();
+    assert_eq!(welded.vertex_count(), 3);
+    assert_eq!(welded.positions()[0], DVec3::ZERO);
+    assert_eq!(report.merged_vertex_count, 3);
+    assert_eq!(report.removed_face_count, 0);
+    assert_eq!(welded.face_count(), 4);
+    assert!(welded.faces().all(|f| f == [0, 2, 1]));
+}
+
+#[test]
+fn quad_with_two_merged_corners_becomes_a_triangle() {
+    let m = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1e-4, 0.0],
+            [0.0, 1.0, 0.0],
+        ],
+        &[&[0, 1, 2, 3]],
+    );
+    let (welded, report) = weld(&m, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(welded.face(0), &[0, 1, 2]);
+    assert_eq!(welded.positions()[1], DVec3::X);
+    assert_eq!(welded.positions()[2], DVec3::Y);
+    assert_eq!(report.merged_vertex_count, 1);
+}
+
+#[test]
+fn face_collapsing_to_two_vertices_is_removed_and_counted() {
+    let m = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0005],
+            [9.0, 9.0, 9.0],
+        ],
+        // The second face keeps only 0 and 1 after welding 3 into 1.
+        &[&[0, 1, 2], &[0, 1, 3], &[4, 0, 2]],
+    );
+    let (welded, report) = weld(&m, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(report.removed_face_count, 1);
+    assert_eq!(report.merged_vertex_count, 1);
+    assert_eq!(report.unused_vertex_count, 0);
+    assert_eq!(welded.face_count(), 2);
+    assert_eq!(welded.vertex_count(), 4);
+}
+
+#[test]
+fn unused_vertices_are_left_out_and_counted() {
+    let m = mesh(
+        &[
+            [7.0, 7.0, 7.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ],
+        &[&[1, 2, 3]],
+    );
+    let (welded, report) = weld(&m, 0.0).unwrap();
+    assert_eq!(report.unused_vertex_count, 1);
+    assert_eq!(welded.positions()[0], DVec3::ZERO);
+    assert_eq!(welded.face(0), &[0, 1, 2]);
+    let (compact, removed) = remove_unused_vertices(&m);
+    assert_eq!((compact, removed), (welded, 1));
+}
+
+#[test]
+fn zero_tolerance_merges_exact_duplicates_only() {
+    let m = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 1e-12],
+        ],
+        &[&[0, 1, 2], &[3, 4, 2]],
+    );
+    let (welded, report) = weld(&m, 0.0).unwrap();
+    assert_eq!(report.merged_vertex_count, 1);
+    assert_eq!(welded.face(1), &[1, 3, 2]);
+}
+
+#[test]
+fn weld_is_idempotent() {
+    let grid = shapes::quad_grid(6, 5);
+    // Every face its own vertices, each jittered a little.
+    let mut positions = Vec::new();
+    let mut faces = Vec::new();
+    for (f, face) in grid.faces().enumerate() {
+        let mut out = Vec::new();
+        for (k, &v) in face.iter().enumerate() {
+            let jitter = ((f * 7 + k * 3) % 5) as f64 * 1e-4;
+            positions.push(grid.positions()[v as usize] + DVec3::splat(jitter));
+            out.push(positions.len() as u32 - 1);
+        }
+        faces.push(out);
+    }
+    let loose = Mesh::from_polygons(positions, faces).unwrap();
+    let (once, report) = weld(&loose, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(once.vertex_count(), grid.vertex_count());
+    assert_eq!(report.merged_vertex_count, 4 * 30 - 42);
+    let (twice, again) = weld(&once, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(twice, once);
+    assert_eq!(again, WeldReport::default());
+}
+
+#[test]
+fn bad_tolerance_is_named() {
+    let cube = shapes::cube();
+    for t in [-1.0, f64::NAN, f64::INFINITY] {
+        let err = weld(&cube, t).unwrap_err();
+        assert!(matches!(&err, Error::InvalidArgument(m) if m.contains("tolerance")));
+    }
+}
+
+#[test]
+fn tolerance_larger_than_the_mesh_merges_everything_quickly() {
+    // 40 000 distinct points in one cell: linear, not 800 million pairs.
+    let grid = shapes::triangle_grid(199, 99);
+    let (welded, report) = weld(&grid, 1e6).unwrap();
+    assert_eq!(report.merged_vertex_count, grid.vertex_count() - 1);
+    assert_eq!(report.removed_face_count, grid.face_count());
+    assert_eq!(welded, Mesh::empty());
+}
+
+#[test]
+fn far_from_origin_tiny_tolerance_still_works() {
+    let m = mesh(
+        &[[1e12, 0.0, 0.0], [1e12, 1.0, 0.0], [1e12, 0.0, 1.0]],
+        &[&[0, 1, 2]],
+    );
+    let (welded, report) = weld(&m, 1e-12).unwrap();
+    assert_eq!(welded, m);
+    assert_eq!(report.merged_vertex_count, 0);
+}

@@ -1,0 +1,497 @@
+//! The polygon mesh: `f64` positions and faces as sizes plus flat indices.
+//!
+//! Triangles, quads and n-gons may be mixed. Counter-clockwise seen from the
+//! front is the front face. A `Mesh` is always valid: every constructor checks
+//! its input, so operations may rely on in-range indices, faces of at least
+//! three distinct vertices and finite coordinates.
+
+pub(crate) mod adjacency;
+pub mod analysis;
+pub(crate) mod linalg;
+pub mod shapes;
+pub mod topology;
+pub mod triangulate;
+
+use glam::DVec3;
+
+use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
+
+/// A validated polygon mesh.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Mesh {
+    positions: Vec<DVec3>,
+    face_sizes: Vec<u32>,
+    face_indices: Vec<u32>,
+    /// `face_offsets[f]..face_offsets[f + 1]` are face f's corners; one longer than `face_sizes`.
+    face_offsets: Vec<u32>,
+}
+
+impl Mesh {
+    /// The empty mesh: no vertices, no faces.
+    pub fn empty() -> Mesh {
+        Mesh {
+            face_offsets: vec![0],
+            ..Default::default()
+        }
+    }
+
+    /// Builds a mesh from positions, one size per face and the faces' vertex
+    /// indices one after another.
+    ///
+    /// # Errors
+    /// [`MeshError`] naming the first face, corner or vertex that is wrong.
+    pub fn new(
+        positions: Vec<DVec3>,
+        face_sizes: Vec<u32>,
+        face_indices: Vec<u32>,
+    ) -> Result<Mesh, MeshError> {
+        check_counts(positions.len(), &face_sizes, face_indices.len())?;
+        check_positions(&positions)?;
+        let face_offsets = offsets(&face_sizes);
+        let mesh = Mesh {
+            positions,
+            face_sizes,
+            face_indices,
+            face_offsets,
+        };
+        mesh.check_faces()?;
+        Ok(mesh)
+    }
+
+    /// Builds a mesh from flat `x, y, z` coordinates (three per vertex).
+    ///
+    /// # Errors
+    /// As [`Mesh::new`]; a coordinate count that is not a multiple of 3 is a
+    /// [`MeshError::CountMismatch`].
+    pub fn from_flat(
+        coordinates: &[f64],
+        face_sizes: &[u32],
+        face_indices: &[u32],
+    ) -> Result<Mesh, MeshError> {
+        if coordinates.len() % 3 != 0 {
+            return Err(MeshError::CountMismatch {
+                sum: (coordinates.len() / 3 * 3) as u64,
+                index_count: coordinates.len(),
+            });
+        }
+        // Check sizes before copying so a huge count fails without allocating.
+        check_counts(coordinates.len() / 3, face_sizes, face_indices.len())?;
+        let positions = coordinates
+            .chunks_exact(3)
+            .map(|c| DVec3::new(c[0], c[1], c[2]))
+            .collect();
+        Mesh::new(positions, face_sizes.to_vec(), face_indices.to_vec())
+    }
+
+    /// Builds a mesh from a list of polygons, each a list of vertex indices.
+    ///
+    /// # Errors
+    /// As [`Mesh::new`].
+    pub fn from_polygons<F: AsRef<[u32]>>(
+        positions: Vec<DVec3>,
+        polygons: impl IntoIterator<Item = F>,
+    ) -> Result<Mesh, MeshError> {
+        let mut face_sizes = Vec::new();
+        let mut face_indices = Vec::new();
+        for polygon in polygons {
+            let polygon = polygon.as_ref();
+            face_sizes.push(u32::try_from(polygon.len()).unwrap_or(u32::MAX));
+            face_indices.extend_from_slice(polygon);
+        }
+        Mesh::new(positions, face_sizes, face_indices)
+    }
+
+    /// Builds a mesh from parts an operation has produced itself and knows to
+    /// be valid. Checked in debug builds only.
+    pub(crate) fn from_valid_parts(
+        positions: Vec<DVec3>,
+        face_sizes: Vec<u32>,
+        face_indices: Vec<u32>,
+    ) -> Mesh {
+        let face_offsets = offsets(&face_sizes);
+        let mesh = Mesh {
+            positions,
+            face_sizes,
+            face_indices,
+            face_offsets,
+        };
+        debug_assert!(check_counts(
+            mesh.positions.len(),
+            &mesh.face_sizes,
+            mesh.face_indices.len()
+        )
+        .is_ok());
+        debug_assert_eq!(mesh.check_faces(), Ok(()));
+        mesh
+    }
+
+    /// As [`Mesh::from_valid_parts`], for faces all of `size` corners (a
+    /// refined level): sizes and offsets written in parallel, reserved
+    /// fallibly.
+    pub(crate) fn from_valid_uniform_parts(
+        positions: Vec<DVec3>,
+        size: u32,
+        face_indices: Vec<u32>,
+    ) -> Result<Mesh, crate::Error> {
+        use rayon::prelude::*;
+        const CHUNK: usize = 16384;
+        let face_count = face_indices.len() / size as usize;
+        let mut face_sizes = crate::buffers::try_vec(face_count, "face sizes")?;
+        face_sizes.par_extend(rayon::iter::repeat_n(size, face_count).with_min_len(CHUNK));
+        let mut face_offsets = crate::buffers::try_vec(face_count + 1, "face offsets")?;
+        face_offsets.par_extend(
+            (0..face_count as u32 + 1)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|f| f * size),
+        );
+        let mesh = Mesh {
+            positions,
+            face_sizes,
+            face_indices,
+            face_offsets,
+        };
+        debug_assert_eq!(mesh.face_offsets, offsets(&mesh.face_sizes));
+        debug_assert_eq!(mesh.check_faces(), Ok(()));
+        Ok(mesh)
+    }
+
+    /// Number of vertices.
+    #[inline]
+    pub fn vertex_count(&self) -> usize {
+        self.positions.len()
+    }
+
+    /// Number of faces.
+    #[inline]
+    pub fn face_count(&self) -> usize {
+        self.face_sizes.len()
+    }
+
+    /// Number of face corners (the length of [`Mesh::face_indices`]).
+    #[inline]
+    pub fn index_count(&self) -> usize {
+        self.face_indices.len()
+    }
+
+    /// The vertex positions.
+    #[inline]
+    pub fn positions(&self) -> &[DVec3] {
+        &self.positions
+    }
+
+    /// The number of corners of each face.
+    #[inline]
+    pub fn face_sizes(&self) -> &[u32] {
+        &self.face_sizes
+    }
+
+    /// Every face's vertex indices, one face after another.
+    #[inline]
+    pub fn face_indices(&self) -> &[u32] {
+        &self.face_indices
+    }
+
+    /// Where each face starts in [`Mesh::face_indices`], plus the total at the end.
+    #[inline]
+    pub fn face_offsets(&self) -> &[u32] {
+        &self.face_offsets
+    }
+
+    /// The vertex indices of face `f`.
+    ///
+    /// # Panics
+    /// When `f` is not below [`Mesh::face_count`].
+    #[inline]
+    pub fn face(&self, f: usize) -> &[u32] {
+        &self.face_indices[self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize]
+    }
+
+    /// The faces in order, each as its vertex indices.
+    pub fn faces(&self) -> impl ExactSizeIterator<Item = &[u32]> + '_ {
+        self.face_offsets
+            .windows(2)
+            .map(move |w| &self.face_indices[w[0] as usize..w[1] as usize])
+    }
+
+    /// The positions of face `f`'s corners.
+    pub fn face_positions(&self, f: usize) -> impl ExactSizeIterator<Item = DVec3> + '_ {
+        self.face(f)
+            .iter()
+            .map(move |&v| self.positions[v as usize])
+    }
+
+    /// Whether every face is a triangle (true for the empty mesh).
+    pub fn is_triangle_mesh(&self) -> bool {
+        self.face_sizes.iter().all(|&s| s == 3)
+    }
+
+    /// Whether every face is a quad (true for the empty mesh).
+    pub fn is_quad_mesh(&self) -> bool {
+        self.face_sizes.iter().all(|&s| s == 4)
+    }
+
+    /// The first face that is not a triangle, with its size.
+    pub fn first_non_triangle(&self) -> Option<(usize, usize)> {
+        self.face_sizes
+            .iter()
+            .position(|&s| s != 3)
+            .map(|f| (f, self.face_sizes[f] as usize))
+    }
+
+    /// Replaces the positions, keeping the faces.
+    ///
+    /// # Errors
+    /// A count that differs from the vertex count, or a non-finite coordinate.
+    pub fn with_positions(&self, positions: Vec<DVec3>) -> Result<Mesh, MeshError> {
+        if positions.len() != self.positions.len() {
+            return Err(MeshError::CountMismatch {
+                sum: self.positions.len() as u64,
+                index_count: positions.len(),
+            });
+        }
+        check_positions(&positions)?;
+        Ok(Mesh {
+            positions,
+            ..self.clone()
+        })
+    }
+
+    /// Mutable positions: faces stay as they are. The caller keeps them finite.
+    pub fn positions_mut(&mut self) -> &mut [DVec3] {
+        &mut self.positions
+    }
+
+    /// Takes the mesh apart into positions, face sizes and face indices.
+    pub fn into_parts(self) -> (Vec<DVec3>, Vec<u32>, Vec<u32>) {
+        (self.positions, self.face_sizes, self.face_indices)
+    }
+
+    /// The axis-aligned bounding box `(min, max)`, or `None` without vertices.
+    pub fn bounding_box(&self) -> Option<(DVec3, DVec3)> {
+        let first = *self.positions.first()?;
+        Some(
+            self.positions
+                .iter()
+                .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
+        )
+    }
+
+    fn check_faces(&self) -> Result<(), MeshError> {
+        let vertex_count = self.positions.len();
+        for (face, corners) in self.faces().enumerate() {
+            if corners.len() < 3 {
+                return Err(MeshError::FaceTooSmall {
+                    face,
+                    size: corners.len(),
+                });
+            }
+            for (corner, &index) in corners.iter().enumerate() {
+                if index as usize >= vertex_count {
+                    return Err(MeshError::IndexOutOfRange {
+                        face,
+                        corner,
+                        index,
+                        vertex_count,
+                    });
+                }
+            }
+            if let Some((first, second)) = repeated_corner(corners) {
+                return Err(MeshError::RepeatedIndex {
+                    face,
+                    index: corners[first],
+                    first,
+                    second,
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+/// The first two corners of a polygon that name the same vertex.
+fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
+    if corners.len() <= 16 {
+        for i in 0..corners.len() {
+            for j in i + 1..corners.len() {
+                if corners[i] == corners[j] {
+                    return Some((i, j));
+                }
+            }
+        }
+        return None;
+    }
+    // Large n-gons: sort to stay O(n log n).
+    let mut sorted: Vec<(u32, usize)> = corners.iter().copied().zip(0..).collect();
+    sorted.sort_unstable();
+    sorted
+        .windows(2)
+        .filter(|w| w[0].0 == w[1].0)
+        .map(|w| (w[0].1.min(w[1].1), w[0].1.max(w[1].1)))
+        .min_by_key(|&(_, second)| second)
+}
+
+/// Checks the vertex, face and index counts of a mesh to be built against
+/// [`MAX_ELEMENTS`], from the counts alone: the C ABI calls it before it
+/// views a caller's buffers, so a count past the cap never becomes a slice.
+pub(crate) fn check_element_counts(
+    vertex_count: usize,
+    face_count: usize,
+    index_count: usize,
+) -> Result<(), MeshError> {
+    for (what, count) in [
+        ("vertex", vertex_count),
+        ("index", index_count),
+        ("face", face_count),
+    ] {
+        if count as u64 > MAX_ELEMENTS {
+            return Err(MeshError::TooLarge {
+                what,
+                count: count as u64,
+                limit: MAX_ELEMENTS,
+            });
+        }
+    }
+    Ok(())
+}
+
+fn check_counts(
+    vertex_count: usize,
+    face_sizes: &[u32],
+    index_count: usize,
+) -> Result<(), MeshError> {
+    check_element_counts(vertex_count, face_sizes.len(), index_count)?;
+    let sum: u64 = face_sizes.iter().map(|&s| s as u64).sum();
+    if sum != index_count as u64 {
+        return Err(MeshError::CountMismatch { sum, index_count });
+    }
+    Ok(())
+}
+
+fn check_positions(positions: &[DVec3]) -> Result<(), MeshError> {
+    match positions.iter().position(|p| !p.is_finite()) {
+        Some(vertex) => {
+            let p = positions[vertex];
+            Err(MeshError::NonFiniteCoordinate {
+                vertex,
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            })
+        }
+        None => Ok(()),
+    }
+}
+
+fn offsets(face_sizes: &[u32]) -> Vec<u32> {
+    let mut offsets = Vec::with_capacity(face_sizes.len() + 1);
+    let mut total = 0u32;
+    offsets.push(0);
+    for &s in face_sizes {
+        total += s;
+        offsets.push(total);
+    }
+    offsets
+}
+
+/// Checks a distance tolerance (weld, T-nodes, planarity): finite and not
+/// negative.
+pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
+    if tolerance.is_finite() && tolerance >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument(format!(
+            "tolerance is {tolerance}; it must be a finite distance of 0 or more"
+        )))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square() -> Vec<DVec3> {
+        vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 1.0, 0.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        ]
+    }
+
+    #[test]
+    fn mixed_faces_are_kept_in_order() {
+        let mesh = Mesh::from_polygons(square(), [vec![0, 1, 2], vec![0, 2, 3]]).unwrap();
+        assert_eq!(mesh.face_count(), 2);
+        assert_eq!(mesh.face(1), &[0, 2, 3]);
+        assert_eq!(mesh.face_offsets(), &[0, 3, 6]);
+        assert!(mesh.is_triangle_mesh());
+    }
+
+    #[test]
+    fn each_bad_input_names_its_place() {
+        let err = Mesh::from_polygons(square(), [vec![0, 1, 2], vec![0, 2, 9]]).unwrap_err();
+        assert_eq!(
+            err,
+            MeshError::IndexOutOfRange {
+                face: 1,
+                corner: 2,
+                index: 9,
+                vertex_count: 4
+            }
+        );
+        let err = Mesh::from_polygons(square(), [vec![0, 1]]).unwrap_err();
+        assert_eq!(err, MeshError::FaceTooSmall { face: 0, size: 2 });
+        let err = Mesh::from_polygons(square(), [vec![0, 1, 2, 1]]).unwrap_err();
+        assert_eq!(
+            err,
+            MeshError::RepeatedIndex {
+                face: 0,
+                index: 1,
+                first: 1,
+                second: 3
+            }
+        );
+        let mut p = square();
+        p[2].y = f64::NAN;
+        let err = Mesh::from_polygons(p, [vec![0, 1, 2]]).unwrap_err();
+        assert!(matches!(
+            err,
+            MeshError::NonFiniteCoordinate { vertex: 2, .. }
+        ));
+        assert!(err.to_string().contains("vertex 2"));
+        let err = Mesh::new(square(), vec![3, 3], vec![0, 1, 2]).unwrap_err();
+        assert_eq!(
+            err,
+            MeshError::CountMismatch {
+                sum: 6,
+                index_count: 3
+            }
+        );
+    }
+
+    #[test]
+    fn repeated_index_in_a_large_ngon_is_found() {
+        let positions: Vec<DVec3> = (0..40).map(|i| DVec3::new(i as f64, 0.0, 0.0)).collect();
+        let mut polygon: Vec<u32> = (0..40).collect();
+        polygon[30] = 7;
+        let err = Mesh::from_polygons(positions, [polygon]).unwrap_err();
+        assert_eq!(
+            err,
+            MeshError::RepeatedIndex {
+                face: 0,
+                index: 7,
+                first: 7,
+                second: 30
+            }
+        );
+    }
+
+    #[test]
+    fn empty_mesh_is_valid() {
+        let mesh = Mesh::new(vec![], vec![], vec![]).unwrap();
+        assert_eq!(mesh, Mesh::empty());
+        assert_eq!(mesh.faces().count(), 0);
+        assert!(mesh.bounding_box().is_none());
+    }
+}

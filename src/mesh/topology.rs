@@ -1,0 +1,522 @@
+//! Edges, adjacency, boundary and manifoldness of a [`Mesh`].
+//!
+//! Everything is flat index arrays built by bucketing, never by hashing
+//! pairs or comparing all faces: the edges come from the one builder in
+//! [`crate::mesh::adjacency`], which the subdivision's levels share, so a
+//! mesh of a million faces takes a few tens of milliseconds.
+//!
+//! Names used throughout: a *corner* is a position in [`Mesh::face_indices`];
+//! the *edge of a corner* runs from that corner's vertex to the next corner's
+//! vertex in the same face.
+
+use crate::buffers::{try_copy, try_vec};
+use crate::error::Result;
+use crate::mesh::adjacency::Adjacency;
+use crate::mesh::Mesh;
+
+/// Edges and adjacency of one mesh. Build it with [`Topology::new`]; it does
+/// not keep a reference to the mesh.
+#[derive(Debug, Clone)]
+pub struct Topology {
+    /// Unique edges (`[low, high]`, sorted), each corner's edge, the corners
+    /// on each edge and at each vertex.
+    adjacency: Adjacency,
+    /// For each corner, its face.
+    corner_faces: Vec<u32>,
+    /// For each corner, the next corner of its face.
+    corner_next: Vec<u32>,
+    face_vertices: Vec<u32>,
+}
+
+/// What [`Topology::info`] counts.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct MeshInfo {
+    pub vertex_count: usize,
+    pub edge_count: usize,
+    pub face_count: usize,
+    /// Edges with exactly one face.
+    pub naked_edge_count: usize,
+    /// Edges with three or more faces.
+    pub non_manifold_edge_count: usize,
+    /// Vertices whose faces do not form one fan, or that lie on a non-manifold edge.
+    pub non_manifold_vertex_count: usize,
+    /// Connected pieces of faces (vertices used by no face are not counted).
+    pub component_count: usize,
+    /// No naked and no non-manifold edge (a mesh without faces is not closed).
+    pub is_closed: bool,
+    /// Every component can be given one consistent winding.
+    pub is_orientable: bool,
+    /// Every two faces sharing a manifold edge already run it in opposite directions.
+    pub is_oriented: bool,
+}
+
+/// A consistent winding of each component, as far as one exists.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Orientation {
+    /// Component of each face.
+    pub face_component: Vec<u32>,
+    /// Whether each face must be reversed to agree with its component's first face.
+    pub face_flip: Vec<bool>,
+    /// Per component: whether the assignment above is consistent across every manifold edge.
+    pub component_orientable: Vec<bool>,
+}
+
+impl Topology {
+    /// Finds the edges and adjacency of `mesh`.
+    ///
+    /// # Panics
+    /// When memory for the arrays runs out; [`Topology::try_new`] returns
+    /// that as an error instead.
+    pub fn new(mesh: &Mesh) -> Topology {
+        Topology::try_new(mesh).unwrap_or_else(|error| panic!("{error}"))
+    }
+
+    /// Finds the edges and adjacency of `mesh`, reporting rather than
+    /// aborting when memory runs out.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
+    pub fn try_new(mesh: &Mesh) -> Result<Topology> {
+        let corner_count = mesh.index_count();
+        let indices = mesh.face_indices();
+        let mut corner_faces = try_vec(corner_count, "corner faces")?;
+        let mut corner_next = try_vec(corner_count, "next corners")?;
+        for (f, w) in mesh.face_offsets().windows(2).enumerate() {
+            let (start, end) = (w[0], w[1]);
+            corner_faces.extend(std::iter::repeat_n(f as u32, (end - start) as usize));
+            corner_next.extend(start + 1..end);
+            corner_next.push(start);
+        }
+        let adjacency =
+            Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
+        Ok(Topology {
+            adjacency,
+            corner_faces,
+            corner_next,
+            face_vertices: try_copy(indices, "corner vertices")?,
+        })
+    }
+
+    /// Number of unique edges.
+    #[inline]
+    pub fn edge_count(&self) -> usize {
+        self.adjacency.edges.len()
+    }
+
+    /// The unique edges as `[low, high]` vertex pairs, sorted.
+    #[inline]
+    pub fn edges(&self) -> &[[u32; 2]] {
+        &self.adjacency.edges
+    }
+
+    /// For each corner, the edge from it to the next corner of its face.
+    #[inline]
+    pub fn corner_edges(&self) -> &[u32] {
+        &self.adjacency.corner_edges
+    }
+
+    /// For each corner, its face.
+    #[inline]
+    pub fn corner_faces(&self) -> &[u32] {
+        &self.corner_faces
+    }
+
+    /// For each corner, the next corner (counter-clockwise) of the same face.
+    #[inline]
+    pub fn corner_next(&self) -> &[u32] {
+        &self.corner_next
+    }
+
+    /// The vertex at each corner (the mesh's face indices).
+    #[inline]
+    pub fn corner_vertices(&self) -> &[u32] {
+        &self.face_vertices
+    }
+
+    /// The corners whose edge is `e`, ascending (so their faces ascend too).
+    #[inline]
+    pub fn edge_corners(&self, e: usize) -> &[u32] {
+        self.adjacency.edge_corners(e)
+    }
+
+    /// Where each edge's corners start in the flat corner list, plus the total.
+    #[inline]
+    pub fn edge_offsets(&self) -> &[u32] {
+        &self.adjacency.edge_offsets
+    }
+
+    /// The faces on edge `e`, ascending (a face appears once per corner on it).
+    pub fn edge_faces(&self, e: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
+        self.edge_corners(e)
+            .iter()
+            .map(move |&c| self.corner_faces[c as usize])
+    }
+
+    /// How many face corners use edge `e`: 1 naked, 2 manifold, more non-manifold.
+    #[inline]
+    pub fn edge_face_count(&self, e: usize) -> usize {
+        (self.adjacency.edge_offsets[e + 1] - self.adjacency.edge_offsets[e]) as usize
+    }
+
+    /// Whether edge `e` has exactly one face.
+    #[inline]
+    pub fn is_naked_edge(&self, e: usize) -> bool {
+        self.edge_face_count(e) == 1
+    }
+
+    /// Whether edge `e` has three or more faces.
+    #[inline]
+    pub fn is_non_manifold_edge(&self, e: usize) -> bool {
+        self.edge_face_count(e) > 2
+    }
+
+    /// The edge between vertices `a` and `b`, if there is one.
+    pub fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
+        self.adjacency
+            .edges
+            .binary_search(&[a.min(b), a.max(b)])
+            .ok()
+    }
+
+    /// The corners at vertex `v`, ascending.
+    #[inline]
+    pub fn vertex_corners(&self, v: usize) -> &[u32] {
+        self.adjacency.vertex_corners(v)
+    }
+
+    /// Number of faces at each vertex (a face counts once per corner at it).
+    pub fn vertex_face_counts(&self) -> Vec<u32> {
+        self.adjacency
+            .vertex_offsets
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .collect()
+    }
+
+    /// Number of edges at each vertex.
+    pub fn vertex_valences(&self) -> Vec<u32> {
+        let mut valence = vec![0u32; self.adjacency.vertex_offsets.len() - 1];
+        for &[a, b] in &self.adjacency.edges {
+            valence[a as usize] += 1;
+            valence[b as usize] += 1;
+        }
+        valence
+    }
+
+    /// The edges with exactly one face.
+    pub fn naked_edges(&self) -> Vec<u32> {
+        (0..self.edge_count())
+            .filter(|&e| self.is_naked_edge(e))
+            .map(|e| e as u32)
+            .collect()
+    }
+
+    /// The edges with three or more faces.
+    pub fn non_manifold_edges(&self) -> Vec<u32> {
+        (0..self.edge_count())
+            .filter(|&e| self.is_non_manifold_edge(e))
+            .map(|e| e as u32)
+            .collect()
+    }
+
+    /// Whether each vertex is on a naked edge.
+    pub fn boundary_vertices(&self) -> Vec<bool> {
+        let mut on_boundary = vec![false; self.adjacency.vertex_offsets.len() - 1];
+        for (e, &[a, b]) in self.adjacency.edges.iter().enumerate() {
+            if self.is_naked_edge(e) {
+                on_boundary[a as usize] = true;
+                on_boundary[b as usize] = true;
+            }
+        }
+        on_boundary
+    }
+
+    /// The vertices whose faces do not form one fan (a bow-tie), or that lie on
+    /// an edge of three or more faces. Unused vertices are not listed.
+    pub fn non_manifold_vertices(&self) -> Vec<u32> {
+        // Corners at the same vertex are in one fan when a chain of manifold
+        // edges through that vertex links their faces.
+        let mut fans = UnionFind::new(self.adjacency.corner_edges.len());
+        let mut on_non_manifold_edge = vec![false; self.adjacency.vertex_offsets.len() - 1];
+        for e in 0..self.edge_count() {
+            let corners = self.edge_corners(e);
+            match corners {
+                &[c1, c2] => {
+                    let (n1, n2) = (self.corner_next[c1 as usize], self.corner_next[c2 as usize]);
+                    if self.face_vertices[c1 as usize] == self.face_vertices[c2 as usize] {
+                        fans.union(c1, c2);
+                        fans.union(n1, n2);
+                    } else {
+                        fans.union(c1, n2);
+                        fans.union(n1, c2);
+                    }
+                }
+                [_] => {}
+                _ => {
+                    let [a, b] = self.adjacency.edges[e];
+                    on_non_manifold_edge[a as usize] = true;
+                    on_non_manifold_edge[b as usize] = true;
+                }
+            }
+        }
+        (0..self.adjacency.vertex_offsets.len() - 1)
+            .filter(|&v| {
+                let corners = self.vertex_corners(v);
+                on_non_manifold_edge[v]
+                    || corners.split_first().is_some_and(|(&first, rest)| {
+                        let root = fans.find(first);
+                        rest.iter().any(|&c| fans.find(c) != root)
+                    })
+            })
+            .map(|v| v as u32)
+            .collect()
+    }
+
+    /// The connected component of each face (faces sharing any edge are
+    /// connected), numbered from 0 in order of their first face, and the count.
+    pub fn face_components(&self) -> (Vec<u32>, usize) {
+        let face_count = self.face_count();
+        let mut pieces = UnionFind::new(face_count);
+        for e in 0..self.edge_count() {
+            let corners = self.edge_corners(e);
+            let first = self.corner_faces[corners[0] as usize];
+            for &c in &corners[1..] {
+                pieces.union(first, self.corner_faces[c as usize]);
+            }
+        }
+        let mut label = vec![u32::MAX; face_count];
+        let mut component = Vec::with_capacity(face_count);
+        let mut count = 0u32;
+        for f in 0..face_count as u32 {
+            let root = pieces.find(f) as usize;
+            if label[root] == u32::MAX {
+                label[root] = count;
+                count += 1;
+            }
+            component.push(label[root]);
+        }
+        (component, count as usize)
+    }
+
+    /// Whether each connected component (numbered as by
+    /// [`Topology::face_components`]) is closed: none of its edges is naked
+    /// or non-manifold. [`MeshInfo::is_closed`] is true exactly when every
+    /// component is closed and there is at least one.
+    pub fn component_closed(&self) -> Vec<bool> {
+        let (face_component, component_count) = self.face_components();
+        let mut closed = vec![true; component_count];
+        for e in 0..self.edge_count() {
+            if self.edge_face_count(e) != 2 {
+                // All faces on an edge are in one component: its first face's.
+                let face = self.corner_faces[self.edge_corners(e)[0] as usize];
+                closed[face_component[face as usize] as usize] = false;
+            }
+        }
+        closed
+    }
+
+    /// Number of faces.
+    pub fn face_count(&self) -> usize {
+        self.corner_faces.last().map_or(0, |&f| f as usize + 1)
+    }
+
+    /// Gives every face a winding relative to the first face of its component,
+    /// walking across manifold edges; non-manifold edges do not constrain.
+    pub fn orientation(&self) -> Orientation {
+        let face_count = self.face_count();
+        let (face_component, component_count) = self.face_components();
+        let mut face_flip = vec![false; face_count];
+        let mut component_orientable = vec![true; component_count];
+        let mut visited = vec![false; face_count];
+        let mut face_first_corner = vec![0u32; face_count];
+        for (c, &f) in self.corner_faces.iter().enumerate().rev() {
+            face_first_corner[f as usize] = c as u32;
+        }
+        let mut stack = Vec::new();
+        for seed in 0..face_count {
+            if visited[seed] {
+                continue;
+            }
+            visited[seed] = true;
+            stack.push(seed as u32);
+            while let Some(f) = stack.pop() {
+                let start = face_first_corner[f as usize];
+                let mut c = start;
+                loop {
+                    let e = self.adjacency.corner_edges[c as usize] as usize;
+                    if let &[c1, c2] = self.edge_corners(e) {
+                        let other = if c1 == c { c2 } else { c1 };
+                        let g = self.corner_faces[other as usize] as usize;
+                        // The same start vertex on both sides means both faces run the edge the same way.
+                        let same_direction =
+                            self.face_vertices[c as usize] == self.face_vertices[other as usize];
+                        let wanted = face_flip[f as usize] ^ same_direction;
+                        if g != f as usize {
+                            if !visited[g] {
+                                visited[g] = true;
+                                face_flip[g] = wanted;
+                                stack.push(g as u32);
+                            } else if face_flip[g] != wanted {
+                                component_orientable[face_component[g] as usize] = false;
+                            }
+                        }
+                    }
+                    c = self.corner_next[c as usize];
+                    if c == start {
+                        break;
+                    }
+                }
+            }
+        }
+        Orientation {
+            face_component,
+            face_flip,
+            component_orientable,
+        }
+    }
+
+    /// The counts and flags that `weft info` and `weft_mesh_info` report.
+    pub fn info(&self, mesh: &Mesh) -> MeshInfo {
+        let naked_edge_count = (0..self.edge_count())
+            .filter(|&e| self.is_naked_edge(e))
+            .count();
+        let non_manifold_edge_count = (0..self.edge_count())
+            .filter(|&e| self.is_non_manifold_edge(e))
+            .count();
+        let orientation = self.orientation();
+        let is_oriented = (0..self.edge_count()).all(|e| match self.edge_corners(e) {
+            &[c1, c2] => self.face_vertices[c1 as usize] != self.face_vertices[c2 as usize],
+            _ => true,
+        });
+        MeshInfo {
+            vertex_count: mesh.vertex_count(),
+            edge_count: self.edge_count(),
+            face_count: mesh.face_count(),
+            naked_edge_count,
+            non_manifold_edge_count,
+            non_manifold_vertex_count: self.non_manifold_vertices().len(),
+            component_count: orientation.component_orientable.len(),
+            is_closed: mesh.face_count() > 0
+                && naked_edge_count == 0
+                && non_manifold_edge_count == 0,
+            is_orientable: orientation.component_orientable.iter().all(|&o| o),
+            is_oriented,
+        }
+    }
+}
+
+/// Disjoint sets over `0..n` with path halving and union by size.
+pub(crate) struct UnionFind {
+    parent: Vec<u32>,
+    size: Vec<u32>,
+}
+
+impl UnionFind {
+    pub(crate) fn new(n: usize) -> UnionFind {
+        UnionFind {
+            parent: (0..n as u32).collect(),
+            size: vec![1; n],
+        }
+    }
+
+    pub(crate) fn find(&mut self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            let grandparent = self.parent[self.parent[x as usize] as usize];
+            self.parent[x as usize] = grandparent;
+            x = grandparent;
+        }
+        x
+    }
+
+    pub(crate) fn union(&mut self, a: u32, b: u32) -> u32 {
+        let (mut a, mut b) = (self.find(a), self.find(b));
+        if a == b {
+            return a;
+        }
+        if self.size[a as usize] < self.size[b as usize] {
+            std::mem::swap(&mut a, &mut b);
+        }
+        self.parent[b as usize] = a;
+        self.size[a as usize] += self.size[b as usize];
+        a
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+
+    #[test]
+    fn cube_is_closed_and_orientable() {
+        let cube = shapes::cube();
+        let topology = Topology::new(&cube);
+        let info = topology.info(&cube);
+        assert_eq!(
+            (info.vertex_count, info.edge_count, info.face_count),
+            (8, 12, 6)
+        );
+        assert_eq!(info.naked_edge_count, 0);
+        assert_eq!(info.component_count, 1);
+        assert!(info.is_closed && info.is_orientable && info.is_oriented);
+        assert!(topology.vertex_valences().iter().all(|&v| v == 3));
+    }
+
+    #[test]
+    fn open_grid_counts_its_naked_edges() {
+        let grid = shapes::quad_grid(3, 2);
+        let topology = Topology::new(&grid);
+        let info = topology.info(&grid);
+        assert_eq!(info.edge_count, 3 * 3 + 4 * 2);
+        assert_eq!(info.naked_edge_count, 2 * (3 + 2));
+        assert!(!info.is_closed);
+        assert_eq!(info.non_manifold_vertex_count, 0);
+    }
+
+    #[test]
+    fn fin_and_bow_tie_are_non_manifold() {
+        let fin = shapes::fin();
+        let info = Topology::new(&fin).info(&fin);
+        assert_eq!(info.non_manifold_edge_count, 1);
+        assert_eq!(info.non_manifold_vertex_count, 2);
+        let bow_tie = shapes::bow_tie();
+        let info = Topology::new(&bow_tie).info(&bow_tie);
+        assert_eq!(info.non_manifold_edge_count, 0);
+        assert_eq!(info.non_manifold_vertex_count, 1);
+        // Components are joined through edges: the two fans meet only at a vertex.
+        assert_eq!(info.component_count, 2);
+    }
+
+    #[test]
+    fn flipped_face_is_orientable_but_not_oriented() {
+        let cube = shapes::cube();
+        let mut faces: Vec<Vec<u32>> = cube.faces().map(|f| f.to_vec()).collect();
+        faces[2].reverse();
+        let mesh = Mesh::from_polygons(cube.positions().to_vec(), faces).unwrap();
+        let topology = Topology::new(&mesh);
+        let info = topology.info(&mesh);
+        assert!(info.is_orientable && !info.is_oriented);
+        let orientation = topology.orientation();
+        assert_eq!(orientation.face_flip.iter().filter(|&&f| f).count(), 1);
+        assert!(orientation.face_flip[2]);
+    }
+
+    #[test]
+    fn mobius_strip_is_not_orientable() {
+        let strip = shapes::mobius_strip(8);
+        let info = Topology::new(&strip).info(&strip);
+        assert!(!info.is_orientable);
+        assert_eq!(info.naked_edge_count, 16);
+    }
+
+    #[test]
+    fn find_edge_and_edge_faces_agree() {
+        let cube = shapes::cube();
+        let topology = Topology::new(&cube);
+        for (e, &[a, b]) in topology.edges().iter().enumerate() {
+            assert_eq!(topology.find_edge(b, a), Some(e));
+            assert_eq!(topology.edge_faces(e).len(), 2);
+        }
+        assert_eq!(topology.find_edge(0, 7), None);
+    }
+}

@@ -1,0 +1,104 @@
+use super::*;
+use crate::mesh::shapes;
+use crate::subdivide::catmull_clark;
+use crate::subdivide::rules::{cage_tags, child_tags};
+use crate::subdivide::scheme::NakedEdges;
+use glam::DVec3;
+
+/// Reading a level's gathers from its parent gives what building the
+/// level and reading it gives: every face, edge, rule and ring, on
+/// closed, open, mixed and non-manifold shapes, in every naked-edge mode.
+#[test]
+fn refined_gathers_equal_the_built_level() {
+    let shapes = [
+        shapes::cube(),
+        shapes::quad_grid(3, 2),
+        shapes::quad_grid_with_hole(),
+        shapes::mixed_polygons(),
+        shapes::fin(),
+        shapes::bow_tie(),
+        shapes::mobius_strip(6),
+        shapes::tetrahedron(),
+        // Two triangles on the same three vertices, closed; and the same
+        // quad twice, every edge run the same way by both.
+        crate::Mesh::from_polygons(
+            vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+            [[0u32, 1, 2], [1, 0, 2]],
+        )
+        .unwrap(),
+        crate::Mesh::from_polygons(
+            vec![DVec3::ZERO, DVec3::X, DVec3::ONE, DVec3::Y],
+            [[0u32, 1, 2, 3], [0, 1, 2, 3]],
+        )
+        .unwrap(),
+    ];
+    for (s, mesh) in shapes.iter().enumerate() {
+        for naked in [
+            NakedEdges::Fixed,
+            NakedEdges::Smooth,
+            NakedEdges::CornerFixed,
+        ] {
+            let faces = Faces::of_mesh(mesh);
+            let connectivity = Connectivity::new(&faces).unwrap();
+            let tags = cage_tags(&faces, &connectivity, naked).unwrap();
+            let child = catmull_clark::child_faces(&faces, &connectivity, true).unwrap();
+            let child_connectivity = connectivity
+                .refine(Scheme::CatmullClark, &faces, true)
+                .unwrap();
+            let child_tags =
+                child_tags(Scheme::CatmullClark, &tags, &faces, &child_connectivity).unwrap();
+            let parent = LevelGathers {
+                scheme: Scheme::CatmullClark,
+                faces: &faces,
+                connectivity: &connectivity,
+                tags: &tags,
+            };
+            let refined = RefinedGathers { parent };
+            let built = LevelGathers {
+                scheme: Scheme::CatmullClark,
+                faces: &child,
+                connectivity: &child_connectivity,
+                tags: &child_tags,
+            };
+            let what = format!("shape {s} {naked:?}");
+            let grandchild =
+                catmull_clark::child_faces(&child, &child_connectivity, false).unwrap();
+            assert_eq!(
+                catmull_clark::grandchild_faces(&refined).unwrap().indices,
+                grandchild.indices,
+                "{what}: grandchild faces"
+            );
+            assert_eq!(refined.vertex_count(), built.vertex_count(), "{what}");
+            assert_eq!(refined.edge_count(), built.edge_count(), "{what}");
+            assert_eq!(refined.face_count(), built.face_count(), "{what}");
+            for f in 0..built.face_count() {
+                assert!(refined.face(f).eq(built.face(f)), "{what}: face {f}");
+                let edges: Vec<u32> = (4 * f..4 * f + 4)
+                    .map(|c| child_connectivity.corner_edges[c])
+                    .collect();
+                assert_eq!(refined.quad_edges(f).to_vec(), edges, "{what}: face {f}");
+            }
+            for e in 0..built.edge_count() {
+                assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
+            }
+            for v in 0..built.vertex_count() {
+                let rule = built.rule(v);
+                assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
+                match rule {
+                    VertexRule::Crease => assert_eq!(
+                        refined.crease_neighbours(v),
+                        built.crease_neighbours(v),
+                        "{what}: vertex {v}"
+                    ),
+                    VertexRule::Smooth => {
+                        let (mut a, mut b) = (Vec::new(), Vec::new());
+                        let n = refined.around(v, |u, f| a.push((u, f)));
+                        assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
+                        assert_eq!(a, b, "{what}: vertex {v}");
+                    }
+                    VertexRule::Corner => {}
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,145 @@
+use super::*;
+
+#[test]
+fn connectivity_of_two_triangles() {
+    let faces = Faces {
+        vertex_count: 4,
+        size: 0,
+        offsets: vec![0, 3, 6],
+        indices: vec![0, 1, 2, 0, 2, 3],
+    };
+    let c = Connectivity::new(&faces).unwrap();
+    assert_eq!(c.edges, vec![[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]]);
+    let diagonal = c.edges.iter().position(|&e| e == [0, 2]).unwrap();
+    assert_eq!(c.edge_corners(diagonal), &[2, 3]);
+    assert_eq!(c.vertex_corners(0), &[0, 3]);
+    assert_eq!(c.corner_edges, vec![0, 3, 1, 1, 4, 2]);
+    assert_eq!(c.vertex_edges(2), &[1, 3, 4]);
+}
+
+/// On faces of one size, corners find their face and neighbours by
+/// arithmetic exactly as through the offsets.
+#[test]
+fn uniform_faces_match_their_offsets() {
+    use crate::mesh::shapes;
+    for mesh in [
+        shapes::cube(),
+        shapes::icosahedron(),
+        shapes::quad_grid(3, 2),
+    ] {
+        let uniform = Faces::of_mesh(&mesh);
+        assert_ne!(uniform.size, 0);
+        let general = Faces {
+            size: 0,
+            ..uniform.clone()
+        };
+        let (a, b) = (
+            Connectivity::new(&uniform).unwrap(),
+            Connectivity::new(&general).unwrap(),
+        );
+        assert!(a.corner_faces.is_empty());
+        assert_same(&a, &b, "uniform");
+        for c in 0..uniform.corner_count() {
+            let f = b.face_of(c);
+            assert_eq!(uniform.next(c, f), general.next(c, f), "next of {c}");
+            assert_eq!(uniform.prev(c, f), general.prev(c, f), "prev of {c}");
+            assert_eq!(uniform.face(f), general.face(f));
+        }
+        assert_eq!(uniform.face_count(), general.face_count());
+    }
+    assert_eq!(Faces::of_mesh(&shapes::mixed_polygons()).size, 0);
+}
+
+fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
+    assert_eq!(derived.edges, bucketed.edges, "{what}: edges");
+    let arrays = |c: &Connectivity| {
+        let corner_faces = (0..c.corner_edges.len())
+            .map(|k| c.face_of(k) as u32)
+            .collect();
+        [
+            ("corner faces", corner_faces),
+            ("corner edges", c.corner_edges.clone()),
+            ("edge offsets", c.edge_offsets.clone()),
+            ("edge corners", c.edge_corners.clone()),
+            ("vertex offsets", c.vertex_offsets.clone()),
+            ("vertex corners", c.vertex_corners.clone()),
+            ("vertex edge offsets", c.vertex_edge_offsets.clone()),
+            ("vertex edges", c.vertex_edges.clone()),
+        ]
+    };
+    for ((name, ours), (_, theirs)) in arrays(derived).into_iter().zip(arrays(bucketed)) {
+        assert_eq!(ours, theirs, "{what}: {name}");
+    }
+}
+
+/// The arithmetic child connectivity equals bucketing the child faces,
+/// on closed, open, mixed and non-manifold shapes, over three levels.
+#[test]
+fn refined_connectivity_equals_bucketing() {
+    use crate::mesh::shapes;
+    let pillow = crate::Mesh::from_polygons(
+        vec![crate::DVec3::ZERO, crate::DVec3::X, crate::DVec3::Y],
+        [[0u32, 1, 2], [1, 0, 2]],
+    )
+    .unwrap();
+    let polygons = [
+        ("cube", shapes::cube()),
+        ("grid", shapes::quad_grid(3, 2)),
+        ("grid with hole", shapes::quad_grid_with_hole()),
+        ("mixed", shapes::mixed_polygons()),
+        ("fin", shapes::fin()),
+        ("bow tie", shapes::bow_tie()),
+        ("mobius", shapes::mobius_strip(6)),
+    ];
+    let triangles = [
+        ("tetrahedron", shapes::tetrahedron()),
+        ("icosahedron", shapes::icosahedron()),
+        ("triangle grid", shapes::triangle_grid(3, 2)),
+        ("triangle grid with hole", shapes::triangle_grid_with_hole()),
+        ("pillow", pillow),
+    ];
+    let cases = polygons
+        .into_iter()
+        .map(|(n, m)| (n, m, Scheme::CatmullClark))
+        .chain(
+            triangles
+                .clone()
+                .into_iter()
+                .map(|(n, m)| (n, m, Scheme::Loop)),
+        )
+        .chain(
+            triangles
+                .into_iter()
+                .map(|(n, m)| (n, m, Scheme::CatmullClark)),
+        );
+    for (name, mesh, scheme) in cases {
+        if scheme == Scheme::Loop && mesh.first_non_triangle().is_some() {
+            continue;
+        }
+        let mut faces = Faces::of_mesh(&mesh);
+        let mut connectivity = Connectivity::new(&faces).unwrap();
+        for level in 1..=3 {
+            let child = match scheme {
+                Scheme::CatmullClark => {
+                    super::super::catmull_clark::child_faces(&faces, &connectivity, true)
+                }
+                Scheme::Loop => {
+                    super::super::loop_subdivision::child_faces(&faces, &connectivity, true)
+                }
+            }
+            .unwrap();
+            let derived = connectivity.refine(scheme, &faces, true).unwrap();
+            // Bucketed through the offsets, not the faces' uniform size.
+            let offsets_only = Faces {
+                size: 0,
+                ..child.clone()
+            };
+            assert_same(
+                &derived,
+                &Connectivity::new(&offsets_only).unwrap(),
+                &format!("{name} {scheme:?} level {level}"),
+            );
+            (faces, connectivity) = (child, derived);
+        }
+    }
+}
