@@ -8,8 +8,10 @@
 //!   [`triangulate`](mesh::triangulate) and named [`shapes`](mesh::shapes).
 //! - [`subdivide`]: Catmull-Clark and Loop with the naked-edge modes, and the
 //!   refiner that re-evaluates new positions on a fixed topology.
-//! - [`mend`]: [`weld`](mend::weld) (join, weld), [`t_nodes`](mend::t_nodes),
-//!   [`cull`](mend::cull), [`orient`](mend::orient).
+//! - [`mend`]: [`weld`](mend::weld) (join, weld, the relative tolerance,
+//!   unused vertices), [`t_nodes`](mend::t_nodes), [`cull`](mend::cull),
+//!   [`orient`](mend::orient) (unify, outward), [`matching`](mend::matching)
+//!   (picked points and lines to vertices and edges).
 //! - [`make`]: [`plane`](make::plane), [`delaunay`](make::delaunay),
 //!   [`voronoi`](make::voronoi), [`grid`](make::grid),
 //!   [`stellate`](make::stellate), [`primitives`](make::primitives).

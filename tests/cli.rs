@@ -820,12 +820,25 @@ fn weld_joins_inputs_and_cull_removes_twins() {
     let cube = shapes::cube();
     let mut shifted = cube.clone();
     for p in shifted.positions_mut() {
-        p.x += 1.0 + 1e-4; // a seam within the default tolerance
+        p.x += 1.0 + 1e-4; // a seam within the tolerance given below
     }
     io::write_mesh(dir.join("a.obj"), &cube).unwrap();
     io::write_mesh(dir.join("b.stl"), &shifted).unwrap();
 
-    let o = weft(&dir, &["weld", "a.obj", "b.stl", "-o", "boxes.ply"]);
+    // An explicit tolerance is absolute (the default, a millionth of the
+    // diagonal, would keep this seam open).
+    let o = weft(
+        &dir,
+        &[
+            "weld",
+            "a.obj",
+            "b.stl",
+            "-o",
+            "boxes.ply",
+            "--tolerance",
+            "0.001",
+        ],
+    );
     assert_exit(&o, 0);
     let boxes = io::read_mesh(dir.join("boxes.ply")).unwrap();
     // Two cubes sharing a face: 12 vertices; the STL cube came as 12 triangles.
@@ -1996,7 +2009,7 @@ fn demo_image_sets_the_fading_heights() {
             io::read_mesh(dir.join("black").join("fading-panels.obj")).unwrap()
         );
     }
-    let apexes = 82; // one per diamond panel
+    let apexes = 112; // one per diamond panel
 
     // The built-in gradient rises from left to right: every apex but the
     // darkest moves, the ones on the right most.
