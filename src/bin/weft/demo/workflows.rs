@@ -157,12 +157,7 @@ pub fn t_nodes(demo: &mut Demo) -> Step<()> {
         surface_patch(3.0, 6.0, 4, 0.0, 5.0, 10, false)?,
         surface_patch(6.0, 9.0, 4, 0.0, 5.0, 6, false)?,
     ];
-    let refs: Vec<&Mesh> = parts.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&parts)?;
     // The seams are curved: a vertex of one strip lies on the curve, off the
     // straight edge of the other by up to about 0.02.
     let tolerance = 0.05;
@@ -329,12 +324,7 @@ pub fn boxes(demo: &mut Demo) -> Step<()> {
             cube
         })
         .collect();
-    let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&cubes)?;
     demo.save(
         "boxes-welded",
         &format!("{} boxes joined and welded", cells.len()),
@@ -416,12 +406,7 @@ fn l_block(height: f64) -> Step<Mesh> {
             cube
         })
         .collect();
-    let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&cubes)?;
     let (culled, _) = weft::cull::cull_adjacent(&welded);
     Ok(weft::weld::remove_unused_vertices(&culled).0)
 }
@@ -520,4 +505,16 @@ pub fn creases(demo: &mut Demo) -> Step<()> {
         &coloured,
     )?;
     Ok(())
+}
+
+/// The parts joined into one mesh and welded at the default tolerance, as a
+/// designer's Join and Weld components do.
+fn join_and_weld(parts: &[Mesh]) -> Step<Mesh> {
+    let refs: Vec<&Mesh> = parts.iter().collect();
+    let joined = op("join", weft::weld::join(&refs))?;
+    let (welded, _) = op(
+        "weld",
+        weft::weld::weld(&joined, weft::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    Ok(welded)
 }
