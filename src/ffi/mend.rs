@@ -456,8 +456,9 @@ pub unsafe extern "C" fn weft_naked_boundaries(
     out_point_total: *mut usize,
     out_polyline_count: *mut usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_points`, `out_point_counts`, `out_closed`, `out_point_total` and `out_polyline_count` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `out_points`, `out_point_counts`, `out_closed`, `out_point_total` and
+    // `out_polyline_count` are as the `# Safety` section above requires; each is checked for NULL
+    // before it is used.
     unsafe {
         guard(|| {
             let total_out = out_param(out_point_total, "out_point_total")?;
