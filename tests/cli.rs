@@ -50,15 +50,21 @@ fn assert_exit(o: &Output, code: i32) {
     );
 }
 
+/// Runs `weft` in `dir`, checks that it exits 0, and gives its stdout.
+#[track_caller]
+fn succeeds(dir: &Path, args: &[&str]) -> String {
+    let o = weft(dir, args);
+    assert_exit(&o, 0);
+    stdout(&o)
+}
+
 #[test]
 fn info_reports_counts_and_properties() {
     let dir = folder("info");
     io::write_mesh(dir.join("torus.obj"), &shapes::torus(8, 6)).unwrap();
     io::write_mesh(dir.join("hole.ply"), &shapes::quad_grid_with_hole()).unwrap();
 
-    let o = weft(&dir, &["info", "torus.obj"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["info", "torus.obj"]);
     assert_mentions(
         &text,
         &[
@@ -71,9 +77,7 @@ fn info_reports_counts_and_properties() {
         ],
     );
 
-    let o = weft(&dir, &["info", "hole.ply", "--json"]);
-    assert_exit(&o, 0);
-    let json = stdout(&o);
+    let json = succeeds(&dir, &["info", "hole.ply", "--json"]);
     assert!(
         json.trim_start().starts_with('{') && json.trim_end().ends_with('}'),
         "{json}"
@@ -256,9 +260,7 @@ const COMMANDS: [&str; 29] = [
 #[test]
 fn help_on_every_command_has_an_example() {
     let dir = folder("help");
-    let o = weft(&dir, &["--help"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["--help"]);
     // The commands `weft --help` lists, in its order, are exactly these.
     let listed: Vec<&str> = text
         .split("Commands:\n")
@@ -272,9 +274,7 @@ fn help_on_every_command_has_an_example() {
     assert_eq!(listed, COMMANDS, "{text}");
 
     for command in COMMANDS {
-        let o = weft(&dir, &[command, "--help"]);
-        assert_exit(&o, 0);
-        let text = stdout(&o);
+        let text = succeeds(&dir, &[command, "--help"]);
         let examples = text
             .split_once("\nExample")
             .map(|(_, rest)| rest)
@@ -949,9 +949,7 @@ fn t_nodes_are_listed_and_repaired() {
          f 1 2 3 4\nf 2 5 7 6\nf 6 7 8 3\n",
     )
     .unwrap();
-    let o = weft(&dir, &["t-nodes", "t.obj", "--repair", "fixed.obj"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["t-nodes", "t.obj", "--repair", "fixed.obj"]);
     assert!(text.contains("1 T-nodes"), "{text}");
     assert!(
         text.contains("vertex 5 lies on edge 1-2 of face 0"),
@@ -1786,9 +1784,7 @@ fn info_reports_non_manifold_fins_and_vertices() {
     )
     .unwrap();
 
-    let o = weft(&dir, &["info", "fin.obj"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["info", "fin.obj"]);
     assert_mentions(
         &text,
         &[
@@ -1801,17 +1797,13 @@ fn info_reports_non_manifold_fins_and_vertices() {
             "  closed                no\n",
         ],
     );
-    let o = weft(&dir, &["info", "fin.obj", "--json"]);
-    assert_exit(&o, 0);
-    let json = stdout(&o);
+    let json = succeeds(&dir, &["info", "fin.obj", "--json"]);
     assert_eq!(json_number(&json, "non_manifold_edges"), 1.0, "{json}");
     assert_eq!(json_number(&json, "non_manifold_vertices"), 2.0, "{json}");
     assert_eq!(json_number(&json, "naked_edges"), 9.0, "{json}");
     assert!(json.contains("\"closed\": false"), "{json}");
 
-    let o = weft(&dir, &["info", "bowtie.obj"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["info", "bowtie.obj"]);
     assert!(
         text.contains("  non-manifold edges    0\n  non-manifold vertices 1\n"),
         "{text}"
@@ -1838,9 +1830,7 @@ fn info_reports_planarity() {
         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0.2\nv 2 0 0\nv 2 1 0\nf 1 2 3 4\nf 2 5 6 3\n",
     )
     .unwrap();
-    let o = weft(&dir, &["info", "bent.obj"]);
-    assert_exit(&o, 0);
-    let text = stdout(&o);
+    let text = succeeds(&dir, &["info", "bent.obj"]);
     let line = text
         .lines()
         .find(|l| l.trim_start().starts_with("planarity"))
@@ -1849,9 +1839,7 @@ fn info_reports_planarity() {
         line.contains("1 of 2 faces beyond 0.001 of their best-fit plane (largest deviation 5."),
         "{line}"
     );
-    let o = weft(&dir, &["info", "bent.obj", "--json"]);
-    assert_exit(&o, 0);
-    let json = stdout(&o);
+    let json = succeeds(&dir, &["info", "bent.obj", "--json"]);
     assert!(
         json.contains("\"planarity\": {\"tolerance\": 0.001, \"non_planar_faces\": 1, "),
         "{json}"

@@ -205,3 +205,35 @@ fn the_constant_check_catches_a_new_a_moved_and_a_lost_constant() {
         ]
     );
 }
+
+#[test]
+fn the_header_reads_in_the_order_of_the_families() {
+    // One export of each family, in the order a reader meets them: the mesh,
+    // subdivision, the refiner, creases, mending, making, the toolbar.
+    let header = include_str!("../include/weft.h");
+    let families = [
+        "weft_mesh_new(",
+        "weft_catmull_clark(",
+        "weft_refiner_new(",
+        "weft_subdivide_ex(",
+        "weft_weld(",
+        "weft_delaunay(",
+        "weft_split_polygons(",
+    ];
+    let positions: Vec<usize> = families
+        .iter()
+        .map(|name| {
+            header
+                .find(name)
+                .unwrap_or_else(|| panic!("{name} is not in the header"))
+        })
+        .collect();
+    for (pair, names) in positions.windows(2).zip(families.windows(2)) {
+        assert!(
+            pair[0] < pair[1],
+            "{} comes after {} in include/weft.h; order the modules in src/ffi/mod.rs",
+            names[0],
+            names[1]
+        );
+    }
+}

@@ -228,8 +228,8 @@ pub unsafe extern "C" fn weft_subdivision_counts(
     out_face_count: *mut usize,
     out_index_count: *mut usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_vertex_count`, `out_face_count` and `out_index_count` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `out_vertex_count`, `out_face_count` and `out_index_count` are as the
+    // `# Safety` section above requires; each is checked for NULL before it is used.
     unsafe {
         guard(|| {
             let vertices = out_param(out_vertex_count, "out_vertex_count")?;
@@ -343,8 +343,8 @@ pub unsafe extern "C" fn weft_subdivide_face_varying(
     out_values: *mut f64,
     capacity: usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `options`, `values`, `value_indices` and `out_values` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `options`, `values`, `value_indices` and `out_values` are as the `# Safety`
+    // section above requires; each is checked for NULL before it is used.
     unsafe {
         guard(|| {
             let linear = face_varying_arg(face_varying_linear)?;
@@ -482,8 +482,8 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh(
     capacity: usize,
     out_crease_count: *mut usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_welded`, `out_pairs` and `out_crease_count` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `out_welded`, `out_pairs` and `out_crease_count` are as the `# Safety`
+    // section above requires; each is checked for NULL before it is used.
     unsafe {
         guard(|| {
             crease_edges(
@@ -529,8 +529,8 @@ pub unsafe extern "C" fn weft_crease_edges_from_mesh_ex(
     out_vertex_map: *mut u32,
     vertex_map_capacity: usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_welded`, `out_pairs`, `out_crease_count` and `out_vertex_map` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `out_welded`, `out_pairs`, `out_crease_count` and `out_vertex_map` are as
+    // the `# Safety` section above requires; each is checked for NULL before it is used.
     unsafe {
         guard(|| {
             crease_edges(

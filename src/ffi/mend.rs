@@ -427,6 +427,28 @@ unsafe fn write_vectors(
     }
 }
 
+/// The body of the normal exports: checks that `out_normals` has room for
+/// `count(mesh)` vectors before computing them, then copies them in.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_normals` has room for `capacity`
+/// doubles (or is NULL with 0).
+unsafe fn normals_op(
+    mesh: *const WeftMesh,
+    out_normals: *mut f64,
+    capacity: usize,
+    count: impl FnOnce(&Mesh) -> usize,
+    compute: impl FnOnce(&Mesh) -> Vec<glam::DVec3>,
+) -> WeftStatus {
+    guard(|| {
+        // SAFETY: `mesh` is NULL or a live handle, as the caller promises.
+        let mesh = unsafe { mesh_ref(mesh, "mesh") }?;
+        check_room("out_normals", capacity, count(mesh) * 3)?;
+        // SAFETY: `out_normals` has room for `capacity` doubles, as the caller promises.
+        unsafe { write_vectors(&compute(mesh), out_normals, capacity, "out_normals") }
+    })
+}
+
 /// Computes the unit normal of each face by Newell's method (robust on
 /// non-planar polygons); a face of zero area gets (0, 0, 0).
 ///
@@ -447,16 +469,13 @@ pub unsafe extern "C" fn weft_face_normals(
     // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        guard(|| {
-            let mesh = mesh_ref(mesh, "mesh")?;
-            check_room("out_normals", capacity, mesh.face_count() * 3)?;
-            write_vectors(
-                &analysis::face_normals(mesh),
-                out_normals,
-                capacity,
-                "out_normals",
-            )
-        })
+        normals_op(
+            mesh,
+            out_normals,
+            capacity,
+            Mesh::face_count,
+            analysis::face_normals,
+        )
     }
 }
 
@@ -482,16 +501,13 @@ pub unsafe extern "C" fn weft_vertex_normals(
     // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        guard(|| {
-            let mesh = mesh_ref(mesh, "mesh")?;
-            check_room("out_normals", capacity, mesh.vertex_count() * 3)?;
-            write_vectors(
-                &analysis::vertex_normals(mesh),
-                out_normals,
-                capacity,
-                "out_normals",
-            )
-        })
+        normals_op(
+            mesh,
+            out_normals,
+            capacity,
+            Mesh::vertex_count,
+            analysis::vertex_normals,
+        )
     }
 }
 
@@ -565,8 +581,9 @@ pub unsafe extern "C" fn weft_naked_boundaries(
     out_point_total: *mut usize,
     out_polyline_count: *mut usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_points`, `out_point_counts`, `out_closed`, `out_point_total` and `out_polyline_count` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `mesh`, `out_points`, `out_point_counts`, `out_closed`, `out_point_total` and
+    // `out_polyline_count` are as the `# Safety` section above requires; each is checked for NULL
+    // before it is used.
     unsafe {
         guard(|| {
             let total_out = out_param(out_point_total, "out_point_total")?;

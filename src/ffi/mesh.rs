@@ -145,8 +145,8 @@ pub unsafe extern "C" fn weft_mesh_new(
     index_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
-    // SAFETY: `positions`, `face_sizes`, `face_indices` and `out_mesh` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // SAFETY: `positions`, `face_sizes`, `face_indices` and `out_mesh` are as the `# Safety`
+    // section above requires; each is checked for NULL before it is used.
     unsafe {
         make_mesh(out_mesh, || {
             // Every count is checked before any buffer is viewed: a slice longer

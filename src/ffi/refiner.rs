@@ -10,6 +10,7 @@ use crate::ffi::boundary::{
 use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
+use crate::mesh::Mesh;
 use crate::subdivide::Refiner;
 
 /// The subdivision of one cage topology, planned for every level. Create it
@@ -24,6 +25,27 @@ impl WeftRefiner {
     pub(crate) fn boxed(refiner: Refiner) -> *mut WeftRefiner {
         Box::into_raw(Box::new(WeftRefiner { refiner }))
     }
+}
+
+/// Runs an export that plans a refiner of `cage`: checks `out_refiner`
+/// first and writes the new handle only on success.
+///
+/// # Safety
+/// `cage` is NULL or a live handle; `out_refiner` is NULL or writable.
+unsafe fn refiner_op(
+    cage: *const WeftMesh,
+    out_refiner: *mut *mut WeftRefiner,
+    plan: impl FnOnce(&Mesh) -> Result<Refiner, Failure>,
+) -> WeftStatus {
+    guard(|| {
+        let out = out_param(out_refiner, "out_refiner")?;
+        // SAFETY: `cage` is NULL or a live handle, as the caller promises.
+        let cage = unsafe { mesh_ref(cage, "cage") }?;
+        let refiner = plan(cage)?;
+        // SAFETY: `out` is the caller's writable `out_refiner`, checked not NULL.
+        unsafe { *out = WeftRefiner::boxed(refiner) };
+        Ok(())
+    })
 }
 
 /// Plans `levels` steps of `scheme` on the faces of `cage`: everything that
@@ -52,14 +74,10 @@ pub unsafe extern "C" fn weft_refiner_new(
     // SAFETY: `cage` and `out_refiner` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        guard(|| {
-            let out = out_param(out_refiner, "out_refiner")?;
-            let cage = mesh_ref(cage, "cage")?;
+        refiner_op(cage, out_refiner, |cage| {
             let scheme = scheme_arg(scheme)?;
             let naked_edges = naked_edges_arg(naked_edges)?;
-            let refiner = Refiner::new(cage, scheme, levels, naked_edges)?;
-            *out = Box::into_raw(Box::new(WeftRefiner { refiner }));
-            Ok(())
+            Ok(Refiner::new(cage, scheme, levels, naked_edges)?)
         })
     }
 }
@@ -89,13 +107,9 @@ pub unsafe extern "C" fn weft_refiner_new_ex(
     // SAFETY: `cage`, `options` and `out_refiner` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        guard(|| {
-            let out = out_param(out_refiner, "out_refiner")?;
-            let cage = mesh_ref(cage, "cage")?;
+        refiner_op(cage, out_refiner, |cage| {
             let (scheme, options) = options_arg(options)?;
-            let refiner = Refiner::with_options(cage, scheme, levels, &options)?;
-            *out = WeftRefiner::boxed(refiner);
-            Ok(())
+            Ok(Refiner::with_options(cage, scheme, levels, &options)?)
         })
     }
 }

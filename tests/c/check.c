@@ -5,6 +5,17 @@
 
 int check_failures = 0;
 
+const double cube_positions[24] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
+const uint32_t cube_sizes[6] = {4, 4, 4, 4, 4, 4};
+const uint32_t cube_indices[24] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
+
+WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t *sizes, size_t face_count,
+                    const uint32_t *indices, size_t index_count) {
+  WeftMesh *mesh = NULL;
+  CHECK_STATUS(weft_mesh_new(positions, vertex_count, sizes, face_count, indices, index_count, &mesh), WEFT_STATUS_OK);
+  return mesh;
+}
+
 void check_report(const char *file, int line, const char *what) {
   check_failures++;
   fprintf(stderr, "%s:%d: check failed: %s\n", file, line, what);

@@ -13,6 +13,16 @@ int check_summary(const char *program);
 /* True when `message` contains `needle` (and reports it otherwise). */
 int check_contains(const char *file, int line, const char *message, const char *needle);
 
+/* The unit cube: vertex i at (i & 1, (i >> 1) & 1, (i >> 2) & 1), six quads
+ * wound outwards. */
+extern const double cube_positions[24];
+extern const uint32_t cube_sizes[6];
+extern const uint32_t cube_indices[24];
+/* A mesh made from caller buffers with weft_mesh_new; a failure to make it
+ * is a failed check (and NULL). */
+WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t *sizes, size_t face_count,
+                    const uint32_t *indices, size_t index_count);
+
 #define CHECK(cond) ((cond) ? (void)0 : check_report(__FILE__, __LINE__, #cond))
 #define CHECK_STATUS(call, expected) \
   do { WeftStatus check_s_ = (call); if (check_s_ != (expected)) { \

@@ -6,9 +6,6 @@
 
 #include "check.h"
 
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 
 /* The unit cube moved by `dx` along x. */
 static WeftMesh *make_cube(double dx) {

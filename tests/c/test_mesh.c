@@ -5,17 +5,8 @@
 
 #include "check.h"
 
-static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-                                        0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 
-static WeftMesh *make_cube(void) {
-  WeftMesh *mesh = NULL;
-  CHECK_STATUS(weft_mesh_new(cube_positions, 8, cube_sizes, 6, cube_indices, 24, &mesh), WEFT_STATUS_OK);
-  return mesh;
-}
+static WeftMesh *make_cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
 
 static void test_construction_and_accessors(void) {
   WeftMesh *mesh = make_cube();

@@ -8,11 +8,6 @@
 
 #include "check.h"
 
-static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-                                        0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 
 /* A 2 x 2 grid of unit quads in z = 0, vertex (i, j) = 3 j + i, bent up
  * in the middle so that smoothing moves its border. */
@@ -20,12 +15,6 @@ static const double grid_positions[] = {0, 0, 0, 1, 0, 0.5, 2, 0, 0, 0, 1, 0.5, 
                                         2, 1, 0.5, 0, 2, 0, 1, 2, 0.5, 2, 2, 0};
 static const uint32_t grid_sizes[] = {4, 4, 4, 4};
 static const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7};
-
-static WeftMesh *make(const double *p, size_t nv, const uint32_t *s, size_t nf, const uint32_t *i, size_t ni) {
-  WeftMesh *mesh = NULL;
-  CHECK_STATUS(weft_mesh_new(p, nv, s, nf, i, ni, &mesh), WEFT_STATUS_OK);
-  return mesh;
-}
 
 /* The octahedron of the unit axis points, every triangle wound outwards:
  * vertex 0 is +x, 1 -x, 2 +y, 3 -y, 4 +z, 5 -z. */
@@ -42,12 +31,12 @@ static const uint32_t tri_grid_indices[] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4,
 /* Its border, counter-clockwise: the original boundary polyline. */
 static const uint32_t tri_grid_border[] = {0, 1, 2, 5, 8, 7, 6, 3};
 
-static WeftMesh *cube(void) { return make(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
-static WeftMesh *grid(void) { return make(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
+static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
+static WeftMesh *grid(void) { return make_mesh(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
 static WeftMesh *octahedron(void) {
-  return make(octahedron_positions, 6, octahedron_sizes, 8, octahedron_indices, 24);
+  return make_mesh(octahedron_positions, 6, octahedron_sizes, 8, octahedron_indices, 24);
 }
-static WeftMesh *tri_grid(void) { return make(grid_positions, 9, tri_grid_sizes, 8, tri_grid_indices, 24); }
+static WeftMesh *tri_grid(void) { return make_mesh(grid_positions, 9, tri_grid_sizes, 8, tri_grid_indices, 24); }
 
 static int compare_edges(const void *a, const void *b) {
   const uint32_t *x = a, *y = b;
@@ -368,7 +357,7 @@ static void test_refiner(void) {
   for (i = 0; i < 24; ++i) moved[i] = 2.0 * cube_positions[i] + (double)(i % 5);
   out = malloc(3 * n * sizeof(double));
   CHECK_STATUS(weft_refiner_evaluate(refiner, moved, 8, out, 3 * n), WEFT_STATUS_OK);
-  moved_cube = make(moved, 8, cube_sizes, 6, cube_indices, 24);
+  moved_cube = make_mesh(moved, 8, cube_sizes, 6, cube_indices, 24);
   CHECK_STATUS(weft_catmull_clark(moved_cube, 2, WEFT_NAKED_EDGES_SMOOTH, &one_shot), WEFT_STATUS_OK);
   CHECK(memcmp(out, weft_mesh_positions(one_shot), 3 * n * sizeof(double)) == 0);
   CHECK_STATUS(weft_refiner_evaluate(refiner, moved, 7, out, 3 * n), WEFT_STATUS_COUNT_MISMATCH);
@@ -428,7 +417,7 @@ static void test_triangulate_with_parents_and_as_triangles(void) {
   const uint32_t sizes[] = {4, 3, 5};
   const uint32_t indices[] = {0, 1, 2, 3, 1, 4, 5, 2, 1, 5, 6, 7};
   const uint32_t expected_parents[] = {0, 0, 1, 2, 2, 2};
-  WeftMesh *mesh = make(positions, 8, sizes, 3, indices, 12), *triangles = NULL, *again = NULL, *copy = NULL;
+  WeftMesh *mesh = make_mesh(positions, 8, sizes, 3, indices, 12), *triangles = NULL, *again = NULL, *copy = NULL;
   uint32_t parents[7] = {99, 99, 99, 99, 99, 99, 99};
   size_t split = 99;
 

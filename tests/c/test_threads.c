@@ -14,9 +14,6 @@
 #define THREADS 8
 #define ROUNDS 25
 
-static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 /* Two triangles; vertex 4 lies on edge 1-2 of the first: one T-node. */
 static const double t_node_positions[] = {0, 0, 0, 2, 0, 0, 2, 2, 0, 4, 0, 0, 2, 0.5, 0};
 static const uint32_t t_node_sizes[] = {3, 3};

@@ -5,11 +5,6 @@
 
 #include "check.h"
 
-static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-                                        0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1};
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-                                        2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 static const double tetra_positions[] = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1};
 static const uint32_t tetra_sizes[] = {3, 3, 3, 3};
 static const uint32_t tetra_indices[] = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
@@ -19,14 +14,9 @@ static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1
 static const uint32_t grid_sizes[] = {4, 4, 4, 4};
 static const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7};
 
-static WeftMesh *make(const double *p, size_t v, const uint32_t *s, size_t f, const uint32_t *i, size_t n) {
-  WeftMesh *mesh = NULL;
-  CHECK_STATUS(weft_mesh_new(p, v, s, f, i, n, &mesh), WEFT_STATUS_OK);
-  return mesh;
-}
-static WeftMesh *cube(void) { return make(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
-static WeftMesh *tetra(void) { return make(tetra_positions, 4, tetra_sizes, 4, tetra_indices, 12); }
-static WeftMesh *grid(void) { return make(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
+static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
+static WeftMesh *tetra(void) { return make_mesh(tetra_positions, 4, tetra_sizes, 4, tetra_indices, 12); }
+static WeftMesh *grid(void) { return make_mesh(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
 
 /* Checks a result's counts and frees it. */
 static void expect(WeftMesh *mesh, size_t vertices, size_t faces) {
@@ -87,7 +77,7 @@ static void test_smoothing(void) {
     double p[27];
     memcpy(p, grid_positions, sizeof p);
     p[4 * 3 + 2] = 1.0; /* lift the middle vertex: its normal is +z */
-    bumped = make(p, 9, grid_sizes, 4, grid_indices, 16);
+    bumped = make_mesh(p, 9, grid_sizes, 4, grid_indices, 16);
     CHECK_STATUS(weft_laplacian_hc_smooth_ex(bumped, 1, 0.0, 0.6, WEFT_NAKED_EDGES_SMOOTH, WEFT_SMOOTH_DIRECTION_FREE,
                                              activation, 9, &out),
                  WEFT_STATUS_OK);

@@ -157,12 +157,7 @@ pub fn t_nodes(demo: &mut Demo) -> Step<()> {
         surface_patch(3.0, 6.0, 4, 0.0, 5.0, 10, false)?,
         surface_patch(6.0, 9.0, 4, 0.0, 5.0, 6, false)?,
     ];
-    let refs: Vec<&Mesh> = parts.iter().collect();
-    let joined = op("join", weft::mend::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&parts)?;
     // The seams are curved: a vertex of one strip lies on the curve, off the
     // straight edge of the other by up to about 0.02.
     let tolerance = 0.05;
@@ -346,12 +341,7 @@ pub fn boxes(demo: &mut Demo) -> Step<()> {
             cube
         })
         .collect();
-    let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::mend::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&cubes)?;
     // Cut away above the middle of the first layer: the walls inside show.
     let cut = render::Section {
         point: DVec3::new(0.0, 0.0, 0.6),
@@ -445,12 +435,7 @@ fn l_block(height: f64) -> Step<Mesh> {
             cube
         })
         .collect();
-    let refs: Vec<&Mesh> = cubes.iter().collect();
-    let joined = op("join", weft::mend::weld::join(&refs))?;
-    let (welded, _) = op(
-        "weld",
-        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
-    )?;
+    let welded = join_and_weld(&cubes)?;
     let (culled, _) = weft::mend::cull::cull_adjacent(&welded);
     Ok(weft::mend::weld::remove_unused_vertices(&culled).0)
 }
@@ -549,4 +534,16 @@ pub fn creases(demo: &mut Demo) -> Step<()> {
         &coloured,
     )?;
     Ok(())
+}
+
+/// The parts joined into one mesh and welded at the default tolerance, as a
+/// designer's Join and Weld components do.
+fn join_and_weld(parts: &[Mesh]) -> Step<Mesh> {
+    let refs: Vec<&Mesh> = parts.iter().collect();
+    let joined = op("join", weft::mend::weld::join(&refs))?;
+    let (welded, _) = op(
+        "weld",
+        weft::mend::weld::weld(&joined, weft::mend::weld::DEFAULT_WELD_TOLERANCE),
+    )?;
+    Ok(welded)
 }
