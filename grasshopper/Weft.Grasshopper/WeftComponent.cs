@@ -275,6 +275,14 @@ namespace Weft.Grasshopper
         {
             DA.SetData(index, RhinoMeshes.FromWeft(mesh));
         }
+
+        /// <summary>A warning balloon when welding at <paramref name="tolerance"/> collapsed faces.</summary>
+        protected void WarnOfCollapse(WeftWeldReport report, int faceCount, double tolerance)
+        {
+            if (report.RemovedFaceCount == 0) return;
+            AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "Welding at " + tolerance + " collapsed "
+                + report.RemovedFaceCount + " of " + faceCount + " faces (their corners merged); a smaller T keeps them.");
+        }
     }
 
     /// <summary>
@@ -398,14 +406,6 @@ namespace Weft.Grasshopper
         protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
         {
             return operation(mesh, Get(DA, 1, 0.25));
-        }
-
-        /// <summary>A warning balloon when welding at <paramref name="tolerance"/> collapsed faces.</summary>
-        protected void WarnOfCollapse(WeftWeldReport report, int faceCount, double tolerance)
-        {
-            if (report.RemovedFaceCount == 0) return;
-            AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, "Welding at " + tolerance + " collapsed "
-                + report.RemovedFaceCount + " of " + faceCount + " faces (their corners merged); a smaller T keeps them.");
         }
     }
 }

@@ -11,15 +11,15 @@
 
 #define FOLDER "tests/c/build/"
 
-static const double cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
+static const double exact_cube_positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
                                         0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1.0000000000000002};
-static const uint32_t cube_sizes[] = {4, 4, 4, 4, 4, 4};
-static const uint32_t cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
+static const uint32_t exact_cube_sizes[] = {4, 4, 4, 4, 4, 4};
+static const uint32_t exact_cube_indices[] = {0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
                                         2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5};
 
-static WeftMesh *make_cube(void) {
+static WeftMesh *make_exact_cube(void) {
   WeftMesh *mesh = NULL;
-  CHECK_STATUS(weft_mesh_new(cube_positions, 8, cube_sizes, 6, cube_indices, 24, &mesh), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_mesh_new(exact_cube_positions, 8, exact_cube_sizes, 6, exact_cube_indices, 24, &mesh), WEFT_STATUS_OK);
   return mesh;
 }
 
@@ -35,14 +35,14 @@ static void write_text(const char *path, const char *text) {
 static void test_round_trips(void) {
   static const char *const paths[] = {FOLDER "files-cube.obj", FOLDER "files-cube.ply", FOLDER "files-cube.off",
                                       FOLDER "files-cube.OBJ"};
-  WeftMesh *cube = make_cube();
+  WeftMesh *cube = make_exact_cube();
   for (size_t i = 0; i < sizeof paths / sizeof paths[0]; i++) {
     WeftMesh *back = NULL;
     CHECK_STATUS(weft_write_mesh_file(cube, paths[i]), WEFT_STATUS_OK);
     CHECK_STATUS(weft_read_mesh_file(paths[i], &back), WEFT_STATUS_OK);
     CHECK(weft_mesh_vertex_count(back) == 8 && weft_mesh_face_count(back) == 6);
-    CHECK(back && memcmp(weft_mesh_positions(back), cube_positions, sizeof cube_positions) == 0);
-    CHECK(back && memcmp(weft_mesh_face_indices(back), cube_indices, sizeof cube_indices) == 0);
+    CHECK(back && memcmp(weft_mesh_positions(back), exact_cube_positions, sizeof exact_cube_positions) == 0);
+    CHECK(back && memcmp(weft_mesh_face_indices(back), exact_cube_indices, sizeof exact_cube_indices) == 0);
     weft_mesh_free(back);
   }
   /* STL holds triangles, one vertex per corner. */
@@ -55,7 +55,7 @@ static void test_round_trips(void) {
 }
 
 static void test_errors(void) {
-  WeftMesh *cube = make_cube(), *untouched = (WeftMesh *)&untouched, *mesh = untouched;
+  WeftMesh *cube = make_exact_cube(), *untouched = (WeftMesh *)&untouched, *mesh = untouched;
   CHECK_STATUS(weft_read_mesh_file(NULL, &mesh), WEFT_STATUS_NULL_POINTER);
   CHECK_MESSAGE("path is NULL");
   CHECK_STATUS(weft_read_mesh_file(FOLDER "files-cube.obj", NULL), WEFT_STATUS_NULL_POINTER);
