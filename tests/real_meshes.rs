@@ -565,3 +565,31 @@ fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
         std::fs::read(dir.join("welded.obj")).unwrap()
     );
 }
+
+#[test]
+fn smoothing_and_rerouting_keep_the_faces_materials() {
+    let dir = scratch("toolbar-materials");
+    std::fs::write(dir.join("panels.obj"), MATERIAL_OBJ).unwrap();
+    for (out, args) in [
+        (
+            "smooth.obj",
+            vec!["smooth", "panels.obj", "smooth.obj", "--iterations", "2"],
+        ),
+        (
+            "reroute.obj",
+            vec!["reroute", "panels.obj", "reroute.obj", "--shift", "1"],
+        ),
+    ] {
+        let (code, err) = weft_in(&dir, &args);
+        assert_eq!(code, 0, "{err}");
+        let file =
+            weft::io::parse_mesh_file(Format::Obj, &std::fs::read(dir.join(out)).unwrap()).unwrap();
+        let materials = file.materials.expect("materials kept");
+        assert_eq!(materials.names, ["glass pane", "steel"], "{out}");
+        assert_eq!(
+            materials.face_materials,
+            [weft::io::NO_MATERIAL, 0, 1],
+            "{out}"
+        );
+    }
+}

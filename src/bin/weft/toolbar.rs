@@ -22,7 +22,9 @@ use choices::{
 };
 
 use crate::args::{mesh_path, InOut, NakedEdgesArg};
-use crate::files::{operation_failed, read, with_progress, write};
+use crate::files::{
+    operation_failed, read, read_file_or_mesh, require_faces, with_progress, write, write_file,
+};
 use crate::{Cli, Failure};
 use weft::io;
 use weft::subdivide::NakedEdges;
@@ -339,6 +341,38 @@ fn apply(
     write(&files.output, &result, &io::WriteOptions::default())
 }
 
+/// As [`apply`], for the commands whose output faces are the input's, one
+/// for one and in order (smoothing, offsetting, rerouting): the OBJ's
+/// materials stay with their faces.
+fn apply_keeping_faces(
+    cli: &Cli,
+    files: &InOut,
+    what: &str,
+    op: impl FnOnce(&Mesh) -> weft::Result<Mesh>,
+) -> Result<(), Failure> {
+    let file = read_file_or_mesh(cli, &files.input)?;
+    require_faces(&files.input, &file.mesh)?;
+    let dropped: Vec<&str> = file
+        .attribute_names()
+        .into_iter()
+        .filter(|&name| name != "materials")
+        .collect();
+    if !dropped.is_empty() {
+        eprintln!(
+            "{}: this command keeps only the mesh and its materials; its {} are not carried to the output",
+            files.input.display(),
+            dropped.join(", ")
+        );
+    }
+    let result = with_progress(what, || op(&file.mesh))
+        .map_err(|e| operation_failed(&files.input, what, e))?;
+    let mut out = io::MeshFile::new(result);
+    if out.mesh.face_count() == file.mesh.face_count() {
+        out.materials = file.materials.clone();
+    }
+    write_file(&files.output, &out, &io::WriteOptions::default())
+}
+
 /// The mesh as triangles for the commands that need them, saying how many
 /// faces were triangulated when there were any.
 fn triangles(input: &Path, mesh: &Mesh) -> weft::Result<Mesh> {
@@ -423,7 +457,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             alpha,
             beta,
             direction,
-        } => apply(cli, files, "smooth", |m| match method {
+        } => apply_keeping_faces(cli, files, "smooth", |m| match method {
             SmoothMethod::Laplacian => weft::toolbar::smooth::laplacian(
                 m,
                 *iterations,
@@ -449,7 +483,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             files,
             distance,
             offset_type: kind,
-        } => apply(cli, files, "offset", |m| {
+        } => apply_keeping_faces(cli, files, "offset", |m| {
             transform::offset(m, *distance, offset_type(*kind))
         }),
         ToolbarCommand::Thicken {
@@ -489,9 +523,11 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             };
             extract::dual(m, mode)
         }),
-        ToolbarCommand::Reroute { files, shift } => apply(cli, files, "reroute", |m| {
-            Ok(extract::reroute_faces(m, *shift))
-        }),
+        ToolbarCommand::Reroute { files, shift } => {
+            apply_keeping_faces(cli, files, "reroute", |m| {
+                Ok(extract::reroute_faces(m, *shift))
+            })
+        }
         ToolbarCommand::Stellate { files, height } => apply(cli, files, "stellate", |m| {
             weft::make::stellate::stellate(m, Heights::One(*height))
         }),
