@@ -1361,51 +1361,6 @@ WeftStatus weft_repair_t_nodes(const struct WeftMesh *mesh, double tolerance, st
 WeftStatus weft_cull_adjacent(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_removed);
 
 /**
- * Gives every connected piece one consistent winding, flipping the fewest
- * of its faces, then turns each closed orientable piece to face outward.
- * A piece that cannot be oriented (a Möbius strip) is wound as consistently
- * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
- * not be NULL and is written on success only.
- * `out_flipped` receives the number of faces reversed; it may be NULL.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_flipped` is NULL or writable.
- */
-WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
-
-/**
- * As `weft_unify_orientation` (one consistent winding per piece, closed
- * pieces turned to enclose a positive volume), reporting the pieces. The
- * triangles of an STL file share no vertices: weld them first
- * (`weft_weld`), or every triangle is an open piece of its own.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
- * not be NULL and is written on success only.
- * `out_report` receives the pieces found and changed; it may be NULL.
- *
- * # Safety
- * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
- */
-WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
-
-/**
- * Reverses every face, keeping its first corner first ({a, b, c, d}
- * becomes {a, d, c, b}), so that flipping twice gives the input back.
- *
- * `mesh` must not be NULL.
- * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
- * must not be NULL and is written on success only.
- *
- * # Safety
- * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
- */
-WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
-
-/**
  * Computes the unit normal of each face by Newell's method (robust on
  * non-planar polygons); a face of zero area gets (0, 0, 0).
  *
@@ -1482,6 +1437,51 @@ WeftStatus weft_planarity(const struct WeftMesh *mesh, double *out_deviations, s
  * `mesh` is NULL or a live handle; each buffer is NULL or has room for its capacity.
  */
 WeftStatus weft_naked_boundaries(const struct WeftMesh *mesh, double *out_points, size_t points_capacity, size_t *out_point_counts, bool *out_closed, size_t polylines_capacity, size_t *out_point_total, size_t *out_polyline_count);
+
+/**
+ * Gives every connected piece one consistent winding, flipping the fewest
+ * of its faces, then turns each closed orientable piece to face outward.
+ * A piece that cannot be oriented (a Möbius strip) is wound as consistently
+ * as it can be; `weft_mesh_info` tells whether the mesh is orientable.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_flipped` receives the number of faces reversed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable; `out_flipped` is NULL or writable.
+ */
+WeftStatus weft_unify_orientation(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, size_t *out_flipped);
+
+/**
+ * As `weft_unify_orientation` (one consistent winding per piece, closed
+ * pieces turned to enclose a positive volume), reporting the pieces. The
+ * triangles of an STL file share no vertices: weld them first
+ * (`weft_weld`), or every triangle is an open piece of its own.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the result (free it with `weft_mesh_free`); it must
+ * not be NULL and is written on success only.
+ * `out_report` receives the pieces found and changed; it may be NULL.
+ *
+ * # Safety
+ * `mesh` is a live handle; `out_mesh` is writable; `out_report` is NULL or writable.
+ */
+WeftStatus weft_orient_outward(const struct WeftMesh *mesh, struct WeftMesh **out_mesh, struct WeftOrientReport *out_report);
+
+/**
+ * Reverses every face, keeping its first corner first ({a, b, c, d}
+ * becomes {a, d, c, b}), so that flipping twice gives the input back.
+ *
+ * `mesh` must not be NULL.
+ * `out_mesh` receives the flipped mesh (free it with `weft_mesh_free`); it
+ * must not be NULL and is written on success only.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+ */
+WeftStatus weft_flip(const struct WeftMesh *mesh, struct WeftMesh **out_mesh);
 
 /**
  * Triangulates points by the Delaunay criterion of their projections onto

@@ -251,18 +251,6 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_cull_adjacent(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outRemoved);
 
-        /// <summary>Gives every connected piece one consistent winding, flipping the fewest of its faces, then turns each closed orientable piece to face outward. A piece that cannot be oriented (a Möbius strip) is wound as consistently as it can be; <c>weft_mesh_info</c> tells whether the mesh is orientable.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_unify_orientation(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outFlipped);
-
-        /// <summary>As <c>weft_unify_orientation</c> (one consistent winding per piece, closed pieces turned to enclose a positive volume), reporting the pieces. The triangles of an STL file share no vertices: weld them first (<c>weft_weld</c>), or every triangle is an open piece of its own.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_orient_outward(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out WeftOrientReport outReport);
-
-        /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}), so that flipping twice gives the input back.</summary>
-        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_flip(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
-
         /// <summary>Computes the unit normal of each face by Newell's method (robust on non-planar polygons); a face of zero area gets (0, 0, 0).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_face_normals(WeftMeshHandle mesh, [Out] double[] outNormals, UIntPtr capacity);
@@ -278,6 +266,18 @@ namespace Weft
         /// <summary>Chains the naked edges (edges with one face) into polylines. On a manifold mesh each border is one closed polyline running the way its faces run their edges; at a vertex with one or three or more naked edges polylines stop, and one that returns to its start is closed. A closed polyline does not repeat its first point at the end.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_naked_boundaries(WeftMeshHandle mesh, [Out] double[] outPoints, UIntPtr pointsCapacity, [Out] UIntPtr[] outPointCounts, [Out] byte[] outClosed, UIntPtr polylinesCapacity, out UIntPtr outPointTotal, out UIntPtr outPolylineCount);
+
+        /// <summary>Gives every connected piece one consistent winding, flipping the fewest of its faces, then turns each closed orientable piece to face outward. A piece that cannot be oriented (a Möbius strip) is wound as consistently as it can be; <c>weft_mesh_info</c> tells whether the mesh is orientable.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_unify_orientation(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out UIntPtr outFlipped);
+
+        /// <summary>As <c>weft_unify_orientation</c> (one consistent winding per piece, closed pieces turned to enclose a positive volume), reporting the pieces. The triangles of an STL file share no vertices: weld them first (<c>weft_weld</c>), or every triangle is an open piece of its own.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_orient_outward(WeftMeshHandle mesh, out WeftMeshHandle outMesh, out WeftOrientReport outReport);
+
+        /// <summary>Reverses every face, keeping its first corner first ({a, b, c, d} becomes {a, d, c, b}), so that flipping twice gives the input back.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_flip(WeftMeshHandle mesh, out WeftMeshHandle outMesh);
 
         /// <summary>Triangulates points by the Delaunay criterion of their projections onto a plane; the mesh's vertices are the original 3-D points, its triangles front-facing along the plane's normal.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

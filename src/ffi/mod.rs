@@ -24,8 +24,10 @@ pub mod subdivide;
 pub mod refiner;
 // Creases, corners and carried data (vertex data, UVs, the limit surface).
 pub mod creases;
-// Join, weld, T-nodes, cull, orientation, normals, planarity.
+// Join, weld, T-nodes, cull, normals, planarity.
 pub mod mend;
+// Unify, turn outward, flip.
+pub mod orient;
 // Delaunay, Voronoi, grids, stellate, primitives.
 pub mod make;
 // The rest of Weaverbird's toolbar: splits and smoothing, transforms, extracts.
