@@ -10,7 +10,7 @@ namespace Weft.Grasshopper
     {
         public OrientComponent()
             : base("Unify or Flip", "Orient",
-                   "Gives each connected piece one winding (flipping the fewest faces), or flips every face.",
+                   "Gives each connected piece one winding (flipping the fewest faces) and turns closed pieces outward, or flips every face.",
                    "Mend", "orient", "The mesh to orient.")
         {
         }
@@ -29,11 +29,31 @@ namespace Weft.Grasshopper
         protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
             bool flipAll = Get(DA, 1, false);
-            int flipped = 0;
-            using (WeftMesh result = flipAll ? Mending.Flip(mesh) : Mending.UnifyOrientation(mesh, out flipped))
+            if (flipAll)
             {
+                using (WeftMesh result = Mending.Flip(mesh))
+                {
+                    SetMesh(DA, 0, result);
+                    DA.SetData(1, result.FaceCount);
+                }
+                return;
+            }
+            // Unify, and turn every closed piece outward; say which pieces had no inside.
+            WeftOrientReport report;
+            using (WeftMesh result = Mending.OrientOutward(mesh, out report))
+            {
+                if (report.OpenPieces > 0)
+                {
+                    AddRuntimeMessage(GH_RuntimeMessageLevel.Remark, report.OpenPieces + " of " + report.Pieces
+                        + " pieces are open (a naked or non-manifold edge): unified, but with no inside to face away from.");
+                }
+                if (report.NonOrientablePieces > 0)
+                {
+                    AddRuntimeMessage(GH_RuntimeMessageLevel.Warning, report.NonOrientablePieces
+                        + " pieces cannot be oriented (a Möbius strip): wound as consistently as they can be.");
+                }
                 SetMesh(DA, 0, result);
-                DA.SetData(1, flipAll ? result.FaceCount : flipped);
+                DA.SetData(1, (int)report.FlippedFaces);
             }
         }
     }
