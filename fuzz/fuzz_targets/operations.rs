@@ -16,6 +16,7 @@ use weft::ffi::creases::*;
 use weft::ffi::make::*;
 use weft::ffi::mend::*;
 use weft::ffi::mesh::*;
+use weft::ffi::orient::*;
 use weft::ffi::refiner::*;
 use weft::ffi::subdivide::*;
 use weft::ffi::extract::*;
