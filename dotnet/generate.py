@@ -51,6 +51,7 @@ ENUMS = [
     ("NakedEdges", "WEFT_NAKED_EDGES_", "How subdivision treats naked (boundary) edges (WEFT_NAKED_EDGES_*)."),
     ("Scheme", "WEFT_SCHEME_", "A subdivision scheme (WEFT_SCHEME_*)."),
     ("Creasing", "WEFT_CREASING_", "How semi-sharp creases soften from level to level (WEFT_CREASING_*; OpenSubdiv's crease method)."),
+    ("TriangleRule", "WEFT_TRIANGLES_", "Catmull-Clark's weights at triangles (WEFT_TRIANGLES_*; OpenSubdiv's TriangleSubdivision)."),
     ("FaceVaryingLinear", "WEFT_FACE_VARYING_", "Where face-varying values (UVs) are interpolated linearly (WEFT_FACE_VARYING_*; OpenSubdiv's FVarLinearInterpolation)."),
     ("SmoothDirection", "WEFT_SMOOTH_DIRECTION_", "Which way LaplacianHC lets a vertex move (WEFT_SMOOTH_DIRECTION_*; Weaverbird's orientation input)."),
     ("TileFill", "WEFT_TILE_FILL_", "The pattern Tile fills a face with (WEFT_TILE_FILL_*; Weaverbird's numbers)."),
@@ -63,6 +64,7 @@ ENUMS = [
 ]
 # The other constants, in NativeConstants.
 CONSTANTS = {"WEFT_SHARPNESS_INFINITE": "SharpnessInfinite", "WEFT_DEFAULT_WELD_TOLERANCE": "DefaultWeldTolerance",
+             "WEFT_SUBDIVISION_OPTIONS_RESERVED": "SubdivisionOptionsReserved",
              "WEFT_VERSION_MAJOR": "VersionMajor", "WEFT_VERSION_MINOR": "VersionMinor", "WEFT_VERSION_PATCH": "VersionPatch"}
 
 
@@ -108,8 +110,8 @@ def parse(header):
     structs = []
     for m in re.finditer(r"typedef struct (\w+) \{(.*?)\} \1;", text, re.S):
         fields = []
-        for doc, ctype, name in re.findall(r"/\*\*(.*?)\*/\s*([^;/]*?)\s*\b(\w+)(?:\[\d+\])?;", m.group(2), re.S):
-            fields.append((" ".join(ctype.split()), name, summary(doc)))
+        for doc, ctype, name, length in re.findall(r"/\*\*(.*?)\*/\s*([^;/]*?)\s*\b(\w+)(?:\[(\w+)\])?;", m.group(2), re.S):
+            fields.append((" ".join(ctype.split()), name, summary(doc), length))
         structs.append((m.group(1), fields))
     text = re.sub(r"typedef struct (\w+) \{(.*?)\} \1;", "", text, flags=re.S)
 
@@ -200,7 +202,7 @@ def generated_line():
     return "// Generated from include/weft.h by dotnet/generate.py; do not edit (dotnet/test.sh checks it is current)."
 
 
-def native_methods(structs, functions):
+def native_methods(structs, functions, constants):
     out = [generated_line(), "using System;", "using System.Runtime.InteropServices;", "", "namespace Weft", "{"]
     by_name = dict(structs)
     for c_name, cs_name in NATIVE_STRUCTS.items():
@@ -208,8 +210,16 @@ def native_methods(structs, functions):
             raise HeaderError(f"struct {c_name} not found in the header")
         out += ["    /// <summary>", f"    /// Laid out as <c>{c_name}</c> in <c>include/weft.h</c>.", "    /// </summary>",
                 "    [StructLayout(LayoutKind.Sequential)]", f"    internal struct {cs_name}", "    {"]
-        for ctype, name, doc in by_name[c_name]:
-            out += [f"        /// <summary>{doc}</summary>", "        " + cs_field(c_name, ctype, name)]
+        for ctype, name, doc, length in by_name[c_name]:
+            if not length:
+                out += [f"        /// <summary>{doc}</summary>", "        " + cs_field(c_name, ctype, name)]
+                continue
+            # A fixed array of scalars: one field per element keeps the struct blittable.
+            count = int(length) if length.isdigit() else int(constants.get(length, "0"))
+            if count == 0:
+                raise HeaderError(f"{c_name}.{name}: array length {length!r} is not a number or a #define")
+            for i in range(count):
+                out += [f"        /// <summary>{doc} (element {i})</summary>", "        " + cs_field(c_name, ctype, f"{name}{i}")]
         out += ["    }", ""]
     out += ["    /// <summary>",
             "    /// The exports of <c>include/weft.h</c>, one for one, in the header's order.",
@@ -277,7 +287,8 @@ def weft_status(status):
 
 def generate(header_text):
     defines, status, structs, functions = parse(header_text)
-    return {"NativeMethods.cs": native_methods(structs, functions), "Enums.cs": enums(defines), "WeftStatus.cs": weft_status(status)}
+    constants = {name: value for name, value, _ in defines}
+    return {"NativeMethods.cs": native_methods(structs, functions, constants), "Enums.cs": enums(defines), "WeftStatus.cs": weft_status(status)}
 
 
 def main():

@@ -39,6 +39,11 @@
 #define WEFT_NAKED_EDGES_CORNER_FIXED 2
 
 /**
+ * No boundary surface: the faces at every vertex on a naked edge are left out as holes, the rest refined as smooth (OpenSubdiv VTX_BOUNDARY_NONE; beyond Weaverbird's three modes; subdivision only).
+ */
+#define WEFT_NAKED_EDGES_NONE 3
+
+/**
  * Catmull-Clark: any polygons in, quads out.
  */
 #define WEFT_SCHEME_CATMULL_CLARK 0
@@ -92,6 +97,21 @@
  * The sharpness at and above which a crease or corner never softens.
  */
 #define WEFT_SHARPNESS_INFINITE 10.0
+
+/**
+ * Catmull-Clark's own weights at triangles (OpenSubdiv TRI_SUB_CATMARK).
+ */
+#define WEFT_TRIANGLES_CATMARK 0
+
+/**
+ * "Smooth triangle" weights, which round triangle regions of mixed cages (OpenSubdiv TRI_SUB_SMOOTH).
+ */
+#define WEFT_TRIANGLES_SMOOTH 1
+
+/**
+ * How many reserved fields end a `WeftSubdivisionOptions`.
+ */
+#define WEFT_SUBDIVISION_OPTIONS_RESERVED 8
 
 /**
  * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
@@ -418,9 +438,14 @@ typedef struct WeftMeshInfo {
 
 /**
  * What besides the mesh shapes a subdivision: the scheme, the naked-edge
- * mode, the creasing method, and OpenSubdiv-style crease and corner arrays.
+ * mode, the creasing method, OpenSubdiv-style crease, corner and hole
+ * arrays, and the triangle weights.
  * Zero-initialise it, then fill what you need: all zeros is Catmull-Clark
- * with fixed naked edges and nothing creased.
+ * with fixed naked edges, nothing creased and no hole. Every field's 0 is
+ * the default, and so it stays: later versions give the `reserved` fields
+ * meanings whose 0 is today's behaviour, so a host that zero-initialises
+ * keeps working when it is rebuilt against a newer header. A reserved
+ * field that is not 0 is refused (WEFT_STATUS_INVALID_ARGUMENT).
  */
 typedef struct WeftSubdivisionOptions {
   /**
@@ -459,6 +484,26 @@ typedef struct WeftSubdivisionOptions {
    * `corner_count` sharpness values, as for creases.
    */
   const double *corner_sharpness;
+  /**
+   * Number of hole faces.
+   */
+  size_t hole_count;
+  /**
+   * `hole_count` face indices: faces left out of the result (OpenSubdiv's hole tags), whose vertices and edges still shape their neighbours; NULL when `hole_count` is 0.
+   */
+  const uint32_t *hole_faces;
+  /**
+   * A WEFT_TRIANGLES_* value: Catmull-Clark's weights at triangles (Loop ignores it).
+   */
+  uint32_t triangles;
+  /**
+   * Must be 0 (see above).
+   */
+  uint32_t reserved_flags;
+  /**
+   * Must be 0 (see above).
+   */
+  size_t reserved[WEFT_SUBDIVISION_OPTIONS_RESERVED];
 } WeftSubdivisionOptions;
 
 /**
@@ -870,7 +915,9 @@ WeftStatus weft_subdivision_face_count(const struct WeftMesh *cage, uint32_t sch
 /**
  * Writes, for every face of the mesh that `levels` steps of `scheme` make
  * from `cage`, the index of the cage face it comes from (the naked-edge
- * mode does not change it). Only the cage's face sizes are used.
+ * mode does not change it, except WEFT_NAKED_EDGES_NONE, whose holes
+ * `weft_subdivision_parent_faces_ex` leaves out). Only the cage's face
+ * sizes are used.
  *
  * `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
  * `out_parents` must have room for `capacity` values; when `capacity` is
@@ -1077,7 +1124,8 @@ WeftStatus weft_subdivide_ex(const struct WeftMesh *mesh, const struct WeftSubdi
 
 /**
  * Gives the vertex, face and face-index counts of the mesh `levels` steps
- * of `scheme` make from `mesh` (creases do not change them), without
+ * of `scheme` make from `mesh` (creases do not change them; holes do: see
+ * `weft_subdivision_counts_ex`), without
  * subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
  * `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
  *
@@ -1091,6 +1139,40 @@ WeftStatus weft_subdivide_ex(const struct WeftMesh *mesh, const struct WeftSubdi
  * `mesh` is NULL or a live handle; the `out_*` are NULL or writable.
  */
 WeftStatus weft_subdivision_counts(const struct WeftMesh *mesh, uint32_t scheme, uint32_t levels, size_t *out_vertex_count, size_t *out_face_count, size_t *out_index_count);
+
+/**
+ * As `weft_subdivision_counts`, for the subdivision `options` describe:
+ * holes (and with WEFT_NAKED_EDGES_NONE the faces at the boundary) leave
+ * their vertices but no faces, so these are the sizes of
+ * `weft_subdivide_ex`'s result and of the buffers of
+ * `weft_subdivide_face_varying` with the same options.
+ *
+ * `mesh` and `options` must not be NULL. Each `out_*` receives its count
+ * on success; none may be NULL.
+ *
+ * Fails as `weft_subdivision_counts`, and with WEFT_STATUS_INVALID_ARGUMENT
+ * for an unknown option value or a hole past the face count.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; `options` is NULL or readable with
+ * arrays of the lengths it states; the `out_*` are NULL or writable.
+ */
+WeftStatus weft_subdivision_counts_ex(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, size_t *out_vertex_count, size_t *out_face_count, size_t *out_index_count);
+
+/**
+ * As `weft_subdivision_parent_faces`, for the subdivision `options`
+ * describe: the faces of `weft_subdivide_ex`'s result, without the
+ * children of holes. `out_parents` needs room for the face count
+ * `weft_subdivision_counts_ex` gives, else the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ *
+ * Fails as `weft_subdivision_counts_ex`, and with WEFT_STATUS_BUFFER_TOO_SMALL.
+ *
+ * # Safety
+ * As `weft_subdivision_counts_ex`; `out_parents` is NULL or holds
+ * `capacity` writable values.
+ */
+WeftStatus weft_subdivision_parent_faces_ex(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, uint32_t *out_parents, size_t capacity);
 
 /**
  * Carries per-vertex data of any width (colours, weights) through the

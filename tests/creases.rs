@@ -8,6 +8,9 @@
 //! of face f contiguous, child i at corner i), so vertices are matched
 //! through the faces: corner k of refined face f is the same vertex in both.
 
+mod support;
+
+use support::{assert_rows_close, bumped, face_map, osd_options, to_ref, tolerance, vertex_map};
 use weft::mesh::shapes;
 use weft::subdivide::FaceVaryingLinear;
 use weft::subdivide::{
@@ -15,66 +18,8 @@ use weft::subdivide::{
 };
 use weft::{DVec3, Mesh};
 use weft_reference::{
-    boundary_vertices, opensubdiv_refine, opensubdiv_refine_face_varying, BoundaryInterpolation,
-    CreasingMethod, FVarLinear, OsdOptions, OsdRefiner, RefMesh,
+    opensubdiv_refine, opensubdiv_refine_face_varying, FVarLinear, OsdOptions, OsdRefiner,
 };
-
-fn to_ref(mesh: &Mesh) -> RefMesh {
-    RefMesh {
-        positions: mesh.positions().iter().flat_map(|p| p.to_array()).collect(),
-        face_sizes: mesh.face_sizes().to_vec(),
-        face_indices: mesh.face_indices().to_vec(),
-    }
-}
-
-/// OpenSubdiv's options for Weft's scheme and options on `cage`.
-fn osd_options(scheme: Scheme, options: &SubdivisionOptions, cage: &RefMesh) -> OsdOptions {
-    let scheme = match scheme {
-        Scheme::CatmullClark => weft_reference::Scheme::CatmullClark,
-        Scheme::Loop => weft_reference::Scheme::Loop,
-    };
-    let boundary = match options.naked_edges {
-        NakedEdges::CornerFixed => BoundaryInterpolation::EdgeAndCorner,
-        _ => BoundaryInterpolation::EdgeOnly,
-    };
-    let mut osd = OsdOptions::new(scheme, boundary);
-    osd.creasing = match options.creasing {
-        Creasing::Uniform => CreasingMethod::Uniform,
-        Creasing::Chaikin => CreasingMethod::Chaikin,
-    };
-    for &(edge, s) in &options.creases {
-        osd.crease_edges.push(edge);
-        osd.crease_sharpness.push(s.min(10.0) as f32);
-    }
-    for &(v, s) in &options.corners {
-        osd.corner_vertices.push(v);
-        osd.corner_sharpness.push(s.min(10.0) as f32);
-    }
-    if options.naked_edges == NakedEdges::Fixed {
-        // The last value given for a vertex wins: the boundary's infinite one.
-        for v in boundary_vertices(cage) {
-            osd.corner_vertices.push(v);
-            osd.corner_sharpness.push(10.0);
-        }
-    }
-    osd
-}
-
-/// Moves every vertex a little along z (grids are flat otherwise), so the
-/// creases and normals have something to show.
-fn bumped(mesh: Mesh) -> Mesh {
-    let positions = mesh
-        .positions()
-        .iter()
-        .map(|p| *p + DVec3::new(0.0, 0.0, 0.3 * (1.7 * p.x).sin() * (1.3 * p.y + 0.4).cos()))
-        .collect();
-    Mesh::new(
-        positions,
-        mesh.face_sizes().to_vec(),
-        mesh.face_indices().to_vec(),
-    )
-    .unwrap()
-}
 
 fn shapes_for(scheme: Scheme) -> Vec<(&'static str, Mesh, bool)> {
     match scheme {
@@ -124,98 +69,6 @@ const SHARPNESS_SETS: [(&str, &[f64], &[f64]); 4] = [
     ("mixed", &[f64::INFINITY, 2.5, 0.5, 1.0, 0.0], &[2.5]),
 ];
 
-/// Ours → theirs vertex map by position (within the tolerance, one to one).
-fn vertex_map(ours: &Mesh, theirs: &RefMesh, what: &str) -> Vec<usize> {
-    assert_eq!(
-        ours.vertex_count(),
-        theirs.vertex_count(),
-        "{what}: vertex counts"
-    );
-    assert_eq!(
-        ours.face_count(),
-        theirs.face_count(),
-        "{what}: face counts"
-    );
-    let tol = tolerance(ours);
-    let theirs: Vec<DVec3> = (0..theirs.vertex_count())
-        .map(|v| DVec3::from_array(theirs.position(v)))
-        .collect();
-    let mut by_x: Vec<usize> = (0..theirs.len()).collect();
-    by_x.sort_by(|&a, &b| theirs[a].x.total_cmp(&theirs[b].x));
-    let mut taken = vec![false; theirs.len()];
-    ours.positions()
-        .iter()
-        .enumerate()
-        .map(|(v, p)| {
-            let start = by_x.partition_point(|&r| theirs[r].x < p.x - tol);
-            let found: Vec<usize> = by_x[start..]
-                .iter()
-                .take_while(|&&r| theirs[r].x <= p.x + tol)
-                .copied()
-                .filter(|&r| (theirs[r] - *p).length() <= tol)
-                .collect();
-            let nearest = theirs.iter().map(|q| (*q - *p).length()).fold(f64::INFINITY, f64::min);
-            assert!(
-                found.len() == 1,
-                "{what}: vertex {v} at {p} has {} reference vertices within {tol:e} (nearest {nearest:e})",
-                found.len()
-            );
-            assert!(!taken[found[0]], "{what}: reference vertex {} matched twice", found[0]);
-            taken[found[0]] = true;
-            found[0]
-        })
-        .collect()
-}
-
-/// For every face of ours, OpenSubdiv's face with the same vertices and
-/// the rotation `r` such that our corner k is its corner (k + r) mod n.
-fn face_map(ours: &Mesh, theirs: &RefMesh, vertices: &[usize]) -> Vec<(usize, usize)> {
-    let mut index = std::collections::HashMap::new();
-    for (f, face) in theirs.faces().enumerate() {
-        let mut key = face.to_vec();
-        key.sort_unstable();
-        index.insert(key, f);
-    }
-    let their_faces: Vec<&[u32]> = theirs.faces().collect();
-    ours.faces()
-        .map(|face| {
-            let mapped: Vec<u32> = face.iter().map(|&v| vertices[v as usize] as u32).collect();
-            let mut key = mapped.clone();
-            key.sort_unstable();
-            let f = index[&key];
-            let r = their_faces[f].iter().position(|&v| v == mapped[0]).unwrap();
-            (f, r)
-        })
-        .collect()
-}
-
-fn tolerance(mesh: &Mesh) -> f64 {
-    let (lo, hi) = mesh.bounding_box().unwrap();
-    1e-9 * (hi - lo).length()
-}
-
-fn assert_rows_close(
-    ours: &[f64],
-    theirs: &[f64],
-    width: usize,
-    map: &[usize],
-    tol: f64,
-    what: &str,
-) {
-    for (v, &r) in map.iter().enumerate() {
-        if r == usize::MAX {
-            continue;
-        }
-        for k in 0..width {
-            let (a, b) = (ours[v * width + k], theirs[r * width + k]);
-            assert!(
-                (a - b).abs() <= tol,
-                "{what}: vertex {v} component {k}: {a} vs OpenSubdiv {b}"
-            );
-        }
-    }
-}
-
 /// The naked-edge modes worth comparing: on a closed shape they all agree.
 fn naked_edge_modes(closed: bool) -> &'static [NakedEdges] {
     if closed {
@@ -243,6 +96,7 @@ fn option_sets(
                 creases: creases.to_vec(),
                 corners: corners.to_vec(),
                 creasing,
+                ..SubdivisionOptions::default()
             })
         })
         .collect()
@@ -400,6 +254,7 @@ fn limit_positions_and_normals_equal_opensubdiv() {
                         creases: creases.clone(),
                         corners: corners.clone(),
                         creasing,
+                        ..SubdivisionOptions::default()
                     };
                     let osd = osd_options(scheme, &options, &reference_cage);
                     for levels in 0..=3 {
@@ -557,6 +412,7 @@ fn face_varying_uvs_equal_opensubdiv() {
                         } else {
                             Creasing::Chaikin
                         },
+                        ..SubdivisionOptions::default()
                     };
                     for (ours_linear, their_linear) in modes {
                         let mut osd = osd_options(scheme, &options, &reference_cage);
@@ -653,6 +509,7 @@ fn every_named_shape_with_creases_equals_opensubdiv_and_never_panics() {
                     creases: creases.clone(),
                     corners: corners.clone(),
                     creasing: Creasing::Chaikin,
+                    ..SubdivisionOptions::default()
                 };
                 let reference_cage = to_ref(&cage);
                 let osd = osd_options(scheme, &options, &reference_cage);

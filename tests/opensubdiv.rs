@@ -22,10 +22,11 @@ use weft_reference::{
     RefMesh,
 };
 
-const MODES: [NakedEdges; 3] = [
+const MODES: [NakedEdges; 4] = [
     NakedEdges::Fixed,
     NakedEdges::Smooth,
     NakedEdges::CornerFixed,
+    NakedEdges::None,
 ];
 
 fn to_ref(mesh: &Mesh) -> RefMesh {
@@ -45,6 +46,7 @@ fn osd_options(scheme: Scheme, mode: NakedEdges, cage: &RefMesh) -> OsdOptions {
         NakedEdges::Fixed => OsdOptions::fixed(scheme, cage),
         NakedEdges::Smooth => OsdOptions::new(scheme, BoundaryInterpolation::EdgeOnly),
         NakedEdges::CornerFixed => OsdOptions::new(scheme, BoundaryInterpolation::EdgeAndCorner),
+        NakedEdges::None => OsdOptions::new(scheme, BoundaryInterpolation::None),
     }
 }
 

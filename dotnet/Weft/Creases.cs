@@ -69,7 +69,7 @@ namespace Weft
         {
             Arguments.NotNull(data, "data");
             Arguments.Unsigned(width, "width");
-            SubdivisionCounts counts = Counts(mesh, scheme, levels);
+            SubdivisionCounts counts = Counts(mesh, scheme, levels, options);
             var output = new double[checked(counts.VertexCount * width)];
             SubdivideVertexData(mesh, scheme, levels, options, data, width, output);
             return output;
@@ -114,7 +114,7 @@ namespace Weft
                                                     FaceVaryingLinear linear, double[] values, int width, uint[] valueIndices)
         {
             Arguments.Unsigned(width, "width");
-            SubdivisionCounts counts = Counts(mesh, scheme, levels);
+            SubdivisionCounts counts = Counts(mesh, scheme, levels, options);
             var output = new double[checked(counts.IndexCount * width)];
             SubdivideFaceVarying(mesh, scheme, levels, options, linear, values, width, valueIndices, output);
             return output;
@@ -163,7 +163,7 @@ namespace Weft
         /// </exception>
         public static LimitSurface SubdivideLimit(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options)
         {
-            SubdivisionCounts counts = Counts(mesh, scheme, levels);
+            SubdivisionCounts counts = Counts(mesh, scheme, levels, options);
             var positions = new double[checked(3 * counts.VertexCount)];
             var normals = new double[positions.Length];
             SubdivideLimit(mesh, scheme, levels, options, positions, normals);

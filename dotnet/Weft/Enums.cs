@@ -10,6 +10,8 @@ namespace Weft
         Smooth = 1,
         /// <summary>As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).</summary>
         CornerFixed = 2,
+        /// <summary>No boundary surface: the faces at every vertex on a naked edge are left out as holes, the rest refined as smooth (OpenSubdiv VTX_BOUNDARY_NONE; beyond Weaverbird's three modes; subdivision only).</summary>
+        None = 3,
     }
 
     /// <summary>A subdivision scheme (WEFT_SCHEME_*).</summary>
@@ -28,6 +30,15 @@ namespace Weft
         Uniform = 0,
         /// <summary>Semi-sharp creases are averaged with their neighbours first (OpenSubdiv CREASE_CHAIKIN).</summary>
         Chaikin = 1,
+    }
+
+    /// <summary>Catmull-Clark's weights at triangles (WEFT_TRIANGLES_*; OpenSubdiv's TriangleSubdivision).</summary>
+    public enum TriangleRule : uint
+    {
+        /// <summary>Catmull-Clark's own weights at triangles (OpenSubdiv TRI_SUB_CATMARK).</summary>
+        Catmark = 0,
+        /// <summary>"Smooth triangle" weights, which round triangle regions of mixed cages (OpenSubdiv TRI_SUB_SMOOTH).</summary>
+        Smooth = 1,
     }
 
     /// <summary>Where face-varying values (UVs) are interpolated linearly (WEFT_FACE_VARYING_*; OpenSubdiv's FVarLinearInterpolation).</summary>
@@ -162,6 +173,8 @@ namespace Weft
         internal const uint VersionPatch = 0;
         /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
         internal const double SharpnessInfinite = 10.0;
+        /// <summary>How many reserved fields end a <c>WeftSubdivisionOptions</c>.</summary>
+        internal const uint SubdivisionOptionsReserved = 8;
         /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
         internal const double DefaultWeldTolerance = 0.001;
     }

@@ -28,6 +28,30 @@ namespace Weft
         public IntPtr CornerVertices;
         /// <summary><c>corner_count</c> sharpness values, as for creases.</summary>
         public IntPtr CornerSharpness;
+        /// <summary>Number of hole faces.</summary>
+        public UIntPtr HoleCount;
+        /// <summary><c>hole_count</c> face indices: faces left out of the result (OpenSubdiv's hole tags), whose vertices and edges still shape their neighbours; NULL when <c>hole_count</c> is 0.</summary>
+        public IntPtr HoleFaces;
+        /// <summary>A WEFT_TRIANGLES_* value: Catmull-Clark's weights at triangles (Loop ignores it).</summary>
+        public uint Triangles;
+        /// <summary>Must be 0 (see above).</summary>
+        public uint ReservedFlags;
+        /// <summary>Must be 0 (see above). (element 0)</summary>
+        public UIntPtr Reserved0;
+        /// <summary>Must be 0 (see above). (element 1)</summary>
+        public UIntPtr Reserved1;
+        /// <summary>Must be 0 (see above). (element 2)</summary>
+        public UIntPtr Reserved2;
+        /// <summary>Must be 0 (see above). (element 3)</summary>
+        public UIntPtr Reserved3;
+        /// <summary>Must be 0 (see above). (element 4)</summary>
+        public UIntPtr Reserved4;
+        /// <summary>Must be 0 (see above). (element 5)</summary>
+        public UIntPtr Reserved5;
+        /// <summary>Must be 0 (see above). (element 6)</summary>
+        public UIntPtr Reserved6;
+        /// <summary>Must be 0 (see above). (element 7)</summary>
+        public UIntPtr Reserved7;
     }
 
     /// <summary>
@@ -147,7 +171,7 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivision_face_count(WeftMeshHandle cage, uint scheme, uint levels, out UIntPtr outFaceCount);
 
-        /// <summary>Writes, for every face of the mesh that <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, the index of the cage face it comes from (the naked-edge mode does not change it). Only the cage's face sizes are used.</summary>
+        /// <summary>Writes, for every face of the mesh that <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, the index of the cage face it comes from (the naked-edge mode does not change it, except WEFT_NAKED_EDGES_NONE, whose holes <c>weft_subdivision_parent_faces_ex</c> leaves out). Only the cage's face sizes are used.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivision_parent_faces(WeftMeshHandle cage, uint scheme, uint levels, [Out] uint[] outParents, UIntPtr capacity);
 
@@ -195,9 +219,17 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivide_ex(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, out WeftMeshHandle outMesh);
 
-        /// <summary>Gives the vertex, face and face-index counts of the mesh <c>levels</c> steps of <c>scheme</c> make from <c>mesh</c> (creases do not change them), without subdividing: the sizes the buffers of <c>weft_subdivide_vertex_data</c>, <c>weft_subdivide_face_varying</c> and <c>weft_subdivide_limit</c> need.</summary>
+        /// <summary>Gives the vertex, face and face-index counts of the mesh <c>levels</c> steps of <c>scheme</c> make from <c>mesh</c> (creases do not change them; holes do: see <c>weft_subdivision_counts_ex</c>), without subdividing: the sizes the buffers of <c>weft_subdivide_vertex_data</c>, <c>weft_subdivide_face_varying</c> and <c>weft_subdivide_limit</c> need.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivision_counts(WeftMeshHandle mesh, uint scheme, uint levels, out UIntPtr outVertexCount, out UIntPtr outFaceCount, out UIntPtr outIndexCount);
+
+        /// <summary>As <c>weft_subdivision_counts</c>, for the subdivision <c>options</c> describe: holes (and with WEFT_NAKED_EDGES_NONE the faces at the boundary) leave their vertices but no faces, so these are the sizes of <c>weft_subdivide_ex</c>'s result and of the buffers of <c>weft_subdivide_face_varying</c> with the same options.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_subdivision_counts_ex(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, out UIntPtr outVertexCount, out UIntPtr outFaceCount, out UIntPtr outIndexCount);
+
+        /// <summary>As <c>weft_subdivision_parent_faces</c>, for the subdivision <c>options</c> describe: the faces of <c>weft_subdivide_ex</c>'s result, without the children of holes. <c>out_parents</c> needs room for the face count <c>weft_subdivision_counts_ex</c> gives, else the call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_subdivision_parent_faces_ex(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, [Out] uint[] outParents, UIntPtr capacity);
 
         /// <summary>Carries per-vertex data of any width (colours, weights) through the subdivision of <c>weft_subdivide_ex</c>: every refined vertex gets the same weighted sum of cage values as its position (OpenSubdiv's <c>PrimvarRefiner::Interpolate</c>).</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

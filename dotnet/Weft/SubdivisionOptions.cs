@@ -6,10 +6,11 @@ namespace Weft
 {
     /// <summary>
     /// What besides the mesh and the scheme shapes a subdivision: the
-    /// naked-edge mode, the creasing rule, and OpenSubdiv-style creases (a
+    /// naked-edge mode, the creasing rule, OpenSubdiv-style creases (a
     /// sharpness per edge, named by its two vertices) and corners (a
-    /// sharpness per vertex). A new instance is Weft's default: fixed naked
-    /// edges, uniform creasing, nothing creased.
+    /// sharpness per vertex), holes (faces left out of the result) and the
+    /// triangle weights. A new instance is Weft's default: fixed naked
+    /// edges, uniform creasing, nothing creased, no hole.
     /// </summary>
     /// <remarks>
     /// Sharpness is 0 or more: 0 is smooth, a value s below
@@ -29,6 +30,7 @@ namespace Weft
         private readonly List<double> creaseSharpness = new List<double>();
         private readonly List<uint> cornerVertices = new List<uint>();
         private readonly List<double> cornerSharpness = new List<double>();
+        private readonly List<uint> holes = new List<uint>();
 
         /// <summary>Options with the given naked-edge mode, uniform creasing and nothing creased.</summary>
         public SubdivisionOptions(NakedEdges nakedEdges)
@@ -47,6 +49,32 @@ namespace Weft
 
         /// <summary>How semi-sharp creases soften.</summary>
         public Creasing Creasing { get; set; }
+
+        /// <summary>Catmull-Clark's weights at triangles (Loop ignores it).</summary>
+        public TriangleRule Triangles { get; set; }
+
+        /// <summary>Number of hole faces.</summary>
+        public int HoleCount
+        {
+            get { return holes.Count; }
+        }
+
+        /// <summary>
+        /// Leaves face <paramref name="face"/> of the cage out of the result
+        /// (OpenSubdiv's hole tag): it leaves no faces, but its vertices and
+        /// edges still shape its neighbours; returns this for chaining.
+        /// </summary>
+        public SubdivisionOptions AddHole(int face)
+        {
+            holes.Add(Arguments.Unsigned(face, "face"));
+            return this;
+        }
+
+        /// <summary>The hole faces (a copy).</summary>
+        public uint[] GetHoles()
+        {
+            return holes.ToArray();
+        }
 
         /// <summary>Number of creased edges.</summary>
         public int CreaseCount
@@ -124,19 +152,21 @@ namespace Weft
             return cornerSharpness.ToArray();
         }
 
-        /// <summary>Removes every crease and corner.</summary>
+        /// <summary>Removes every crease, corner and hole.</summary>
         public void Clear()
         {
             creasePairs.Clear();
             creaseSharpness.Clear();
             cornerVertices.Clear();
             cornerSharpness.Clear();
+            holes.Clear();
         }
 
         /// <summary>A copy that later changes to this one do not affect.</summary>
         public SubdivisionOptions Clone()
         {
-            var copy = new SubdivisionOptions(NakedEdges) { Creasing = Creasing };
+            var copy = new SubdivisionOptions(NakedEdges) { Creasing = Creasing, Triangles = Triangles };
+            copy.holes.AddRange(holes);
             copy.creasePairs.AddRange(creasePairs);
             copy.creaseSharpness.AddRange(creaseSharpness);
             copy.cornerVertices.AddRange(cornerVertices);
@@ -144,12 +174,12 @@ namespace Weft
             return copy;
         }
 
-        /// <summary>True when <paramref name="other"/> has the same mode, rule, creases and corners in the same order (sharpness compared bit for bit).</summary>
+        /// <summary>True when <paramref name="other"/> has the same mode, rules, creases, corners and holes in the same order (sharpness compared bit for bit).</summary>
         public bool SameAs(SubdivisionOptions other)
         {
             if (other == null) return false;
-            return NakedEdges == other.NakedEdges && Creasing == other.Creasing
-                && Same(creasePairs, other.creasePairs) && Same(creaseSharpness, other.creaseSharpness)
+            return NakedEdges == other.NakedEdges && Creasing == other.Creasing && Triangles == other.Triangles
+                && Same(holes, other.holes) && Same(creasePairs, other.creasePairs) && Same(creaseSharpness, other.creaseSharpness)
                 && Same(cornerVertices, other.cornerVertices) && Same(cornerSharpness, other.cornerSharpness);
         }
 
@@ -177,7 +207,7 @@ namespace Weft
         /// <summary>The native struct over pinned copies of the arrays, valid until disposed.</summary>
         internal sealed class Pinned : IDisposable
         {
-            private readonly GCHandle[] handles = new GCHandle[4];
+            private readonly GCHandle[] handles = new GCHandle[5];
 
             /// <summary>The struct to pass by reference.</summary>
             internal NativeSubdivisionOptions Native;
@@ -187,14 +217,17 @@ namespace Weft
                 Native.Scheme = (uint)scheme;
                 Native.NakedEdges = (uint)options.NakedEdges;
                 Native.Creasing = (uint)options.Creasing;
+                Native.Triangles = (uint)options.Triangles;
                 Native.CreaseCount = (UIntPtr)options.creaseSharpness.Count;
                 Native.CornerCount = (UIntPtr)options.cornerSharpness.Count;
+                Native.HoleCount = (UIntPtr)options.holes.Count;
                 try
                 {
                     Native.CreaseVertexPairs = PinArray(0, options.creasePairs.ToArray());
                     Native.CreaseSharpness = PinArray(1, options.creaseSharpness.ToArray());
                     Native.CornerVertices = PinArray(2, options.cornerVertices.ToArray());
                     Native.CornerSharpness = PinArray(3, options.cornerSharpness.ToArray());
+                    Native.HoleFaces = PinArray(4, options.holes.ToArray());
                 }
                 catch
                 {

@@ -322,6 +322,7 @@ struct Options {
     crease_sharpness: Vec<f64>,
     corners: Vec<u32>,
     corner_sharpness: Vec<f64>,
+    holes: Vec<u32>,
     raw: WeftSubdivisionOptions,
 }
 
@@ -352,12 +353,14 @@ unsafe fn options(mesh: *mut WeftMesh, bytes: &mut Bytes) -> Options {
         corners.push(vertex_index(bytes, count));
         corner_sharpness.push(sharpness(bytes));
     }
-    let raw = WeftSubdivisionOptions {
+    // Hole faces, now and then one past the last.
+    let holes: Vec<u32> = (0..bytes.small(3)).map(|_| bytes.small(sizes.len() as u32 + 1)).collect();
+    let mut raw = WeftSubdivisionOptions {
         scheme: match bytes.byte() % 8 {
             0 => 2 + bytes.small(4),
             n => u32::from(n % 2),
         },
-        naked_edges: bytes.small(4),
+        naked_edges: bytes.small(5),
         creasing: bytes.small(3),
         crease_count: 0,
         crease_vertex_pairs: null(),
@@ -365,8 +368,19 @@ unsafe fn options(mesh: *mut WeftMesh, bytes: &mut Bytes) -> Options {
         corner_count: 0,
         corner_vertices: null(),
         corner_sharpness: null(),
+        hole_count: 0,
+        hole_faces: null(),
+        triangles: bytes.small(3),
+        reserved_flags: 0,
+        reserved: [0; WEFT_SUBDIVISION_OPTIONS_RESERVED],
     };
-    let mut options = Options { pairs, crease_sharpness, corners, corner_sharpness, raw };
+    // Now and then a reserved field set: refused.
+    if bytes.byte() % 32 == 0 {
+        raw.reserved[bytes.small(WEFT_SUBDIVISION_OPTIONS_RESERVED as u32) as usize] = 1;
+    }
+    let mut options = Options { pairs, crease_sharpness, corners, corner_sharpness, holes, raw };
+    options.raw.hole_count = options.holes.len();
+    options.raw.hole_faces = options.holes.as_ptr();
     options.raw.crease_count = options.crease_sharpness.len();
     options.raw.corner_count = options.corners.len();
     // Sometimes a count with a NULL array: refused, never read.
@@ -379,11 +393,11 @@ unsafe fn options(mesh: *mut WeftMesh, bytes: &mut Bytes) -> Options {
     options
 }
 
-/// The refined vertex, face and face-index counts, when small enough to
-/// allocate buffers for.
-unsafe fn counts(mesh: *mut WeftMesh, scheme: u32, levels: u32) -> Option<(usize, usize, usize)> {
+/// The refined vertex, face and face-index counts of a subdivision with
+/// `options`, when small enough to allocate buffers for.
+unsafe fn counts(mesh: *mut WeftMesh, options: &WeftSubdivisionOptions, levels: u32) -> Option<(usize, usize, usize)> {
     let (mut v, mut f, mut i) = (0, 0, 0);
-    let status = weft_subdivision_counts(mesh, scheme, levels, &mut v, &mut f, &mut i);
+    let status = weft_subdivision_counts_ex(mesh, options, levels, &mut v, &mut f, &mut i);
     settle_status(status);
     (status == WeftStatus::Ok && i < 1 << 16).then_some((v, f, i))
 }
@@ -440,7 +454,7 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let width = bytes.small(5) as usize;
             let data_len = (count * width + bytes.small(3) as usize).saturating_sub(1);
             let data: Vec<f64> = (0..data_len).map(|_| bytes.number() * 1e-3 + bytes.finite()).collect();
-            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| c.0 * width);
+            let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, |c| c.0 * width);
             let mut result = marked(capacity(bytes, needed));
             let status = weft_subdivide_vertex_data(
                 mesh,
@@ -464,7 +478,7 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let values: Vec<f64> = (0..value_count * width).map(|_| bytes.finite()).collect();
             let index_count = (weft_mesh_index_count(mesh) + bytes.small(3) as usize).saturating_sub(1);
             let indices: Vec<u32> = (0..index_count).map(|_| bytes.small(value_count as u32 + 1)).collect();
-            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| c.2 * width);
+            let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, |c| c.2 * width);
             let mut result = marked(capacity(bytes, needed));
             let status = weft_subdivide_face_varying(
                 mesh,
@@ -486,7 +500,7 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             // The limit, with or without normals.
             let options = options(mesh, bytes);
             let levels = levels(bytes);
-            let needed = counts(mesh, options.raw.scheme, levels).map_or(bytes.small(64) as usize, |c| 3 * c.0);
+            let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, |c| 3 * c.0);
             let room = capacity(bytes, needed);
             let mut positions = marked(room);
             let mut normals = marked(room);
@@ -579,6 +593,11 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
                 corner_count: 0,
                 corner_vertices: null(),
                 corner_sharpness: null(),
+                hole_count: 0,
+                hole_faces: null(),
+                triangles: 0,
+                reserved_flags: 0,
+                reserved: [0; WEFT_SUBDIVISION_OPTIONS_RESERVED],
             };
             let status = weft_subdivide_ex(welded, &raw, bytes.small(3), out);
             assert_eq!(status, WeftStatus::Ok, "creases from the mesh refused: {}", message());

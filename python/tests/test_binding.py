@@ -59,6 +59,7 @@ def test_option_names_match_the_header_constants(header):
         "WEFT_NAKED_EDGES_": _ops.NAKED_EDGES,
         "WEFT_SCHEME_": _ops.SCHEMES,
         "WEFT_CREASING_": _ops.CREASING,
+        "WEFT_TRIANGLES_": _ops.TRIANGLES,
         "WEFT_FACE_VARYING_": _ops.FACE_VARYING,
         "WEFT_PLATONIC_": _ops.PLATONIC,
         "WEFT_SIDED_": _ops.SIDED,

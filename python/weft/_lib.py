@@ -79,6 +79,11 @@ class WeftSubdivisionOptions(Structure):
         ("corner_count", c_size_t),
         ("corner_vertices", c_void_p),
         ("corner_sharpness", c_void_p),
+        ("hole_count", c_size_t),
+        ("hole_faces", c_void_p),
+        ("triangles", c_uint32),
+        ("reserved_flags", c_uint32),
+        ("reserved", c_size_t * 8),
     ]
 
 
@@ -134,6 +139,8 @@ PLANE = POINTER(WeftPlane)
 _SIGNATURES = {
     "weft_subdivide_ex": (S, [P, OPTIONS, U, OUT]),
     "weft_subdivision_counts": (S, [P, U, U, ZP, ZP, ZP]),
+    "weft_subdivision_counts_ex": (S, [P, OPTIONS, U, ZP, ZP, ZP]),
+    "weft_subdivision_parent_faces_ex": (S, [P, OPTIONS, U, P, Z]),
     "weft_subdivide_vertex_data": (S, [P, OPTIONS, U, P, Z, Z, P, Z]),
     "weft_subdivide_face_varying": (S, [P, OPTIONS, U, U, P, Z, Z, P, Z, P, Z]),
     "weft_subdivide_limit": (S, [P, OPTIONS, U, P, P, Z]),

@@ -19,7 +19,8 @@ DEFAULT_WELD_TOLERANCE = 0.001
 SHARPNESS_INFINITE = 10.0
 
 # The string spellings of the C enumerations. A new C value is one entry.
-NAKED_EDGES = {"fixed": 0, "smooth": 1, "corner-fixed": 2}
+NAKED_EDGES = {"fixed": 0, "smooth": 1, "corner-fixed": 2, "none": 3}
+TRIANGLES = {"catmark": 0, "smooth": 1}
 SCHEMES = {"catmull-clark": 0, "loop": 1}
 CREASING = {"uniform": 0, "chaikin": 1}
 FACE_VARYING = {"smooth": 0, "corners-only": 1, "corners-plus1": 2, "corners-plus2": 3, "boundaries": 4, "all": 5}
@@ -139,12 +140,18 @@ def loop(mesh, levels=1, naked_edges="fixed"):
 class _Options:
     """A WeftSubdivisionOptions and the arrays its pointers point into."""
 
-    def __init__(self, scheme, naked_edges, creases, corners, creasing):
+    def __init__(self, scheme, naked_edges, creases=None, corners=None, creasing="uniform", holes=None, triangles="catmark"):
         self.struct = WeftSubdivisionOptions()
         self.struct.scheme = _choice(scheme, "scheme", SCHEMES)
         self.struct.naked_edges = _choice(naked_edges, "naked_edges", NAKED_EDGES)
         self.struct.creasing = _choice(creasing, "creasing", CREASING)
+        self.struct.triangles = _choice(triangles, "triangles", TRIANGLES)
         self.keep = []
+        if holes is not None and len(holes):
+            faces = _arrays.index_array(holes, "holes").reshape(-1)
+            self.struct.hole_count = faces.size
+            self.struct.hole_faces = faces.ctypes.data
+            self.keep.append(faces)
         if creases is not None and len(creases):
             table = _arrays.float_array(creases, "creases", width=3)
             pairs = _arrays.index_array(_whole(table[:, :2], "creases"), "creases")
@@ -183,7 +190,8 @@ def _whole(values, name):
     return values.astype(np.int64)
 
 
-def subdivide(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+def subdivide(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform",
+              holes=None, triangles="catmark"):
     """Subdivides a mesh with creases and sharp corners, as OpenSubdiv does
     with the same options.
 
@@ -191,30 +199,39 @@ def subdivide(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", creas
     :func:`catmull_clark`. ``creases`` is a sequence of ``(i, j, sharpness)``
     (the ends of an edge of the mesh), ``corners`` of ``(vertex, sharpness)``;
     sharpness 0 is smooth, :data:`SHARPNESS_INFINITE` (10) or more a hard
-    crease. ``creasing`` is ``"uniform"`` or ``"chaikin"``::
+    crease. ``creasing`` is ``"uniform"`` or ``"chaikin"``. ``holes`` lists
+    faces left out of the result (OpenSubdiv's hole tags; their vertices and
+    edges still shape the neighbours); ``triangles`` is ``"catmark"`` or
+    ``"smooth"`` (OpenSubdiv's smooth-triangle weights for Catmull-Clark)::
 
         >>> cube = weft.box(1, 1, 1)
         >>> s = weft.subdivide(cube, levels=2, creases=[(0, 1, 10.0)], corners=[(2, 10.0)])
     """
-    options = _Options(scheme, naked_edges, creases, corners, creasing)
+    options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
     return _mesh_op(lib.weft_subdivide_ex, mesh, options.ref, _count(levels, "levels"))
 
 
-def subdivision_counts(mesh, scheme="catmull-clark", levels=1):
+def subdivision_counts(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", holes=None):
     """(vertex_count, face_count, index_count) of the mesh ``levels`` steps
-    of ``scheme`` make, without subdividing::
+    of ``scheme`` make, without subdividing; holes (and ``naked_edges="none"``)
+    leave their vertices but no faces::
 
         >>> weft.subdivision_counts(weft.box(1, 1, 1), levels=1)
         (26, 24, 96)
     """
     counts = [ctypes.c_size_t() for _ in range(3)]
-    lib.weft_subdivision_counts(
-        check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), *(ctypes.byref(c) for c in counts)
-    )
+    if naked_edges == "fixed" and holes is None:
+        lib.weft_subdivision_counts(
+            check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), *(ctypes.byref(c) for c in counts)
+        )
+    else:
+        options = _Options(scheme, naked_edges, holes=holes)
+        lib.weft_subdivision_counts_ex(check_mesh(mesh), options.ref, _count(levels, "levels"), *(ctypes.byref(c) for c in counts))
     return tuple(c.value for c in counts)
 
 
-def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,
+                          creasing="uniform", holes=None, triangles="catmark"):
     """Carries per-vertex data (colours, weights: an (n,) or (n, width)
     array) through the subdivision :func:`subdivide` makes with the same
     options; each refined vertex gets the weighted sum its position gets::
@@ -222,9 +239,9 @@ def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_ed
         >>> weft.subdivide_vertex_data(weft.box(), np.random.rand(8, 3), levels=2).shape
         (98, 3)
     """
-    options = _Options(scheme, naked_edges, creases, corners, creasing)
+    options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
     values, width = _table(data, "data")
-    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
+    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels, naked_edges, holes)
     out = np.empty((vertex_count, width) if values.ndim == 2 else vertex_count, dtype=np.float64)
     lib.weft_subdivide_vertex_data(
         check_mesh(mesh), options.ref, _count(levels, "levels"), _arrays.address(values), values.size, width,
@@ -234,7 +251,8 @@ def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_ed
 
 
 def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth", scheme="catmull-clark",
-                           naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+                           naked_edges="fixed", creases=None, corners=None, creasing="uniform", holes=None,
+                           triangles="catmark"):
     """Carries per-corner values (UVs) through the subdivision: ``values``
     is a (k,) or (k, width) array, ``value_indices`` the value of every face
     corner, face after face (as ``mesh.face_indices``). ``linear`` says where
@@ -246,12 +264,12 @@ def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth
         >>> weft.subdivide_face_varying(cube, np.random.rand(24, 2), np.arange(24), levels=2).shape
         (384, 2)
     """
-    options = _Options(scheme, naked_edges, creases, corners, creasing)
+    options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
     table, width = _table(values, "values", rows="k")
     indices = _arrays.index_array(value_indices, "value_indices")
     if indices.ndim != 1:
         indices = indices.reshape(-1)
-    _, _, index_count = subdivision_counts(mesh, scheme, levels)
+    _, _, index_count = subdivision_counts(mesh, scheme, levels, naked_edges, holes)
     out = np.empty((index_count, width) if table.ndim == 2 else index_count, dtype=np.float64)
     lib.weft_subdivide_face_varying(
         check_mesh(mesh), options.ref, _count(levels, "levels"), _choice(linear, "linear", FACE_VARYING),
@@ -260,15 +278,16 @@ def subdivide_face_varying(mesh, values, value_indices, levels=1, linear="smooth
     return out
 
 
-def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,
+                    creasing="uniform", holes=None, triangles="catmark"):
     """The vertices of :func:`subdivide` moved onto the limit surface, and
     the surface's unit normals there: ``(positions, normals)``, two (N, 3)
     arrays::
 
         >>> points, normals = weft.subdivide_limit(weft.box(1, 1, 1), levels=2)
     """
-    options = _Options(scheme, naked_edges, creases, corners, creasing)
-    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels)
+    options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
+    vertex_count, _, _ = subdivision_counts(mesh, scheme, levels, naked_edges, holes)
     positions = np.empty((vertex_count, 3), dtype=np.float64)
     normals = np.empty((vertex_count, 3), dtype=np.float64)
     lib.weft_subdivide_limit(
@@ -288,15 +307,21 @@ def subdivision_face_count(mesh, scheme="catmull-clark", levels=1):
     return count.value
 
 
-def subdivision_parent_faces(mesh, scheme="catmull-clark", levels=1):
+def subdivision_parent_faces(mesh, scheme="catmull-clark", levels=1, naked_edges="fixed", holes=None):
     """For every face of the subdivided mesh, the index of the input face it
-    comes from (a uint32 array)::
+    comes from (a uint32 array); holes (and ``naked_edges="none"``) have no
+    faces there::
 
         >>> weft.subdivision_parent_faces(weft.box(1, 1, 1), levels=1)[:8]
         array([0, 0, 0, 0, 1, 1, 1, 1], dtype=uint32)
     """
-    out = np.empty(subdivision_face_count(mesh, scheme, levels), dtype=np.uint32)
-    lib.weft_subdivision_parent_faces(check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), _arrays.address(out), out.size)
+    if naked_edges == "fixed" and holes is None:
+        out = np.empty(subdivision_face_count(mesh, scheme, levels), dtype=np.uint32)
+        lib.weft_subdivision_parent_faces(check_mesh(mesh), _choice(scheme, "scheme", SCHEMES), _count(levels, "levels"), _arrays.address(out), out.size)
+        return out
+    options = _Options(scheme, naked_edges, holes=holes)
+    out = np.empty(subdivision_counts(mesh, scheme, levels, naked_edges, holes)[1], dtype=np.uint32)
+    lib.weft_subdivision_parent_faces_ex(check_mesh(mesh), options.ref, _count(levels, "levels"), _arrays.address(out), out.size)
     return out
 
 
@@ -314,14 +339,15 @@ class Refiner:
         (386, 3)
     """
 
-    def __init__(self, cage, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None, creasing="uniform"):
+    def __init__(self, cage, scheme="catmull-clark", levels=1, naked_edges="fixed", creases=None, corners=None,
+                 creasing="uniform", holes=None, triangles="catmark"):
         handle = check_mesh(cage, "cage")
         out = _out()
         levels = _count(levels, "levels")
-        if creases is None and corners is None and creasing == "uniform":
+        if creases is None and corners is None and creasing == "uniform" and holes is None and triangles == "catmark":
             lib.weft_refiner_new(handle, _choice(scheme, "scheme", SCHEMES), levels, _choice(naked_edges, "naked_edges", NAKED_EDGES), ctypes.byref(out))
         else:
-            options = _Options(scheme, naked_edges, creases, corners, creasing)
+            options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
             lib.weft_refiner_new_ex(handle, options.ref, levels, ctypes.byref(out))
         self._handle = out.value
         self._cage_vertex_count = cage.vertex_count

@@ -11,7 +11,9 @@ use crate::ffi::boundary::{
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
 use crate::mesh::Mesh;
-use crate::subdivide::{self, Creasing, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions};
+use crate::subdivide::{
+    self, Creasing, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions, TriangleRule,
+};
 
 /// Semi-sharp creases lose one level of sharpness per level (OpenSubdiv CREASE_UNIFORM).
 pub const WEFT_CREASING_UNIFORM: u32 = 0;
@@ -31,11 +33,22 @@ pub const WEFT_FACE_VARYING_BOUNDARIES: u32 = 4;
 pub const WEFT_FACE_VARYING_ALL: u32 = 5;
 /// The sharpness at and above which a crease or corner never softens.
 pub const WEFT_SHARPNESS_INFINITE: f64 = 10.0;
+/// Catmull-Clark's own weights at triangles (OpenSubdiv TRI_SUB_CATMARK).
+pub const WEFT_TRIANGLES_CATMARK: u32 = 0;
+/// "Smooth triangle" weights, which round triangle regions of mixed cages (OpenSubdiv TRI_SUB_SMOOTH).
+pub const WEFT_TRIANGLES_SMOOTH: u32 = 1;
+/// How many reserved fields end a `WeftSubdivisionOptions`.
+pub const WEFT_SUBDIVISION_OPTIONS_RESERVED: usize = 8;
 
 /// What besides the mesh shapes a subdivision: the scheme, the naked-edge
-/// mode, the creasing method, and OpenSubdiv-style crease and corner arrays.
+/// mode, the creasing method, OpenSubdiv-style crease, corner and hole
+/// arrays, and the triangle weights.
 /// Zero-initialise it, then fill what you need: all zeros is Catmull-Clark
-/// with fixed naked edges and nothing creased.
+/// with fixed naked edges, nothing creased and no hole. Every field's 0 is
+/// the default, and so it stays: later versions give the `reserved` fields
+/// meanings whose 0 is today's behaviour, so a host that zero-initialises
+/// keeps working when it is rebuilt against a newer header. A reserved
+/// field that is not 0 is refused (WEFT_STATUS_INVALID_ARGUMENT).
 #[repr(C)]
 #[derive(Debug, Clone, Copy)]
 pub struct WeftSubdivisionOptions {
@@ -57,6 +70,16 @@ pub struct WeftSubdivisionOptions {
     pub corner_vertices: *const u32,
     /// `corner_count` sharpness values, as for creases.
     pub corner_sharpness: *const f64,
+    /// Number of hole faces.
+    pub hole_count: usize,
+    /// `hole_count` face indices: faces left out of the result (OpenSubdiv's hole tags), whose vertices and edges still shape their neighbours; NULL when `hole_count` is 0.
+    pub hole_faces: *const u32,
+    /// A WEFT_TRIANGLES_* value: Catmull-Clark's weights at triangles (Loop ignores it).
+    pub triangles: u32,
+    /// Must be 0 (see above).
+    pub reserved_flags: u32,
+    /// Must be 0 (see above).
+    pub reserved: [usize; WEFT_SUBDIVISION_OPTIONS_RESERVED],
 }
 
 /// Reads the options: enumerations checked, arrays copied.
@@ -109,6 +132,29 @@ pub(crate) unsafe fn options_arg(
             options.corner_count,
             "corner_sharpness",
         )?;
+        let holes = input_slice(options.hole_faces, options.hole_count, "hole_faces")?;
+        let triangles = enum_arg(
+            options.triangles,
+            "triangles",
+            |v| match v {
+                WEFT_TRIANGLES_CATMARK => Some(TriangleRule::Catmark),
+                WEFT_TRIANGLES_SMOOTH => Some(TriangleRule::Smooth),
+                _ => None,
+            },
+            "WEFT_TRIANGLES_CATMARK (0) or WEFT_TRIANGLES_SMOOTH (1)",
+        )?;
+        if options.reserved_flags != 0 {
+            return Err(Failure::invalid_argument(format!(
+                "reserved_flags is {}; it must be 0",
+                options.reserved_flags
+            )));
+        }
+        if let Some(i) = options.reserved.iter().position(|&r| r != 0) {
+            return Err(Failure::invalid_argument(format!(
+                "reserved[{i}] is {}; it must be 0",
+                options.reserved[i]
+            )));
+        }
         Ok((
             scheme,
             SubdivisionOptions {
@@ -124,6 +170,8 @@ pub(crate) unsafe fn options_arg(
                     .copied()
                     .zip(corner_sharpness.iter().copied())
                     .collect(),
+                holes: holes.to_vec(),
+                triangles,
             },
         ))
     }
@@ -207,7 +255,8 @@ pub unsafe extern "C" fn weft_subdivide_ex(
 }
 
 /// Gives the vertex, face and face-index counts of the mesh `levels` steps
-/// of `scheme` make from `mesh` (creases do not change them), without
+/// of `scheme` make from `mesh` (creases do not change them; holes do: see
+/// `weft_subdivision_counts_ex`), without
 /// subdividing: the sizes the buffers of `weft_subdivide_vertex_data`,
 /// `weft_subdivide_face_varying` and `weft_subdivide_limit` need.
 ///
@@ -241,6 +290,82 @@ pub unsafe extern "C" fn weft_subdivision_counts(
             *vertices = counts.vertex_count;
             *faces = counts.face_count;
             *indices = counts.index_count;
+            Ok(())
+        })
+    }
+}
+
+/// As `weft_subdivision_counts`, for the subdivision `options` describe:
+/// holes (and with WEFT_NAKED_EDGES_NONE the faces at the boundary) leave
+/// their vertices but no faces, so these are the sizes of
+/// `weft_subdivide_ex`'s result and of the buffers of
+/// `weft_subdivide_face_varying` with the same options.
+///
+/// `mesh` and `options` must not be NULL. Each `out_*` receives its count
+/// on success; none may be NULL.
+///
+/// Fails as `weft_subdivision_counts`, and with WEFT_STATUS_INVALID_ARGUMENT
+/// for an unknown option value or a hole past the face count.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `options` is NULL or readable with
+/// arrays of the lengths it states; the `out_*` are NULL or writable.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivision_counts_ex(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_vertex_count: *mut usize,
+    out_face_count: *mut usize,
+    out_index_count: *mut usize,
+) -> WeftStatus {
+    // SAFETY: `mesh`, `options` and the `out_*` are as the `# Safety` section
+    // above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let vertices = out_param(out_vertex_count, "out_vertex_count")?;
+            let faces = out_param(out_face_count, "out_face_count")?;
+            let indices = out_param(out_index_count, "out_index_count")?;
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let (scheme, options) = options_arg(options)?;
+            let counts = subdivide::refined_counts_with(mesh, scheme, levels, &options)?;
+            *vertices = counts.vertex_count;
+            *faces = counts.face_count;
+            *indices = counts.index_count;
+            Ok(())
+        })
+    }
+}
+
+/// As `weft_subdivision_parent_faces`, for the subdivision `options`
+/// describe: the faces of `weft_subdivide_ex`'s result, without the
+/// children of holes. `out_parents` needs room for the face count
+/// `weft_subdivision_counts_ex` gives, else the call fails with
+/// WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+///
+/// Fails as `weft_subdivision_counts_ex`, and with WEFT_STATUS_BUFFER_TOO_SMALL.
+///
+/// # Safety
+/// As `weft_subdivision_counts_ex`; `out_parents` is NULL or holds
+/// `capacity` writable values.
+#[no_mangle]
+pub unsafe extern "C" fn weft_subdivision_parent_faces_ex(
+    mesh: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    out_parents: *mut u32,
+    capacity: usize,
+) -> WeftStatus {
+    // SAFETY: `mesh`, `options` and `out_parents` are as the `# Safety`
+    // section above requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let (scheme, options) = options_arg(options)?;
+            let parents = subdivide::parent_faces_with(mesh, scheme, levels, &options)?;
+            check_room("out_parents", capacity, parents.len())?;
+            let out = output_slice(out_parents, capacity, "out_parents")?;
+            out[..parents.len()].copy_from_slice(&parents);
             Ok(())
         })
     }

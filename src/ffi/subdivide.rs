@@ -15,6 +15,8 @@ pub const WEFT_NAKED_EDGES_FIXED: u32 = 0;
 pub const WEFT_NAKED_EDGES_SMOOTH: u32 = 1;
 /// As smooth, but a boundary vertex with a single face stays (OpenSubdiv VTX_BOUNDARY_EDGE_AND_CORNER).
 pub const WEFT_NAKED_EDGES_CORNER_FIXED: u32 = 2;
+/// No boundary surface: the faces at every vertex on a naked edge are left out as holes, the rest refined as smooth (OpenSubdiv VTX_BOUNDARY_NONE; beyond Weaverbird's three modes; subdivision only).
+pub const WEFT_NAKED_EDGES_NONE: u32 = 3;
 /// Catmull-Clark: any polygons in, quads out.
 pub const WEFT_SCHEME_CATMULL_CLARK: u32 = 0;
 /// Loop: triangles in, triangles out.
@@ -28,9 +30,10 @@ pub(crate) fn naked_edges_arg(value: u32) -> Result<NakedEdges, Failure> {
             WEFT_NAKED_EDGES_FIXED => Some(NakedEdges::Fixed),
             WEFT_NAKED_EDGES_SMOOTH => Some(NakedEdges::Smooth),
             WEFT_NAKED_EDGES_CORNER_FIXED => Some(NakedEdges::CornerFixed),
+            WEFT_NAKED_EDGES_NONE => Some(NakedEdges::None),
             _ => None,
         },
-        "WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1) or WEFT_NAKED_EDGES_CORNER_FIXED (2)",
+        "WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1), WEFT_NAKED_EDGES_CORNER_FIXED (2) or WEFT_NAKED_EDGES_NONE (3)",
     )
 }
 
@@ -165,7 +168,9 @@ pub unsafe extern "C" fn weft_subdivision_face_count(
 
 /// Writes, for every face of the mesh that `levels` steps of `scheme` make
 /// from `cage`, the index of the cage face it comes from (the naked-edge
-/// mode does not change it). Only the cage's face sizes are used.
+/// mode does not change it, except WEFT_NAKED_EDGES_NONE, whose holes
+/// `weft_subdivision_parent_faces_ex` leaves out). Only the cage's face
+/// sizes are used.
 ///
 /// `cage` must not be NULL. `scheme` is a WEFT_SCHEME_* value.
 /// `out_parents` must have room for `capacity` values; when `capacity` is
@@ -317,6 +322,7 @@ mod tests {
             WEFT_NAKED_EDGES_CORNER_FIXED,
             NakedEdges::CornerFixed as u32
         );
+        assert_eq!(WEFT_NAKED_EDGES_NONE, NakedEdges::None as u32);
         assert_eq!(WEFT_SCHEME_CATMULL_CLARK, Scheme::CatmullClark as u32);
         assert_eq!(WEFT_SCHEME_LOOP, Scheme::Loop as u32);
     }

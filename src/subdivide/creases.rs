@@ -41,15 +41,18 @@ pub enum Creasing {
     Chaikin = 1,
 }
 
-impl Creasing {
-    /// The creasing method of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<Creasing> {
-        match value {
-            0 => Some(Creasing::Uniform),
-            1 => Some(Creasing::Chaikin),
-            _ => None,
-        }
-    }
+/// Catmull-Clark's weights at triangles (OpenSubdiv's
+/// `Sdc::Options::TriangleSubdivision`). Loop ignores it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, Default)]
+pub enum TriangleRule {
+    /// Catmull-Clark's own weights (`TRI_SUB_CATMARK`).
+    #[default]
+    Catmark,
+    /// "Smooth triangle" weights (`TRI_SUB_SMOOTH`): the point of a smooth
+    /// edge beside a triangle takes more of the triangle's face point, which
+    /// rounds triangle regions of mixed cages. Only the cage can have
+    /// triangles, so only the first level changes.
+    Smooth,
 }
 
 /// Everything besides the mesh that shapes a subdivision surface, as
@@ -72,6 +75,13 @@ pub struct SubdivisionOptions {
     pub corners: Vec<(u32, f64)>,
     /// How semi-sharp creases soften.
     pub creasing: Creasing,
+    /// Cage faces left out of the result (OpenSubdiv's hole tags): a hole
+    /// is not refined and leaves no faces, but its vertices and edges shape
+    /// its neighbours as before; vertices only holes use stay, unused.
+    /// Given twice is the same as once.
+    pub holes: Vec<u32>,
+    /// Catmull-Clark's weights at triangles.
+    pub triangles: TriangleRule,
 }
 
 impl SubdivisionOptions {

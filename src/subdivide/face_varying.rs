@@ -46,21 +46,6 @@ pub enum FaceVaryingLinear {
     All = 5,
 }
 
-impl FaceVaryingLinear {
-    /// The option of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<FaceVaryingLinear> {
-        Some(match value {
-            0 => FaceVaryingLinear::Smooth,
-            1 => FaceVaryingLinear::CornersOnly,
-            2 => FaceVaryingLinear::CornersPlus1,
-            3 => FaceVaryingLinear::CornersPlus2,
-            4 => FaceVaryingLinear::Boundaries,
-            5 => FaceVaryingLinear::All,
-            _ => return None,
-        })
-    }
-}
-
 impl Subdivider {
     /// Refines per-face-corner values: `values` holds `width` numbers per
     /// value, `value_indices` the value of every cage face corner (face after
@@ -120,6 +105,14 @@ impl Subdivider {
         for pair in self.levels.windows(2) {
             (values, indices) =
                 self.refine_face_varying(&pair[0], &pair[1], &values, width, &indices, linear);
+        }
+        // Holes leave their corners out.
+        if let Some(visible) = &self.visible {
+            indices = visible
+                .corners
+                .iter()
+                .map(|&c| indices[c as usize])
+                .collect();
         }
         let mut out = Vec::with_capacity(indices.len() * width);
         for &i in &indices {
@@ -351,11 +344,12 @@ impl Subdivider {
             let (x, y) = ends_of(c1);
             let weights = edge_weights(
                 self.scheme,
+                self.options.triangles,
+                faces,
+                connectivity,
                 sharpness,
                 &child.sharpness,
-                faces.vertex_count,
                 e,
-                corners.len(),
             );
             let index = match weights {
                 None => emit(&mut out, &[(0.5, x), (0.5, y)], &[]),

@@ -54,6 +54,7 @@ mod catmull_clark;
 mod creases;
 mod face_varying;
 mod gathers;
+mod holes;
 mod level;
 mod limit;
 mod loop_subdivision;
@@ -68,7 +69,8 @@ mod subdivider;
 use glam::DVec3;
 
 pub use creases::{
-    creases_from_mesh, Crease, CreasedMesh, Creasing, SubdivisionOptions, SHARPNESS_INFINITE,
+    creases_from_mesh, Crease, CreasedMesh, Creasing, SubdivisionOptions, TriangleRule,
+    SHARPNESS_INFINITE,
 };
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
@@ -122,6 +124,10 @@ pub fn subdivide(
     levels: u32,
     naked_edges: NakedEdges,
 ) -> Result<Mesh> {
+    if naked_edges == NakedEdges::None {
+        // Holes at the boundary: the creased path filters the faces.
+        return subdivide_with(mesh, scheme, levels, &SubdivisionOptions::new(naked_edges));
+    }
     // The first level reads the cage's positions in place, unless they are
     // near the top of the f64 range (see `scale.rs`).
     let scale = match levels == 0 || mesh.face_count() == 0 {
@@ -164,15 +170,29 @@ pub fn subdivide(
 pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>> {
     let face_count = refined_face_count(cage, scheme, levels)?;
     let mut parents = try_vec(face_count, "parent faces")?;
-    if levels == 0 {
-        parents.extend(0..cage.face_count() as u32);
-        return Ok(parents);
-    }
-    // Every level after the first splits each face into exactly 4.
-    let repeat = 1usize << (2 * (levels as usize - 1));
     for (f, &size) in cage.face_sizes().iter().enumerate() {
-        let children = scheme.children_of_face(size);
-        parents.extend(std::iter::repeat_n(f as u32, children * repeat));
+        let children = scheme.descendants_of_face(size, levels as usize);
+        parents.extend(std::iter::repeat_n(f as u32, children));
+    }
+    Ok(parents)
+}
+
+/// [`parent_faces`] of the subdivision `options` describe: the children of
+/// holes (and with [`NakedEdges::None`], of the faces at the boundary) are
+/// not there.
+///
+/// # Errors
+/// As [`parent_faces`]; [`crate::Error::InvalidArgument`] for a hole past
+/// the face count.
+pub fn parent_faces_with(
+    cage: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    options: &SubdivisionOptions,
+) -> Result<Vec<u32>> {
+    let mut parents = parent_faces(cage, scheme, levels)?;
+    if let Some(holes) = holes::mesh_holes(cage, options)? {
+        parents.retain(|&f| !holes[f as usize]);
     }
     Ok(parents)
 }
@@ -227,6 +247,38 @@ pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Refine
         face_count: faces as usize,
         index_count: indices as usize,
     })
+}
+
+/// [`refined_counts`] of the subdivision `options` describe: holes leave
+/// their vertices but not their faces. Creases and corners change nothing.
+///
+/// # Errors
+/// As [`refined_counts`]; [`crate::Error::InvalidArgument`] for a hole past
+/// the face count.
+pub fn refined_counts_with(
+    cage: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    options: &SubdivisionOptions,
+) -> Result<RefinedCounts> {
+    let mut counts = refined_counts(cage, scheme, levels)?;
+    if let Some(holes) = holes::mesh_holes(cage, options)? {
+        let levels = if cage.face_count() == 0 {
+            0
+        } else {
+            levels as usize
+        };
+        for (&size, _) in cage.face_sizes().iter().zip(&holes).filter(|(_, &h)| h) {
+            let faces = scheme.descendants_of_face(size, levels);
+            let corners = match levels {
+                0 => size as usize,
+                _ => scheme.refined_face_size() as usize,
+            };
+            counts.face_count -= faces;
+            counts.index_count -= faces * corners;
+        }
+    }
+    Ok(counts)
 }
 
 /// The exact vertex count after `levels` levels of Loop. Triangles on the

@@ -51,6 +51,15 @@ impl Refiner {
         levels: u32,
         naked_edges: NakedEdges,
     ) -> Result<Refiner> {
+        if naked_edges == NakedEdges::None {
+            // Holes at the boundary: the creased path filters the faces.
+            return Refiner::with_options(
+                cage,
+                scheme,
+                levels,
+                &SubdivisionOptions::new(naked_edges),
+            );
+        }
         let mut plans = Vec::new();
         let faces = plan_levels(cage, scheme, levels, naked_edges, |plan| plans.push(plan))?;
         let largest_intermediate = plans
@@ -92,7 +101,7 @@ impl Refiner {
             naked_edges: options.naked_edges,
             cage_vertex_count: cage.vertex_count(),
             plans: Vec::new(),
-            faces: creased.last().faces.clone(),
+            faces: creased.output_faces().clone(),
             cage_positions: cage.positions().to_vec(),
             scratch: Mutex::new([Vec::new(), Vec::new()]),
             creased: Some(Box::new(creased)),

@@ -19,18 +19,11 @@ pub enum NakedEdges {
     Smooth = 1,
     /// As Smooth, but a boundary vertex with one face stays (OpenSubdiv `VTX_BOUNDARY_EDGE_AND_CORNER`).
     CornerFixed = 2,
-}
-
-impl NakedEdges {
-    /// The mode of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<NakedEdges> {
-        match value {
-            0 => Some(NakedEdges::Fixed),
-            1 => Some(NakedEdges::Smooth),
-            2 => Some(NakedEdges::CornerFixed),
-            _ => None,
-        }
-    }
+    /// No boundary surface: every face at a vertex on a naked edge is left
+    /// out of the result as a hole, the rest refined as Smooth refines it
+    /// (OpenSubdiv `VTX_BOUNDARY_NONE`). A naked edge creased infinitely
+    /// sharp keeps its faces. Beyond Weaverbird's three modes.
+    None = 3,
 }
 
 /// A subdivision scheme. The values are stable (the C ABI uses them).
@@ -44,15 +37,6 @@ pub enum Scheme {
 }
 
 impl Scheme {
-    /// The scheme of a C enumeration value, or `None` when unknown.
-    pub fn from_u32(value: u32) -> Option<Scheme> {
-        match value {
-            0 => Some(Scheme::CatmullClark),
-            1 => Some(Scheme::Loop),
-            _ => None,
-        }
-    }
-
     /// The size of every refined face: quads or triangles.
     #[inline]
     pub(crate) fn refined_face_size(self) -> u32 {
@@ -68,6 +52,17 @@ impl Scheme {
         match self {
             Scheme::CatmullClark => size as usize,
             Scheme::Loop => 4,
+        }
+    }
+
+    /// How many faces `levels` levels make of a face of `size` corners
+    /// (the face itself at level 0; every level after the first splits
+    /// each face into 4).
+    #[inline]
+    pub(crate) fn descendants_of_face(self, size: u32, levels: usize) -> usize {
+        match levels {
+            0 => 1,
+            _ => self.children_of_face(size) << (2 * (levels - 1)),
         }
     }
 

@@ -13,6 +13,7 @@ use rayon::prelude::*;
 
 use super::creases::{
     child_sharpness_around, fractional_weight, is_sharp, Rule, Sharpness, SubdivisionOptions,
+    TriangleRule,
 };
 use super::level::{Connectivity, Faces};
 use super::scheme::{loop_smooth_weights, Scheme};
@@ -200,17 +201,21 @@ pub(crate) fn vertex_mask(
 /// The weights of edge `e`'s point on each end and each wing (face point or
 /// opposite vertex), or `None` for the crease's midpoint
 /// (`Sdc::Scheme::ComputeEdgeVertexMask`: smooth, crease, or blended by the
-/// sharpness of a crease whose point turns smooth).
+/// sharpness of a crease whose point turns smooth). With
+/// [`TriangleRule::Smooth`], Catmull-Clark's smooth weights beside a
+/// triangle are OpenSubdiv's `TRI_SUB_SMOOTH` ones.
 pub(crate) fn edge_weights(
     scheme: Scheme,
+    triangles: TriangleRule,
+    faces: &Faces,
+    connectivity: &Connectivity,
     sharpness: &Sharpness,
     child: &Sharpness,
-    vertex_count: usize,
     e: usize,
-    face_count: usize,
 ) -> Option<(f64, f64)> {
+    let corners = connectivity.edge_corners(e);
     let s = sharpness.edges[e];
-    if is_sharp(s) && child.rules[vertex_count + e] == Rule::Crease || face_count != 2 {
+    if is_sharp(s) && child.rules[faces.vertex_count + e] == Rule::Crease || corners.len() != 2 {
         return None;
     }
     let (parent_weight, child_weight) = if is_sharp(s) {
@@ -219,16 +224,38 @@ pub(crate) fn edge_weights(
     } else {
         (0.0, 1.0)
     };
-    Some(match scheme {
-        Scheme::CatmullClark => (
-            parent_weight * 0.5 + child_weight * 0.25,
-            0.25 * child_weight,
-        ),
-        Scheme::Loop => (
-            parent_weight * 0.5 + child_weight * 0.375,
-            0.125 * child_weight,
-        ),
-    })
+    let (smooth_end, smooth_wing) = match scheme {
+        Scheme::CatmullClark if triangles == TriangleRule::Smooth => {
+            smooth_triangle_weights(faces, connectivity, corners)
+        }
+        Scheme::CatmullClark => (0.25, 0.25),
+        Scheme::Loop => (0.375, 0.125),
+    };
+    Some((
+        parent_weight * 0.5 + child_weight * smooth_end,
+        smooth_wing * child_weight,
+    ))
+}
+
+/// `Sdc::Scheme<SCHEME_CATMARK>::assignSmoothMaskForEdge` with
+/// `TRI_SUB_SMOOTH`: a triangle wing weighs 0.470 instead of 1/4, both
+/// wings take the mean, and the ends share what is left.
+fn smooth_triangle_weights(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    corners: &[u32],
+) -> (f64, f64) {
+    const TRIANGLE_WING: f64 = 0.470;
+    let wing = |c: u32| match faces.corners(connectivity.face_of(c as usize)).len() {
+        3 => TRIANGLE_WING,
+        _ => 0.25,
+    };
+    let (first, second) = (wing(corners[0]), wing(corners[1]));
+    if first == 0.25 && second == 0.25 {
+        return (0.25, 0.25);
+    }
+    let wing = 0.5 * (first + second);
+    (0.5 * (1.0 - 2.0 * wing), wing)
 }
 
 /// The stencils taking one level (`faces`, `connectivity`, `sharpness`) to
@@ -303,9 +330,15 @@ pub(crate) fn level_stencils(
     // Edge points.
     for (e, &[a, b]) in connectivity.edges.iter().enumerate() {
         let corners = connectivity.edge_corners(e);
-        let Some((end, wing)) =
-            edge_weights(scheme, sharpness, child, vertex_count, e, corners.len())
-        else {
+        let Some((end, wing)) = edge_weights(
+            scheme,
+            options.triangles,
+            faces,
+            connectivity,
+            sharpness,
+            child,
+            e,
+        ) else {
             push(&mut [(a, 0.5), (b, 0.5)].into_iter());
             continue;
         };

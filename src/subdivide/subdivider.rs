@@ -6,6 +6,7 @@
 use glam::DVec3;
 
 use super::creases::{cage_sharpness, child_sharpness, Sharpness, SubdivisionOptions};
+use super::holes::{cage_holes, visible_faces, Visible};
 use super::level::{Connectivity, Faces};
 use super::point_rules::child_faces;
 use super::scale;
@@ -46,6 +47,8 @@ pub struct Subdivider {
     /// Per vertex of the last level, the corner OpenSubdiv starts its walk
     /// around the vertex from (its first incident face).
     pub(crate) first_corners: Vec<u32>,
+    /// With holes: the last level's faces without theirs.
+    pub(crate) visible: Option<Visible>,
 }
 
 impl Subdivider {
@@ -66,6 +69,7 @@ impl Subdivider {
         scheme.check_cage(cage)?;
         let (mut faces, mut connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
         let mut sharpness = cage_sharpness(&faces, &connectivity, options)?;
+        let holes = cage_holes(&faces, &connectivity, options)?;
         let levels = if cage.face_count() == 0 { 0 } else { levels };
         // OpenSubdiv's walk around a cage vertex starts in its lowest face,
         // around an edge's child in the edge's lowest face.
@@ -117,6 +121,16 @@ impl Subdivider {
                 sharpness: std::mem::replace(&mut sharpness, next_sharpness),
             });
         }
+        let visible = match holes {
+            Some(holes) => Some(visible_faces(
+                cage.face_sizes(),
+                scheme,
+                levels as usize,
+                &holes,
+                &faces,
+            )?),
+            None => None,
+        };
         kept.push(KeptLevel {
             faces,
             connectivity,
@@ -130,6 +144,7 @@ impl Subdivider {
             stencils,
             levels: kept,
             first_corners: vertex_first,
+            visible,
         })
     }
 
@@ -167,19 +182,44 @@ impl Subdivider {
         self.last().faces.vertex_count
     }
 
-    /// Number of refined faces.
+    /// The refined faces the result shows: the last level's, less the
+    /// children of holes.
+    pub(crate) fn output_faces(&self) -> &Faces {
+        self.visible
+            .as_ref()
+            .map_or(&self.last().faces, |visible| &visible.faces)
+    }
+
+    /// Number of refined faces (holes leave none).
     pub fn face_count(&self) -> usize {
-        self.last().faces.face_count()
+        self.output_faces().face_count()
     }
 
     /// The refined faces' vertex indices, one face after another.
     pub fn face_indices(&self) -> &[u32] {
-        &self.last().faces.indices
+        &self.output_faces().indices
     }
 
     /// Where each refined face starts in [`Subdivider::face_indices`], plus the total.
     pub fn face_offsets(&self) -> &[u32] {
-        &self.last().faces.offsets
+        &self.output_faces().offsets
+    }
+
+    /// The cage face each refined face comes from.
+    pub fn parent_faces(&self) -> Vec<u32> {
+        match &self.visible {
+            Some(visible) => visible.parents.clone(),
+            None => {
+                let cage = &self.levels[0].faces;
+                (0..cage.face_count())
+                    .flat_map(|f| {
+                        let size = cage.corners(f).len() as u32;
+                        let n = self.scheme.descendants_of_face(size, self.levels());
+                        std::iter::repeat_n(f as u32, n)
+                    })
+                    .collect()
+            }
+        }
     }
 
     /// Refines per-vertex data: `data` holds `width` numbers per cage vertex;
@@ -311,7 +351,7 @@ impl Subdivider {
         let mut positions = try_vec(self.vertex_count(), "refined positions")?;
         positions.resize(self.vertex_count(), DVec3::ZERO);
         self.evaluate(&self.cage_positions, &mut positions)?;
-        let faces = &self.last().faces;
+        let faces = self.output_faces();
         let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
         Ok(Mesh::from_valid_parts(
             positions,

@@ -380,6 +380,77 @@ static void test_crease_edges_vertex_map(void) {
   weft_mesh_free(pieces);
 }
 
+/* Holes leave their children out, keep every vertex, and the counts and
+ * parent faces with the same options say so; boundary "none" holes the
+ * faces at the boundary; the smooth-triangle rule and the reserved fields
+ * are checked. */
+static void test_holes_and_options(void) {
+  WeftMesh *mesh = cube(), *out = NULL, *plain = NULL;
+  WeftSubdivisionOptions options = catmull_clark();
+  const uint32_t holes[] = {1, 4, 1};
+  const uint32_t far_hole[] = {6};
+  size_t vertices = 0, faces = 0, indices = 0;
+  uint32_t parents[96];
+  size_t i;
+  int no_hole_child = 1;
+
+  options.hole_count = 3;
+  options.hole_faces = holes;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 2, &out), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_catmull_clark(mesh, 2, WEFT_NAKED_EDGES_SMOOTH, &plain), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(out) == weft_mesh_vertex_count(plain));
+  CHECK(weft_mesh_face_count(out) == 96 - 2 * 16);
+  CHECK_STATUS(weft_subdivision_counts_ex(mesh, &options, 2, &vertices, &faces, &indices), WEFT_STATUS_OK);
+  CHECK(vertices == 98 && faces == 64 && indices == 256);
+  CHECK_STATUS(weft_subdivision_parent_faces_ex(mesh, &options, 2, parents, 63), WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_STATUS(weft_subdivision_parent_faces_ex(mesh, &options, 2, parents, 96), WEFT_STATUS_OK);
+  for (i = 0; i < 64; ++i) no_hole_child &= parents[i] != 1 && parents[i] != 4;
+  CHECK(no_hole_child && parents[0] == 0 && parents[16] == 2);
+  weft_mesh_free(out);
+  weft_mesh_free(plain);
+  out = NULL;
+
+  options.hole_faces = far_hole;
+  options.hole_count = 1;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("hole 0 is face 6, but the mesh has 6 faces");
+  CHECK(out == NULL);
+  options.hole_faces = NULL;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_NULL_POINTER);
+  CHECK_MESSAGE("hole_faces");
+  options.hole_count = 0;
+
+  options.triangles = 2;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("WEFT_TRIANGLES_SMOOTH");
+  options.triangles = WEFT_TRIANGLES_SMOOTH;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_OK);
+  weft_mesh_free(out);
+  options.reserved[WEFT_SUBDIVISION_OPTIONS_RESERVED - 1] = 1;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("reserved[7] is 1; it must be 0");
+  options.reserved[WEFT_SUBDIVISION_OPTIONS_RESERVED - 1] = 0;
+  options.reserved_flags = 4;
+  CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_MESSAGE("reserved_flags is 4");
+  weft_mesh_free(mesh);
+
+  /* A 2 x 2 grid has no face away from the boundary: "none" leaves nothing,
+   * and keeps all 9 vertices and their refined points. */
+  {
+    const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0, 0, 2, 0, 1, 2, 0, 2, 2, 0};
+    const uint32_t grid_sizes[] = {4, 4, 4, 4};
+    const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7};
+    WeftMesh *grid = make_mesh(grid_positions, 9, grid_sizes, 4, grid_indices, 16);
+    CHECK_STATUS(weft_catmull_clark(grid, 1, WEFT_NAKED_EDGES_NONE, &out), WEFT_STATUS_OK);
+    CHECK(weft_mesh_face_count(out) == 0 && weft_mesh_vertex_count(out) == 9 + 12 + 4);
+    weft_mesh_free(out);
+    CHECK_STATUS(weft_laplacian_smooth(grid, 1, 0.5, WEFT_NAKED_EDGES_NONE, &out), WEFT_STATUS_INVALID_ARGUMENT);
+    CHECK_MESSAGE("only subdivision makes");
+    weft_mesh_free(grid);
+  }
+}
+
 int main(void) {
   test_crease_edges_from_mesh();
   test_crease_edges_vertex_map();
@@ -389,5 +460,6 @@ int main(void) {
   test_limit();
   test_refiner();
   test_errors();
+  test_holes_and_options();
   return check_summary("test_creases");
 }

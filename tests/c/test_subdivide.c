@@ -403,8 +403,8 @@ static void test_bad_arguments(void) {
   CHECK(out == NULL);
   CHECK_MESSAGE("use at most 13 levels");
   CHECK_STATUS(weft_loop(mesh, 1, 7, &out), WEFT_STATUS_INVALID_ARGUMENT);
-  CHECK_MESSAGE("naked_edges is 7; it must be WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1) or "
-                "WEFT_NAKED_EDGES_CORNER_FIXED (2)");
+  CHECK_MESSAGE("naked_edges is 7; it must be WEFT_NAKED_EDGES_FIXED (0), WEFT_NAKED_EDGES_SMOOTH (1), "
+                "WEFT_NAKED_EDGES_CORNER_FIXED (2) or WEFT_NAKED_EDGES_NONE (3)");
   CHECK(out == NULL);
   CHECK_STATUS(weft_loop(mesh, 1, WEFT_NAKED_EDGES_SMOOTH, NULL), WEFT_STATUS_NULL_POINTER);
   CHECK_MESSAGE("out_mesh is NULL");

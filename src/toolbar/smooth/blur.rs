@@ -63,7 +63,7 @@ pub fn blur(
             i / components
         )));
     }
-    let neighbours = Neighbours::new(mesh, naked);
+    let neighbours = Neighbours::new(mesh, naked)?;
     let mut current = try_vec::<f64>(values.len(), "blurred values")?;
     current.extend_from_slice(values);
     let mut next = try_vec::<f64>(values.len(), "blurred values")?;

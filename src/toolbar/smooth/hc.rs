@@ -113,7 +113,7 @@ pub fn laplacian_hc_with(mesh: &Mesh, iterations: u32, options: &HcOptions) -> R
         SmoothDirection::Free => Vec::new(),
         _ => vertex_normals(mesh),
     };
-    let neighbours = Neighbours::new(mesh, options.naked);
+    let neighbours = Neighbours::new(mesh, options.naked)?;
     let original = mesh.positions();
     let mut p = original.to_vec();
     let mut q = p.clone();

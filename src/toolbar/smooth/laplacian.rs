@@ -23,7 +23,7 @@ use super::{check_iterations, check_unit, NakedEdges, Neighbours};
 pub fn laplacian(mesh: &Mesh, iterations: u32, blend: f64, naked: NakedEdges) -> Result<Mesh> {
     check_iterations(iterations)?;
     check_unit("blend", blend)?;
-    let neighbours = Neighbours::new(mesh, naked);
+    let neighbours = Neighbours::new(mesh, naked)?;
     let mut current = mesh.positions().to_vec();
     let mut next = current.clone();
     for _ in 0..iterations {

@@ -39,8 +39,18 @@ pub(crate) struct Neighbours {
 }
 
 impl Neighbours {
-    pub(crate) fn new(mesh: &Mesh, naked: NakedEdges) -> Neighbours {
-        let topology = Topology::new(mesh);
+    /// # Errors
+    /// [`Error::InvalidArgument`] for [`NakedEdges::None`], a mode of
+    /// subdivision only (smoothing leaves no holes).
+    pub(crate) fn new(mesh: &Mesh, naked: NakedEdges) -> Result<Neighbours> {
+        if naked == NakedEdges::None {
+            return Err(Error::InvalidArgument(
+                "naked-edge mode none leaves holes, which only subdivision makes; smoothing takes \
+                 fixed, smooth or corner-fixed"
+                    .to_owned(),
+            ));
+        }
+        let topology = Topology::try_new(mesh)?;
         let n = mesh.vertex_count();
         let mut on_boundary = vec![false; n];
         let mut pinned = vec![false; n];
@@ -60,6 +70,7 @@ impl Neighbours {
                     NakedEdges::Fixed => true,
                     NakedEdges::Smooth => false,
                     NakedEdges::CornerFixed => face_counts[v] == 1,
+                    NakedEdges::None => false,
                 };
         }
         // An edge links two vertices when each end may use it.
@@ -89,7 +100,7 @@ impl Neighbours {
                 }
             }
         }
-        Neighbours { offsets, list }
+        Ok(Neighbours { offsets, list })
     }
 
     pub(crate) fn of(&self, v: usize) -> &[u32] {
@@ -129,18 +140,18 @@ mod tests {
             list.sort_unstable();
             list
         };
-        let fixed = Neighbours::new(&grid, NakedEdges::Fixed);
+        let fixed = Neighbours::new(&grid, NakedEdges::Fixed).unwrap();
         assert_eq!(sorted(&fixed, 4), [1, 3, 5, 7]);
         assert!(fixed.of(1).is_empty() && fixed.of(0).is_empty());
-        let smooth = Neighbours::new(&grid, NakedEdges::Smooth);
+        let smooth = Neighbours::new(&grid, NakedEdges::Smooth).unwrap();
         assert_eq!(sorted(&smooth, 1), [0, 2]);
         assert_eq!(sorted(&smooth, 0), [1, 3]);
-        let corner = Neighbours::new(&grid, NakedEdges::CornerFixed);
+        let corner = Neighbours::new(&grid, NakedEdges::CornerFixed).unwrap();
         assert_eq!(sorted(&corner, 1), [0, 2]);
         assert!(corner.of(0).is_empty());
         // A fin's shared edge pins its two vertices.
         let fin = shapes::fin();
-        let n = Neighbours::new(&fin, NakedEdges::Smooth);
+        let n = Neighbours::new(&fin, NakedEdges::Smooth).unwrap();
         let topology = Topology::new(&fin);
         for e in topology.non_manifold_edges() {
             for v in topology.edges()[e as usize] {

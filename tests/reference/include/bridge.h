@@ -45,7 +45,8 @@ std::unique_ptr<OsdRefiner> osd_refiner_new(
     rust::Slice<const uint32_t> face_indices, rust::Slice<const uint32_t> crease_pairs,
     rust::Slice<const float> crease_sharpness, rust::Slice<const uint32_t> corners,
     rust::Slice<const float> corner_sharpness, uint32_t fvar_value_count,
-    rust::Slice<const uint32_t> fvar_indices, const OsdSettings &settings, uint32_t levels);
+    rust::Slice<const uint32_t> fvar_indices, rust::Slice<const uint32_t> holes,
+    const OsdSettings &settings, uint32_t levels);
 
 class OsdStencils {
 public:

@@ -133,7 +133,8 @@ std::unique_ptr<OsdRefiner> osd_refiner_new(
     rust::Slice<const uint32_t> face_indices, rust::Slice<const uint32_t> crease_pairs,
     rust::Slice<const float> crease_sharpness, rust::Slice<const uint32_t> corners,
     rust::Slice<const float> corner_sharpness, uint32_t fvar_value_count,
-    rust::Slice<const uint32_t> fvar_indices, const OsdSettings &settings, uint32_t levels) {
+    rust::Slice<const uint32_t> fvar_indices, rust::Slice<const uint32_t> holes,
+    const OsdSettings &settings, uint32_t levels) {
   install_callbacks();
 
   // Index is int; the Rust side keeps every value below 2^31, and signed and
@@ -152,6 +153,8 @@ std::unique_ptr<OsdRefiner> osd_refiner_new(
   desc.numCorners = int(corner_sharpness.size());
   desc.cornerVertexIndices = as_index(corners);
   desc.cornerWeights = corner_sharpness.data();
+  desc.numHoles = int(holes.size());
+  desc.holeIndices = as_index(holes);
   Far::TopologyDescriptor::FVarChannel channel;
   if (!fvar_indices.empty()) {
     channel.numValues = int(fvar_value_count);
@@ -166,7 +169,10 @@ std::unique_ptr<OsdRefiner> osd_refiner_new(
   options.SetCreasingMethod(Sdc::Options::CreasingMethod(settings.creasing));
   options.SetFVarLinearInterpolation(
       Sdc::Options::FVarLinearInterpolation(settings.fvar_linear));
-  const Sdc::SchemeType scheme = settings.scheme == 1 ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK;
+  options.SetTriangleSubdivision(Sdc::Options::TriangleSubdivision(settings.triangles));
+  const Sdc::SchemeType scheme = settings.scheme == 2   ? Sdc::SCHEME_BILINEAR
+                                 : settings.scheme == 1 ? Sdc::SCHEME_LOOP
+                                                        : Sdc::SCHEME_CATMARK;
 
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
@@ -189,12 +195,21 @@ std::size_t OsdRefiner::vertex_count() const {
   return std::size_t(refiner_->GetLevel(refiner_->GetMaxLevel()).GetNumVertices());
 }
 
+// Faces tagged as holes (given, or made by VTX_BOUNDARY_NONE) are skipped,
+// as OpenSubdiv's users draw and export a refined level.
 std::size_t OsdRefiner::face_count() const {
-  return std::size_t(refiner_->GetLevel(refiner_->GetMaxLevel()).GetNumFaces());
+  const auto &last = refiner_->GetLevel(refiner_->GetMaxLevel());
+  std::size_t count = 0;
+  for (int f = 0; f < last.GetNumFaces(); ++f) count += !last.IsFaceHole(f);
+  return count;
 }
 
 std::size_t OsdRefiner::corner_count() const {
-  return std::size_t(refiner_->GetLevel(refiner_->GetMaxLevel()).GetNumFaceVertices());
+  const auto &last = refiner_->GetLevel(refiner_->GetMaxLevel());
+  std::size_t count = 0;
+  for (int f = 0; f < last.GetNumFaces(); ++f)
+    if (!last.IsFaceHole(f)) count += std::size_t(last.GetFaceVertices(f).size());
+  return count;
 }
 
 std::size_t OsdRefiner::fvar_value_count() const {
@@ -204,10 +219,11 @@ std::size_t OsdRefiner::fvar_value_count() const {
 
 void OsdRefiner::faces(rust::Slice<uint32_t> sizes, rust::Slice<uint32_t> indices) const {
   const auto &last = refiner_->GetLevel(refiner_->GetMaxLevel());
-  std::size_t corner = 0;
+  std::size_t corner = 0, face = 0;
   for (int f = 0; f < last.GetNumFaces(); ++f) {
+    if (last.IsFaceHole(f)) continue;
     auto verts = last.GetFaceVertices(f);
-    sizes[std::size_t(f)] = uint32_t(verts.size());
+    sizes[face++] = uint32_t(verts.size());
     for (int i = 0; i < verts.size(); ++i) indices[corner++] = uint32_t(verts[i]);
   }
 }
@@ -237,6 +253,7 @@ void OsdRefiner::interpolate_face_varying(rust::Slice<const double> cage, std::s
   const auto &last = refiner.GetLevel(refiner.GetMaxLevel());
   std::size_t corner = 0;
   for (int f = 0; f < last.GetNumFaces(); ++f) {
+    if (last.IsFaceHole(f)) continue;
     auto values = last.GetFaceFVarValues(f, 0);
     for (int i = 0; i < values.size(); ++i) out_indices[corner++] = uint32_t(values[i]);
   }

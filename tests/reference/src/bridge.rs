@@ -5,7 +5,7 @@
 pub(crate) mod ffi {
     /// Sdc options as plain numbers (the values of the Sdc enumerations).
     struct OsdSettings {
-        /// 0 Catmull-Clark, 1 Loop.
+        /// 0 Catmull-Clark, 1 Loop, 2 bilinear.
         scheme: u32,
         /// `Sdc::Options::VtxBoundaryInterpolation`.
         boundary: u32,
@@ -13,6 +13,8 @@ pub(crate) mod ffi {
         creasing: u32,
         /// `Sdc::Options::FVarLinearInterpolation`.
         fvar_linear: u32,
+        /// `Sdc::Options::TriangleSubdivision`.
+        triangles: u32,
         /// `UniformOptions::fullTopologyInLastLevel`: off, as OpenSubdiv's
         /// users refine for positions and faces; `PrimvarRefiner::Limit`
         /// needs it on.
@@ -43,6 +45,7 @@ pub(crate) mod ffi {
             corner_sharpness: &[f32],
             fvar_value_count: u32,
             fvar_indices: &[u32],
+            holes: &[u32],
             settings: &OsdSettings,
             levels: u32,
         ) -> Result<UniquePtr<OsdRefiner>>;

@@ -128,11 +128,16 @@ pub enum Scheme {
     CatmullClark,
     /// `SCHEME_LOOP`: triangles in, triangles out.
     Loop,
+    /// `SCHEME_BILINEAR`: any polygons in, quads out, nothing moves.
+    Bilinear,
 }
 
 /// How boundary vertices are treated (`Sdc::Options::VtxBoundaryInterpolation`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum BoundaryInterpolation {
+    /// `VTX_BOUNDARY_NONE`: as `EdgeOnly`, and every face at a vertex on a
+    /// boundary edge not creased infinitely sharp is a hole (Weft's `None`).
+    None,
     /// `VTX_BOUNDARY_EDGE_ONLY`: boundary edges are infinitely sharp creases;
     /// every boundary vertex follows the B-spline rule (Weft's `Smooth`).
     #[default]
@@ -195,6 +200,13 @@ pub struct OsdOptions {
     /// The face-varying linear option (used by
     /// [`opensubdiv_refine_face_varying`]).
     pub fvar_linear: FVarLinear,
+    /// Hole faces (`holeIndices`): refined but tagged, and left out of
+    /// [`OsdRefiner::faces`] and the face-varying indices, as OpenSubdiv's
+    /// users skip them.
+    pub holes: Vec<u32>,
+    /// Catmark's "smooth triangle" weights (`TRI_SUB_SMOOTH`) instead of
+    /// `TRI_SUB_CATMARK`.
+    pub smooth_triangles: bool,
     /// Build the last level's full topology (`fullTopologyInLastLevel`).
     /// Off by default, as OpenSubdiv's users refine for positions and faces
     /// (it doubles the refinement's time); [`OsdRefiner::limit`] needs it on.
@@ -230,8 +242,10 @@ impl OsdOptions {
             scheme: match self.scheme {
                 Scheme::CatmullClark => 0,
                 Scheme::Loop => 1,
+                Scheme::Bilinear => 2,
             },
             boundary: match self.boundary {
+                BoundaryInterpolation::None => 0,
                 BoundaryInterpolation::EdgeOnly => 1,
                 BoundaryInterpolation::EdgeAndCorner => 2,
             },
@@ -240,6 +254,7 @@ impl OsdOptions {
                 CreasingMethod::Chaikin => 1,
             },
             fvar_linear: self.fvar_linear as u32,
+            triangles: self.smooth_triangles as u32,
             full_topology: self.full_topology,
         }
     }
@@ -408,6 +423,17 @@ impl OsdRefiner {
                 options.corner_vertices[i]
             ));
         }
+        if let Some(i) = options
+            .holes
+            .iter()
+            .position(|&f| f as usize >= cage.face_count())
+        {
+            return refuse(format!(
+                "hole {i} is face {}, past {}",
+                options.holes[i],
+                cage.face_count()
+            ));
+        }
         let (value_count, value_indices) = fvar.unwrap_or((0, &[]));
         if fvar.is_some() {
             if value_indices.len() != cage.face_indices.len() {
@@ -446,6 +472,7 @@ impl OsdRefiner {
             &corner_sharpness,
             value_count as u32,
             value_indices,
+            &options.holes,
             &options.settings(),
             levels,
         )?;
