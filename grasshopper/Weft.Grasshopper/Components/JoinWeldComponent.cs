@@ -1,6 +1,4 @@
-using System;
 using System.Runtime.InteropServices;
-using System.Collections.Generic;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper

@@ -1,8 +1,6 @@
 using System;
 using System.Runtime.InteropServices;
-using System.Collections.Generic;
 using Grasshopper.Kernel;
-using Rhino.Geometry;
 
 namespace Weft.Grasshopper
 {
@@ -34,19 +32,19 @@ namespace Weft.Grasshopper
             double tolerance = GetTolerance(DA, 1);
             WeftTNode[] nodes = Mending.FindTNodes(mesh, tolerance);
             double[] positions = mesh.GetPositions();
-            var points = new List<Point3d>(nodes.Length);
-            var faces = new List<int>(nodes.Length);
-            foreach (WeftTNode node in nodes)
+            var nodePositions = new double[3 * nodes.Length];
+            var faces = new int[nodes.Length];
+            for (int i = 0; i < nodes.Length; i++)
             {
-                points.Add(new Point3d(positions[3 * node.Vertex], positions[3 * node.Vertex + 1], positions[3 * node.Vertex + 2]));
-                faces.Add((int)node.Face);
+                Array.Copy(positions, 3 * (int)nodes[i].Vertex, nodePositions, 3 * i, 3);
+                faces[i] = (int)nodes[i].Face;
             }
             int inserted;
             using (WeftMesh repaired = Mending.RepairTNodes(mesh, tolerance, out inserted))
             {
                 SetMesh(DA, 0, repaired);
             }
-            DA.SetDataList(1, points);
+            DA.SetDataList(1, RhinoMeshes.ToPoints(nodePositions));
             DA.SetDataList(2, faces);
             if (inserted > 0) Remark(inserted + " T-node(s) inserted into their edges.");
         }
