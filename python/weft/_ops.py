@@ -897,40 +897,27 @@ def match_lines_to_edges(mesh, lines, tolerance):
     return out
 
 
-def split_polygons(mesh, levels=1):
-    """Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing::
+def _levels_operation(export, summary, example, faces):
+    """The wrapper of one of the exports that take a mesh and a level count and
+    make a mesh, named after it; its doctest subdivides ``example`` once and
+    expects ``faces`` faces (all these exports share one signature, as
+    Toolbar.Levels does in the C# wrapper)."""
+    name = export.__name__[len("weft_"):]
 
-        >>> weft.split_polygons(weft.box(), 1).face_count
-        24
-    """
-    return _mesh_op(lib.weft_split_polygons, mesh, _count(levels, "levels"))
+    def operation(mesh, levels=1):
+        return _mesh_op(export, mesh, _count(levels, "levels"))
 
-
-def split_triangles(mesh, levels=1):
-    """Splits each triangle into four through its edge midpoints, without smoothing::
-
-        >>> weft.split_triangles(weft.platonic("octahedron"), 1).face_count
-        32
-    """
-    return _mesh_op(lib.weft_split_triangles, mesh, _count(levels, "levels"))
+    operation.__name__ = operation.__qualname__ = name
+    operation.__doc__ = f"{summary}::\n\n    >>> weft.{name}({example}, 1).face_count\n    {faces}\n"
+    return operation
 
 
-def constant_quads_split(mesh, levels=1):
-    """Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing::
-
-        >>> weft.constant_quads_split(weft.box(), 1).face_count
-        24
-    """
-    return _mesh_op(lib.weft_constant_quads_split, mesh, _count(levels, "levels"))
-
-
-def midedge(mesh, levels=1):
-    """The mid-edge subdivision (Peters and Reif)::
-
-        >>> weft.midedge(weft.box(), 1).face_count
-        14
-    """
-    return _mesh_op(lib.weft_midedge, mesh, _count(levels, "levels"))
+split_polygons = _levels_operation(lib.weft_split_polygons, "Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing", "weft.box()", 24)
+split_triangles = _levels_operation(lib.weft_split_triangles, "Splits each triangle into four through its edge midpoints, without smoothing", 'weft.platonic("octahedron")', 32)
+constant_quads_split = _levels_operation(lib.weft_constant_quads_split, "Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing", "weft.box()", 24)
+midedge = _levels_operation(lib.weft_midedge, "The mid-edge subdivision (Peters and Reif)", "weft.box()", 14)
+sierpinski_triangles = _levels_operation(lib.weft_sierpinski_triangles, "A triangle in each corner of each face, the middle left open", 'weft.platonic("tetrahedron")', 12)
+sierpinski_carpet = _levels_operation(lib.weft_sierpinski_carpet, "Cuts each quad into 3 × 3 and removes the middle one", "weft.box()", 48)
 
 
 def inner_polygons(mesh, levels=1, pull=0.5):
@@ -940,24 +927,6 @@ def inner_polygons(mesh, levels=1, pull=0.5):
         30
     """
     return _mesh_op(lib.weft_inner_polygons, mesh, _count(levels, "levels"), _number(pull, "pull"))
-
-
-def sierpinski_triangles(mesh, levels=1):
-    """A triangle in each corner of each face, the middle left open::
-
-        >>> weft.sierpinski_triangles(weft.platonic("tetrahedron"), 1).face_count
-        12
-    """
-    return _mesh_op(lib.weft_sierpinski_triangles, mesh, _count(levels, "levels"))
-
-
-def sierpinski_carpet(mesh, levels=1):
-    """Cuts each quad into 3 × 3 and removes the middle one::
-
-        >>> weft.sierpinski_carpet(weft.box(), 1).face_count
-        48
-    """
-    return _mesh_op(lib.weft_sierpinski_carpet, mesh, _count(levels, "levels"))
 
 
 def laplacian_smooth(mesh, iterations=1, blend=0.5, naked_edges="fixed"):
