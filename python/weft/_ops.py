@@ -567,16 +567,24 @@ def flip(mesh):
     return _mesh_op(lib.weft_flip, mesh)
 
 
+def _mesh_doubles(function, mesh, count, width=None):
+    """Calls an export of the form f(mesh, double *out, size_t len) that writes
+    ``width`` doubles (one when None) for each of the mesh's ``count``
+    (``"face_count"`` or ``"vertex_count"``) into a new array."""
+    handle = check_mesh(mesh)
+    rows = getattr(mesh, count)
+    out = np.empty(rows if width is None else (rows, width), dtype=np.float64)
+    function(handle, _arrays.address(out), out.size)
+    return out
+
+
 def face_normals(mesh):
     """The unit normal of each face (Newell's method): an (f, 3) array::
 
         >>> weft.face_normals(weft.box()).shape
         (6, 3)
     """
-    handle = check_mesh(mesh)
-    out = np.empty((mesh.face_count, 3), dtype=np.float64)
-    lib.weft_face_normals(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_face_normals, mesh, "face_count", 3)
 
 
 def vertex_normals(mesh):
@@ -585,10 +593,7 @@ def vertex_normals(mesh):
         >>> weft.vertex_normals(weft.box()).shape
         (8, 3)
     """
-    handle = check_mesh(mesh)
-    out = np.empty((mesh.vertex_count, 3), dtype=np.float64)
-    lib.weft_vertex_normals(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_vertex_normals, mesh, "vertex_count", 3)
 
 
 def planarity(mesh):
@@ -598,10 +603,7 @@ def planarity(mesh):
         >>> float(weft.planarity(weft.box()).max())
         0.0
     """
-    handle = check_mesh(mesh)
-    out = np.empty(mesh.face_count, dtype=np.float64)
-    lib.weft_planarity(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_planarity, mesh, "face_count")
 
 
 def naked_boundaries(mesh):
