@@ -23,15 +23,8 @@ namespace Weft
         /// </exception>
         public static WeftMesh Subdivide(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options)
         {
-            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
-            uint steps = Arguments.Unsigned(levels, "levels");
             WeftMeshHandle result;
-            uint status;
-            using (SubdivisionOptions.Pinned pinned = SubdivisionOptions.Pin(options, scheme))
-            {
-                NativeSubdivisionOptions native = pinned.Native;
-                status = NativeMethods.weft_subdivide_ex(handle, ref native, steps, out result);
-            }
+            uint status = SubdivisionOptions.Call(NativeMethods.weft_subdivide_ex, mesh, "mesh", options, scheme, levels, out result);
             return WeftMesh.FromCall(status, result);
         }
 

@@ -137,13 +137,11 @@ namespace Weft
     /// Voronoi cells, one polygon per input point (empty for a point outside
     /// the boundary or repeating an earlier one), owned by the native library.
     /// </summary>
-    public sealed class VoronoiCells : IDisposable
+    public sealed class VoronoiCells : NativeObject<WeftCellsHandle>
     {
-        private readonly WeftCellsHandle handle;
-
         internal VoronoiCells(WeftCellsHandle handle)
+            : base(handle, "The cells were disposed and their native memory freed.")
         {
-            this.handle = handle;
         }
 
         /// <summary>Number of cells (the number of input points).</summary>
@@ -200,27 +198,6 @@ namespace Weft
             WeftMeshHandle result;
             uint status = NativeMethods.weft_cells_to_mesh(Handle, out result);
             return WeftMesh.FromCall(status, result);
-        }
-
-        /// <summary>True once <see cref="Dispose"/> has run.</summary>
-        public bool IsDisposed
-        {
-            get { return handle.IsClosed; }
-        }
-
-        /// <summary>Frees the native cells; later calls are ignored.</summary>
-        public void Dispose()
-        {
-            handle.Dispose();
-        }
-
-        private WeftCellsHandle Handle
-        {
-            get
-            {
-                if (handle.IsClosed) throw new ObjectDisposedException("VoronoiCells", "The cells were disposed and their native memory freed.");
-                return handle;
-            }
         }
     }
 }

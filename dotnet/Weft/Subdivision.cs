@@ -89,9 +89,9 @@ namespace Weft
     /// vertices costs only <see cref="Evaluate"/>, which writes into a caller
     /// buffer and allocates nothing. Dispose it to free the native plan.
     /// </summary>
-    public sealed class Refiner : IDisposable
+    public sealed class Refiner : NativeObject<WeftRefinerHandle>
     {
-        private readonly WeftRefinerHandle handle;
+        private const string Disposed = "The refiner was disposed and its native memory freed.";
 
         static Refiner()
         {
@@ -104,11 +104,8 @@ namespace Weft
         /// </summary>
         /// <exception cref="WeftException">An unknown scheme or mode, Loop on a non-triangle (<see cref="WeftStatus.NotTriangles"/>), a result too large.</exception>
         public Refiner(WeftMesh cage, Scheme scheme, int levels, NakedEdges nakedEdges)
+            : base(Plan(cage, scheme, levels, nakedEdges), Disposed)
         {
-            WeftRefinerHandle created;
-            uint status = NativeMethods.weft_refiner_new(
-                Arguments.Mesh(cage, "cage"), (uint)scheme, Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out created);
-            handle = Take(status, created);
             CageVertexCount = cage.VertexCount;
         }
 
@@ -120,18 +117,24 @@ namespace Weft
         /// </summary>
         /// <exception cref="WeftException">As <see cref="Subdivision.Subdivide"/>.</exception>
         public Refiner(WeftMesh cage, Scheme scheme, int levels, SubdivisionOptions options)
+            : base(Plan(cage, scheme, levels, options), Disposed)
         {
-            WeftMeshHandle mesh = Arguments.Mesh(cage, "cage");
-            uint steps = Arguments.Unsigned(levels, "levels");
-            WeftRefinerHandle created;
-            uint status;
-            using (SubdivisionOptions.Pinned pinned = SubdivisionOptions.Pin(options, scheme))
-            {
-                NativeSubdivisionOptions native = pinned.Native;
-                status = NativeMethods.weft_refiner_new_ex(mesh, ref native, steps, out created);
-            }
-            handle = Take(status, created);
             CageVertexCount = cage.VertexCount;
+        }
+
+        private static WeftRefinerHandle Plan(WeftMesh cage, Scheme scheme, int levels, NakedEdges nakedEdges)
+        {
+            WeftRefinerHandle created;
+            uint status = NativeMethods.weft_refiner_new(
+                Arguments.Mesh(cage, "cage"), (uint)scheme, Arguments.Unsigned(levels, "levels"), (uint)nakedEdges, out created);
+            return Take(status, created);
+        }
+
+        private static WeftRefinerHandle Plan(WeftMesh cage, Scheme scheme, int levels, SubdivisionOptions options)
+        {
+            WeftRefinerHandle created;
+            uint status = SubdivisionOptions.Call(NativeMethods.weft_refiner_new_ex, cage, "cage", options, scheme, levels, out created);
+            return Take(status, created);
         }
 
         private static WeftRefinerHandle Take(uint status, WeftRefinerHandle created)
@@ -181,27 +184,6 @@ namespace Weft
             WeftMeshHandle result;
             uint status = NativeMethods.weft_refiner_mesh(Handle, out result);
             return WeftMesh.FromCall(status, result);
-        }
-
-        /// <summary>True once <see cref="Dispose"/> has run.</summary>
-        public bool IsDisposed
-        {
-            get { return handle.IsClosed; }
-        }
-
-        /// <summary>Frees the native plan; later calls are ignored.</summary>
-        public void Dispose()
-        {
-            handle.Dispose();
-        }
-
-        private WeftRefinerHandle Handle
-        {
-            get
-            {
-                if (handle.IsClosed) throw new ObjectDisposedException("Refiner", "The refiner was disposed and its native memory freed.");
-                return handle;
-            }
         }
     }
 }

@@ -204,6 +204,25 @@ namespace Weft
             return new Pinned(options ?? new SubdivisionOptions(), scheme);
         }
 
+        /// <summary>An export that takes a mesh, the options and a level count and makes one native object.</summary>
+        internal delegate uint OptionsCall<TResult>(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, out TResult result);
+
+        /// <summary>
+        /// Checks <paramref name="mesh"/> (named <paramref name="meshName"/> in errors) and
+        /// <paramref name="levels"/>, then makes <paramref name="call"/> with the options pinned for it.
+        /// </summary>
+        internal static uint Call<TResult>(OptionsCall<TResult> call, WeftMesh mesh, string meshName, SubdivisionOptions options,
+                                           Scheme scheme, int levels, out TResult result)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, meshName);
+            uint steps = Arguments.Unsigned(levels, "levels");
+            using (Pinned pinned = Pin(options, scheme))
+            {
+                NativeSubdivisionOptions native = pinned.Native;
+                return call(handle, ref native, steps, out result);
+            }
+        }
+
         /// <summary>The native struct over pinned copies of the arrays, valid until disposed.</summary>
         internal sealed class Pinned : IDisposable
         {

@@ -166,7 +166,7 @@ namespace Weft.Tests
             using (var cube = Shapes.Cube())
             using (var refined = Subdivision.Subdivide(cube, Scheme.CatmullClark, 2, options))
             {
-                double[] carried = Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 2, options, WrapperTests.CubePositions, 3);
+                double[] carried = Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 2, options, UnitCube.Positions, 3);
                 Shapes.Near(refined.GetPositions(), carried, 1e-12, "carried positions");
                 // A constant colour (width 4) stays that colour everywhere.
                 var colours = new double[4 * 8];
@@ -185,7 +185,7 @@ namespace Weft.Tests
                 // Into a caller buffer, larger than needed: the rest is untouched.
                 var buffer = new double[3 * 98 + 2];
                 buffer[3 * 98] = -7;
-                Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 2, options, WrapperTests.CubePositions, 3, buffer);
+                Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 2, options, UnitCube.Positions, 3, buffer);
                 t.Equal(carried[5], buffer[5], "caller buffer filled");
                 t.Equal(-7.0, buffer[3 * 98], "past the end untouched");
             }
@@ -199,7 +199,7 @@ namespace Weft.Tests
             {
                 // One value per vertex, used by all of its corners: no seams, smooth rules.
                 double[] values = Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 2, options, FaceVaryingLinear.Smooth,
-                    WrapperTests.CubePositions, 3, WrapperTests.CubeIndices);
+                    UnitCube.Positions, 3, UnitCube.Indices);
                 uint[] indices = refined.GetFaceIndices();
                 t.Equal(3 * indices.Length, values.Length, "3 values per refined face corner");
                 double[] positions = refined.GetPositions();
@@ -246,12 +246,12 @@ namespace Weft.Tests
         private static void RefinerWithOptions()
         {
             var options = Hard(BottomLoop).AddCorner(7, 2);
-            var moved = (double[])WrapperTests.CubePositions.Clone();
+            var moved = (double[])UnitCube.Positions.Clone();
             for (int i = 0; i < moved.Length; i++) moved[i] *= 3;
             moved[3 * 5 + 2] += 0.5;
             using (var cube = Shapes.Cube())
             using (var refiner = new Refiner(cube, Scheme.CatmullClark, 2, options))
-            using (var movedCube = WeftMesh.Create(moved, WrapperTests.CubeSizes, WrapperTests.CubeIndices))
+            using (var movedCube = WeftMesh.Create(moved, UnitCube.Sizes, UnitCube.Indices))
             using (var fresh = Subdivision.Subdivide(movedCube, Scheme.CatmullClark, 2, options))
             using (var plain = Subdivision.CatmullClark(movedCube, 2, NakedEdges.Smooth))
             {
@@ -284,11 +284,11 @@ namespace Weft.Tests
             var indices = new uint[24];
             for (int c = 0; c < 24; c++)
             {
-                uint v = WrapperTests.CubeIndices[c];
-                Array.Copy(WrapperTests.CubePositions, 3 * (int)v, positions, 3 * c, 3);
+                uint v = UnitCube.Indices[c];
+                Array.Copy(UnitCube.Positions, 3 * (int)v, positions, 3 * c, 3);
                 indices[c] = (uint)c;
             }
-            return WeftMesh.Create(positions, WrapperTests.CubeSizes, indices);
+            return WeftMesh.Create(positions, UnitCube.Sizes, indices);
         }
 
         private static void CreaseEdgesFromUnweldedCube()
@@ -453,26 +453,26 @@ namespace Weft.Tests
             {
                 var seven = new double[21];
                 Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, seven, 3), WeftStatus.CountMismatch, "");
-                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, WrapperTests.CubePositions, 0), WeftStatus.InvalidArgument, "width");
-                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, WrapperTests.CubePositions, -3), WeftStatus.InvalidArgument, "width is -3");
-                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, WrapperTests.CubePositions, 3, new double[3 * 26 - 1]),
+                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, UnitCube.Positions, 0), WeftStatus.InvalidArgument, "width");
+                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, UnitCube.Positions, -3), WeftStatus.InvalidArgument, "width is -3");
+                Shapes.Fails(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, UnitCube.Positions, 3, new double[3 * 26 - 1]),
                     WeftStatus.BufferTooSmall, "out_data has room for 77 elements but 78 are needed");
                 Shapes.Fails(() => Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, null, new double[3 * 26 - 1], new double[3 * 26 - 1]),
                     WeftStatus.BufferTooSmall, "77");
                 Shapes.Fails(() => Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, null, new double[3 * 26], new double[3]),
                     WeftStatus.CountMismatch, "normals holds 3 doubles but positions holds 78");
-                var bad = (uint[])WrapperTests.CubeIndices.Clone();
+                var bad = (uint[])UnitCube.Indices.Clone();
                 bad[5] = 8;
-                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, WrapperTests.CubePositions, 3, bad),
+                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, UnitCube.Positions, 3, bad),
                     WeftStatus.IndexOutOfRange, "face corner 5 uses value 8");
                 var short23 = new uint[23];
-                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, WrapperTests.CubePositions, 3, short23),
+                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, UnitCube.Positions, 3, short23),
                     WeftStatus.CountMismatch, "");
-                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, (FaceVaryingLinear)6, WrapperTests.CubePositions, 3, WrapperTests.CubeIndices),
+                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, (FaceVaryingLinear)6, UnitCube.Positions, 3, UnitCube.Indices),
                     WeftStatus.InvalidArgument, "face_varying_linear is 6");
-                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, new double[10], 3, WrapperTests.CubeIndices),
+                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, new double[10], 3, UnitCube.Indices),
                     WeftStatus.CountMismatch, "values holds 10 doubles, which is not 3 per value");
-                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, WrapperTests.CubePositions, 3, WrapperTests.CubeIndices, new double[10]),
+                Shapes.Fails(() => Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 1, null, FaceVaryingLinear.All, UnitCube.Positions, 3, UnitCube.Indices, new double[10]),
                     WeftStatus.BufferTooSmall, "");
             }
             // Catmull-Clark's limit at level 0 needs quads.
@@ -489,7 +489,7 @@ namespace Weft.Tests
             uint[] pairs;
             t.Throws<ObjectDisposedException>(() => Subdivision.Subdivide(cube, Scheme.CatmullClark, 1, null), "subdivide");
             t.Throws<ObjectDisposedException>(() => Subdivision.Counts(cube, Scheme.CatmullClark, 1), "counts");
-            t.Throws<ObjectDisposedException>(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, WrapperTests.CubePositions, 3), "vertex data");
+            t.Throws<ObjectDisposedException>(() => Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, null, UnitCube.Positions, 3), "vertex data");
             t.Throws<ObjectDisposedException>(() => Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, null), "limit");
             t.Throws<ObjectDisposedException>(() => Subdivision.CreaseEdgesFromMesh(cube, 30, out pairs), "crease edges");
             t.Throws<ObjectDisposedException>(() => new Refiner(cube, Scheme.CatmullClark, 1, new SubdivisionOptions()), "refiner");

@@ -191,9 +191,9 @@ namespace Weft.Tests
 
         private static void Orientation()
         {
-            var indices = (uint[])WrapperTests.CubeIndices.Clone();
+            var indices = (uint[])UnitCube.Indices.Clone();
             Array.Reverse(indices, 0, 4);
-            using (var broken = WeftMesh.Create(WrapperTests.CubePositions, WrapperTests.CubeSizes, indices))
+            using (var broken = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, indices))
             {
                 t.False(broken.Info().IsOriented, "one face flipped");
                 int flipped;

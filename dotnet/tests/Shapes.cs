@@ -7,18 +7,18 @@ namespace Weft.Tests
     {
         internal static Runner T;
 
-        /// <summary>The unit cube of <see cref="WrapperTests"/>, faces wound outwards (face 0 is the bottom, facing -z).</summary>
+        /// <summary>The unit cube of <see cref="UnitCube"/>, faces wound outwards (face 0 is the bottom, facing -z).</summary>
         internal static WeftMesh Cube()
         {
-            return WeftMesh.Create(WrapperTests.CubePositions, WrapperTests.CubeSizes, WrapperTests.CubeIndices);
+            return WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
         }
 
         /// <summary>The cube moved by (dx, 0, 0).</summary>
         internal static WeftMesh CubeAt(double dx)
         {
-            var positions = (double[])WrapperTests.CubePositions.Clone();
+            var positions = (double[])UnitCube.Positions.Clone();
             for (int i = 0; i < positions.Length; i += 3) positions[i] += dx;
-            return WeftMesh.Create(positions, WrapperTests.CubeSizes, WrapperTests.CubeIndices);
+            return WeftMesh.Create(positions, UnitCube.Sizes, UnitCube.Indices);
         }
 
         /// <summary>The octahedron with vertices on the unit axes, 8 triangles wound outwards.</summary>

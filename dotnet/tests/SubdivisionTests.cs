@@ -161,12 +161,12 @@ namespace Weft.Tests
         private static void RefinerMatchesFresh()
         {
             // The cage moved: scaled by 2 and one corner lifted.
-            var moved = (double[])WrapperTests.CubePositions.Clone();
+            var moved = (double[])UnitCube.Positions.Clone();
             for (int i = 0; i < moved.Length; i++) moved[i] *= 2;
             moved[3 * 7 + 2] += 0.75;
             using (var cube = Shapes.Cube())
             using (var refiner = new Refiner(cube, Scheme.CatmullClark, 2, NakedEdges.Smooth))
-            using (var movedCube = WeftMesh.Create(moved, WrapperTests.CubeSizes, WrapperTests.CubeIndices))
+            using (var movedCube = WeftMesh.Create(moved, UnitCube.Sizes, UnitCube.Indices))
             using (var fresh = Subdivision.CatmullClark(movedCube, 2, NakedEdges.Smooth))
             {
                 t.Equal(fresh.VertexCount, refiner.VertexCount, "refined vertex count");
@@ -176,7 +176,7 @@ namespace Weft.Tests
                 refiner.Evaluate(moved, output);
                 Shapes.Near(fresh.GetPositions(), output, 1e-12, "refined positions");
                 // Back to the original cage: the same buffer, re-evaluated.
-                refiner.Evaluate(WrapperTests.CubePositions, output);
+                refiner.Evaluate(UnitCube.Positions, output);
                 using (var original = Subdivision.CatmullClark(cube, 2, NakedEdges.Smooth))
                 {
                     Shapes.Near(original.GetPositions(), output, 1e-12, "re-evaluated positions");
@@ -217,15 +217,15 @@ namespace Weft.Tests
                 var output = new double[3 * refiner.VertexCount];
                 var seven = new double[21];
                 Shapes.Fails(() => refiner.Evaluate(seven, output), WeftStatus.CountMismatch, "vertex_count is 7");
-                Shapes.Fails(() => refiner.Evaluate(WrapperTests.CubePositions, new double[output.Length - 1]),
+                Shapes.Fails(() => refiner.Evaluate(UnitCube.Positions, new double[output.Length - 1]),
                     WeftStatus.BufferTooSmall, "out_positions has room for 77 elements but 78 are needed");
-                var nan = (double[])WrapperTests.CubePositions.Clone();
+                var nan = (double[])UnitCube.Positions.Clone();
                 nan[4] = double.NaN;
                 Shapes.Fails(() => refiner.Evaluate(nan, output), WeftStatus.NonFiniteCoordinate, "vertex 1");
                 refiner.Dispose();
                 refiner.Dispose();
                 t.True(refiner.IsDisposed, "disposed");
-                t.Throws<ObjectDisposedException>(() => refiner.Evaluate(WrapperTests.CubePositions, output), "evaluate after dispose");
+                t.Throws<ObjectDisposedException>(() => refiner.Evaluate(UnitCube.Positions, output), "evaluate after dispose");
                 Shapes.Fails(() => new Refiner(cube, Scheme.Loop, 1, NakedEdges.Smooth), WeftStatus.NotTriangles, "face 0 has 4 vertices");
                 Shapes.Fails(() => new Refiner(cube, Scheme.CatmullClark, 14, NakedEdges.Smooth), WeftStatus.ResultTooLarge, "level");
             }

@@ -8,19 +8,6 @@ namespace Weft.Tests
     {
         private static Runner t;
 
-        // A unit cube, faces wound outwards.
-        internal static readonly double[] CubePositions =
-        {
-            0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-            0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
-        };
-        internal static readonly uint[] CubeSizes = { 4, 4, 4, 4, 4, 4 };
-        internal static readonly uint[] CubeIndices =
-        {
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-            2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        };
-
         // A square, a triangle on its right and a pentagon above it: mixed sizes.
         private static readonly double[] MixedPositions =
         {
@@ -86,8 +73,8 @@ namespace Weft.Tests
                 t.Sequence(MixedIndices, indices, "GetFaces indices");
             }
             // The wrapper copies: changing the caller's buffer later changes nothing.
-            var positions = (double[])CubePositions.Clone();
-            using (var mesh = WeftMesh.Create(positions, CubeSizes, CubeIndices))
+            var positions = (double[])UnitCube.Positions.Clone();
+            using (var mesh = WeftMesh.Create(positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 positions[0] = 42;
                 t.Equal(0.0, mesh.GetPositions()[0], "first coordinate after the caller's buffer changed");
@@ -110,7 +97,7 @@ namespace Weft.Tests
 
         private static void InfoOnCube()
         {
-            using (var cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+            using (var cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 WeftMeshInfo info = cube.Info();
                 t.Equal(8L, info.VertexCount, "vertices");
@@ -125,9 +112,9 @@ namespace Weft.Tests
                 t.True(info.IsOriented, "oriented");
             }
             // One face reversed: still orientable, no longer oriented.
-            var flipped = (uint[])CubeIndices.Clone();
+            var flipped = (uint[])UnitCube.Indices.Clone();
             Array.Reverse(flipped, 0, 4);
-            using (var cube = WeftMesh.Create(CubePositions, CubeSizes, flipped))
+            using (var cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, flipped))
             {
                 WeftMeshInfo info = cube.Info();
                 t.True(info.IsOrientable, "orientable with one face flipped");
@@ -252,7 +239,7 @@ namespace Weft.Tests
 
         private static void DisposeTwice()
         {
-            var mesh = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices);
+            var mesh = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
             t.True(!mesh.IsDisposed, "live before Dispose");
             mesh.Dispose();
             mesh.Dispose();
@@ -261,7 +248,7 @@ namespace Weft.Tests
 
         private static void UseAfterDispose()
         {
-            var mesh = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices);
+            var mesh = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
             mesh.Dispose();
             t.Throws<ObjectDisposedException>(() => { int n = mesh.VertexCount; }, "VertexCount");
             t.Throws<ObjectDisposedException>(() => mesh.GetPositions(), "GetPositions");
@@ -273,12 +260,12 @@ namespace Weft.Tests
         {
             for (int i = 0; i < 200; i++)
             {
-                WeftMesh.Create(CubePositions, CubeSizes, CubeIndices);
+                WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
             }
             GC.Collect();
             GC.WaitForPendingFinalizers();
             GC.Collect();
-            using (var mesh = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+            using (var mesh = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 t.Equal(8, mesh.VertexCount, "a new mesh after the finalizers ran");
             }

@@ -207,15 +207,7 @@ namespace Weft.Grasshopper
             {
                 return null;
             }
-            var corners = new double[3 * polyline.Count];
-            for (int i = 0; i < polyline.Count; i++)
-            {
-                Point3d p = polyline[i];
-                corners[3 * i] = p.X;
-                corners[3 * i + 1] = p.Y;
-                corners[3 * i + 2] = p.Z;
-            }
-            return corners;
+            return Triples(polyline.Count, i => polyline[i]);
         }
 
         /// <summary>Points from x, y, z triples.</summary>
@@ -229,12 +221,19 @@ namespace Weft.Grasshopper
         /// <summary>x, y, z triples of points.</summary>
         public static double[] FromPoints(IList<Point3d> points)
         {
-            var xyz = new double[3 * points.Count];
-            for (int i = 0; i < points.Count; i++)
+            return Triples(points.Count, i => points[i]);
+        }
+
+        /// <summary>x, y, z triples of the <paramref name="count"/> points that <paramref name="point"/> gives by index.</summary>
+        private static double[] Triples(int count, Func<int, Point3d> point)
+        {
+            var xyz = new double[3 * count];
+            for (int i = 0; i < count; i++)
             {
-                xyz[3 * i] = points[i].X;
-                xyz[3 * i + 1] = points[i].Y;
-                xyz[3 * i + 2] = points[i].Z;
+                Point3d p = point(i);
+                xyz[3 * i] = p.X;
+                xyz[3 * i + 1] = p.Y;
+                xyz[3 * i + 2] = p.Z;
             }
             return xyz;
         }
@@ -253,18 +252,8 @@ namespace Weft.Grasshopper
         /// <summary>Segments of six doubles from lines.</summary>
         public static double[] FromLines(IList<Line> lines)
         {
-            var segments = new double[6 * lines.Count];
-            for (int i = 0; i < lines.Count; i++)
-            {
-                Line l = lines[i];
-                segments[6 * i] = l.FromX;
-                segments[6 * i + 1] = l.FromY;
-                segments[6 * i + 2] = l.FromZ;
-                segments[6 * i + 3] = l.ToX;
-                segments[6 * i + 4] = l.ToY;
-                segments[6 * i + 5] = l.ToZ;
-            }
-            return segments;
+            // A segment is its two end points' triples.
+            return Triples(2 * lines.Count, i => i % 2 == 0 ? lines[i / 2].From : lines[i / 2].To);
         }
 
         /// <summary>Polyline curves from x, y, z arrays (a closed one repeats its first point).</summary>

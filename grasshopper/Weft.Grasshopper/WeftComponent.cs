@@ -224,6 +224,12 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("Level", "L", "Number of steps (0 returns the input).", GH_ParamAccess.item, 1);
         }
 
+        /// <summary>Registers the smoothing iterations input L (default 1).</summary>
+        protected static void AddIterationsInput(GH_InputParamManager pManager)
+        {
+            pManager.AddIntegerParameter("Level", "L", "Iterations.", GH_ParamAccess.item, 1);
+        }
+
         /// <summary>Registers the smoothing naked-edge input S (0 fixed, 1 smooth, 2 corner fixed; default 0).</summary>
         protected static void AddSmoothNakedInput(GH_InputParamManager pManager)
         {

@@ -142,34 +142,22 @@ namespace Weft.Tests
             return r;
         }
 
-        private static readonly double[] CubePositions =
-        {
-            0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0,
-            0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1,
-        };
-        private static readonly uint[] CubeSizes = { 4, 4, 4, 4, 4, 4 };
-        private static readonly uint[] CubeIndices =
-        {
-            0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4,
-            2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5,
-        };
-
         private static void RefinerCacheReuse()
         {
             using (var cache = new RefinerCache())
             {
-                RefinedArrays first = cache.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
+                RefinedArrays first = cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
                 t.False(cache.LastReused, "the first call plans");
                 t.Equal(96, first.FaceSizes.Length, "faces");
                 t.Equal(96, first.Rhino.Faces.Length / 4, "Rhino faces converted");
 
                 // A slider moves the cage: same faces, new positions.
-                var moved = (double[])CubePositions.Clone();
+                var moved = (double[])UnitCube.Positions.Clone();
                 for (int i = 0; i < moved.Length; i++) moved[i] = 3 * moved[i] + 1;
-                RefinedArrays second = cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
+                RefinedArrays second = cache.Subdivide(moved, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 2, NakedEdges.Smooth);
                 t.True(cache.LastReused, "the refiner is reused");
                 t.Equal(1, cache.PlanCount, "planned once");
-                using (var cage = WeftMesh.Create(moved, CubeSizes, CubeIndices))
+                using (var cage = WeftMesh.Create(moved, UnitCube.Sizes, UnitCube.Indices))
                 using (var fresh = Subdivision.CatmullClark(cage, 2, NakedEdges.Smooth))
                 {
                     double[] expected = fresh.GetPositions();
@@ -179,11 +167,11 @@ namespace Weft.Tests
                 }
 
                 // A new level count, then new faces: both plan again.
-                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                cache.Subdivide(moved, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
                 t.False(cache.LastReused, "new levels re-plan");
-                var flipped = (uint[])CubeIndices.Clone();
+                var flipped = (uint[])UnitCube.Indices.Clone();
                 Array.Reverse(flipped, 0, 4);
-                RefinedArrays third = cache.Subdivide(moved, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                RefinedArrays third = cache.Subdivide(moved, UnitCube.Sizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
                 t.False(cache.LastReused, "new faces re-plan");
                 t.Equal(3, cache.PlanCount, "planned three times");
                 t.Equal(24, third.FaceSizes.Length, "one level");
@@ -192,15 +180,15 @@ namespace Weft.Tests
 
         private static void RefinerPoolPerBranch()
         {
-            var flipped = (uint[])CubeIndices.Clone();
+            var flipped = (uint[])UnitCube.Indices.Clone();
             Array.Reverse(flipped, 0, 4);
             // One cache for a two-branch tree (the old way) re-plans on every branch.
             using (var single = new RefinerCache())
             {
                 for (int solution = 0; solution < 2; solution++)
                 {
-                    single.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
-                    single.Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    single.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    single.Subdivide(UnitCube.Positions, UnitCube.Sizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
                 }
                 t.Equal(4, single.PlanCount, "one shared cache plans every branch of every solution");
             }
@@ -209,8 +197,8 @@ namespace Weft.Tests
                 for (int solution = 0; solution < 3; solution++)
                 {
                     pool.BeginSolution();
-                    pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
-                    pool.For(1).Subdivide(CubePositions, CubeSizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.For(0).Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                    pool.For(1).Subdivide(UnitCube.Positions, UnitCube.Sizes, flipped, Scheme.CatmullClark, 1, NakedEdges.Smooth);
                     pool.EndSolution();
                 }
                 t.Equal(1, pool.For(0).PlanCount, "branch 0 planned once in three solutions");
@@ -223,11 +211,11 @@ namespace Weft.Tests
         {
             var pool = new RefinerPool();
             pool.BeginSolution();
-            for (int branch = 0; branch < 3; branch++) pool.For(branch).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            for (int branch = 0; branch < 3; branch++) pool.For(branch).Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
             pool.EndSolution();
             t.Equal(3, pool.Count, "three branches, three caches");
             pool.BeginSolution();
-            pool.For(0).Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+            pool.For(0).Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
             pool.EndSolution();
             t.Equal(1, pool.Count, "a one-branch solution frees the other two");
             t.True(pool.For(0).LastReused, "the remaining branch keeps its refiner");
@@ -246,7 +234,7 @@ namespace Weft.Tests
 
         private static void FaceBudgetRefuses()
         {
-            using (var cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+            using (var cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 // 6 quads: 24 faces at L = 1, 6 * 4^L after that.
                 t.Equal(96L, FaceBudget.FacesAt(cube, Scheme.CatmullClark, 2), "faces at L = 2");
@@ -293,7 +281,7 @@ namespace Weft.Tests
             {
                 try
                 {
-                    cache.Subdivide(CubePositions, CubeSizes, CubeIndices, Scheme.Loop, 1, NakedEdges.Smooth);
+                    cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.Loop, 1, NakedEdges.Smooth);
                     t.Fail("Loop on quads should fail");
                 }
                 catch (WeftException e)
@@ -304,7 +292,7 @@ namespace Weft.Tests
                 t.Equal(0, cache.PlanCount, "nothing planned");
                 PolygonArrays triangles;
                 int split;
-                using (WeftMesh cube = WeftMesh.Create(CubePositions, CubeSizes, CubeIndices))
+                using (WeftMesh cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
                 using (WeftMesh asTriangles = Subdivision.AsTriangles(cube, out split))
                 {
                     triangles = MeshArrays.FromWeft(asTriangles);
@@ -317,7 +305,7 @@ namespace Weft.Tests
 
         private static void FacePolylines()
         {
-            List<double[]> rings = FlatGeometry.FacePolylines(CubePositions, CubeSizes, CubeIndices);
+            List<double[]> rings = FlatGeometry.FacePolylines(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
             t.Equal(6, rings.Count, "one per face");
             // Face 0 is 0, 2, 3, 1 and back to 0.
             t.Sequence(new double[] { 0, 0, 0, 0, 1, 0, 1, 1, 0, 1, 0, 0, 0, 0, 0 }, rings[0], "face 0's ring");

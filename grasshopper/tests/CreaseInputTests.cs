@@ -9,11 +9,6 @@ namespace Weft.Tests
     {
         private static Runner t;
 
-        // The unit cube, faces wound outwards (face 0 is the bottom).
-        private static readonly double[] Cube = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1 };
-        private static readonly uint[] CubeSizes = { 4, 4, 4, 4, 4, 4 };
-        private static readonly uint[] CubeIndices = { 0, 2, 3, 1, 4, 5, 7, 6, 0, 1, 5, 4, 2, 6, 7, 3, 0, 4, 6, 2, 1, 3, 7, 5 };
-
         public static void Register(Runner runner)
         {
             t = runner;
@@ -39,7 +34,7 @@ namespace Weft.Tests
 
         private static WeftMesh CubeMesh()
         {
-            return WeftMesh.Create(Cube, CubeSizes, CubeIndices);
+            return WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices);
         }
 
         /// <summary>Crease items matched on the cube.</summary>
@@ -63,7 +58,7 @@ namespace Weft.Tests
             uint[] pairs = Pairs(items, 0.01);
             t.Sequence(new uint[] { 0, 1, 7, 3, edges[4], edges[5] }, pairs, "vertex pairs");
             // The pairs are accepted by the library as edges.
-            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            using (WeftMesh cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 var options = new SubdivisionOptions(NakedEdges.Smooth).AddCreases(pairs, 10);
                 using (WeftMesh refined = Subdivision.Subdivide(cube, Scheme.CatmullClark, 1, options))
@@ -144,7 +139,7 @@ namespace Weft.Tests
             for (int v = 0; v < 8; v++) argb[v] = unchecked((int)0xFF000000);
             argb[7] = -1;
             var options = new SubdivisionOptions(NakedEdges.Smooth).AddCorner(7, 10);
-            using (WeftMesh cube = WeftMesh.Create(Cube, CubeSizes, CubeIndices))
+            using (WeftMesh cube = WeftMesh.Create(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices))
             {
                 double[] values = Subdivision.SubdivideVertexData(cube, Scheme.CatmullClark, 1, options, CreaseInputs.ColoursToValues(argb), 4);
                 int[] refined = CreaseInputs.ValuesToColours(values);
@@ -195,31 +190,31 @@ namespace Weft.Tests
             using (var cache = new RefinerCache())
             {
                 var options = new SubdivisionOptions(NakedEdges.Smooth).AddCrease(0, 1, 10).AddCorner(7, 10);
-                RefinedArrays a = cache.Subdivide(Cube, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, options);
+                RefinedArrays a = cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, options);
                 t.Sequence(new[] { 1.0, 1.0, 1.0 }, new[] { a.Positions[21], a.Positions[22], a.Positions[23] }, "corner kept");
-                var moved = (double[])Cube.Clone();
+                var moved = (double[])UnitCube.Positions.Clone();
                 moved[23] = 2;
                 // The same creases built anew: reused.
                 var same = new SubdivisionOptions(NakedEdges.Smooth).AddCrease(0, 1, 10).AddCorner(7, 10);
-                RefinedArrays b = cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, same);
+                RefinedArrays b = cache.Subdivide(moved, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, same);
                 t.True(cache.LastReused, "same creases reuse the refiner");
                 t.Equal(2.0, b.Positions[23], "the moved corner follows");
                 // Changing the caller's options after the call does not fool the cache.
                 same.AddCrease(1, 3, 10);
-                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, same);
+                cache.Subdivide(moved, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, same);
                 t.False(cache.LastReused, "another crease re-plans");
                 t.Equal(2, cache.PlanCount, "two plans");
-                cache.Subdivide(moved, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
+                cache.Subdivide(moved, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, NakedEdges.Smooth);
                 t.False(cache.LastReused, "the plain call re-plans");
                 var bad = new SubdivisionOptions().AddCrease(0, 7, 10);
-                Fails(() => cache.Subdivide(Cube, CubeSizes, CubeIndices, Scheme.CatmullClark, 1, bad), WeftStatus.InvalidArgument,
+                Fails(() => cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1, bad), WeftStatus.InvalidArgument,
                     "crease 0 joins vertices 0 and 7");
             }
         }
 
         private static void Segments()
         {
-            t.Sequence(new double[] { 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 1, 0 }, CreaseInputs.Segments(Cube, new uint[] { 0, 7, 1, 2 }), "segments");
+            t.Sequence(new double[] { 0, 0, 0, 1, 1, 1, 1, 0, 0, 0, 1, 0 }, CreaseInputs.Segments(UnitCube.Positions, new uint[] { 0, 7, 1, 2 }), "segments");
         }
 
         private static void Fails(Action action, WeftStatus status, string message)

@@ -593,16 +593,24 @@ def flip(mesh):
     return _mesh_op(lib.weft_flip, mesh)
 
 
+def _mesh_doubles(function, mesh, count, width=None):
+    """Calls an export of the form f(mesh, double *out, size_t len) that writes
+    ``width`` doubles (one when None) for each of the mesh's ``count``
+    (``"face_count"`` or ``"vertex_count"``) into a new array."""
+    handle = check_mesh(mesh)
+    rows = getattr(mesh, count)
+    out = np.empty(rows if width is None else (rows, width), dtype=np.float64)
+    function(handle, _arrays.address(out), out.size)
+    return out
+
+
 def face_normals(mesh):
     """The unit normal of each face (Newell's method): an (f, 3) array::
 
         >>> weft.face_normals(weft.box()).shape
         (6, 3)
     """
-    handle = check_mesh(mesh)
-    out = np.empty((mesh.face_count, 3), dtype=np.float64)
-    lib.weft_face_normals(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_face_normals, mesh, "face_count", 3)
 
 
 def vertex_normals(mesh):
@@ -611,10 +619,7 @@ def vertex_normals(mesh):
         >>> weft.vertex_normals(weft.box()).shape
         (8, 3)
     """
-    handle = check_mesh(mesh)
-    out = np.empty((mesh.vertex_count, 3), dtype=np.float64)
-    lib.weft_vertex_normals(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_vertex_normals, mesh, "vertex_count", 3)
 
 
 def planarity(mesh):
@@ -624,10 +629,7 @@ def planarity(mesh):
         >>> float(weft.planarity(weft.box()).max())
         0.0
     """
-    handle = check_mesh(mesh)
-    out = np.empty(mesh.face_count, dtype=np.float64)
-    lib.weft_planarity(handle, _arrays.address(out), out.size)
-    return out
+    return _mesh_doubles(lib.weft_planarity, mesh, "face_count")
 
 
 def naked_boundaries(mesh):
@@ -923,40 +925,27 @@ def match_lines_to_edges(mesh, lines, tolerance):
     return out
 
 
-def split_polygons(mesh, levels=1):
-    """Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing::
+def _levels_operation(export, summary, example, faces):
+    """The wrapper of one of the exports that take a mesh and a level count and
+    make a mesh, named after it; its doctest subdivides ``example`` once and
+    expects ``faces`` faces (all these exports share one signature, as
+    Toolbar.Levels does in the C# wrapper)."""
+    name = export.__name__[len("weft_"):]
 
-        >>> weft.split_polygons(weft.box(), 1).face_count
-        24
-    """
-    return _mesh_op(lib.weft_split_polygons, mesh, _count(levels, "levels"))
+    def operation(mesh, levels=1):
+        return _mesh_op(export, mesh, _count(levels, "levels"))
 
-
-def split_triangles(mesh, levels=1):
-    """Splits each triangle into four through its edge midpoints, without smoothing::
-
-        >>> weft.split_triangles(weft.platonic("octahedron"), 1).face_count
-        32
-    """
-    return _mesh_op(lib.weft_split_triangles, mesh, _count(levels, "levels"))
+    operation.__name__ = operation.__qualname__ = name
+    operation.__doc__ = f"{summary}::\n\n    >>> weft.{name}({example}, 1).face_count\n    {faces}\n"
+    return operation
 
 
-def constant_quads_split(mesh, levels=1):
-    """Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing::
-
-        >>> weft.constant_quads_split(weft.box(), 1).face_count
-        24
-    """
-    return _mesh_op(lib.weft_constant_quads_split, mesh, _count(levels, "levels"))
-
-
-def midedge(mesh, levels=1):
-    """The mid-edge subdivision (Peters and Reif)::
-
-        >>> weft.midedge(weft.box(), 1).face_count
-        14
-    """
-    return _mesh_op(lib.weft_midedge, mesh, _count(levels, "levels"))
+split_polygons = _levels_operation(lib.weft_split_polygons, "Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing", "weft.box()", 24)
+split_triangles = _levels_operation(lib.weft_split_triangles, "Splits each triangle into four through its edge midpoints, without smoothing", 'weft.platonic("octahedron")', 32)
+constant_quads_split = _levels_operation(lib.weft_constant_quads_split, "Splits quads into 4 quads, triangles into 4 triangles, n-gons into quads, without smoothing", "weft.box()", 24)
+midedge = _levels_operation(lib.weft_midedge, "The mid-edge subdivision (Peters and Reif)", "weft.box()", 14)
+sierpinski_triangles = _levels_operation(lib.weft_sierpinski_triangles, "A triangle in each corner of each face, the middle left open", 'weft.platonic("tetrahedron")', 12)
+sierpinski_carpet = _levels_operation(lib.weft_sierpinski_carpet, "Cuts each quad into 3 × 3 and removes the middle one", "weft.box()", 48)
 
 
 def inner_polygons(mesh, levels=1, pull=0.5):
@@ -966,24 +955,6 @@ def inner_polygons(mesh, levels=1, pull=0.5):
         30
     """
     return _mesh_op(lib.weft_inner_polygons, mesh, _count(levels, "levels"), _number(pull, "pull"))
-
-
-def sierpinski_triangles(mesh, levels=1):
-    """A triangle in each corner of each face, the middle left open::
-
-        >>> weft.sierpinski_triangles(weft.platonic("tetrahedron"), 1).face_count
-        12
-    """
-    return _mesh_op(lib.weft_sierpinski_triangles, mesh, _count(levels, "levels"))
-
-
-def sierpinski_carpet(mesh, levels=1):
-    """Cuts each quad into 3 × 3 and removes the middle one::
-
-        >>> weft.sierpinski_carpet(weft.box(), 1).face_count
-        48
-    """
-    return _mesh_op(lib.weft_sierpinski_carpet, mesh, _count(levels, "levels"))
 
 
 def laplacian_smooth(mesh, iterations=1, blend=0.5, naked_edges="fixed"):

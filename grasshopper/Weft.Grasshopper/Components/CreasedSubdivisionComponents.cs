@@ -43,7 +43,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The subdivided mesh, with the input's vertex colours carried through.", GH_ParamAccess.item);
+            AddMeshOutput(pManager, "The subdivided mesh, with the input's vertex colours carried through.");
             pManager.AddVectorParameter("Normals", "N", "The limit surface's unit normal at each vertex when X is true; empty otherwise.", GH_ParamAccess.list);
         }
 
@@ -185,7 +185,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The welded mesh, with the input's vertex colours (each welded vertex the first of its coincident vertices' colour).", GH_ParamAccess.item);
+            AddMeshOutput(pManager, "The welded mesh, with the input's vertex colours (each welded vertex the first of its coincident vertices' colour).");
             pManager.AddLineParameter("Creases", "C", "The crease edges as lines, for C of a creased subdivision.", GH_ParamAccess.list);
             pManager.AddIntegerParameter("Start", "A", "The first vertex of each crease (of the welded mesh).", GH_ParamAccess.list);
             pManager.AddIntegerParameter("End", "B", "The second vertex of each crease.", GH_ParamAccess.list);

@@ -17,7 +17,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The mesh without its adjacent face pairs.", GH_ParamAccess.item);
+            AddMeshOutput(pManager, "The mesh without its adjacent face pairs.");
             pManager.AddIntegerParameter("Removed", "N", "How many faces were removed.", GH_ParamAccess.item);
         }
 

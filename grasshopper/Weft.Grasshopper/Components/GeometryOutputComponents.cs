@@ -1,6 +1,4 @@
-using System;
 using System.Runtime.InteropServices;
-using System.Collections.Generic;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
 
@@ -8,21 +6,20 @@ namespace Weft.Grasshopper
 {
     /// <summary>Blurs per-vertex values over the mesh (Weaverbird's wbBlur blurs vertex colours; here any values, e.g. colour channels).</summary>
     [Guid("440c78b1-633d-4b19-a675-8e41bd51c69d")]
-    public sealed class BlurComponent : WeftComponent
+    public sealed class BlurComponent : MeshQueryComponent
     {
         public BlurComponent()
             : base("Blur", "wbBlur",
                    "Blurs per-vertex values over the mesh: each iteration moves every value Blend of the way towards its neighbours' average. C values per vertex, vertex after vertex (3 for R, G, B). The mesh is unchanged.",
-                   "Smooth", "blur")
+                   "Smooth", "blur", "The mesh whose vertices carry the values.")
         {
         }
 
-        protected override void RegisterInputParams(GH_InputParamManager pManager)
+        protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            AddMeshInput(pManager, "M", "The mesh whose vertices carry the values.");
             pManager.AddNumberParameter("Values", "V", "C values per vertex, vertex after vertex.", GH_ParamAccess.list);
             pManager.AddIntegerParameter("Components", "C", "Values per vertex.", GH_ParamAccess.item, 1);
-            pManager.AddIntegerParameter("Level", "L", "Iterations.", GH_ParamAccess.item, 1);
+            AddIterationsInput(pManager);
             pManager.AddNumberParameter("Blend", "B", "0 to 1 per iteration.", GH_ParamAccess.item, 1.0);
             AddSmoothNakedInput(pManager);
         }
@@ -32,14 +29,10 @@ namespace Weft.Grasshopper
             pManager.AddNumberParameter("Values", "V", "The blurred values, in the same layout.", GH_ParamAccess.list);
         }
 
-        protected override void Solve(IGH_DataAccess DA)
+        protected override void Query(WeftMesh mesh, IGH_DataAccess DA)
         {
             double[] values = GetList<double>(DA, 1);
-            using (WeftMesh mesh = GetMesh(DA, 0))
-            {
-                if (mesh == null) return;
-                DA.SetDataList(0, Toolbar.BlurValues(mesh, values, Get(DA, 2, 1), Get(DA, 3, 1), Get(DA, 4, 1.0), ToSmoothNaked(Get(DA, 5, 0))));
-            }
+            DA.SetDataList(0, Toolbar.BlurValues(mesh, values, Get(DA, 2, 1), Get(DA, 3, 1), Get(DA, 4, 1.0), ToSmoothNaked(Get(DA, 5, 0))));
         }
     }
 

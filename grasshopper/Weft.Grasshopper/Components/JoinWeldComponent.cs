@@ -1,6 +1,4 @@
-using System;
 using System.Runtime.InteropServices;
-using System.Collections.Generic;
 using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
@@ -25,7 +23,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The joined mesh.", GH_ParamAccess.item);
+            AddMeshOutput(pManager, "The joined mesh.");
         }
 
         protected override void Solve(IGH_DataAccess DA)

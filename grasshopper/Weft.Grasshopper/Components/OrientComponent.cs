@@ -22,7 +22,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
         {
-            pManager.AddMeshParameter("Mesh", "M", "The oriented mesh.", GH_ParamAccess.item);
+            AddMeshOutput(pManager, "The oriented mesh.");
             pManager.AddIntegerParameter("Flipped", "N", "How many faces changed direction.", GH_ParamAccess.item);
         }
 

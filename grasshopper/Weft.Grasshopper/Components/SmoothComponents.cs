@@ -17,7 +17,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            pManager.AddIntegerParameter("Level", "L", "Iterations.", GH_ParamAccess.item, 1);
+            AddIterationsInput(pManager);
             pManager.AddNumberParameter("Thin", "T", "Blend towards the average per iteration, 0 to 1 (1 jumps to it).", GH_ParamAccess.item, 1.0);
             AddSmoothNakedInput(pManager);
         }
@@ -41,7 +41,7 @@ namespace Weft.Grasshopper
 
         protected override void RegisterOptions(GH_InputParamManager pManager)
         {
-            pManager.AddIntegerParameter("Level", "L", "Iterations.", GH_ParamAccess.item, 1);
+            AddIterationsInput(pManager);
             pManager.AddNumberParameter("Alpha", "A", "0 to 1: how much the push-back aims at the original positions rather than the previous iteration (0 is usual).", GH_ParamAccess.item, 0.0);
             pManager.AddNumberParameter("Beta", "B", "0 to 1: the share of a vertex's own displacement undone (above 0.5; 0.6 is a good start).", GH_ParamAccess.item, 0.6);
             AddSmoothNakedInput(pManager);
