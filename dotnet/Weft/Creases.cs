@@ -29,6 +29,49 @@ namespace Weft
         }
 
         /// <summary>
+        /// The vertex, face and face-index counts of <see cref="Subdivide"/>'s result with
+        /// <paramref name="options"/>: holes (and <see cref="NakedEdges.None"/>) leave their
+        /// vertices but no faces. These are the sizes the outputs with the same options need.
+        /// </summary>
+        public static SubdivisionCounts Counts(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options)
+        {
+            UIntPtr[] sizes;
+            WeftException.Check(SubdivisionOptions.Call(
+                (WeftMeshHandle handle, ref NativeSubdivisionOptions native, uint steps, out UIntPtr[] result) =>
+                {
+                    UIntPtr vertices, faces, indices;
+                    uint status = NativeMethods.weft_subdivision_counts_ex(handle, ref native, steps, out vertices, out faces, out indices);
+                    result = new[] { vertices, faces, indices };
+                    return status;
+                },
+                mesh, "mesh", options, scheme, levels, out sizes));
+            return new SubdivisionCounts
+            {
+                VertexCount = Arguments.ToInt(sizes[0]),
+                FaceCount = Arguments.ToInt(sizes[1]),
+                IndexCount = Arguments.ToInt(sizes[2]),
+            };
+        }
+
+        /// <summary>
+        /// For each face of <see cref="Subdivide"/>'s result with <paramref name="options"/>, the
+        /// index of the cage face it comes from; holes have none.
+        /// </summary>
+        public static uint[] ParentFaces(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options)
+        {
+            var parents = new uint[Counts(mesh, scheme, levels, options).FaceCount];
+            int unused;
+            WeftException.Check(SubdivisionOptions.Call(
+                (WeftMeshHandle handle, ref NativeSubdivisionOptions native, uint steps, out int result) =>
+                {
+                    result = 0;
+                    return NativeMethods.weft_subdivision_parent_faces_ex(handle, ref native, steps, parents, (UIntPtr)parents.Length);
+                },
+                mesh, "mesh", options, scheme, levels, out unused));
+            return parents;
+        }
+
+        /// <summary>
         /// The vertex, face and face-corner counts of <paramref name="levels"/> steps of
         /// <paramref name="scheme"/> on <paramref name="mesh"/>, without subdividing
         /// (creases do not change them): the sizes the other methods' buffers need.
@@ -71,7 +114,7 @@ namespace Weft
         /// <summary>
         /// As <see cref="SubdivideVertexData(WeftMesh, Scheme, int, SubdivisionOptions, double[], int)"/>,
         /// into <paramref name="output"/>, which needs <paramref name="width"/> doubles per
-        /// refined vertex (<see cref="Counts"/>); <see cref="WeftStatus.BufferTooSmall"/> otherwise.
+        /// refined vertex (<see cref="Counts(WeftMesh, Scheme, int, SubdivisionOptions)"/>); <see cref="WeftStatus.BufferTooSmall"/> otherwise.
         /// </summary>
         public static void SubdivideVertexData(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options, double[] data, int width, double[] output)
         {
@@ -116,7 +159,7 @@ namespace Weft
         /// <summary>
         /// As <see cref="SubdivideFaceVarying(WeftMesh, Scheme, int, SubdivisionOptions, FaceVaryingLinear, double[], int, uint[])"/>,
         /// into <paramref name="output"/>, which needs <paramref name="width"/> doubles per refined
-        /// face corner (<see cref="Counts"/>); <see cref="WeftStatus.BufferTooSmall"/> otherwise.
+        /// face corner (<see cref="Counts(WeftMesh, Scheme, int, SubdivisionOptions)"/>); <see cref="WeftStatus.BufferTooSmall"/> otherwise.
         /// </summary>
         public static void SubdivideFaceVarying(WeftMesh mesh, Scheme scheme, int levels, SubdivisionOptions options,
                                                 FaceVaryingLinear linear, double[] values, int width, uint[] valueIndices, double[] output)
@@ -165,7 +208,7 @@ namespace Weft
 
         /// <summary>
         /// As <see cref="SubdivideLimit(WeftMesh, Scheme, int, SubdivisionOptions)"/>, into caller
-        /// buffers of 3 doubles per refined vertex each (<see cref="Counts"/>;
+        /// buffers of 3 doubles per refined vertex each (<see cref="Counts(WeftMesh, Scheme, int, SubdivisionOptions)"/>;
         /// <see cref="WeftStatus.BufferTooSmall"/> otherwise). <paramref name="normals"/> may be
         /// null when they are not wanted; when given it must be as long as <paramref name="positions"/>.
         /// </summary>

@@ -274,7 +274,7 @@ namespace Weft
         }
     }
 
-    /// <summary>The sizes of a subdivided mesh (see <see cref="Subdivision.Counts"/>).</summary>
+    /// <summary>The sizes of a subdivided mesh (see <see cref="Subdivision.Counts(WeftMesh, Scheme, int, SubdivisionOptions)"/>).</summary>
     public struct SubdivisionCounts
     {
         /// <summary>Refined vertices.</summary>

@@ -29,6 +29,8 @@ namespace Weft.Tests
             t.Run("crease and corner errors name the crease or corner", CreaseErrors);
             t.Run("carried data errors: lengths, widths, small buffers, unknown values", DataErrors);
             t.Run("disposed and null meshes are refused", DisposedMesh);
+            t.Run("holes leave their faces out, keep their vertices, and the counts and parents agree", Holes);
+            t.Run("naked edges none and smooth triangles reach the library; bad values are named", NoneAndTriangles);
         }
 
         private static SubdivisionOptions Hard(uint[] pairs)
@@ -497,6 +499,59 @@ namespace Weft.Tests
             using (var live = Shapes.Cube())
             {
                 t.Throws<ArgumentNullException>(() => Subdivision.SubdivideVertexData(live, Scheme.CatmullClark, 1, null, null, 3), "null data");
+            }
+        }
+
+        private static void Holes()
+        {
+            using (var cube = Shapes.Cube())
+            {
+                SubdivisionOptions options = new SubdivisionOptions(NakedEdges.Smooth).AddHole(1).AddHole(4);
+                t.Equal(2, options.HoleCount, "hole count");
+                t.False(options.SameAs(new SubdivisionOptions(NakedEdges.Smooth)), "holes make options differ");
+                t.True(options.Clone().SameAs(options), "a clone keeps the holes");
+                using (var holed = Subdivision.Subdivide(cube, Scheme.CatmullClark, 2, options))
+                using (var plain = Subdivision.Subdivide(cube, Scheme.CatmullClark, 2, new SubdivisionOptions(NakedEdges.Smooth)))
+                {
+                    t.Equal(plain.VertexCount, holed.VertexCount, "every vertex stays");
+                    t.Equal(96 - 32, holed.FaceCount, "two faces' 16 children each are gone");
+                    SubdivisionCounts counts = Subdivision.Counts(cube, Scheme.CatmullClark, 2, options);
+                    t.Equal(holed.FaceCount, counts.FaceCount, "counts with options: faces");
+                    t.Equal(4 * holed.FaceCount, counts.IndexCount, "counts with options: indices");
+                    uint[] parents = Subdivision.ParentFaces(cube, Scheme.CatmullClark, 2, options);
+                    t.Equal(holed.FaceCount, parents.Length, "a parent per face");
+                    t.True(Array.TrueForAll(parents, p => p != 1 && p != 4), "no face comes from a hole");
+                    var uvs = new double[2 * 24];
+                    var indices = new uint[24];
+                    for (int i = 0; i < 24; i++) indices[i] = (uint)i;
+                    double[] corners = Subdivision.SubdivideFaceVarying(cube, Scheme.CatmullClark, 2, options, FaceVaryingLinear.All, uvs, 2, indices);
+                    t.Equal(2 * counts.IndexCount, corners.Length, "face-varying values for the kept corners only");
+                }
+                Shapes.Fails(() => Subdivision.Subdivide(cube, Scheme.CatmullClark, 1, new SubdivisionOptions().AddHole(6)),
+                    WeftStatus.InvalidArgument, "hole 0 is face 6, but the mesh has 6 faces");
+            }
+        }
+
+        private static void NoneAndTriangles()
+        {
+            using (var grid = Shapes.Grid(0.5))
+            using (var none = Subdivision.CatmullClark(grid, 1, NakedEdges.None))
+            {
+                t.Equal(0, none.FaceCount, "every face of a 2 x 2 grid touches the boundary: all holes");
+                t.Equal(9 + 12 + 4, none.VertexCount, "the points stay");
+            }
+            using (var prism = Shapes.Cube())
+            {
+                var smooth = new SubdivisionOptions(NakedEdges.Smooth) { Triangles = TriangleRule.Smooth };
+                t.True(new SubdivisionOptions(NakedEdges.Smooth) { Triangles = TriangleRule.Smooth }.SameAs(smooth), "same rule, same options");
+                t.False(new SubdivisionOptions(NakedEdges.Smooth).SameAs(smooth), "the triangle rule counts");
+                using (var quads = Subdivision.Subdivide(prism, Scheme.CatmullClark, 1, smooth))
+                using (var catmark = Subdivision.Subdivide(prism, Scheme.CatmullClark, 1, new SubdivisionOptions(NakedEdges.Smooth)))
+                {
+                    Shapes.Near(catmark.GetPositions(), quads.GetPositions(), 0.0, "without triangles the rule changes nothing");
+                }
+                var unknown = new SubdivisionOptions(NakedEdges.Smooth) { Triangles = (TriangleRule)5 };
+                Shapes.Fails(() => Subdivision.Subdivide(prism, Scheme.CatmullClark, 1, unknown), WeftStatus.InvalidArgument, "triangles is 5");
             }
         }
     }
