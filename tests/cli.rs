@@ -798,6 +798,98 @@ fn subdivide_runs_each_scheme_and_mode() {
 }
 
 #[test]
+fn subdivide_takes_holes_boundary_none_and_smooth_triangles() {
+    let dir = folder("subdivide-options");
+    // A 2 x 2 grid, face 1 a hole, a tag Weft does not know, a bare vertex.
+    let grid = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0.5\nv 2 1 0\nv 0 2 0\nv 1 2 0\nv 2 2 0\nv 5 5 5\n\
+                f 1 2 5 4\nf 2 3 6 5\nf 4 5 8 7\nf 5 6 9 8\nt hole 1/0/0 1\nt vertexedit 1/0/0 3\n";
+    std::fs::write(dir.join("grid.obj"), grid).unwrap();
+    succeeds(
+        &dir,
+        &[
+            "subdivide",
+            "grid.obj",
+            "holed.obj",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    let holed = io::read_mesh(dir.join("holed.obj")).unwrap();
+    // 9 + 12 + 4 refined points and the bare vertex stay; face 1 has no children.
+    assert_eq!((holed.vertex_count(), holed.face_count()), (26, 12));
+    assert_eq!(holed.positions()[9], weft::DVec3::new(5.0, 5.0, 5.0));
+    // The tag round-trips through copy, and --hole adds to it.
+    succeeds(&dir, &["convert", "grid.obj", "copy.obj"]);
+    assert!(std::fs::read_to_string(dir.join("copy.obj"))
+        .unwrap()
+        .contains("t hole 1/0/0 1\n"));
+    succeeds(
+        &dir,
+        &[
+            "subdivide",
+            "grid.obj",
+            "two.obj",
+            "--hole",
+            "3",
+            "--levels",
+            "2",
+        ],
+    );
+    assert_eq!(
+        io::read_mesh(dir.join("two.obj")).unwrap().face_count(),
+        2 * 16
+    );
+    let o = weft(&dir, &["subdivide", "grid.obj", "x.obj", "--hole", "4"]);
+    assert_exit(&o, 1);
+    assert_mentions(&stderr(&o), &["--hole 4", "4 faces"]);
+    // Every face of a 2 x 2 grid touches the boundary: none leaves nothing,
+    // which is refused rather than written as an empty file.
+    let o = weft(
+        &dir,
+        &["subdivide", "grid.obj", "x.obj", "--naked-edges", "none"],
+    );
+    assert_exit(&o, 1);
+    assert_mentions(
+        &stderr(&o),
+        &["left no face", "--naked-edges none", "nothing written"],
+    );
+    assert!(!dir.join("x.obj").exists());
+    io::write_mesh(dir.join("big.obj"), &shapes::quad_grid(4, 4)).unwrap();
+    succeeds(
+        &dir,
+        &["subdivide", "big.obj", "none.obj", "--naked-edges", "none"],
+    );
+    assert_eq!(
+        io::read_mesh(dir.join("none.obj")).unwrap().face_count(),
+        4 * 4
+    );
+    // Smooth triangles move the points beside the prism's triangles only.
+    io::write_mesh(dir.join("prism.obj"), &shapes::mixed_polygons()).unwrap();
+    succeeds(&dir, &["subdivide", "prism.obj", "catmark.obj"]);
+    succeeds(
+        &dir,
+        &[
+            "subdivide",
+            "prism.obj",
+            "smooth.obj",
+            "--triangles",
+            "smooth",
+        ],
+    );
+    let (a, b) = (
+        io::read_mesh(dir.join("catmark.obj")).unwrap(),
+        io::read_mesh(dir.join("smooth.obj")).unwrap(),
+    );
+    assert_eq!(a.face_indices(), b.face_indices());
+    assert_ne!(a.positions(), b.positions());
+    let o = weft(
+        &dir,
+        &["subdivide", "prism.obj", "x.obj", "--triangles", "round"],
+    );
+    assert_exit(&o, 2);
+}
+
+#[test]
 fn triangulate_splits_polygons() {
     let dir = folder("triangulate");
     io::write_mesh(dir.join("mixed.obj"), &shapes::mixed_polygons()).unwrap();

@@ -27,6 +27,9 @@ pub struct MeshFile {
     pub corners: Vec<FileCorner>,
     /// OBJ materials: the libraries named and each face's material.
     pub materials: Option<Materials>,
+    /// Faces that subdivision leaves out (OBJ `t hole` tags, OpenSubdiv's
+    /// hole faces), ascending, each once.
+    pub holes: Vec<u32>,
 }
 
 /// A face with no material (before the file's first `usemtl`).
@@ -161,6 +164,9 @@ impl MeshFile {
         }
         if self.materials.is_some() {
             names.push("materials");
+        }
+        if !self.holes.is_empty() {
+            names.push("holes");
         }
         names
     }

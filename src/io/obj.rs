@@ -14,7 +14,8 @@
 //!   creases are used).
 //! - OpenSubdiv's tags with 0-based indices: `t crease 2/1/0 i j s` (more
 //!   indices make a chain; one sharpness for all, or one per segment) and
-//!   `t corner 1/1/0 v s` (more vertices, one sharpness or one each).
+//!   `t corner 1/1/0 v s` (more vertices, one sharpness or one each), and
+//!   `t hole N/0/0 f1 … fN`, faces that subdivision leaves out.
 //! - `mtllib` file names and `usemtl` materials: each face keeps the
 //!   material in force where it stands.
 //!   Other tags, `vn` (normals are recomputed by whatever needs them),
@@ -23,7 +24,7 @@
 //! Write: `v x y z [r g b [a]]` with round-trip exact numbers, `vn` and `vt`
 //! when present, `f` with 1-based `v`, `v/vt`, `v//vn` or `v/vt/vn`
 //! corners, infinitely sharp creases as `l` segments and the others and the
-//! corners as `t` tags; `mtllib` and a `usemtl` wherever the material
+//! corners and holes as `t` tags; `mtllib` and a `usemtl` wherever the material
 //! changes.
 
 use std::collections::HashMap;
@@ -87,6 +88,7 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut face_lines = Vec::new();
     let mut creases = Vec::new();
     let mut corners = Vec::new();
+    let mut holes: Vec<(u32, usize)> = Vec::new();
     // Polyline vertices to check against the vertex count at the end.
     let mut line_vertices: Vec<(u32, usize)> = Vec::new();
     let mut materials = Materials::default();
@@ -278,7 +280,7 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
                 }
             }
             Some(b"t") => {
-                if let Err(e) = tag(w.collect(), line, &mut creases, &mut corners) {
+                if let Err(e) = tag(w.collect(), line, &mut creases, &mut corners, &mut holes) {
                     note(e);
                 }
             }
@@ -302,6 +304,27 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
             ),
         ));
     }
+    if let Some(&(f, line)) = holes
+        .iter()
+        .filter(|(f, _)| *f as usize >= face_sizes.len())
+        .min_by_key(|&&(_, line)| line)
+    {
+        note(IoError::parse(
+            Location::Line(line),
+            format!(
+                "hole face {f} is past the last face: the file has {} (0 to {} in tags)",
+                face_sizes.len(),
+                face_sizes.len().max(1) - 1
+            ),
+        ));
+    }
+    let mut holes: Vec<u32> = holes
+        .into_iter()
+        .map(|(f, _)| f)
+        .filter(|&f| (f as usize) < face_sizes.len())
+        .collect();
+    holes.sort_unstable();
+    holes.dedup();
     if let Some(&(v, line)) = line_vertices
         .iter()
         .find(|(v, _)| *v as usize >= positions.len())
@@ -364,6 +387,7 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
         corners,
         materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
             .then_some(materials),
+        holes,
     };
     Ok((file, attribute_error))
 }
@@ -378,16 +402,22 @@ fn rest_of_line<'a>(text: &'a [u8], keyword: &[u8]) -> &'a [u8] {
 }
 
 /// Reads an OpenSubdiv tag: `t NAME ints/floats/strings INTS FLOATS STRINGS`.
+/// `crease`, `corner` and `hole` are read; any other tag (OpenSubdiv's
+/// hierarchical edits among them) is passed over.
 fn tag(
     w: Vec<&[u8]>,
     line: usize,
     creases: &mut Vec<FileCrease>,
     corners: &mut Vec<FileCorner>,
+    holes: &mut Vec<(u32, usize)>,
 ) -> Result<(), IoError> {
     let bad = |what: &str| IoError::parse(Location::Line(line), what.to_owned());
     let Some(&name) = w.first() else {
         return Err(bad("expected a tag name after \"t\""));
     };
+    if name == b"hole" {
+        return hole_tag(&w, line, holes);
+    }
     let is_crease = name == b"crease";
     if !is_crease && name != b"corner" {
         return Ok(());
@@ -450,6 +480,33 @@ fn tag(
                 line,
             });
         }
+    }
+    Ok(())
+}
+
+/// Reads `t hole N/0/0 f1 … fN`: 0-based face indices.
+fn hole_tag(w: &[&[u8]], line: usize, holes: &mut Vec<(u32, usize)>) -> Result<(), IoError> {
+    let form = "expected \"t hole N/0/0 f1 ... fN\" (0-based face indices)";
+    let bad = |what: String| IoError::parse(Location::Line(line), what);
+    let counts: Vec<&[u8]> = w
+        .get(1)
+        .map(|c| c.split(|&b| b == b'/').collect())
+        .unwrap_or_default();
+    if counts.len() < 2 || counts.len() > 3 {
+        return Err(bad(form.to_owned()));
+    }
+    let ints = parse_count(counts[0], line, "the number of integer arguments")?;
+    let args = &w[2..];
+    if args.len() < ints {
+        return Err(bad(format!(
+            "{form}; the tag announces {ints} faces but has {} arguments",
+            args.len()
+        )));
+    }
+    for word in &args[..ints] {
+        let f = parse_count(word, line, "a face index")?;
+        let f = u32::try_from(f).map_err(|_| bad("a face index is too large".to_owned()))?;
+        holes.push((f, line));
     }
     Ok(())
 }
@@ -553,6 +610,13 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
     }
     for c in &file.corners {
         writeln!(w, "t corner 1/1/0 {} {}", c.vertex, c.sharpness)?;
+    }
+    if !file.holes.is_empty() {
+        write!(w, "t hole {}/0/0", file.holes.len())?;
+        for f in &file.holes {
+            write!(w, " {f}")?;
+        }
+        writeln!(w)?;
     }
     Ok(())
 }

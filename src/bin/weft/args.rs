@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use clap::ValueEnum;
 
 use weft::io::{render, Format};
-use weft::subdivide::{Creasing, FaceVaryingLinear, NakedEdges, Scheme};
+use weft::subdivide::{Creasing, FaceVaryingLinear, NakedEdges, Scheme, TriangleRule};
 
 /// A mesh file in and a mesh file out, the arguments most commands share.
 #[derive(clap::Args)]
@@ -56,6 +56,22 @@ pub enum NakedEdgesArg {
     Fixed,
     Smooth,
     CornerFixed,
+}
+
+/// Subdivision's naked-edge modes: Weaverbird's three and OpenSubdiv's
+/// boundary interpolation "none".
+#[derive(Clone, Copy, ValueEnum)]
+pub enum SubdivisionNakedEdgesArg {
+    Fixed,
+    Smooth,
+    CornerFixed,
+    None,
+}
+
+#[derive(Clone, Copy, ValueEnum)]
+pub enum TrianglesArg {
+    Catmark,
+    Smooth,
 }
 
 /// A mesh file argument: its extension must name a format.
@@ -114,6 +130,26 @@ impl From<NakedEdgesArg> for NakedEdges {
             NakedEdgesArg::Fixed => NakedEdges::Fixed,
             NakedEdgesArg::Smooth => NakedEdges::Smooth,
             NakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
+        }
+    }
+}
+
+impl From<SubdivisionNakedEdgesArg> for NakedEdges {
+    fn from(arg: SubdivisionNakedEdgesArg) -> NakedEdges {
+        match arg {
+            SubdivisionNakedEdgesArg::Fixed => NakedEdges::Fixed,
+            SubdivisionNakedEdgesArg::Smooth => NakedEdges::Smooth,
+            SubdivisionNakedEdgesArg::CornerFixed => NakedEdges::CornerFixed,
+            SubdivisionNakedEdgesArg::None => NakedEdges::None,
+        }
+    }
+}
+
+impl From<TrianglesArg> for TriangleRule {
+    fn from(arg: TrianglesArg) -> TriangleRule {
+        match arg {
+            TrianglesArg::Catmark => TriangleRule::Catmark,
+            TrianglesArg::Smooth => TriangleRule::Smooth,
         }
     }
 }

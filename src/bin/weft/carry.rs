@@ -35,10 +35,19 @@ pub fn as_triangles(file: &MeshFile) -> weft::Result<(MeshFile, usize)> {
         .materials
         .as_ref()
         .map(|m| m.inherited(&triangulation.parent_faces));
+    // A hole's triangles are holes.
+    let holes = (0..triangulation.parent_faces.len() as u32)
+        .filter(|&t| {
+            file.holes
+                .binary_search(&triangulation.parent_faces[t as usize])
+                .is_ok()
+        })
+        .collect();
     let file = MeshFile {
         mesh: triangulation.mesh,
         uvs,
         materials,
+        holes,
         ..file.clone()
     };
     Ok((file, split))
@@ -95,6 +104,7 @@ pub fn crease_by_angle(file: &MeshFile, angle_degrees: f64) -> weft::Result<(Mes
             creases,
             corners,
             materials: file.materials.clone(),
+            holes: file.holes.clone(),
         },
         found.len(),
     ))
@@ -118,6 +128,7 @@ pub fn subdivide(file: &MeshFile, carry: &Carry) -> weft::Result<MeshFile> {
     let mut options = carry.options.clone();
     options.creases.extend(file.subdivision_creases());
     options.corners.extend(file.subdivision_corners());
+    options.holes.extend(&file.holes);
     let subdivider = Subdivider::new(&file.mesh, carry.scheme, carry.levels, &options)?;
     let mut out = MeshFile::new(subdivider.mesh()?);
     if let Some(colours) = &file.colours {
@@ -137,8 +148,7 @@ pub fn subdivide(file: &MeshFile, carry: &Carry) -> weft::Result<MeshFile> {
         out.uvs = Some(shared_values(&corners));
     }
     if let Some(materials) = &file.materials {
-        let parents = weft::subdivide::parent_faces(&file.mesh, carry.scheme, carry.levels)?;
-        out.materials = Some(materials.inherited(&parents));
+        out.materials = Some(materials.inherited(&subdivider.parent_faces()));
     }
     if carry.limit {
         let limit = subdivider.limit()?;
@@ -166,10 +176,13 @@ fn shared_values(corners: &[f64]) -> Uvs {
     uvs
 }
 
-/// Whether the plain subdivision does it all (nothing carried or creased).
+/// Whether the plain subdivision does it all (nothing carried, creased or
+/// holed, Catmull-Clark's own triangle weights).
 pub fn is_plain(file: &MeshFile, carry: &Carry) -> bool {
     !file.has_attributes()
         && carry.options.creases.is_empty()
         && carry.options.corners.is_empty()
+        && carry.options.holes.is_empty()
+        && carry.options.triangles == weft::subdivide::TriangleRule::Catmark
         && !carry.limit
 }

@@ -6,7 +6,9 @@ use std::path::PathBuf;
 use weft::io::{self, MeshFile};
 use weft::subdivide::{self, NakedEdges, Scheme, SubdivisionOptions};
 
-use crate::args::{angle, CreasingArg, InOut, NakedEdgesArg, SchemeArg, UvLinearArg};
+use crate::args::{
+    angle, CreasingArg, InOut, SchemeArg, SubdivisionNakedEdgesArg, TrianglesArg, UvLinearArg,
+};
 use crate::files::{
     operation_failed, read_file, read_file_welded, require_faces, with_progress, write_file,
 };
@@ -24,9 +26,19 @@ pub struct Subdivide {
     #[arg(long, default_value_t = 1)]
     pub levels: u32,
     /// What happens along naked edges: fixed keeps the boundary polyline,
-    /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners.
+    /// smooth makes it a B-spline, corner-fixed is smooth but keeps corners;
+    /// none (OpenSubdiv's, beyond Weaverbird's three) leaves every face at
+    /// the boundary out as a hole and refines the rest as smooth.
     #[arg(long, value_enum, default_value = "fixed")]
-    pub naked_edges: NakedEdgesArg,
+    pub naked_edges: SubdivisionNakedEdgesArg,
+    /// Catmull-Clark's weights at triangles: catmark, or OpenSubdiv's
+    /// smooth-triangle weights, which round triangle regions of mixed cages.
+    #[arg(long, value_enum, default_value = "catmark")]
+    pub triangles: TrianglesArg,
+    /// A face (0-based) to leave out of the result, as OBJ `t hole` tags
+    /// do; its vertices and edges still shape its neighbours. Repeatable.
+    #[arg(long = "hole", value_name = "FACE")]
+    pub holes: Vec<u32>,
     /// A crease side file (format below) with creases and corners to add.
     #[arg(long, value_name = "FILE")]
     pub creases: Option<PathBuf>,
@@ -55,6 +67,8 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
         scheme,
         levels,
         naked_edges,
+        triangles,
+        holes,
         creases,
         crease_angle,
         creasing,
@@ -63,6 +77,20 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
     } = args;
     let mut file = read_file(cli, &files.input)?;
     require_faces(&files.input, &file.mesh)?;
+    if let Some(&face) = holes
+        .iter()
+        .find(|&&f| f as usize >= file.mesh.face_count())
+    {
+        return Err(Failure::Failed(format!(
+            "--hole {face}: {} has {} faces (0 to {})",
+            files.input.display(),
+            file.mesh.face_count(),
+            file.mesh.face_count() - 1
+        )));
+    }
+    file.holes.extend(holes);
+    file.holes.sort_unstable();
+    file.holes.dedup();
     if crease_angle.is_some() && !file.has_attributes() && corners_split_by_format(&file.mesh) {
         // Every corner its own vertex (STL, an unwelded OBJ): every edge
         // would be a seam, and so a crease. Joined first, as --weld does.
@@ -75,7 +103,9 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
         );
     }
     file.check_creases().map_err(|e| e.in_file(&files.input))?;
-    let info = weft::Topology::new(&file.mesh).info(&file.mesh);
+    let info = weft::Topology::try_new(&file.mesh)
+        .map_err(|e| operation_failed(&files.input, "read the topology of", e))?
+        .info(&file.mesh);
     if info.is_orientable && !info.is_oriented {
         eprintln!(
             "{}: warning: neighbouring faces disagree on their orientation, which subdivision reads as creases; `weft flip {} FIXED.obj --unify` makes it consistent",
@@ -128,6 +158,7 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
         options: SubdivisionOptions {
             naked_edges,
             creasing: (*creasing).into(),
+            triangles: (*triangles).into(),
             ..SubdivisionOptions::default()
         },
         uv_linear: (*uv_linear).into(),
@@ -142,6 +173,19 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
         with_progress("subdividing", || carry::subdivide(&file, &carry))
     }
     .map_err(|e| operation_failed(&files.input, "subdivide", e))?;
+    if refined.mesh.face_count() == 0 {
+        // Holes everywhere: an empty file would pass for a result.
+        let why = match naked_edges {
+            NakedEdges::None => {
+                "with --naked-edges none every face touching a naked edge is a hole"
+            }
+            _ => "every face is a hole",
+        };
+        return Err(Failure::Failed(format!(
+            "{}: subdivision left no face: {why}; nothing written",
+            files.input.display()
+        )));
+    }
     write_file(&files.output, &refined, &io::WriteOptions::default())
 }
 
