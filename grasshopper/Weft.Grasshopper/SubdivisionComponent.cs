@@ -55,6 +55,18 @@ namespace Weft.Grasshopper
         /// </summary>
         protected PolygonArrays PrepareCage(PolygonArrays cage, int levels)
         {
+            uint[] parentFaces;
+            return PrepareCage(cage, levels, out parentFaces);
+        }
+
+        /// <summary>
+        /// As <see cref="PrepareCage(PolygonArrays, int)"/>, with the face of
+        /// <paramref name="cage"/> each triangle was cut from when Loop triangulated it
+        /// (null when the cage was taken as it is).
+        /// </summary>
+        protected PolygonArrays PrepareCage(PolygonArrays cage, int levels, out uint[] parentFaces)
+        {
+            parentFaces = null;
             using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
             {
                 if (Scheme != Scheme.Loop)
@@ -67,8 +79,11 @@ namespace Weft.Grasshopper
                 {
                     FaceBudget.Check(triangles, Scheme, levels, FaceBudget.MaxFaces);
                     if (split == 0) return cage;
-                    // Triangulating keeps the vertices, so creases and corners still name the same ones.
-                    Remark(split + " quad or n-gon face(s) were triangulated before subdividing.");
+                }
+                // Triangulating keeps the vertices, so creases and corners still name the same ones.
+                Remark(split + " quad or n-gon face(s) were triangulated before subdividing.");
+                using (WeftMesh triangles = Subdivision.Triangulate(mesh, out parentFaces))
+                {
                     return MeshArrays.FromWeft(triangles);
                 }
             }
@@ -79,7 +94,7 @@ namespace Weft.Grasshopper
         {
             AddMeshInput(pManager, "M", meshDescription);
             pManager.AddIntegerParameter("Level", "L", levelsDescription, GH_ParamAccess.item, 1);
-            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed.", GH_ParamAccess.item, 1);
+            pManager.AddIntegerParameter("Smooth Naked Edges", "S", NakedEdgesDescription, GH_ParamAccess.item, 1);
         }
 
         /// <summary>The refiner cache of the branch being solved.</summary>

@@ -248,14 +248,14 @@ namespace Weft.Grasshopper
             return (OffsetType)ToMode(type, 3, "T", "0 (distance on diagonals), 1 (hypotenuse average) or 2 (planes intersection)");
         }
 
-        /// <summary>Reads a naked-edge mode input (0 Fixed, 1 Smooth, 2 Corner Fixed).</summary>
+        /// <summary>The subdivision components' S input: Weaverbird's three modes, and OpenSubdiv's "none" beyond them.</summary>
+        protected const string NakedEdgesDescription =
+            "0: fixed, 1: smooth, 2: corner fixed (Weaverbird's three); 3: none, OpenSubdiv's: every face at a naked edge is left out as a hole, the rest refined as smooth.";
+
+        /// <summary>Reads a subdivision naked-edge mode input (0 Fixed, 1 Smooth, 2 Corner Fixed, 3 None).</summary>
         protected static NakedEdges ToNakedEdges(int mode)
         {
-            if (mode < 0 || mode > 2)
-            {
-                throw new WeftException(WeftStatus.InvalidArgument, "S is " + mode + "; use 0 (fixed), 1 (smooth) or 2 (corner fixed)");
-            }
-            return (NakedEdges)mode;
+            return (NakedEdges)ToMode(mode, 4, "S", "0 (fixed), 1 (smooth), 2 (corner fixed) or 3 (none: boundary faces left out)");
         }
 
         /// <summary>Shows a warning balloon.</summary>

@@ -21,6 +21,7 @@ namespace Weft.Tests
             t.Run("converted arrays make a valid Weft mesh", IntoWeft);
             t.Run("refiner cache: a moved cage re-evaluates, new faces re-plan", RefinerCacheReuse);
             t.Run("refiner cache: a failed plan leaves no refiner and raises the library's error", RefinerCacheError);
+            t.Run("refiner cache: holes and the triangle rule are part of the plan", RefinerCacheHoles);
             t.Run("refiner pool: one refiner per branch, so alternating topologies plan once each", RefinerPoolPerBranch);
             t.Run("refiner pool: branches a solution no longer has are freed, Dispose frees all", RefinerPoolFrees);
             t.Run("face budget: a level too many is refused, naming the level that fits", FaceBudgetRefuses);
@@ -140,6 +141,26 @@ namespace Weft.Tests
             var r = new int[Math.Min(count, Math.Max(0, a.Length - start))];
             Array.Copy(a, start, r, 0, r.Length);
             return r;
+        }
+
+        private static void RefinerCacheHoles()
+        {
+            using (var cache = new RefinerCache())
+            {
+                var holed = new SubdivisionOptions(NakedEdges.Smooth).AddHole(2);
+                RefinedArrays first = cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 2, holed);
+                t.Equal(96 - 16, first.FaceSizes.Length, "the hole's 16 children are gone");
+                t.Equal(98, first.Positions.Length / 3, "every vertex stays");
+                RefinedArrays again = cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 2, holed.Clone());
+                t.True(cache.LastReused, "the same holes reuse the plan");
+                var smooth = new SubdivisionOptions(NakedEdges.Smooth) { Triangles = TriangleRule.Smooth }.AddHole(2);
+                cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 2, smooth);
+                t.False(cache.LastReused, "another triangle rule plans again");
+                RefinedArrays none = cache.Subdivide(UnitCube.Positions, UnitCube.Sizes, UnitCube.Indices, Scheme.CatmullClark, 1,
+                                                     new SubdivisionOptions(NakedEdges.None));
+                t.Equal(24, none.FaceSizes.Length, "a closed cube has no boundary, so none leaves every face");
+                t.Equal(again.FaceSizes.Length, first.FaceSizes.Length, "reused faces");
+            }
         }
 
         private static void RefinerCacheReuse()

@@ -128,6 +128,39 @@ def test_subdivision_queries(cage):
     assert parents.tolist() == np.repeat(np.arange(cage.face_count), 4).tolist()
 
 
+def test_holes_boundary_none_and_smooth_triangles(cage):
+    plain = weft.subdivide(cage, levels=2, naked_edges="smooth")
+    holed = weft.subdivide(cage, levels=2, naked_edges="smooth", holes=[1, 4])
+    assert same_bits(holed.vertices, plain.vertices)
+    lost = sum(len(cage.faces[f]) * 4 for f in (1, 4))
+    assert holed.face_count == plain.face_count - lost
+    counts = weft.subdivision_counts(cage, levels=2, naked_edges="smooth", holes=[1, 4])
+    assert counts == (holed.vertex_count, holed.face_count, holed.index_count)
+    parents = weft.subdivision_parent_faces(cage, levels=2, naked_edges="smooth", holes=[1, 4])
+    assert len(parents) == holed.face_count and not set(parents.tolist()) & {1, 4}
+    uvs = weft.subdivide_face_varying(cage, np.array(cage.vertices)[:, :2], cage.face_indices, levels=2,
+                                      naked_edges="smooth", holes=[1, 4])
+    assert uvs.shape == (holed.index_count, 2)
+    r = weft.Refiner(cage, levels=2, naked_edges="smooth", holes=[1, 4])
+    assert r.face_count == holed.face_count
+    n = cage.face_count
+    with pytest.raises(weft.WeftError, match=f"hole 0 is face {n}, but the mesh has {n} faces"):
+        weft.subdivide(cage, holes=[n])
+    # A closed box has no boundary: none keeps every face.
+    assert weft.catmull_clark(weft.box(), levels=1, naked_edges="none").face_count == 24
+    grid = weft.Mesh([[x, y, 0] for y in range(3) for x in range(3)], [[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 7, 6], [4, 5, 8, 7]])
+    assert weft.catmull_clark(grid, levels=1, naked_edges="none").face_count == 0
+    with pytest.raises(weft.WeftError, match="only subdivision makes"):
+        weft.laplacian_smooth(grid, naked_edges="none")
+    prism = weft.Mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [0, 1, 1]],
+                      [[0, 2, 1], [3, 4, 5], [0, 1, 4, 3], [1, 2, 5, 4], [2, 0, 3, 5]])
+    smooth = weft.subdivide(prism, levels=1, triangles="smooth")
+    catmark = weft.subdivide(prism, levels=1)
+    assert not np.array_equal(smooth.vertices, catmark.vertices)
+    with pytest.raises(ValueError, match="triangles"):
+        weft.subdivide(prism, triangles="round")
+
+
 def test_vertex_data_follows_the_positions(cage):
     data = np.array(cage.vertices)
     carried = weft.subdivide_vertex_data(cage, data, levels=2, naked_edges="smooth", creases=[(0, 1, 2.0)])

@@ -12,7 +12,9 @@ namespace Weft.Grasshopper
     /// Weaverbird's Catmull-Clark and Loop lack. Inputs after M, L, S as in
     /// the plain components: C creases (lines or edge indices), CS their
     /// sharpness, P corner points, PS their sharpness, R the creasing rule,
-    /// T the matching tolerance, X the limit switch.
+    /// T the matching tolerance, X the limit switch, H hole faces and TR
+    /// Catmull-Clark's triangle rule (the last two after Weaverbird's
+    /// order, so older definitions keep their wires).
     /// </summary>
     public abstract class CreasedSubdivisionComponent : SubdivisionComponent
     {
@@ -38,7 +40,14 @@ namespace Weft.Grasshopper
             pManager.AddIntegerParameter("Rule", "R", "How semi-sharp creases soften: 0 uniform, 1 Chaikin (averaged along the crease).", GH_ParamAccess.item, 0);
             AddToleranceInput(pManager, "How far a crease line's ends or a corner point may be from a vertex");
             pManager.AddBooleanParameter("Limit", "X", "Project the vertices onto the limit surface and use its normals (smooth shading, offsets).", GH_ParamAccess.item, false);
+            pManager.AddIntegerParameter("Holes", "H",
+                "Faces of M (indices) to leave out of the result, as OpenSubdiv's hole tags: they leave no faces, but their vertices and edges still shape their neighbours.",
+                GH_ParamAccess.list);
+            pManager.AddIntegerParameter("Triangle Rule", "TR",
+                "Catmull-Clark's weights at triangles: 0 its own, 1 OpenSubdiv's smooth triangles, which round triangle regions of mixed meshes. Loop ignores it.",
+                GH_ParamAccess.item, 0);
             for (int i = 3; i <= 8; i++) pManager[i].Optional = true;
+            pManager[10].Optional = true;
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -59,12 +68,14 @@ namespace Weft.Grasshopper
             var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
             double tolerance = GetTolerance(DA, 8);
             bool limit = Get(DA, 9, false);
+            int[] holes = GetList<int>(DA, 10);
+            var triangles = (TriangleRule)ToMode(Get(DA, 11, 0), 2, "TR", "0 (Catmull-Clark's weights) or 1 (smooth triangles)");
 
             int[] colours;
             PolygonArrays cage = GetPolygons(DA, 0, out colours);
             if (cage == null) return;
 
-            var options = new SubdivisionOptions(nakedEdges) { Creasing = rule };
+            var options = new SubdivisionOptions(nakedEdges) { Creasing = rule, Triangles = triangles };
             CreaseItem[] items = ToCreaseItems(creaseItems);
             using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
             {
@@ -86,7 +97,10 @@ namespace Weft.Grasshopper
                 }
             }
 
-            cage = PrepareCage(cage, levels);
+            uint[] triangleParents;
+            int inputFaces = cage.FaceSizes.Length;
+            cage = PrepareCage(cage, levels, out triangleParents);
+            AddHoles(options, holes, inputFaces, cage.FaceSizes.Length, triangleParents);
 
             RefinedArrays refined = Refiner(DA).Subdivide(cage.Positions, cage.FaceSizes, cage.FaceIndices, Scheme, levels, options);
             double[] positions = refined.Positions;
@@ -113,6 +127,30 @@ namespace Weft.Grasshopper
             if (refinedColours != null) RhinoMeshes.SetVertexColours(result, refinedColours);
             DA.SetData(0, result);
             if (surface != null) DA.SetDataList(1, RhinoMeshes.ToVectors(surface.Normals));
+        }
+
+        /// <summary>
+        /// Adds the hole faces of H; when Loop triangulated the cage (<paramref name="triangleParents"/>
+        /// not null), the triangles cut from a hole are the holes. An index past M's faces is refused.
+        /// </summary>
+        private static void AddHoles(SubdivisionOptions options, int[] holes, int inputFaces, int cageFaces, uint[] triangleParents)
+        {
+            var isHole = new bool[inputFaces];
+            for (int i = 0; i < holes.Length; i++)
+            {
+                if (holes[i] < 0 || holes[i] >= inputFaces)
+                {
+                    throw new WeftException(WeftStatus.InvalidArgument,
+                        "H item " + i + " is face " + holes[i] + ", but M has " + inputFaces + " faces");
+                }
+                isHole[holes[i]] = true;
+            }
+            if (holes.Length == 0) return;
+            for (int f = 0; f < cageFaces; f++)
+            {
+                int input = triangleParents == null ? f : (int)triangleParents[f];
+                if (isHole[input]) options.AddHole(f);
+            }
         }
 
         /// <summary>Each item of C as a line or an edge index; anything else is refused, naming the item.</summary>
