@@ -18,7 +18,7 @@ use weft::subdivide::{
 };
 use weft::{DVec3, Mesh};
 use weft_reference::{
-    opensubdiv_refine, opensubdiv_refine_face_varying, FVarLinear, OsdOptions, OsdRefiner,
+    opensubdiv_refine, opensubdiv_refine_face_varying, FVarLinear, OsdOptions, OsdRefiner, RefMesh,
 };
 
 fn shapes_for(scheme: Scheme) -> Vec<(&'static str, Mesh, bool)> {
@@ -102,37 +102,54 @@ fn option_sets(
         .collect()
 }
 
-#[test]
-fn creases_and_corners_equal_opensubdiv() {
+/// One comparison with OpenSubdiv: a shape creased by one sharpness set,
+/// under one scheme, creasing rule and naked-edge mode.
+struct CreasedCase {
+    scheme: Scheme,
+    /// The scheme, shape, set, rule and mode, for messages.
+    label: String,
+    cage: Mesh,
+    reference_cage: RefMesh,
+    options: SubdivisionOptions,
+    osd: OsdOptions,
+}
+
+/// Every scheme's shapes with every sharpness set, creasing rule and
+/// naked-edge mode worth comparing.
+fn creased_cases() -> Vec<CreasedCase> {
+    let mut cases = Vec::new();
     for scheme in [Scheme::CatmullClark, Scheme::Loop] {
         for (name, cage, closed) in shapes_for(scheme) {
-            let modes = naked_edge_modes(closed);
             let reference_cage = to_ref(&cage);
             for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
                 let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
-                for options in option_sets(&creases, &corners, modes) {
+                for options in option_sets(&creases, &corners, naked_edge_modes(closed)) {
                     let (creasing, naked_edges) = (options.creasing, options.naked_edges);
-                    let osd = osd_options(scheme, &options, &reference_cage);
-                    for levels in 1..=3 {
-                        let what = format!(
-                            "{scheme:?} {name} {set} {creasing:?} {naked_edges:?} level {levels}"
-                        );
-                        let ours = subdivide_with(&cage, scheme, levels, &options).unwrap();
-                        let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
-                        let map = vertex_map(&ours, &theirs, &what);
-                        let flat: Vec<f64> =
-                            ours.positions().iter().flat_map(|p| p.to_array()).collect();
-                        assert_rows_close(
-                            &flat,
-                            &theirs.positions,
-                            3,
-                            &map,
-                            tolerance(&ours),
-                            &what,
-                        );
-                    }
+                    cases.push(CreasedCase {
+                        scheme,
+                        label: format!("{scheme:?} {name} {set} {creasing:?} {naked_edges:?}"),
+                        cage: cage.clone(),
+                        reference_cage: reference_cage.clone(),
+                        osd: osd_options(scheme, &options, &reference_cage),
+                        options,
+                    });
                 }
             }
+        }
+    }
+    cases
+}
+
+#[test]
+fn creases_and_corners_equal_opensubdiv() {
+    for case in creased_cases() {
+        for levels in 1..=3 {
+            let what = format!("{} level {levels}", case.label);
+            let ours = subdivide_with(&case.cage, case.scheme, levels, &case.options).unwrap();
+            let theirs = opensubdiv_refine(&case.reference_cage, &case.osd, levels).unwrap();
+            let map = vertex_map(&ours, &theirs, &what);
+            let flat: Vec<f64> = ours.positions().iter().flat_map(|p| p.to_array()).collect();
+            assert_rows_close(&flat, &theirs.positions, 3, &map, tolerance(&ours), &what);
         }
     }
 }
@@ -239,61 +256,39 @@ fn an_infinite_corner_stays_and_a_hard_crease_stays_on_its_polyline() {
 
 #[test]
 fn limit_positions_and_normals_equal_opensubdiv() {
-    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
-        for (name, cage, closed) in shapes_for(scheme) {
-            let modes = naked_edge_modes(closed);
-            let reference_cage = to_ref(&cage);
-            for &(set, sharpness, corner_sharpness) in &SHARPNESS_SETS {
-                let (creases, corners) = creased(&cage, sharpness, corner_sharpness);
-                for (creasing, &naked_edges) in [Creasing::Uniform, Creasing::Chaikin]
-                    .into_iter()
-                    .flat_map(|creasing| modes.iter().map(move |m| (creasing, m)))
-                {
-                    let options = SubdivisionOptions {
-                        naked_edges,
-                        creases: creases.clone(),
-                        corners: corners.clone(),
-                        creasing,
-                        ..SubdivisionOptions::default()
-                    };
-                    let osd = osd_options(scheme, &options, &reference_cage);
-                    for levels in 0..=3 {
-                        let what = format!(
-                            "{scheme:?} {name} {set} {creasing:?} {naked_edges:?} limit at level {levels}"
-                        );
-                        let subdivider = Subdivider::new(&cage, scheme, levels, &options).unwrap();
-                        let ours = subdivider.limit().unwrap();
-                        let full = OsdOptions {
-                            full_topology: true,
-                            ..osd.clone()
-                        };
-                        let refiner = OsdRefiner::new(&reference_cage, &full, levels).unwrap();
-                        let theirs = refiner.limit(&reference_cage.positions).unwrap();
-                        let mut faces = refiner.faces();
-                        faces.positions = refiner.interpolate(&reference_cage.positions, 3);
-                        let refined = subdivider.mesh().unwrap();
-                        let map = vertex_map(&refined, &faces, &what);
-                        let flat =
-                            |v: &[DVec3]| v.iter().flat_map(|p| p.to_array()).collect::<Vec<f64>>();
-                        assert_rows_close(
-                            &flat(&ours.positions),
-                            &theirs.positions,
-                            3,
-                            &map,
-                            tolerance(&refined),
-                            &what,
-                        );
-                        assert_rows_close(
-                            &flat(&ours.normals),
-                            &theirs.normals,
-                            3,
-                            &map,
-                            1e-9,
-                            &format!("{what} normals"),
-                        );
-                    }
-                }
-            }
+    for case in creased_cases() {
+        for levels in 0..=3 {
+            let what = format!("{} limit at level {levels}", case.label);
+            let subdivider =
+                Subdivider::new(&case.cage, case.scheme, levels, &case.options).unwrap();
+            let ours = subdivider.limit().unwrap();
+            let full = OsdOptions {
+                full_topology: true,
+                ..case.osd.clone()
+            };
+            let refiner = OsdRefiner::new(&case.reference_cage, &full, levels).unwrap();
+            let theirs = refiner.limit(&case.reference_cage.positions).unwrap();
+            let mut faces = refiner.faces();
+            faces.positions = refiner.interpolate(&case.reference_cage.positions, 3);
+            let refined = subdivider.mesh().unwrap();
+            let map = vertex_map(&refined, &faces, &what);
+            let flat = |v: &[DVec3]| v.iter().flat_map(|p| p.to_array()).collect::<Vec<f64>>();
+            assert_rows_close(
+                &flat(&ours.positions),
+                &theirs.positions,
+                3,
+                &map,
+                tolerance(&refined),
+                &what,
+            );
+            assert_rows_close(
+                &flat(&ours.normals),
+                &theirs.normals,
+                3,
+                &map,
+                1e-9,
+                &format!("{what} normals"),
+            );
         }
     }
 }

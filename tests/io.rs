@@ -154,61 +154,76 @@ fn error_at(format: Format, data: &[u8]) -> (Location, String) {
 
 #[test]
 fn malformed_text_names_the_line() {
-    let (at, msg) = error_at(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 one 0\nf 1 2 3\n");
-    assert_eq!(at, Location::Line(3));
-    assert!(msg.contains("line 3") && msg.contains("\"one\""), "{msg}");
-
-    let (at, msg) = error_at(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n");
-    assert_eq!(at, Location::Line(5));
-    assert!(msg.contains("out of range"), "{msg}");
-
-    let (at, _) = error_at(Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n");
-    assert_eq!(at, Location::Line(4));
-    let (at, msg) = error_at(Format::Obj, b"v 0 0 0\nv 1 0\n");
-    assert_eq!(at, Location::Line(2));
-    assert!(msg.contains("z is missing"), "{msg}");
-
-    // A missing vertex: the header promises 4, the file has 3, so the face
-    // line is read as the fourth vertex and the face is missing.
-    let (at, msg) = error_at(Format::Off, b"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    assert_eq!(at, Location::Line(6));
-    assert!(
-        msg.contains("end of file") && msg.contains("face 0"),
-        "{msg}"
-    );
-    let (at, msg) = error_at(Format::Off, b"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n");
-    assert_eq!(at, Location::Line(5));
-    assert!(msg.contains("vertex 3 of 4"), "{msg}");
-    let (at, msg) = error_at(Format::Off, b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n");
-    assert_eq!(at, Location::Line(5));
-    assert!(
-        msg.contains("end of file") && msg.contains("face 0"),
-        "{msg}"
-    );
-    let (at, _) = error_at(Format::Off, b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
-    assert_eq!(at, Location::Line(6));
-
-    let (at, msg) = error_at(
-        Format::Ply,
-        b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
-          property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\
-          0 0 0\n1 0 0\n0 1 nan?\n3 0 1 2\n",
-    );
-    assert_eq!(at, Location::Line(12));
-    assert!(msg.contains("property z of vertex 2"), "{msg}");
-    let (at, msg) = error_at(
-        Format::Ply,
-        b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n",
-    );
-    assert_eq!(at, Location::Line(3));
-    assert!(msg.contains("x, y and z"), "{msg}");
-
-    let (at, msg) = error_at(
-        Format::Stl,
-        b"solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertx 0 1 0\nendloop\nendfacet\nendsolid s\n",
-    );
-    assert_eq!(at, Location::Line(6));
-    assert!(msg.contains("expected \"vertex\""), "{msg}");
+    // The format, the text, the line the error names and words its message holds.
+    let cases: [(Format, &[u8], usize, &[&str]); 11] = [
+        (
+            Format::Obj,
+            b"v 0 0 0\nv 1 0 0\nv 0 one 0\nf 1 2 3\n",
+            3,
+            &["line 3", "\"one\""],
+        ),
+        (
+            Format::Obj,
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n",
+            5,
+            &["out of range"],
+        ),
+        (Format::Obj, b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -4\n", 4, &[]),
+        (Format::Obj, b"v 0 0 0\nv 1 0\n", 2, &["z is missing"]),
+        // A missing vertex: the header promises 4, the file has 3, so the face
+        // line is read as the fourth vertex and the face is missing.
+        (
+            Format::Off,
+            b"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            6,
+            &["end of file", "face 0"],
+        ),
+        (
+            Format::Off,
+            b"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n",
+            5,
+            &["vertex 3 of 4"],
+        ),
+        (
+            Format::Off,
+            b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n",
+            5,
+            &["end of file", "face 0"],
+        ),
+        (
+            Format::Off,
+            b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
+            6,
+            &[],
+        ),
+        (
+            Format::Ply,
+            b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+              property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\
+              0 0 0\n1 0 0\n0 1 nan?\n3 0 1 2\n",
+            12,
+            &["property z of vertex 2"],
+        ),
+        (
+            Format::Ply,
+            b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n",
+            3,
+            &["x, y and z"],
+        ),
+        (
+            Format::Stl,
+            b"solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertx 0 1 0\nendloop\nendfacet\nendsolid s\n",
+            6,
+            &["expected \"vertex\""],
+        ),
+    ];
+    for (format, text, line, words) in cases {
+        let (at, msg) = error_at(format, text);
+        assert_eq!(at, Location::Line(line), "{msg}");
+        for word in words {
+            assert!(msg.contains(word), "{word:?} not in {msg}");
+        }
+    }
 }
 
 #[test]
@@ -420,6 +435,7 @@ fn decorated_cube() -> io::MeshFile {
             line: 0,
         }],
         materials: None,
+        holes: vec![2, 4],
     }
 }
 
@@ -443,6 +459,7 @@ fn obj_round_trips_colours_uvs_and_creases() {
     assert!(text.contains("\nl 1 2\n"), "{text}");
     assert!(text.contains("\nt crease 2/1/0 1 3 2.5\n"), "{text}");
     assert!(text.contains("\nt corner 1/1/0 7 10\n"), "{text}");
+    assert!(text.contains("\nt hole 2/0/0 2 4\n"), "{text}");
     assert!(text.contains("\nf 1/1/1 3/2/3 4/3/4 2/4/2\n"), "{text}");
     let read = io::parse_mesh_file(Format::Obj, &bytes).unwrap();
     // Normals are written, never read.
@@ -458,6 +475,7 @@ fn ply_round_trips_colours_and_per_vertex_uvs() {
     let mut file = decorated_cube();
     file.creases.clear();
     file.corners.clear();
+    file.holes.clear();
     file.normals = None;
     // uchar colours: values k/255 come back exactly.
     for (i, c) in file.colours.as_mut().unwrap().rgba.iter_mut().enumerate() {
@@ -493,10 +511,20 @@ fn ply_round_trips_colours_and_per_vertex_uvs() {
     }
     // UVs with seams do not fit; the writer leaves them out and says which.
     let seams = decorated_cube();
-    assert_eq!(seams.dropped_by(Format::Ply), ["UVs", "creases", "corners"]);
+    assert_eq!(
+        seams.dropped_by(Format::Ply),
+        ["UVs", "creases", "corners", "holes"]
+    );
     assert_eq!(
         seams.dropped_by(Format::Off),
-        ["vertex colours", "UVs", "normals", "creases", "corners"]
+        [
+            "vertex colours",
+            "UVs",
+            "normals",
+            "creases",
+            "corners",
+            "holes"
+        ]
     );
     assert!(seams.dropped_by(Format::Obj).is_empty());
 }
@@ -599,6 +627,14 @@ fn malformed_attributes_name_their_line() {
     assert_attribute_error(Format::Ply, ply, 3, "red, green and blue");
 }
 
+/// Each crease as its edge, sharpness and line, to compare with a list.
+fn crease_rows(creases: &[io::FileCrease]) -> Vec<([u32; 2], f64, usize)> {
+    creases
+        .iter()
+        .map(|c| (c.edge, c.sharpness, c.line))
+        .collect()
+}
+
 #[test]
 fn obj_polylines_and_tags_become_creases_and_corners() {
     let text = b"v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n\
@@ -608,11 +644,7 @@ fn obj_polylines_and_tags_become_creases_and_corners() {
         t corner 2/1/0 0 2 inf\n\
         t interpolateboundary 1/0/0 1\n";
     let file = io::parse_mesh_file(Format::Obj, text).unwrap();
-    let creases: Vec<([u32; 2], f64, usize)> = file
-        .creases
-        .iter()
-        .map(|c| (c.edge, c.sharpness, c.line))
-        .collect();
+    let creases = crease_rows(&file.creases);
     assert_eq!(
         creases,
         [
@@ -644,11 +676,7 @@ fn obj_polylines_and_tags_become_creases_and_corners() {
 fn crease_side_files_parse_and_name_bad_lines() {
     let text = b"# creases of a cube\n0 1 inf\n\n1 3 2.5   # semi-sharp\ncrease 3 2 Infinity\nCORNER 7 inf\ncorner 6 0.5\n";
     let file = io::creases::parse(text).unwrap();
-    let creases: Vec<([u32; 2], f64, usize)> = file
-        .creases
-        .iter()
-        .map(|c| (c.edge, c.sharpness, c.line))
-        .collect();
+    let creases = crease_rows(&file.creases);
     assert_eq!(
         creases,
         [([0, 1], 10.0, 2), ([1, 3], 2.5, 4), ([3, 2], 10.0, 5)]

@@ -235,17 +235,7 @@ fn subdivided_and_triangulated_faces_keep_their_parents_materials() {
         subdivided.to_str().unwrap(),
         triangles.to_str().unwrap(),
     );
-    run(&[
-        "subdivide",
-        i,
-        s,
-        "--scheme",
-        "catmull-clark",
-        "--levels",
-        "2",
-        "--naked-edges",
-        "smooth",
-    ]);
+    run(&[&["subdivide", i, s][..], &SMOOTH_TWICE].concat());
     run(&["triangulate", i, t]);
     let read = |path: &std::path::Path| {
         weft::io::parse_mesh_file(Format::Obj, &std::fs::read(path).unwrap()).unwrap()
@@ -303,6 +293,17 @@ fn marked_edges_stand_out_and_a_section_shows_what_is_inside() {
     assert!((0..none.height).all(|y| (0..none.width).all(|x| none.pixel(x, y) == background)));
 }
 
+/// The subdivision most of these files went through: Catmull-Clark twice,
+/// the naked edges smoothed.
+const SMOOTH_TWICE: [&str; 6] = [
+    "--scheme",
+    "catmull-clark",
+    "--levels",
+    "2",
+    "--naked-edges",
+    "smooth",
+];
+
 /// Runs `weft` with `args` in `dir`; returns (exit code, stderr).
 fn weft_in(dir: &std::path::Path, args: &[&str]) -> (i32, String) {
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_weft"))
@@ -337,17 +338,15 @@ fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
     let welded = weft::io::read_mesh(dir.join("welded.obj")).unwrap();
     assert_eq!(welded.face_count(), 2048);
 
-    let (code, err) = weft_in(
-        &dir,
-        &[
-            "weld",
-            "sphere.obj",
-            "-o",
-            "coarse.obj",
-            "--tolerance",
-            "0.001",
-        ],
-    );
+    let coarse = [
+        "weld",
+        "sphere.obj",
+        "-o",
+        "coarse.obj",
+        "--tolerance",
+        "0.001",
+    ];
+    let (code, err) = weft_in(&dir, &coarse);
     assert_eq!(code, 1, "{err}");
     assert!(
         err.contains("would collapse") && err.contains("of 2048 faces"),
@@ -362,16 +361,7 @@ fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
         "a refused weld writes nothing"
     );
 
-    let args = [
-        "weld",
-        "sphere.obj",
-        "-o",
-        "coarse.obj",
-        "--tolerance",
-        "0.001",
-        "--allow-collapse",
-    ];
-    let (code, err) = weft_in(&dir, &args);
+    let (code, err) = weft_in(&dir, &[&coarse[..], &["--allow-collapse"]].concat());
     assert_eq!(code, 0, "{err}");
     assert!(
         weft::io::read_mesh(dir.join("coarse.obj"))
@@ -459,23 +449,26 @@ fn flip_outward_turns_welded_stl_boxes_outward() {
 #[test]
 fn odd_input_gets_a_clear_answer() {
     let dir = scratch("odd");
+    let subdivide_once = |input: &str| {
+        let args = [
+            "subdivide",
+            input,
+            "out.obj",
+            "--scheme",
+            "catmull-clark",
+            "--levels",
+            "1",
+            "--naked-edges",
+            "smooth",
+        ];
+        weft_in(&dir, &args)
+    };
     std::fs::write(
         dir.join("points.obj"),
         "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n",
     )
     .unwrap();
-    let args = [
-        "subdivide",
-        "points.obj",
-        "out.obj",
-        "--scheme",
-        "catmull-clark",
-        "--levels",
-        "1",
-        "--naked-edges",
-        "smooth",
-    ];
-    let (code, err) = weft_in(&dir, &args);
+    let (code, err) = subdivide_once("points.obj");
     assert_eq!(code, 1, "{err}");
     assert!(err.contains("has no faces"), "{err}");
     assert!(!dir.join("out.obj").exists());
@@ -488,18 +481,7 @@ fn odd_input_gets_a_clear_answer() {
         &dir.join("mixed.obj"),
         &Mesh::from_polygons(grid.positions().to_vec(), faces).unwrap(),
     );
-    let args = [
-        "subdivide",
-        "mixed.obj",
-        "out.obj",
-        "--scheme",
-        "catmull-clark",
-        "--levels",
-        "1",
-        "--naked-edges",
-        "smooth",
-    ];
-    let (code, err) = weft_in(&dir, &args);
+    let (code, err) = subdivide_once("mixed.obj");
     assert_eq!(code, 0, "{err}");
     assert!(
         err.contains("disagree on their orientation") && err.contains("--unify"),
@@ -534,19 +516,10 @@ fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
     }
     let split = Mesh::new(positions, cube.face_sizes().to_vec(), (0..36).collect()).unwrap();
     weft::io::write_mesh(dir.join("cube.stl"), &split).unwrap();
-    let common = [
-        "--scheme",
-        "catmull-clark",
-        "--levels",
-        "2",
-        "--naked-edges",
-        "smooth",
-        "--crease-angle",
-        "30",
-    ];
     let run = |out: &str, weld: bool| {
         let mut args = vec!["subdivide", "cube.stl", out];
-        args.extend(common);
+        args.extend(SMOOTH_TWICE);
+        args.extend(["--crease-angle", "30"]);
         if weld {
             args.push("--weld");
         }

@@ -1,46 +1,15 @@
-//! Weft as a C host calls it: the exports of `include/weft.h`, declared here
-//! as a C program would declare them, so the timings include the ABI's
-//! checks and conversions and nothing of the Rust API.
+//! Weft as a C host calls it: the exports of `include/weft.h`, called
+//! through their C signatures, so the timings include the ABI's checks and
+//! conversions and nothing of the Rust API.
 
 use std::ptr;
 
+use weft::ffi::mesh::{
+    weft_mesh_free, weft_mesh_index_count, weft_mesh_new, weft_mesh_vertex_count,
+};
+use weft::ffi::subdivide::{weft_catmull_clark, weft_loop, WEFT_NAKED_EDGES_SMOOTH};
+use weft::ffi::{WeftMesh, WeftStatus};
 use weft::Mesh;
-
-/// `WeftMesh`, opaque.
-#[repr(C)]
-pub struct WeftMesh {
-    _private: [u8; 0],
-}
-
-/// `WEFT_NAKED_EDGES_SMOOTH`.
-pub const NAKED_EDGES_SMOOTH: u32 = 1;
-
-extern "C" {
-    fn weft_mesh_new(
-        positions: *const f64,
-        vertex_count: usize,
-        face_sizes: *const u32,
-        face_count: usize,
-        face_indices: *const u32,
-        index_count: usize,
-        out_mesh: *mut *mut WeftMesh,
-    ) -> u32;
-    fn weft_mesh_free(mesh: *mut WeftMesh);
-    fn weft_mesh_vertex_count(mesh: *const WeftMesh) -> usize;
-    fn weft_mesh_index_count(mesh: *const WeftMesh) -> usize;
-    fn weft_catmull_clark(
-        mesh: *const WeftMesh,
-        levels: u32,
-        naked_edges: u32,
-        out_mesh: *mut *mut WeftMesh,
-    ) -> u32;
-    fn weft_loop(
-        mesh: *const WeftMesh,
-        levels: u32,
-        naked_edges: u32,
-        out_mesh: *mut *mut WeftMesh,
-    ) -> u32;
-}
 
 /// A mesh handle of the library, freed on drop.
 pub struct Handle(*mut WeftMesh);
@@ -69,7 +38,7 @@ impl Handle {
                 &mut out,
             )
         };
-        assert_eq!(status, 0, "weft_mesh_new");
+        assert_eq!(status, WeftStatus::Ok, "weft_mesh_new");
         Handle(out)
     }
 
@@ -94,11 +63,11 @@ pub fn subdivide(cage: &Handle, loop_scheme: bool, levels: u32) -> Handle {
     // SAFETY: `cage` is live; `out` is a valid place for the handle.
     let status = unsafe {
         if loop_scheme {
-            weft_loop(cage.0, levels, NAKED_EDGES_SMOOTH, &mut out)
+            weft_loop(cage.0, levels, WEFT_NAKED_EDGES_SMOOTH, &mut out)
         } else {
-            weft_catmull_clark(cage.0, levels, NAKED_EDGES_SMOOTH, &mut out)
+            weft_catmull_clark(cage.0, levels, WEFT_NAKED_EDGES_SMOOTH, &mut out)
         }
     };
-    assert_eq!(status, 0, "weft subdivides through the C ABI");
+    assert_eq!(status, WeftStatus::Ok, "weft subdivides through the C ABI");
     Handle(out)
 }

@@ -207,6 +207,23 @@ pub(crate) unsafe fn mesh_op(
     unsafe { make_mesh(out_mesh, borrow_and_run) }
 }
 
+/// As `mesh_op`, for an export whose arguments the library checks itself:
+/// the library's error becomes the status unchanged.
+///
+/// # Safety
+/// As `mesh_op`.
+pub(crate) unsafe fn forward_mesh_op<E>(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    op: impl FnOnce(&Mesh) -> Result<Mesh, E>,
+) -> WeftStatus
+where
+    Failure: From<E>,
+{
+    // SAFETY: `mesh` and `out_mesh` are as `mesh_op` requires, as the caller promises.
+    unsafe { mesh_op(mesh, out_mesh, |m| Ok(op(m)?)) }
+}
+
 /// As `mesh_op`, for an operation that also counts what it changed: the
 /// count goes to `out_count` unless that is NULL, on success only.
 ///

@@ -510,6 +510,22 @@ pub unsafe extern "C" fn weft_uv_sphere(
     unsafe { make_mesh(out_mesh, || Ok(uv_sphere(radius, u_count, v_count)?)) }
 }
 
+fn platonic_kind(value: u32) -> Result<Platonic, Failure> {
+    enum_arg(
+        value,
+        "kind",
+        |k| match k {
+            WEFT_PLATONIC_TETRAHEDRON => Some(Platonic::Tetrahedron),
+            WEFT_PLATONIC_HEXAHEDRON => Some(Platonic::Hexahedron),
+            WEFT_PLATONIC_OCTAHEDRON => Some(Platonic::Octahedron),
+            WEFT_PLATONIC_DODECAHEDRON => Some(Platonic::Dodecahedron),
+            WEFT_PLATONIC_ICOSAHEDRON => Some(Platonic::Icosahedron),
+            _ => None,
+        },
+        "a WEFT_PLATONIC_* value (0 to 4)",
+    )
+}
+
 /// Makes a platonic solid centred on the origin with its vertices on the
 /// sphere of `radius`.
 ///
@@ -528,24 +544,22 @@ pub unsafe extern "C" fn weft_platonic(
 ) -> WeftStatus {
     // SAFETY: `out_mesh` is as the `# Safety` section above requires;
     // it is checked for NULL before it is used.
-    unsafe {
-        make_mesh(out_mesh, || {
-            let kind = enum_arg(
-                kind,
-                "kind",
-                |k| match k {
-                    WEFT_PLATONIC_TETRAHEDRON => Some(Platonic::Tetrahedron),
-                    WEFT_PLATONIC_HEXAHEDRON => Some(Platonic::Hexahedron),
-                    WEFT_PLATONIC_OCTAHEDRON => Some(Platonic::Octahedron),
-                    WEFT_PLATONIC_DODECAHEDRON => Some(Platonic::Dodecahedron),
-                    WEFT_PLATONIC_ICOSAHEDRON => Some(Platonic::Icosahedron),
-                    _ => None,
-                },
-                "a WEFT_PLATONIC_* value (0 to 4)",
-            )?;
-            Ok(platonic(kind, radius)?)
-        })
-    }
+    unsafe { make_mesh(out_mesh, || Ok(platonic(platonic_kind(kind)?, radius)?)) }
+}
+
+fn sided_kind(value: u32) -> Result<Sided, Failure> {
+    enum_arg(
+        value,
+        "kind",
+        |k| match k {
+            WEFT_SIDED_PRISM => Some(Sided::Prism),
+            WEFT_SIDED_ANTIPRISM => Some(Sided::Antiprism),
+            WEFT_SIDED_PYRAMID => Some(Sided::Pyramid),
+            WEFT_SIDED_DIPYRAMID => Some(Sided::Dipyramid),
+            _ => None,
+        },
+        "a WEFT_SIDED_* value (0 to 3)",
+    )
 }
 
 /// Makes a prism, antiprism, pyramid or dipyramid on a regular n-gon of
@@ -573,19 +587,7 @@ pub unsafe extern "C" fn weft_sided_solid(
     // it is checked for NULL before it is used.
     unsafe {
         make_mesh(out_mesh, || {
-            let kind = enum_arg(
-                kind,
-                "kind",
-                |k| match k {
-                    WEFT_SIDED_PRISM => Some(Sided::Prism),
-                    WEFT_SIDED_ANTIPRISM => Some(Sided::Antiprism),
-                    WEFT_SIDED_PYRAMID => Some(Sided::Pyramid),
-                    WEFT_SIDED_DIPYRAMID => Some(Sided::Dipyramid),
-                    _ => None,
-                },
-                "a WEFT_SIDED_* value (0 to 3)",
-            )?;
-            Ok(sided(kind, sides, radius, height)?)
+            Ok(sided(sided_kind(kind)?, sides, radius, height)?)
         })
     }
 }

@@ -325,8 +325,25 @@ unsafe fn write_vectors(
     }
 }
 
+/// Which normals an export copies out: how many there are, so the room is
+/// checked before they are computed, and how to compute them.
+struct Normals {
+    count: fn(&Mesh) -> usize,
+    compute: fn(&Mesh) -> Vec<glam::DVec3>,
+}
+
+const FACE_NORMALS: Normals = Normals {
+    count: Mesh::face_count,
+    compute: analysis::face_normals,
+};
+
+const VERTEX_NORMALS: Normals = Normals {
+    count: Mesh::vertex_count,
+    compute: analysis::vertex_normals,
+};
+
 /// The body of the normal exports: checks that `out_normals` has room for
-/// `count(mesh)` vectors before computing them, then copies them in.
+/// the normals before computing them, then copies them in.
 ///
 /// # Safety
 /// `mesh` is NULL or a live handle; `out_normals` has room for `capacity`
@@ -335,15 +352,15 @@ unsafe fn normals_op(
     mesh: *const WeftMesh,
     out_normals: *mut f64,
     capacity: usize,
-    count: impl FnOnce(&Mesh) -> usize,
-    compute: impl FnOnce(&Mesh) -> Vec<glam::DVec3>,
+    normals: Normals,
 ) -> WeftStatus {
     guard(|| {
         // SAFETY: `mesh` is NULL or a live handle, as the caller promises.
         let mesh = unsafe { mesh_ref(mesh, "mesh") }?;
-        check_room("out_normals", capacity, count(mesh) * 3)?;
+        check_room("out_normals", capacity, (normals.count)(mesh) * 3)?;
+        let vectors = (normals.compute)(mesh);
         // SAFETY: `out_normals` has room for `capacity` doubles, as the caller promises.
-        unsafe { write_vectors(&compute(mesh), out_normals, capacity, "out_normals") }
+        unsafe { write_vectors(&vectors, out_normals, capacity, "out_normals") }
     })
 }
 
@@ -366,15 +383,7 @@ pub unsafe extern "C" fn weft_face_normals(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        normals_op(
-            mesh,
-            out_normals,
-            capacity,
-            Mesh::face_count,
-            analysis::face_normals,
-        )
-    }
+    unsafe { normals_op(mesh, out_normals, capacity, FACE_NORMALS) }
 }
 
 /// Computes the unit normal of each vertex: the face normals weighted by the
@@ -398,15 +407,7 @@ pub unsafe extern "C" fn weft_vertex_normals(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_normals` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        normals_op(
-            mesh,
-            out_normals,
-            capacity,
-            Mesh::vertex_count,
-            analysis::vertex_normals,
-        )
-    }
+    unsafe { normals_op(mesh, out_normals, capacity, VERTEX_NORMALS) }
 }
 
 /// Computes, per face, the largest distance of its corners from its

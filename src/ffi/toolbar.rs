@@ -4,10 +4,13 @@
 //! export converts, checks and forwards to `split` or `smooth`; the offsets
 //! and bevels are in `transform`, the dual and edges in `extract`.
 
+use crate::error::Error;
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, input_slice, mesh_op, output_slice, Failure, WeftStatus,
+    check_room, enum_arg, forward_mesh_op, guard, input_slice, mesh_op, output_slice, Failure,
+    WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::mesh::Mesh;
 use crate::toolbar::smooth::{self, HcOptions, NakedEdges, SmoothDirection};
 use crate::toolbar::split;
 
@@ -22,6 +25,27 @@ pub const WEFT_SMOOTH_DIRECTION_TANGENTIAL: u32 = 2;
 
 fn naked_edges(value: u32) -> Result<NakedEdges, Failure> {
     crate::ffi::subdivide::naked_edges_arg(value)
+}
+
+/// The body of the smoothing exports: reads the naked-edge rule, then runs
+/// `op` with it.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+unsafe fn smooth_op(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    naked_edges: u32,
+    op: impl FnOnce(&Mesh, NakedEdges) -> Result<Mesh, Error>,
+) -> WeftStatus {
+    // SAFETY: `mesh` and `out_mesh` are as this function's `# Safety`
+    // section requires, which its callers promise.
+    unsafe {
+        mesh_op(mesh, out_mesh, |m| {
+            let naked = self::naked_edges(naked_edges)?;
+            Ok(op(m, naked)?)
+        })
+    }
 }
 
 /// Splits each n-gon into n quads through its edge midpoints and centroid,
@@ -46,7 +70,7 @@ pub unsafe extern "C" fn weft_split_polygons(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe { mesh_op(mesh, out_mesh, |m| Ok(split::split_polygons(m, levels)?)) }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::split_polygons(m, levels)) }
 }
 
 /// Splits each triangle into four through its edge midpoints, `levels`
@@ -71,7 +95,7 @@ pub unsafe extern "C" fn weft_split_triangles(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe { mesh_op(mesh, out_mesh, |m| Ok(split::split_triangles(m, levels)?)) }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::split_triangles(m, levels)) }
 }
 
 /// Splits each quad into four quads, each triangle into four triangles and
@@ -96,11 +120,7 @@ pub unsafe extern "C" fn weft_constant_quads_split(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            Ok(split::constant_quads_split(m, levels)?)
-        })
-    }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::constant_quads_split(m, levels)) }
 }
 
 /// The mid-edge subdivision (Peters and Reif), `levels` times: a face of
@@ -125,7 +145,7 @@ pub unsafe extern "C" fn weft_midedge(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe { mesh_op(mesh, out_mesh, |m| Ok(split::midedge(m, levels)?)) }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::midedge(m, levels)) }
 }
 
 /// Gives each face an inner face, its corners pulled towards its centroid,
@@ -153,11 +173,7 @@ pub unsafe extern "C" fn weft_inner_polygons(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            Ok(split::inner_polygons(m, levels, pull)?)
-        })
-    }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::inner_polygons(m, levels, pull)) }
 }
 
 /// Places a triangle in each corner of each face and leaves the middle
@@ -182,11 +198,7 @@ pub unsafe extern "C" fn weft_sierpinski_triangles(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            Ok(split::sierpinski_triangles(m, levels)?)
-        })
-    }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| split::sierpinski_triangles(m, levels)) }
 }
 
 /// Laplacian smoothing: each iteration moves every vertex `blend` of the
@@ -215,9 +227,8 @@ pub unsafe extern "C" fn weft_laplacian_smooth(
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            let naked = self::naked_edges(naked_edges)?;
-            Ok(smooth::laplacian(m, iterations, blend, naked)?)
+        smooth_op(mesh, out_mesh, naked_edges, |m, naked| {
+            smooth::laplacian(m, iterations, blend, naked)
         })
     }
 }
@@ -253,9 +264,8 @@ pub unsafe extern "C" fn weft_laplacian_hc_smooth(
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
     unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            let naked = self::naked_edges(naked_edges)?;
-            Ok(smooth::laplacian_hc(m, iterations, alpha, beta, naked)?)
+        smooth_op(mesh, out_mesh, naked_edges, |m, naked| {
+            smooth::laplacian_hc(m, iterations, alpha, beta, naked)
         })
     }
 }

@@ -2,10 +2,12 @@
 //! picture frames, the Sierpinski carpet, bevels and tiles. Each export
 //! converts, checks and forwards to `transform` or `tile`.
 
-use crate::ffi::boundary::{enum_arg, input_slice, mesh_op, Failure, WeftStatus};
+use crate::error::Error;
+use crate::ffi::boundary::{enum_arg, forward_mesh_op, input_slice, mesh_op, Failure, WeftStatus};
 use crate::ffi::mesh::WeftMesh;
+use crate::mesh::Mesh;
 use crate::toolbar::tile::{self, TileFaces, TileFill};
-use crate::toolbar::transform::{self, InsetMode, OffsetType};
+use crate::toolbar::transform::{self, picture_frame, window, InsetMode, OffsetType};
 
 /// Offset type: each vertex moves by the distance along its vertex normal.
 pub const WEFT_OFFSET_DIAGONAL: u32 = 0;
@@ -79,6 +81,47 @@ fn inset_mode(value: u32) -> Result<InsetMode, Failure> {
     )
 }
 
+/// The body of the offset and thicken exports: reads the offset type, then
+/// runs `op` with it and the distance.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out_mesh` is NULL or writable.
+unsafe fn offset_op(
+    mesh: *const WeftMesh,
+    out_mesh: *mut *mut WeftMesh,
+    distance: f64,
+    offset_type: u32,
+    op: fn(&Mesh, f64, OffsetType) -> Result<Mesh, Error>,
+) -> WeftStatus {
+    // SAFETY: `mesh` and `out_mesh` are as this function's `# Safety`
+    // section requires, which its callers promise.
+    unsafe {
+        mesh_op(mesh, out_mesh, |m| {
+            let kind = self::offset_type(offset_type)?;
+            Ok(op(m, distance, kind)?)
+        })
+    }
+}
+
+/// The arguments of the window and picture-frame exports: the inset mode
+/// and the distances (one, or one per face of `mesh`).
+///
+/// # Safety
+/// `distances` holds `distance_count` doubles (or is NULL with 0).
+unsafe fn inset_args<'a>(
+    mesh: &Mesh,
+    distances: *const f64,
+    distance_count: usize,
+    inset_mode: u32,
+) -> Result<(&'a [f64], InsetMode), Failure> {
+    let mode = self::inset_mode(inset_mode)?;
+    // The count is checked before the buffer is viewed.
+    transform::check_distance_count(distance_count, mesh.face_count())?;
+    // SAFETY: `distances` holds `distance_count` doubles, as the caller promises.
+    let distances = unsafe { input_slice(distances, distance_count, "distances") }?;
+    Ok((distances, mode))
+}
+
 /// Moves every vertex by `distance` along the surface normal (positive:
 /// towards the front); the faces are kept (Weaverbird's Offset Mesh).
 ///
@@ -102,12 +145,7 @@ pub unsafe extern "C" fn weft_offset_mesh(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            let kind = self::offset_type(offset_type)?;
-            Ok(transform::offset(m, distance, kind)?)
-        })
-    }
+    unsafe { offset_op(mesh, out_mesh, distance, offset_type, transform::offset) }
 }
 
 /// Makes a solid of a surface: the input, its offset by `distance`, and a
@@ -136,12 +174,7 @@ pub unsafe extern "C" fn weft_thicken_mesh(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            let kind = self::offset_type(offset_type)?;
-            Ok(transform::thicken(m, distance, kind)?)
-        })
-    }
+    unsafe { offset_op(mesh, out_mesh, distance, offset_type, transform::thicken) }
 }
 
 /// Insets each face and keeps both the frame of quads and the inner face
@@ -174,11 +207,8 @@ pub unsafe extern "C" fn weft_mesh_window(
     // above requires; each is checked for NULL before it is used.
     unsafe {
         mesh_op(mesh, out_mesh, |m| {
-            let mode = self::inset_mode(inset_mode)?;
-            // The count is checked before the buffer is viewed.
-            transform::check_distance_count(distance_count, m.face_count())?;
-            let distances = input_slice(distances, distance_count, "distances")?;
-            Ok(transform::window(m, distances, mode)?)
+            let (distances, mode) = inset_args(m, distances, distance_count, inset_mode)?;
+            Ok(window(m, distances, mode)?)
         })
     }
 }
@@ -212,11 +242,8 @@ pub unsafe extern "C" fn weft_picture_frame(
     // above requires; each is checked for NULL before it is used.
     unsafe {
         mesh_op(mesh, out_mesh, |m| {
-            let mode = self::inset_mode(inset_mode)?;
-            // The count is checked before the buffer is viewed.
-            transform::check_distance_count(distance_count, m.face_count())?;
-            let distances = input_slice(distances, distance_count, "distances")?;
-            Ok(transform::picture_frame(m, distances, mode)?)
+            let (distances, mode) = inset_args(m, distances, distance_count, inset_mode)?;
+            Ok(picture_frame(m, distances, mode)?)
         })
     }
 }
@@ -243,11 +270,7 @@ pub unsafe extern "C" fn weft_sierpinski_carpet(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            Ok(transform::sierpinski_carpet(m, levels)?)
-        })
-    }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| transform::sierpinski_carpet(m, levels)) }
 }
 
 /// Bevels every edge: faces shrink towards their centroids by `fraction`,
@@ -271,7 +294,7 @@ pub unsafe extern "C" fn weft_bevel_edges(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe { mesh_op(mesh, out_mesh, |m| Ok(transform::bevel_edges(m, fraction)?)) }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| transform::bevel_edges(m, fraction)) }
 }
 
 /// Cuts every vertex off at `fraction` of each edge's length, adding a face
@@ -295,11 +318,7 @@ pub unsafe extern "C" fn weft_bevel_vertices(
 ) -> WeftStatus {
     // SAFETY: `mesh` and `out_mesh` are as the `# Safety` section
     // above requires; each is checked for NULL before it is used.
-    unsafe {
-        mesh_op(mesh, out_mesh, |m| {
-            Ok(transform::bevel_vertices(m, fraction)?)
-        })
-    }
+    unsafe { forward_mesh_op(mesh, out_mesh, |m| transform::bevel_vertices(m, fraction)) }
 }
 
 /// Re-fills the chosen faces of a mesh by a pattern of triangles or quads

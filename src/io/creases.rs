@@ -98,11 +98,7 @@ fn crease(a: u32, b: u32, sharpness: &[u8], line: usize) -> Result<FileCrease, I
 /// file and line of a malformed statement.
 pub fn read(path: impl AsRef<Path>) -> Result<CreaseFile, IoError> {
     let path = path.as_ref();
-    let bytes = std::fs::read(path).map_err(|source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    })?;
+    let bytes = super::read_bytes(path)?;
     parse(&bytes).map_err(|e| e.in_file(path))
 }
 

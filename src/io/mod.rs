@@ -221,11 +221,7 @@ pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
 pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
     let path = path.as_ref();
     let format = Format::from_path(path)?;
-    let bytes = fs::read(path).map_err(|source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    })?;
+    let bytes = read_bytes(path)?;
     let mesh = parse_mesh(format, &bytes).map_err(|e| e.in_file(path))?;
     if options.weld {
         weld_identical(path, &mesh)
@@ -243,17 +239,22 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
 pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
     let path = path.as_ref();
     let format = Format::from_path(path)?;
-    let bytes = fs::read(path).map_err(|source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    })?;
+    let bytes = read_bytes(path)?;
     let file = parse_mesh_file(format, &bytes).map_err(|e| e.in_file(path))?;
     if options.weld {
         Ok(MeshFile::new(weld_identical(path, &file.mesh)?))
     } else {
         Ok(file)
     }
+}
+
+/// The whole content of a file, or the error that names it.
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, IoError> {
+    fs::read(path).map_err(|source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    })
 }
 
 /// The weld of [`ReadOptions::weld`]: the library's [`weld`] at tolerance 0,

@@ -4,7 +4,6 @@
 //! the weld's spatial hash, never by comparing every pair.
 
 use glam::DVec3;
-use rayon::slice::ParallelSliceMut;
 
 use super::weld::{within, Cell, CellGrid, CellMap};
 use crate::buffers::try_vec;
@@ -27,14 +26,7 @@ impl<'a> VertexLookup<'a> {
     fn new(positions: &'a [DVec3], tolerance: f64) -> Result<VertexLookup<'a>> {
         check_tolerance(tolerance)?;
         let grid = CellGrid::new(positions.iter().copied(), tolerance);
-        let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the vertex cells")?;
-        entries.extend(
-            positions
-                .iter()
-                .enumerate()
-                .map(|(v, &p)| (grid.cell(p), v as u32)),
-        );
-        entries.par_sort_unstable();
+        let entries = grid.sorted_cells(positions, "the vertex cells")?;
         let mut sorted = try_vec::<u32>(positions.len(), "the vertex cells")?;
         sorted.extend(entries.iter().map(|&(_, v)| v));
         let mut cells = CellMap::default();

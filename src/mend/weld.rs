@@ -243,14 +243,7 @@ pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
-    entries.extend(
-        positions
-            .iter()
-            .enumerate()
-            .map(|(v, &p)| (grid.cell(p), v as u32)),
-    );
-    entries.par_sort_unstable();
+    let entries = grid.sorted_cells(positions, "the weld cells")?;
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
     order.extend(entries.iter().map(|&(_, v)| v));
 
@@ -456,6 +449,21 @@ impl CellGrid {
         CellGrid {
             size: size.max(floor),
         }
+    }
+
+    /// Each vertex with its cell, sorted by cell (then vertex): the
+    /// vertices of one cell side by side. `what` names the buffer in an
+    /// out-of-memory error.
+    pub(crate) fn sorted_cells(&self, positions: &[DVec3], what: &str) -> Result<Vec<(Cell, u32)>> {
+        let mut entries = try_vec::<(Cell, u32)>(positions.len(), what)?;
+        entries.extend(
+            positions
+                .iter()
+                .enumerate()
+                .map(|(v, &p)| (self.cell(p), v as u32)),
+        );
+        entries.par_sort_unstable();
+        Ok(entries)
     }
 
     #[inline]

@@ -47,13 +47,7 @@ impl Mesh {
     ) -> Result<Mesh, MeshError> {
         check_counts(positions.len(), &face_sizes, face_indices.len())?;
         check_positions(&positions)?;
-        let face_offsets = offsets(&face_sizes);
-        let mesh = Mesh {
-            positions,
-            face_sizes,
-            face_indices,
-            face_offsets,
-        };
+        let mesh = Mesh::with_offsets(positions, face_sizes, face_indices);
         mesh.check_faces()?;
         Ok(mesh)
     }
@@ -108,13 +102,7 @@ impl Mesh {
         face_sizes: Vec<u32>,
         face_indices: Vec<u32>,
     ) -> Mesh {
-        let face_offsets = offsets(&face_sizes);
-        let mesh = Mesh {
-            positions,
-            face_sizes,
-            face_indices,
-            face_offsets,
-        };
+        let mesh = Mesh::with_offsets(positions, face_sizes, face_indices);
         debug_assert!(check_counts(
             mesh.positions.len(),
             &mesh.face_sizes,
@@ -123,6 +111,17 @@ impl Mesh {
         .is_ok());
         debug_assert_eq!(mesh.check_faces(), Ok(()));
         mesh
+    }
+
+    /// The parts with each face's offset into `face_indices`, unchecked.
+    fn with_offsets(positions: Vec<DVec3>, face_sizes: Vec<u32>, face_indices: Vec<u32>) -> Mesh {
+        let face_offsets = offsets(&face_sizes);
+        Mesh {
+            positions,
+            face_sizes,
+            face_indices,
+            face_offsets,
+        }
     }
 
     /// As [`Mesh::from_valid_parts`], for faces all of `size` corners (a

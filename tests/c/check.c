@@ -16,6 +16,12 @@ WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t
   return mesh;
 }
 
+void set_creases(WeftSubdivisionOptions *options, size_t count, const uint32_t *pairs, const double *sharpness) {
+  options->crease_count = count;
+  options->crease_vertex_pairs = pairs;
+  options->crease_sharpness = sharpness;
+}
+
 void check_report(const char *file, int line, const char *what) {
   check_failures++;
   fprintf(stderr, "%s:%d: check failed: %s\n", file, line, what);

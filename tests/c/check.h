@@ -22,6 +22,9 @@ extern const uint32_t cube_indices[24];
  * is a failed check (and NULL). */
 WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t *sizes, size_t face_count,
                     const uint32_t *indices, size_t index_count);
+/* Gives `options` `count` creases: vertex pairs (two indices each) and their
+ * sharpness. */
+void set_creases(WeftSubdivisionOptions *options, size_t count, const uint32_t *pairs, const double *sharpness);
 
 #define CHECK(cond) ((cond) ? (void)0 : check_report(__FILE__, __LINE__, #cond))
 #define CHECK_STATUS(call, expected) \

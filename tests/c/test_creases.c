@@ -32,9 +32,7 @@ static void test_creases_and_corners(void) {
   const uint32_t corners[] = {7};
   const double corner_sharpness[] = {INFINITY};
   const double *p;
-  options.crease_count = 4;
-  options.crease_vertex_pairs = pairs;
-  options.crease_sharpness = sharpness;
+  set_creases(&options, 4, pairs, sharpness);
   options.corner_count = 1;
   options.corner_vertices = corners;
   options.corner_sharpness = corner_sharpness;
@@ -80,9 +78,7 @@ static void test_counts_and_vertex_data(void) {
     data[2 * v] = cube_positions[3 * v];
     data[2 * v + 1] = 1.0;
   }
-  options.crease_count = 1;
-  options.crease_vertex_pairs = pairs;
-  options.crease_sharpness = sharpness;
+  set_creases(&options, 1, pairs, sharpness);
   CHECK_STATUS(weft_subdivision_counts(mesh, WEFT_SCHEME_CATMULL_CLARK, 2, &vertices, &faces, &indices), WEFT_STATUS_OK);
   CHECK(vertices == 98 && faces == 96 && indices == 384);
   CHECK_STATUS(weft_subdivide_vertex_data(mesh, &options, 2, data, 16, 2, refined, 2 * 98), WEFT_STATUS_OK);
@@ -143,9 +139,7 @@ static void test_limit(void) {
   size_t i;
   /* Every edge infinitely sharp: the limit is the cube itself, its faces flat. */
   for (i = 0; i < 12; ++i) sharpness[i] = WEFT_SHARPNESS_INFINITE;
-  options.crease_count = 12;
-  options.crease_vertex_pairs = cube_edges;
-  options.crease_sharpness = sharpness;
+  set_creases(&options, 12, cube_edges, sharpness);
   CHECK_STATUS(weft_subdivide_limit(mesh, &options, 1, positions, normals, 3 * 26), WEFT_STATUS_OK);
   /* The point of face 0 (z = 0, index 8 + 12) stays in its plane; its normal points out (-z). */
   CHECK(near(positions[3 * 20], 0.5) && near(positions[3 * 20 + 1], 0.5) && near(positions[3 * 20 + 2], 0.0));
@@ -169,9 +163,7 @@ static void test_refiner(void) {
   size_t i;
   int same = 1;
   options.creasing = WEFT_CREASING_CHAIKIN;
-  options.crease_count = 2;
-  options.crease_vertex_pairs = pairs;
-  options.crease_sharpness = sharpness;
+  set_creases(&options, 2, pairs, sharpness);
   CHECK_STATUS(weft_refiner_new_ex(mesh, &options, 2, &refiner), WEFT_STATUS_OK);
   CHECK(weft_refiner_vertex_count(refiner) == 98);
   for (i = 0; i < 24; ++i) moved[i] = cube_positions[i] * (1.0 + 0.1 * (double)(i % 3));
@@ -198,9 +190,7 @@ static void test_errors(void) {
   const double one[] = {1.0};
   nan_value[0] = NAN;
 
-  options.crease_count = 1;
-  options.crease_vertex_pairs = unknown;
-  options.crease_sharpness = one;
+  set_creases(&options, 1, unknown, one);
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("crease 0 joins vertices 0 and 7, which are not an edge of the mesh");
   CHECK(out == NULL);

@@ -153,9 +153,7 @@ static void refine_all(const double *corners, double scale, double *plain, doubl
 
   options.scheme = WEFT_SCHEME_CATMULL_CLARK;
   options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
-  options.crease_count = 2;
-  options.crease_vertex_pairs = pairs;
-  options.crease_sharpness = sharpness;
+  set_creases(&options, 2, pairs, sharpness);
   CHECK_STATUS(weft_refiner_new_ex(cage, &options, 2, &refiner), WEFT_STATUS_OK);
   CHECK_STATUS(weft_refiner_evaluate(refiner, positions, 6, creased, 3 * 59), WEFT_STATUS_OK);
   weft_refiner_free(refiner);

@@ -221,6 +221,14 @@ static void check_closed(WeftMesh *mesh, size_t vertices, size_t faces) {
 
 static void test_primitives(void) {
   static const size_t platonic_counts[5][2] = {{4, 4}, {8, 6}, {6, 8}, {20, 12}, {12, 20}};
+  /* Each sided solid, the sides of its base, and the counts it must have. */
+  static const struct {
+    uint32_t kind;
+    size_t sides, vertices, faces;
+  } sided[4] = {{WEFT_SIDED_PRISM, 6, 12, 8},
+                {WEFT_SIDED_ANTIPRISM, 6, 12, 14},
+                {WEFT_SIDED_PYRAMID, 5, 6, 6},
+                {WEFT_SIDED_DIPYRAMID, 5, 7, 10}};
   WeftMesh *mesh = NULL;
   WeftMeshInfo info;
   uint32_t kind;
@@ -229,18 +237,11 @@ static void test_primitives(void) {
     CHECK_STATUS(weft_platonic(kind, 1.0, &mesh), WEFT_STATUS_OK);
     check_closed(mesh, platonic_counts[kind][0], platonic_counts[kind][1]);
   }
-  mesh = NULL;
-  CHECK_STATUS(weft_sided_solid(WEFT_SIDED_PRISM, 6, 1.0, 2.0, &mesh), WEFT_STATUS_OK);
-  check_closed(mesh, 12, 8);
-  mesh = NULL;
-  CHECK_STATUS(weft_sided_solid(WEFT_SIDED_ANTIPRISM, 6, 1.0, 2.0, &mesh), WEFT_STATUS_OK);
-  check_closed(mesh, 12, 14);
-  mesh = NULL;
-  CHECK_STATUS(weft_sided_solid(WEFT_SIDED_PYRAMID, 5, 1.0, 2.0, &mesh), WEFT_STATUS_OK);
-  check_closed(mesh, 6, 6);
-  mesh = NULL;
-  CHECK_STATUS(weft_sided_solid(WEFT_SIDED_DIPYRAMID, 5, 1.0, 2.0, &mesh), WEFT_STATUS_OK);
-  check_closed(mesh, 7, 10);
+  for (kind = 0; kind < 4; ++kind) {
+    mesh = NULL;
+    CHECK_STATUS(weft_sided_solid(sided[kind].kind, sided[kind].sides, 1.0, 2.0, &mesh), WEFT_STATUS_OK);
+    check_closed(mesh, sided[kind].vertices, sided[kind].faces);
+  }
   mesh = NULL;
   CHECK_STATUS(weft_box(1.0, 2.0, 3.0, 2, 2, 2, &mesh), WEFT_STATUS_OK);
   check_closed(mesh, 26, 24);

@@ -215,14 +215,7 @@ impl Demo<'_> {
             mesh.vertex_count(),
             mesh.face_count()
         ));
-        self.sections
-            .last_mut()
-            .expect("a section is open")
-            .entries
-            .push(Entry {
-                name: name.to_string(),
-                caption: caption.to_string(),
-            });
+        self.add_entry(name, caption);
         Ok(())
     }
 
@@ -230,6 +223,11 @@ impl Demo<'_> {
     fn reuse(&mut self, name: &str, caption: &str) {
         self.progress
             .println(&format!("{name}: {caption} (shown above)"));
+        self.add_entry(name, caption);
+    }
+
+    /// Lists a stage's picture in the current section of the index.
+    fn add_entry(&mut self, name: &str, caption: &str) {
         self.sections
             .last_mut()
             .expect("a section is open")

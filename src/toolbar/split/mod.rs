@@ -83,3 +83,20 @@ pub(crate) fn add_vertices_and_midpoints(out: &mut Builder, mesh: &Mesh, topolog
         out.vertex(edge_midpoint(mesh, edge));
     }
 }
+
+/// The start of a split whose only new vertices are the edge midpoints:
+/// the mesh's topology and a builder that holds the vertices and midpoints
+/// (see [`add_vertices_and_midpoints`]) with room for `faces` faces of
+/// `indices` corners in all.
+pub(crate) fn midpoint_split(
+    mesh: &Mesh,
+    what: &str,
+    faces: u64,
+    indices: u64,
+) -> Result<(Topology, Builder)> {
+    let topology = Topology::try_new(mesh)?;
+    let vertices = mesh.vertex_count() as u64 + topology.edge_count() as u64;
+    let mut out = Builder::new(what, vertices, faces, indices)?;
+    add_vertices_and_midpoints(&mut out, mesh, &topology);
+    Ok((topology, out))
+}

@@ -1,10 +1,9 @@
 //! Sierpinski Triangles: a triangle per corner, the middle left open.
 
 use crate::error::Result;
-use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{add_vertices_and_midpoints, corner_prev, repeat, Builder};
+use super::{corner_prev, midpoint_split, repeat};
 
 /// Places a triangle in each corner of each face, from the corner to the
 /// midpoints of its two edges, and leaves the middle open: one new hole per
@@ -16,6 +15,8 @@ use super::{add_vertices_and_midpoints, corner_prev, repeat, Builder};
 /// in [`Topology::edges`] order; face f's triangles are contiguous, one per
 /// corner in corner order, each `[corner, next midpoint, previous midpoint]`.
 ///
+/// [`Topology::edges`]: crate::mesh::topology::Topology::edges
+///
 /// # Errors
 /// [`crate::Error::InvalidArgument`] for more than [`super::MAX_LEVELS`]
 /// levels; [`crate::Error::ResultTooLarge`] past the size cap.
@@ -24,22 +25,13 @@ pub fn sierpinski_triangles(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn sierpinski_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::try_new(mesh)?;
-    let (v, e, corners) = (
-        mesh.vertex_count() as u64,
-        topology.edge_count() as u64,
-        mesh.index_count() as u64,
-    );
-    let mut out = Builder::new("Sierpinski triangles", v + e, corners, 3 * corners)?;
-    add_vertices_and_midpoints(&mut out, mesh, &topology);
+    let corners = mesh.index_count() as u64;
+    let (topology, mut out) = midpoint_split(mesh, "Sierpinski triangles", corners, 3 * corners)?;
+    let v = mesh.vertex_count() as u32;
     let prev = corner_prev(mesh);
     let edges = topology.corner_edges();
     for (c, &vertex) in mesh.face_indices().iter().enumerate() {
-        out.face(&[
-            vertex,
-            v as u32 + edges[c],
-            v as u32 + edges[prev[c] as usize],
-        ]);
+        out.face(&[vertex, v + edges[c], v + edges[prev[c] as usize]]);
     }
     out.finish()
 }

@@ -1,16 +1,17 @@
 //! Split Triangles: Loop's topology without its smoothing.
 
 use crate::error::{Error, Result};
-use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
-use super::{add_vertices_and_midpoints, repeat, Builder};
+use super::{midpoint_split, repeat};
 
 /// Splits each triangle into four through its edge midpoints, `levels`
 /// times; the surface and its area do not change. Output order per level:
 /// the input vertices, then one midpoint per edge in [`Topology::edges`]
 /// order; triangle `[a, b, c]` becomes `[a, ab, ca]`, `[ab, b, bc]`,
 /// `[ca, bc, c]` and the middle `[ab, bc, ca]`, in that order.
+///
+/// [`Topology::edges`]: crate::mesh::topology::Topology::edges
 ///
 /// # Errors
 /// [`Error::NotTriangles`] naming the first face that is not a triangle;
@@ -24,18 +25,13 @@ pub fn split_triangles(mesh: &Mesh, levels: u32) -> Result<Mesh> {
 }
 
 fn split_once(mesh: &Mesh) -> Result<Mesh> {
-    let topology = Topology::try_new(mesh)?;
-    let (v, e, f) = (
-        mesh.vertex_count() as u64,
-        topology.edge_count() as u64,
-        mesh.face_count() as u64,
-    );
-    let mut out = Builder::new("split triangles", v + e, 4 * f, 12 * f)?;
-    add_vertices_and_midpoints(&mut out, mesh, &topology);
+    let f = mesh.face_count() as u64;
+    let (topology, mut out) = midpoint_split(mesh, "split triangles", 4 * f, 12 * f)?;
+    let v = mesh.vertex_count() as u32;
     let edges = topology.corner_edges();
     for (face, corners) in mesh.faces().enumerate() {
         let [a, b, c] = [corners[0], corners[1], corners[2]];
-        let m = |k: usize| v as u32 + edges[3 * face + k];
+        let m = |k: usize| v + edges[3 * face + k];
         let (ab, bc, ca) = (m(0), m(1), m(2));
         out.face(&[a, ab, ca]);
         out.face(&[ab, b, bc]);

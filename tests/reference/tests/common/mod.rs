@@ -1,80 +1,31 @@
-//! Shapes built in code and comparison helpers shared by the tests.
+//! Shapes built in code (Weft's named shapes among them) and comparison
+//! helpers shared by the tests.
 #![allow(dead_code)]
 
 use weft_reference::RefMesh;
 
+/// A shape of `weft::mesh::shapes` as the bridge takes it.
+fn from_weft(mesh: weft::Mesh) -> RefMesh {
+    RefMesh {
+        positions: mesh.positions().iter().flat_map(|p| p.to_array()).collect(),
+        face_sizes: mesh.face_sizes().to_vec(),
+        face_indices: mesh.face_indices().to_vec(),
+    }
+}
+
 /// The unit cube `[0,1]^3`, 6 outward quads.
 pub fn cube() -> RefMesh {
-    let p: Vec<[f64; 3]> = (0..8)
-        .map(|i| [(i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64])
-        .collect();
-    RefMesh::from_polygons(
-        &p,
-        &[
-            &[0, 2, 3, 1],
-            &[4, 5, 7, 6],
-            &[0, 1, 5, 4],
-            &[2, 6, 7, 3],
-            &[0, 4, 6, 2],
-            &[1, 3, 7, 5],
-        ],
-    )
+    from_weft(weft::mesh::shapes::cube())
 }
 
 /// A regular tetrahedron, 4 outward triangles.
 pub fn tetrahedron() -> RefMesh {
-    RefMesh::from_polygons(
-        &[
-            [1.0, 1.0, 1.0],
-            [1.0, -1.0, -1.0],
-            [-1.0, 1.0, -1.0],
-            [-1.0, -1.0, 1.0],
-        ],
-        &[&[0, 1, 2], &[0, 3, 1], &[0, 2, 3], &[1, 3, 2]],
-    )
+    from_weft(weft::mesh::shapes::tetrahedron())
 }
 
 /// A regular icosahedron, 20 outward triangles.
 pub fn icosahedron() -> RefMesh {
-    let t = (1.0 + 5f64.sqrt()) / 2.0;
-    RefMesh::from_polygons(
-        &[
-            [-1.0, t, 0.0],
-            [1.0, t, 0.0],
-            [-1.0, -t, 0.0],
-            [1.0, -t, 0.0],
-            [0.0, -1.0, t],
-            [0.0, 1.0, t],
-            [0.0, -1.0, -t],
-            [0.0, 1.0, -t],
-            [t, 0.0, -1.0],
-            [t, 0.0, 1.0],
-            [-t, 0.0, -1.0],
-            [-t, 0.0, 1.0],
-        ],
-        &[
-            &[0, 11, 5],
-            &[0, 5, 1],
-            &[0, 1, 7],
-            &[0, 7, 10],
-            &[0, 10, 11],
-            &[1, 5, 9],
-            &[5, 11, 4],
-            &[11, 10, 2],
-            &[10, 7, 6],
-            &[7, 1, 8],
-            &[3, 9, 4],
-            &[3, 4, 2],
-            &[3, 2, 6],
-            &[3, 6, 8],
-            &[3, 8, 9],
-            &[4, 9, 5],
-            &[2, 4, 11],
-            &[6, 2, 10],
-            &[8, 6, 7],
-            &[9, 8, 1],
-        ],
-    )
+    from_weft(weft::mesh::shapes::icosahedron())
 }
 
 /// An `nx` × `ny` quad grid over a curved height field, so that no three
