@@ -402,6 +402,20 @@ unsafe fn counts(mesh: *mut WeftMesh, options: &WeftSubdivisionOptions, levels: 
     (status == WeftStatus::Ok && i < 1 << 16).then_some((v, f, i))
 }
 
+/// A buffer for an output of the creased exports: `pick` says how many
+/// values the counts need (any number when the counts are refused); its
+/// room is sometimes short or long (see `capacity`).
+unsafe fn output_for(
+    mesh: *mut WeftMesh,
+    options: &Options,
+    levels: u32,
+    bytes: &mut Bytes,
+    pick: impl Fn((usize, usize, usize)) -> usize,
+) -> (usize, Vec<f64>) {
+    let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, pick);
+    (needed, marked(capacity(bytes, needed)))
+}
+
 /// Levels for the creased exports: mostly 0 to 2, sometimes so many that
 /// even one triangle passes the size cap (3 · 4^19 faces), which must be
 /// refused before anything is allocated. (Levels in between are within the
@@ -454,8 +468,7 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let width = bytes.small(5) as usize;
             let data_len = (count * width + bytes.small(3) as usize).saturating_sub(1);
             let data: Vec<f64> = (0..data_len).map(|_| bytes.number() * 1e-3 + bytes.finite()).collect();
-            let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, |c| c.0 * width);
-            let mut result = marked(capacity(bytes, needed));
+            let (needed, mut result) = output_for(mesh, &options, levels, bytes, |c| c.0 * width);
             let status = weft_subdivide_vertex_data(
                 mesh,
                 &options.raw,
@@ -478,8 +491,7 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let values: Vec<f64> = (0..value_count * width).map(|_| bytes.finite()).collect();
             let index_count = (weft_mesh_index_count(mesh) + bytes.small(3) as usize).saturating_sub(1);
             let indices: Vec<u32> = (0..index_count).map(|_| bytes.small(value_count as u32 + 1)).collect();
-            let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, |c| c.2 * width);
-            let mut result = marked(capacity(bytes, needed));
+            let (needed, mut result) = output_for(mesh, &options, levels, bytes, |c| c.2 * width);
             let status = weft_subdivide_face_varying(
                 mesh,
                 &options.raw,

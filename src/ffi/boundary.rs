@@ -314,6 +314,24 @@ pub(crate) unsafe fn output_slice<'a, T>(
     Ok(unsafe { std::slice::from_raw_parts_mut(pointer, len) })
 }
 
+/// Copies `values` into the caller buffer `pointer` of `capacity`
+/// elements, once it is known to have room (else nothing is written).
+///
+/// # Safety
+/// As [`output_slice`] with `len` = `capacity`.
+pub(crate) unsafe fn copy_out<T: Copy>(
+    pointer: *mut T,
+    capacity: usize,
+    name: &str,
+    values: &[T],
+) -> Result<(), Failure> {
+    check_room(name, capacity, values.len())?;
+    // SAFETY: as this function's `# Safety` section requires.
+    let out = unsafe { output_slice(pointer, capacity, name)? };
+    out[..values.len()].copy_from_slice(values);
+    Ok(())
+}
+
 /// Checks that a caller buffer of `len` elements has room for `needed`.
 pub(crate) fn check_room(name: &str, len: usize, needed: usize) -> Result<(), Failure> {
     if len < needed {

@@ -5,8 +5,8 @@
 use glam::DVec3;
 
 use crate::ffi::boundary::{
-    check_room, enum_arg, guard, input_slice, make_mesh, out_param, output_slice, required,
-    Failure, WeftStatus,
+    check_room, copy_out, enum_arg, guard, input_slice, make_mesh, out_param, output_slice,
+    required, Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
@@ -277,19 +277,40 @@ pub unsafe extern "C" fn weft_subdivision_counts(
     out_face_count: *mut usize,
     out_index_count: *mut usize,
 ) -> WeftStatus {
-    // SAFETY: `mesh`, `out_vertex_count`, `out_face_count` and `out_index_count` are as the
-    // `# Safety` section above requires; each is checked for NULL before it is used.
+    let outs = [out_vertex_count, out_face_count, out_index_count];
+    // SAFETY: `mesh` and the `out_*` are as the `# Safety` section above
+    // requires.
+    unsafe {
+        write_counts(mesh, outs, |mesh| {
+            Ok(subdivide::refined_counts(
+                mesh,
+                scheme_arg(scheme)?,
+                levels,
+            )?)
+        })
+    }
+}
+
+/// The counts exports' shared steps: checks the three outputs and the mesh,
+/// then writes the counts `count` finds for the mesh.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; each of `outs` is NULL or writable.
+unsafe fn write_counts(
+    mesh: *const WeftMesh,
+    outs: [*mut usize; 3],
+    count: impl FnOnce(&Mesh) -> Result<subdivide::RefinedCounts, Failure>,
+) -> WeftStatus {
+    // SAFETY: `mesh` and `outs` are as this function's `# Safety` section
+    // requires, which its callers promise; each is checked for NULL first.
     unsafe {
         guard(|| {
-            let vertices = out_param(out_vertex_count, "out_vertex_count")?;
-            let faces = out_param(out_face_count, "out_face_count")?;
-            let indices = out_param(out_index_count, "out_index_count")?;
-            let mesh = mesh_ref(mesh, "mesh")?;
-            let scheme = scheme_arg(scheme)?;
-            let counts = subdivide::refined_counts(mesh, scheme, levels)?;
-            *vertices = counts.vertex_count;
-            *faces = counts.face_count;
-            *indices = counts.index_count;
+            let vertices = out_param(outs[0], "out_vertex_count")?;
+            let faces = out_param(outs[1], "out_face_count")?;
+            let indices = out_param(outs[2], "out_index_count")?;
+            let counts = count(mesh_ref(mesh, "mesh")?)?;
+            (*vertices, *faces, *indices) =
+                (counts.vertex_count, counts.face_count, counts.index_count);
             Ok(())
         })
     }
@@ -319,20 +340,15 @@ pub unsafe extern "C" fn weft_subdivision_counts_ex(
     out_face_count: *mut usize,
     out_index_count: *mut usize,
 ) -> WeftStatus {
+    let outs = [out_vertex_count, out_face_count, out_index_count];
     // SAFETY: `mesh`, `options` and the `out_*` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // above requires; `options` is read only once the rest is checked.
     unsafe {
-        guard(|| {
-            let vertices = out_param(out_vertex_count, "out_vertex_count")?;
-            let faces = out_param(out_face_count, "out_face_count")?;
-            let indices = out_param(out_index_count, "out_index_count")?;
-            let mesh = mesh_ref(mesh, "mesh")?;
+        write_counts(mesh, outs, |mesh| {
             let (scheme, options) = options_arg(options)?;
-            let counts = subdivide::refined_counts_with(mesh, scheme, levels, &options)?;
-            *vertices = counts.vertex_count;
-            *faces = counts.face_count;
-            *indices = counts.index_count;
-            Ok(())
+            Ok(subdivide::refined_counts_with(
+                mesh, scheme, levels, &options,
+            )?)
         })
     }
 }
@@ -363,10 +379,7 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces_ex(
             let mesh = mesh_ref(mesh, "mesh")?;
             let (scheme, options) = options_arg(options)?;
             let parents = subdivide::parent_faces_with(mesh, scheme, levels, &options)?;
-            check_room("out_parents", capacity, parents.len())?;
-            let out = output_slice(out_parents, capacity, "out_parents")?;
-            out[..parents.len()].copy_from_slice(&parents);
-            Ok(())
+            copy_out(out_parents, capacity, "out_parents", &parents)
         })
     }
 }

@@ -2,8 +2,8 @@
 //! face of every refined face, and triangulation for chaining into Loop.
 
 use crate::ffi::boundary::{
-    check_room, counted_mesh_op, enum_arg, guard, mesh_op, out_param, output_slice, Failure,
-    WeftStatus,
+    check_room, copy_out, counted_mesh_op, enum_arg, guard, mesh_op, out_param, output_slice,
+    Failure, WeftStatus,
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::mesh::triangulate::{as_triangles, triangulate};
@@ -197,13 +197,16 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces(
     unsafe {
         guard(|| {
             let cage = mesh_ref(cage, "cage")?;
+            // The room is checked before the parents are made.
             let scheme = scheme_arg(scheme)?;
             let needed = subdivide::refined_face_count(cage, scheme, levels)?;
             check_room("out_parents", capacity, needed)?;
-            let out = output_slice(out_parents, capacity, "out_parents")?;
-            let parents = subdivide::parent_faces(cage, scheme, levels)?;
-            out[..needed].copy_from_slice(&parents);
-            Ok(())
+            copy_out(
+                out_parents,
+                capacity,
+                "out_parents",
+                &subdivide::parent_faces(cage, scheme, levels)?,
+            )
         })
     }
 }

@@ -105,14 +105,29 @@ impl Adjacency {
             fill[v as usize] += 1;
         }
 
-        Ok(Adjacency {
+        Ok(Adjacency::from_parts(
+            (edges, corner_edges),
+            (edge_offsets, edge_corners),
+            (vertex_offsets, vertex_corners),
+        ))
+    }
+
+    /// The adjacency of its three parts as the builders make them: the
+    /// edges and each corner's edge, each edge's corners (offsets and
+    /// list), each vertex's corners (offsets and list).
+    pub(crate) fn from_parts(
+        (edges, corner_edges): (Vec<[u32; 2]>, Vec<u32>),
+        (edge_offsets, edge_corners): (Vec<u32>, Vec<u32>),
+        (vertex_offsets, vertex_corners): (Vec<u32>, Vec<u32>),
+    ) -> Adjacency {
+        Adjacency {
             edges,
             corner_edges,
             edge_offsets,
             edge_corners,
             vertex_offsets,
             vertex_corners,
-        })
+        }
     }
 
     /// Number of unique edges.

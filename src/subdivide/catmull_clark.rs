@@ -17,7 +17,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::{Gathers, RefinedGathers};
-use super::level::{Connectivity, Faces, NONE};
+use super::level::{uniform_offsets, Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
 use crate::buffers::{flatten, par_map, try_vec};
 use crate::error::Result;
@@ -36,10 +36,7 @@ pub(crate) fn child_faces(
     let vertex_count = faces.vertex_count;
     let edge_count = connectivity.edge_count();
     let corner_count = faces.corner_count();
-    let mut offsets = Vec::new();
-    if with_offsets {
-        offsets = par_map(corner_count + 1, "child faces", |q| 4 * q as u32)?;
-    }
+    let offsets = uniform_offsets(corner_count, 4, with_offsets)?;
     let edge_base = vertex_count as u32;
     let face_base = (vertex_count + edge_count) as u32;
     let corner_edges = &connectivity.corner_edges;

@@ -11,7 +11,7 @@
 mod refine;
 
 use super::scheme::{check_counts, Scheme};
-use crate::buffers::{prefix_sum, try_copy, try_vec, zeroed};
+use crate::buffers::{par_map, prefix_sum, try_copy, try_vec, zeroed};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 
@@ -97,6 +97,18 @@ impl Faces {
             _ => corner - 1,
         }
     }
+}
+
+/// The offsets of `face_count` faces of `size` corners each, when
+/// `wanted` (else empty: a last level of uniform size needs none).
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`].
+pub(crate) fn uniform_offsets(face_count: usize, size: u32, wanted: bool) -> Result<Vec<u32>> {
+    if !wanted {
+        return Ok(Vec::new());
+    }
+    par_map(face_count + 1, "child faces", |f| size * f as u32)
 }
 
 /// Edges and adjacency of a [`Faces`]: the mesh's [`Adjacency`] (read

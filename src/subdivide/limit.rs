@@ -1,8 +1,8 @@
 //! The limit surface at the vertices of the last level: where each vertex
 //! would end after infinitely many levels, and the surface's tangents and
 //! normal there, with OpenSubdiv's limit masks (`Sdc::Scheme::
-//! ComputeVertexLimitMask`: `assignSmoothLimitMask`, `assignCreaseLimitMask`,
-//! `assignCornerLimitMask` and their tangent masks, applied as
+//! ComputeVertexMask`: `assignSmoothMask`, `assignCreaseMask`,
+//! `assignCornerMask` and their tangent masks, applied as
 //! `Far::PrimvarRefiner::Limit` applies them).
 //!
 //! Smooth vertices use the eigen-analysis masks of the scheme (Halstead,
@@ -16,7 +16,7 @@ use glam::DVec3;
 use super::creases::{is_sharp, Rule};
 use super::scale;
 use super::scheme::Scheme;
-use super::stencils::walk_around;
+use super::stencils::{walk_around, Mask};
 use super::subdivider::Subdivider;
 use crate::error::{Error, Result};
 
@@ -35,25 +35,9 @@ pub struct Limit {
     pub normals: Vec<DVec3>,
 }
 
-/// One vertex's limit masks: a weight for the vertex, one per edge around it
-/// (on the edge's far end) and one per face (on the face's vertex opposite
-/// the vertex; Catmull-Clark quads only).
-#[derive(Default)]
-struct LimitMask {
-    vertex: f64,
-    edges: Vec<f64>,
-    faces: Vec<f64>,
-}
-
-impl LimitMask {
-    fn zero(edges: usize, faces: usize) -> LimitMask {
-        LimitMask {
-            vertex: 0.0,
-            edges: vec![0.0; edges],
-            faces: vec![0.0; faces],
-        }
-    }
-}
+// A limit mask weighs the vertex, the far end of each edge around it and,
+// where a stencil's mask weighs a face point, the face's corner opposite the
+// vertex (Catmull-Clark quads only).
 
 impl Subdivider {
     /// The limit surface at the last level's vertices, for the cage
@@ -194,7 +178,7 @@ impl Subdivider {
                 }
                 Rule::Corner => corner_masks(self.scheme, edges.len()),
             };
-            let apply = |mask: &LimitMask| {
+            let apply = |mask: &Mask| {
                 let mut sum = p * mask.vertex;
                 for (w, q) in mask.edges.iter().zip(&far) {
                     sum += *q * *w;
@@ -234,11 +218,11 @@ fn unit_normal(du: DVec3, dv: DVec3) -> DVec3 {
 }
 
 /// Position, first and second tangent masks of a smooth vertex.
-fn smooth_masks(scheme: Scheme, edges: usize, faces: usize) -> [LimitMask; 3] {
+fn smooth_masks(scheme: Scheme, edges: usize, faces: usize) -> [Mask; 3] {
     let n = faces;
     let valence = n as f64;
-    let mut position = LimitMask::zero(edges, faces);
-    let mut du = LimitMask::zero(edges, faces);
+    let mut position = Mask::zero(edges, faces);
+    let mut du = Mask::zero(edges, faces);
     match scheme {
         Scheme::CatmullClark => {
             let (f, e, v) = if n == 4 {
@@ -283,7 +267,7 @@ fn smooth_masks(scheme: Scheme, edges: usize, faces: usize) -> [LimitMask; 3] {
                 position.edges.fill(e);
             }
             let alpha = 2.0 * std::f64::consts::PI / valence;
-            let mut dv = LimitMask::zero(edges, faces);
+            let mut dv = Mask::zero(edges, faces);
             for i in 0..n.min(edges) {
                 du.edges[i] = (alpha * i as f64).cos();
                 dv.edges[i] = (alpha * i as f64).sin();
@@ -292,7 +276,7 @@ fn smooth_masks(scheme: Scheme, edges: usize, faces: usize) -> [LimitMask; 3] {
         }
     }
     // Catmull-Clark's second tangent is the first turned by one edge.
-    let mut dv = LimitMask::zero(edges, faces);
+    let mut dv = Mask::zero(edges, faces);
     for i in 0..n {
         dv.edges[(i + 1) % n] = du.edges[i];
         dv.faces[(i + 1) % n] = du.faces[i];
@@ -308,19 +292,19 @@ fn crease_masks(
     faces: usize,
     first: usize,
     last: usize,
-) -> [LimitMask; 3] {
-    let mut position = LimitMask::zero(edges, faces);
+) -> [Mask; 3] {
+    let mut position = Mask::zero(edges, faces);
     position.vertex = 2.0 / 3.0;
     position.edges[first] = 1.0 / 6.0;
     position.edges[last] = 1.0 / 6.0;
-    let mut du = LimitMask::zero(edges, faces);
+    let mut du = Mask::zero(edges, faces);
     let along = match scheme {
         Scheme::CatmullClark => 0.5,
         Scheme::Loop => 1.5,
     };
     du.edges[first] = along;
     du.edges[last] = -along;
-    let mut dv = LimitMask::zero(edges, faces);
+    let mut dv = Mask::zero(edges, faces);
     let interior = last.saturating_sub(first + 1);
     let has_faces = faces > 0;
     match scheme {
@@ -400,15 +384,15 @@ fn crease_masks(
 }
 
 /// Masks of a corner: it stays; the tangents run along its first two edges.
-fn corner_masks(scheme: Scheme, edges: usize) -> [LimitMask; 3] {
+fn corner_masks(scheme: Scheme, edges: usize) -> [Mask; 3] {
     let scale = match scheme {
         Scheme::CatmullClark => 1.0,
         Scheme::Loop => 3.0,
     };
-    let mut position = LimitMask::zero(edges, 0);
+    let mut position = Mask::zero(edges, 0);
     position.vertex = 1.0;
-    let mut du = LimitMask::zero(edges, 0);
-    let mut dv = LimitMask::zero(edges, 0);
+    let mut du = Mask::zero(edges, 0);
+    let mut dv = Mask::zero(edges, 0);
     du.vertex = -scale;
     dv.vertex = -scale;
     if edges >= 2 {

@@ -16,7 +16,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::Gathers;
-use super::level::{Connectivity, Faces, NONE};
+use super::level::{uniform_offsets, Connectivity, Faces, NONE};
 use super::scheme::{loop_smooth_weights, VertexRule};
 use crate::buffers::{flatten, par_map, try_vec};
 use crate::error::Result;
@@ -33,10 +33,7 @@ pub(crate) fn child_faces(
 ) -> Result<Faces> {
     let vertex_count = faces.vertex_count;
     let face_count = faces.face_count();
-    let mut offsets = Vec::new();
-    if with_offsets {
-        offsets = par_map(4 * face_count + 1, "child faces", |t| 3 * t as u32)?;
-    }
+    let offsets = uniform_offsets(4 * face_count, 3, with_offsets)?;
     let base = vertex_count as u32;
     let corner_edges = &connectivity.corner_edges;
     // Where each of the 12 indices of a triangle's children comes from: a

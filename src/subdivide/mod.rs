@@ -136,7 +136,13 @@ pub fn subdivide(
     };
     let mut positions: Option<Vec<DVec3>> =
         scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
-    let faces = refiner::gather_levels(mesh, scheme, levels, naked_edges, |step| {
+    let request = refiner::Levels {
+        cage: mesh,
+        scheme,
+        levels,
+        naked_edges,
+    };
+    let faces = refiner::gather_levels(request, |step| {
         let source = positions.as_deref().unwrap_or(mesh.positions());
         let next = match &step {
             Step::Level(level) => point_rules::points(scheme, level, source)?,

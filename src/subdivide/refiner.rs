@@ -61,7 +61,13 @@ impl Refiner {
             );
         }
         let mut plans = Vec::new();
-        let faces = plan_levels(cage, scheme, levels, naked_edges, |plan| plans.push(plan))?;
+        let request = Levels {
+            cage,
+            scheme,
+            levels,
+            naked_edges,
+        };
+        let faces = plan_levels(request, |plan| plans.push(plan))?;
         let largest_intermediate = plans
             .iter()
             .skip(1)
@@ -259,37 +265,44 @@ pub(crate) enum Step<'a> {
     Refined(RefinedGathers<'a>),
 }
 
-/// The cage's faces, connectivity and tags, or `None` when there is nothing
-/// to refine (no level or no face). Checks the scheme's preconditions and
-/// every level's size before allocating.
-fn cage_level(
-    cage: &Mesh,
-    scheme: Scheme,
-    levels: u32,
-    naked_edges: NakedEdges,
-) -> Result<Option<(Faces, Connectivity, Tags)>> {
-    scheme.check_cage(cage)?;
-    if levels == 0 || cage.face_count() == 0 {
-        return Ok(None);
+/// A cage and what to do to it: the plain subdivision both the refiner and
+/// the one-shot drivers walk level by level.
+#[derive(Clone, Copy)]
+pub(crate) struct Levels<'a> {
+    pub(crate) cage: &'a Mesh,
+    pub(crate) scheme: Scheme,
+    pub(crate) levels: u32,
+    pub(crate) naked_edges: NakedEdges,
+}
+
+impl Levels<'_> {
+    /// The cage's faces, connectivity and tags, or its faces alone when
+    /// there is nothing to refine (no level or no face). Checks the scheme's
+    /// preconditions and every level's size before allocating.
+    fn cage_level(&self) -> Result<std::result::Result<(Faces, Connectivity, Tags), Faces>> {
+        let Levels {
+            cage,
+            scheme,
+            levels,
+            naked_edges,
+        } = *self;
+        scheme.check_cage(cage)?;
+        if levels == 0 || cage.face_count() == 0 {
+            return Ok(Err(Faces::of_mesh(cage)));
+        }
+        let (faces, connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
+        let tags = cage_tags(&faces, &connectivity, naked_edges)?;
+        Ok(Ok((faces, connectivity, tags)))
     }
-    let (faces, connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
-    let tags = cage_tags(&faces, &connectivity, naked_edges)?;
-    Ok(Some((faces, connectivity, tags)))
 }
 
 /// Plans every level in turn, handing each plan to `each`, and returns the
 /// faces of the last level, with offsets.
-pub(crate) fn plan_levels(
-    cage: &Mesh,
-    scheme: Scheme,
-    levels: u32,
-    naked_edges: NakedEdges,
-    mut each: impl FnMut(Plan),
-) -> Result<Faces> {
-    let Some((mut faces, mut connectivity, mut tags)) =
-        cage_level(cage, scheme, levels, naked_edges)?
-    else {
-        return Ok(Faces::of_mesh(cage));
+pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Result<Faces> {
+    let Levels { scheme, levels, .. } = request;
+    let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
+        Ok(cage) => cage,
+        Err(faces) => return Ok(faces),
     };
     for level in 0..levels as usize {
         let last = level + 1 == levels as usize;
@@ -321,16 +334,13 @@ pub(crate) fn plan_levels(
 /// Catmull-Clark's last two levels both come from the connectivity of the
 /// level before them, so the largest connectivity is never built.
 pub(crate) fn gather_levels(
-    cage: &Mesh,
-    scheme: Scheme,
-    levels: u32,
-    naked_edges: NakedEdges,
+    request: Levels<'_>,
     mut each: impl FnMut(Step<'_>) -> Result<()>,
 ) -> Result<Faces> {
-    let Some((mut faces, mut connectivity, mut tags)) =
-        cage_level(cage, scheme, levels, naked_edges)?
-    else {
-        return Ok(Faces::of_mesh(cage));
+    let Levels { scheme, levels, .. } = request;
+    let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
+        Ok(cage) => cage,
+        Err(faces) => return Ok(faces),
     };
     for level in 0..levels as usize {
         let last = level + 1 == levels as usize;

@@ -93,11 +93,19 @@ pub(crate) struct Mask {
 }
 
 impl Mask {
+    /// All weights 0, for `edges` edges and `faces` faces.
+    pub(crate) fn zero(edges: usize, faces: usize) -> Mask {
+        Mask {
+            vertex: 0.0,
+            edges: vec![0.0; edges],
+            faces: vec![0.0; faces],
+        }
+    }
+
     fn corner(edges: usize, faces: usize) -> Mask {
         Mask {
             vertex: 1.0,
-            edges: vec![0.0; edges],
-            faces: vec![0.0; faces],
+            ..Mask::zero(edges, faces)
         }
     }
 

@@ -43,23 +43,6 @@ pub enum TileFill {
     QuadFan,
 }
 
-impl TileFill {
-    /// The strategy of Weaverbird's number, if there is one.
-    pub fn from_number(number: u32) -> Option<TileFill> {
-        Some(match number {
-            0 => TileFill::Skip,
-            1 => TileFill::Best,
-            2 => TileFill::TriangleFan,
-            3 => TileFill::TriangleHand,
-            4 => TileFill::TriangleKnit,
-            5 => TileFill::TriangleZigzag,
-            6 => TileFill::QuadStitch,
-            7 => TileFill::QuadFan,
-            _ => return None,
-        })
-    }
-}
-
 /// Which faces are filled (Weaverbird's O input, same numbers); the others
 /// are kept as they are.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -77,18 +60,6 @@ pub enum TileFaces {
 }
 
 impl TileFaces {
-    /// The choice of Weaverbird's number (0, 1, 2, 9 or 16), if there is one.
-    pub fn from_number(number: u32) -> Option<TileFaces> {
-        Some(match number {
-            0 => TileFaces::All,
-            1 => TileFaces::QuadsAndMore,
-            2 => TileFaces::PentagonsAndMore,
-            9 => TileFaces::Triangles,
-            16 => TileFaces::Quads,
-            _ => return None,
-        })
-    }
-
     /// Whether a face of `corners` corners is chosen.
     pub fn includes(self, corners: usize) -> bool {
         match self {

@@ -176,32 +176,6 @@ impl From<UvLinearArg> for FaceVaryingLinear {
     }
 }
 
-/// `render --view`.
-#[derive(Clone, Copy, ValueEnum)]
-pub enum ViewChoice {
-    Iso,
-    Top,
-    Bottom,
-    Front,
-    Back,
-    Left,
-    Right,
-}
-
-impl ViewChoice {
-    pub fn view(self) -> render::View {
-        match self {
-            ViewChoice::Iso => render::View::Iso,
-            ViewChoice::Top => render::View::Top,
-            ViewChoice::Bottom => render::View::Bottom,
-            ViewChoice::Front => render::View::Front,
-            ViewChoice::Back => render::View::Back,
-            ViewChoice::Left => render::View::Left,
-            ViewChoice::Right => render::View::Right,
-        }
-    }
-}
-
 /// `render --up`.
 #[derive(Clone, Copy, ValueEnum)]
 pub enum UpChoice {
@@ -217,3 +191,30 @@ impl UpChoice {
         }
     }
 }
+
+/// A value parser for a library enumeration: `table` spells each value as
+/// the command line takes it, so `--help` lists the names and the argument
+/// arrives as the library's own value, with no mirror enumeration.
+pub fn choice<T: Clone + Send + Sync + 'static>(
+    table: &'static [(&'static str, T)],
+) -> impl clap::builder::TypedValueParser<Value = T> {
+    use clap::builder::TypedValueParser;
+    clap::builder::PossibleValuesParser::new(table.iter().map(|(name, _)| *name)).map(move |name| {
+        let (_, value) = table
+            .iter()
+            .find(|(n, _)| *n == name)
+            .expect("a listed name");
+        value.clone()
+    })
+}
+
+/// `render --view`.
+pub const VIEWS: &[(&str, render::View)] = &[
+    ("iso", render::View::Iso),
+    ("top", render::View::Top),
+    ("bottom", render::View::Bottom),
+    ("front", render::View::Front),
+    ("back", render::View::Back),
+    ("left", render::View::Left),
+    ("right", render::View::Right),
+];

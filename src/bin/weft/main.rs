@@ -78,8 +78,8 @@ enum Command {
         edges: String,
         /// Where the camera looks from: a three-quarter view from the
         /// front, right and above, or along an axis.
-        #[arg(long, value_enum, default_value = "iso")]
-        view: args::ViewChoice,
+        #[arg(long, value_parser = args::choice(args::VIEWS), default_value = "iso")]
+        view: weft::io::render::View,
         /// Which axis of the model points up (scans often have y up).
         #[arg(long, value_enum, default_value = "z")]
         up: args::UpChoice,
@@ -340,7 +340,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                     "never" => Some(false),
                     _ => None,
                 },
-                view: view.view(),
+                view: *view,
                 up: up.up(),
                 ..RenderOptions::default()
             };

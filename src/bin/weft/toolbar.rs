@@ -12,16 +12,16 @@ use weft::make::stellate::Heights;
 use weft::toolbar::extract::DualMode;
 use weft::toolbar::smooth::{HcOptions, SmoothDirection};
 use weft::toolbar::tile::{TileFaces, TileFill};
+use weft::toolbar::transform::{InsetMode, OffsetType};
 use weft::{DVec3, Mesh};
 
 mod choices;
 
 use choices::{
-    inset_mode, offset_type, DirectionArg, FacesArg, FillArg, InsetArg, OffsetArg, PrimitiveKind,
-    SmoothMethod,
+    DirectionArg, PrimitiveKind, SmoothMethod, INSET_MODES, OFFSET_TYPES, TILE_FACES, TILE_FILLS,
 };
 
-use crate::args::{mesh_path, InOut, NakedEdgesArg};
+use crate::args::{choice, mesh_path, InOut, NakedEdgesArg};
 use crate::files::{
     operation_failed, read, read_file_or_mesh, require_faces, with_progress, write, write_file,
 };
@@ -37,6 +37,43 @@ pub(crate) struct Levels {
     levels: u32,
 }
 
+/// The arguments of offset and thicken.
+#[derive(clap::Args)]
+pub(crate) struct Offsetting {
+    #[command(flatten)]
+    files: InOut,
+    /// How far the offset surface lies, in model units (for thicken, the
+    /// thickness); its sign picks the side.
+    #[arg(long, allow_negative_numbers = true)]
+    distance: f64,
+    /// How far each vertex moves along its normal.
+    #[arg(long = "type", value_parser = choice(OFFSET_TYPES), default_value = "diagonal")]
+    offset_type: OffsetType,
+}
+
+/// The arguments of the insets (window and frame).
+#[derive(clap::Args)]
+pub(crate) struct Inset {
+    #[command(flatten)]
+    files: InOut,
+    /// edge-fraction: a share of the edges in [0, 0.5); parallelogram: a
+    /// width in model units.
+    #[arg(long)]
+    distance: f64,
+    /// How the distance is read.
+    #[arg(long, value_parser = choice(INSET_MODES), default_value = "edge-fraction")]
+    mode: InsetMode,
+}
+
+/// A mesh file in, a mesh file out, and how many times the split runs.
+#[derive(clap::Args)]
+pub(crate) struct Split {
+    #[command(flatten)]
+    files: InOut,
+    #[command(flatten)]
+    levels: Levels,
+}
+
 #[derive(Subcommand)]
 pub(crate) enum ToolbarCommand {
     /// Splits each n-gon into n quads through its edge midpoints and
@@ -45,12 +82,7 @@ pub(crate) enum ToolbarCommand {
         name = "split-polygons",
         after_help = "Example:\n  weft split-polygons cage.obj split.obj --levels 2"
     )]
-    SplitPolygons {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    SplitPolygons(Split),
     /// Splits each triangle into four through its edge midpoints, without
     /// smoothing; other faces are triangulated first (Weaverbird's Split
     /// Triangles).
@@ -58,12 +90,7 @@ pub(crate) enum ToolbarCommand {
         name = "split-triangles",
         after_help = "Example:\n  weft split-triangles shell.obj finer.obj --levels 2"
     )]
-    SplitTriangles {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    SplitTriangles(Split),
     /// Splits quads into four quads, triangles into four triangles and larger
     /// polygons into quads around their centroid (Weaverbird's Constant
     /// Quads Split).
@@ -71,21 +98,11 @@ pub(crate) enum ToolbarCommand {
         name = "quad-split",
         after_help = "Example:\n  weft quad-split panels.obj panels-4.obj --levels 1"
     )]
-    QuadSplit {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    QuadSplit(Split),
     /// The mid-edge subdivision (Peters and Reif): a face of edge midpoints
     /// per face and per vertex; boundary vertices stay.
     #[command(after_help = "Example:\n  weft midedge cube.obj cuboctahedron.obj")]
-    Midedge {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    Midedge(Split),
     /// Gives each face an inner face pulled towards its centroid, joined to
     /// it by a quad per edge (Weaverbird's Inner Polygons).
     #[command(
@@ -106,21 +123,11 @@ pub(crate) enum ToolbarCommand {
     /// open: one new hole per face and level (Weaverbird's Sierpinski
     /// Triangles).
     #[command(after_help = "Example:\n  weft sierpinski shell.obj lace.obj --levels 2")]
-    Sierpinski {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    Sierpinski(Split),
     /// Cuts each quad into 3 × 3 quads and removes the middle one; quads
     /// only (Weaverbird's Sierpinski Carpet).
     #[command(after_help = "Example:\n  weft carpet facade.obj carpet.obj --levels 2")]
-    Carpet {
-        #[command(flatten)]
-        files: InOut,
-        #[command(flatten)]
-        levels: Levels,
-    },
+    Carpet(Split),
     /// Moves vertices towards the average of their neighbours; the faces do
     /// not change. laplacian shrinks as it smooths; hc (Vollmer, Mann and
     /// Müller 1999) pushes back to keep the volume.
@@ -159,63 +166,25 @@ pub(crate) enum ToolbarCommand {
     #[command(
         after_help = "Example:\n  weft offset shell.obj outer.obj --distance 0.2 --type planes-intersection"
     )]
-    Offset {
-        #[command(flatten)]
-        files: InOut,
-        /// The offset, in model units.
-        #[arg(long, allow_negative_numbers = true)]
-        distance: f64,
-        /// How far each vertex moves along its normal.
-        #[arg(long = "type", value_enum, default_value = "diagonal")]
-        offset_type: OffsetArg,
-    },
+    Offset(Offsetting),
     /// A solid from a surface: the input, its offset, and a quad along every
     /// naked edge joining them (Weaverbird's Mesh Thicken).
     #[command(
         after_help = "Example:\n  weft thicken canopy.obj canopy-solid.obj --distance 0.05 --type hypotenuse-average"
     )]
-    Thicken {
-        #[command(flatten)]
-        files: InOut,
-        /// The thickness, in model units; its sign picks the side.
-        #[arg(long, allow_negative_numbers = true)]
-        distance: f64,
-        /// How far each vertex moves along its normal.
-        #[arg(long = "type", value_enum, default_value = "diagonal")]
-        offset_type: OffsetArg,
-    },
+    Thicken(Offsetting),
     /// Insets each face, keeping the frame of quads and the inner face
     /// (Weaverbird's Mesh Window).
     #[command(
         after_help = "Examples:\n  weft window facade.obj windows.obj --distance 0.2\n  weft window facade.obj windows.obj --distance 0.05 --mode parallelogram"
     )]
-    Window {
-        #[command(flatten)]
-        files: InOut,
-        /// edge-fraction: a share of the edges in [0, 0.5); parallelogram: a
-        /// width in model units.
-        #[arg(long)]
-        distance: f64,
-        /// How the distance is read.
-        #[arg(long, value_enum, default_value = "edge-fraction")]
-        mode: InsetArg,
-    },
+    Window(Inset),
     /// Insets each face and keeps only the frame: each face becomes a ring
     /// around a hole (Weaverbird's Picture Frame).
     #[command(
         after_help = "Example:\n  weft frame facade.obj lattice.obj --distance 0.1 --mode parallelogram"
     )]
-    Frame {
-        #[command(flatten)]
-        files: InOut,
-        /// edge-fraction: a share of the edges in [0, 0.5); parallelogram: a
-        /// width in model units.
-        #[arg(long)]
-        distance: f64,
-        /// How the distance is read.
-        #[arg(long, value_enum, default_value = "edge-fraction")]
-        mode: InsetArg,
-    },
+    Frame(Inset),
     /// Bevels every edge: faces shrink towards their centroids, each inner
     /// edge becomes a quad and each inner vertex a face (Weaverbird's Bevel
     /// Edges).
@@ -290,11 +259,11 @@ pub(crate) enum ToolbarCommand {
         #[command(flatten)]
         files: InOut,
         /// The pattern of each chosen face.
-        #[arg(long, value_enum, default_value = "best")]
-        fill: FillArg,
+        #[arg(long, value_parser = choice(TILE_FILLS), default_value = "best")]
+        fill: TileFill,
         /// Which faces are filled; the others stay.
-        #[arg(long, value_enum, default_value = "all")]
-        faces: FacesArg,
+        #[arg(long, value_parser = choice(TILE_FACES), default_value = "all")]
+        faces: TileFaces,
     },
     /// Builds one of the Define panel's meshes, centred on the origin:
     /// plane, box, sphere, the platonic solids, prisms and pyramids.
@@ -393,18 +362,18 @@ impl ToolbarCommand {
     pub(crate) fn outputs(&self) -> Vec<&Path> {
         use ToolbarCommand::*;
         match self {
-            SplitPolygons { files, .. }
-            | SplitTriangles { files, .. }
-            | QuadSplit { files, .. }
-            | Midedge { files, .. }
+            SplitPolygons(Split { files, .. })
+            | SplitTriangles(Split { files, .. })
+            | QuadSplit(Split { files, .. })
+            | Midedge(Split { files, .. })
             | InnerPolygons { files, .. }
-            | Sierpinski { files, .. }
-            | Carpet { files, .. }
+            | Sierpinski(Split { files, .. })
+            | Carpet(Split { files, .. })
             | Smooth { files, .. }
-            | Offset { files, .. }
-            | Thicken { files, .. }
-            | Window { files, .. }
-            | Frame { files, .. }
+            | Offset(Offsetting { files, .. })
+            | Thicken(Offsetting { files, .. })
+            | Window(Inset { files, .. })
+            | Frame(Inset { files, .. })
             | BevelEdges { files, .. }
             | BevelVertices { files, .. }
             | Dual { files, .. }
@@ -419,20 +388,22 @@ impl ToolbarCommand {
 pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
     use weft::toolbar::{extract, split, transform};
     match command {
-        ToolbarCommand::SplitPolygons { files, levels } => {
+        ToolbarCommand::SplitPolygons(Split { files, levels }) => {
             apply(cli, files, "split polygons", |m| {
                 split::split_polygons(m, levels.levels)
             })
         }
-        ToolbarCommand::SplitTriangles { files, levels } => {
+        ToolbarCommand::SplitTriangles(Split { files, levels }) => {
             apply(cli, files, "split triangles", |m| {
                 split::split_triangles(&triangles(&files.input, m)?, levels.levels)
             })
         }
-        ToolbarCommand::QuadSplit { files, levels } => apply(cli, files, "quad split", |m| {
-            split::constant_quads_split(m, levels.levels)
-        }),
-        ToolbarCommand::Midedge { files, levels } => {
+        ToolbarCommand::QuadSplit(Split { files, levels }) => {
+            apply(cli, files, "quad split", |m| {
+                split::constant_quads_split(m, levels.levels)
+            })
+        }
+        ToolbarCommand::Midedge(Split { files, levels }) => {
             apply(cli, files, "midedge", |m| split::midedge(m, levels.levels))
         }
         ToolbarCommand::InnerPolygons {
@@ -442,10 +413,12 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
         } => apply(cli, files, "inner polygons", |m| {
             split::inner_polygons(m, levels.levels, *pull)
         }),
-        ToolbarCommand::Sierpinski { files, levels } => apply(cli, files, "sierpinski", |m| {
-            split::sierpinski_triangles(m, levels.levels)
-        }),
-        ToolbarCommand::Carpet { files, levels } => apply(cli, files, "carpet", |m| {
+        ToolbarCommand::Sierpinski(Split { files, levels }) => {
+            apply(cli, files, "sierpinski", |m| {
+                split::sierpinski_triangles(m, levels.levels)
+            })
+        }
+        ToolbarCommand::Carpet(Split { files, levels }) => apply(cli, files, "carpet", |m| {
             transform::sierpinski_carpet(m, levels.levels)
         }),
         ToolbarCommand::Smooth {
@@ -479,33 +452,33 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
                 weft::toolbar::smooth::laplacian_hc_with(m, *iterations, &options)
             }
         }),
-        ToolbarCommand::Offset {
+        ToolbarCommand::Offset(Offsetting {
             files,
             distance,
             offset_type: kind,
-        } => apply_keeping_faces(cli, files, "offset", |m| {
-            transform::offset(m, *distance, offset_type(*kind))
+        }) => apply_keeping_faces(cli, files, "offset", |m| {
+            transform::offset(m, *distance, *kind)
         }),
-        ToolbarCommand::Thicken {
+        ToolbarCommand::Thicken(Offsetting {
             files,
             distance,
             offset_type: kind,
-        } => apply(cli, files, "thicken", |m| {
-            transform::thicken(m, *distance, offset_type(*kind))
+        }) => apply(cli, files, "thicken", |m| {
+            transform::thicken(m, *distance, *kind)
         }),
-        ToolbarCommand::Window {
+        ToolbarCommand::Window(Inset {
             files,
             distance,
             mode,
-        } => apply(cli, files, "window", |m| {
-            transform::window(m, &[*distance], inset_mode(*mode))
+        }) => apply(cli, files, "window", |m| {
+            transform::window(m, &[*distance], *mode)
         }),
-        ToolbarCommand::Frame {
+        ToolbarCommand::Frame(Inset {
             files,
             distance,
             mode,
-        } => apply(cli, files, "frame", |m| {
-            transform::picture_frame(m, &[*distance], inset_mode(*mode))
+        }) => apply(cli, files, "frame", |m| {
+            transform::picture_frame(m, &[*distance], *mode)
         }),
         ToolbarCommand::BevelEdges { files, fraction } => apply(cli, files, "bevel edges", |m| {
             transform::bevel_edges(m, *fraction)
@@ -532,24 +505,7 @@ pub(crate) fn run(cli: &Cli, command: &ToolbarCommand) -> Result<(), Failure> {
             weft::make::stellate::stellate(m, Heights::One(*height))
         }),
         ToolbarCommand::Tile { files, fill, faces } => apply(cli, files, "tile", |m| {
-            let fill = match fill {
-                FillArg::Skip => TileFill::Skip,
-                FillArg::Best => TileFill::Best,
-                FillArg::TriangleFan => TileFill::TriangleFan,
-                FillArg::TriangleHand => TileFill::TriangleHand,
-                FillArg::TriangleKnit => TileFill::TriangleKnit,
-                FillArg::TriangleZigzag => TileFill::TriangleZigzag,
-                FillArg::QuadStitch => TileFill::QuadStitch,
-                FillArg::QuadFan => TileFill::QuadFan,
-            };
-            let faces = match faces {
-                FacesArg::All => TileFaces::All,
-                FacesArg::QuadsAndMore => TileFaces::QuadsAndMore,
-                FacesArg::PentagonsAndMore => TileFaces::PentagonsAndMore,
-                FacesArg::Triangles => TileFaces::Triangles,
-                FacesArg::Quads => TileFaces::Quads,
-            };
-            weft::toolbar::tile::tile(m, fill, faces)
+            weft::toolbar::tile::tile(m, *fill, *faces)
         }),
         ToolbarCommand::Primitive {
             kind,

@@ -175,18 +175,13 @@ impl Connectivity {
                 )
             },
         );
-        let (edge_offsets, edge_corners) = edge_corners?;
-        let (vertex_offsets, vertex_corners) = vertex_corners?;
         let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
         Ok(Connectivity {
-            adjacency: Adjacency {
-                edges: edges?,
-                corner_edges: corner_edges?,
-                edge_offsets,
-                edge_corners,
-                vertex_offsets,
-                vertex_corners,
-            },
+            adjacency: Adjacency::from_parts(
+                (edges?, corner_edges?),
+                edge_corners?,
+                vertex_corners?,
+            ),
             face_size: 4,
             corner_faces: Vec::new(),
             vertex_edge_offsets,
@@ -381,18 +376,9 @@ impl Connectivity {
             || rayon::join(build_edges, build_edge_corners),
             || rayon::join(build_vertex_corners, build_vertex_edges),
         );
-        let ((edges, corner_edges), (edge_offsets, edge_corners)) = (edges?, edge_corners?);
-        let ((vertex_offsets, vertex_corners), (vertex_edge_offsets, vertex_edges)) =
-            (vertex_corners?, vertex_edges?);
+        let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
         Ok(Connectivity {
-            adjacency: Adjacency {
-                edges,
-                corner_edges,
-                edge_offsets,
-                edge_corners,
-                vertex_offsets,
-                vertex_corners,
-            },
+            adjacency: Adjacency::from_parts(edges?, edge_corners?, vertex_corners?),
             face_size: 3,
             corner_faces: Vec::new(),
             vertex_edge_offsets,

@@ -276,21 +276,32 @@ void OsdRefiner::limit(rust::Slice<const double> cage_positions, rust::Slice<dou
 OsdStencils::OsdStencils(std::unique_ptr<const Far::StencilTableReal<double>> table)
     : table_(std::move(table)) {}
 
-std::unique_ptr<OsdStencils> osd_stencils_new(const OsdRefiner &refiner) {
+namespace {
+
+// The stencils of the last level's vertices from the cage, intermediate
+// levels factorized, as `Factory` makes them; throws OpenSubdiv's message.
+template <class Factory, class Table>
+std::unique_ptr<const Table> last_level_stencils(const OsdRefiner &refiner) {
   install_callbacks();
-  using Factory = Far::StencilTableFactoryReal<double>;
-  Factory::Options options;
+  typename Factory::Options options;
   options.interpolationMode = Factory::INTERPOLATE_VERTEX;
   options.generateOffsets = true;
   options.generateControlVerts = false;
   options.generateIntermediateLevels = false;
   options.factorizeIntermediateLevels = true;
   options.maxLevel = unsigned(refiner.refiner().GetMaxLevel());
-  std::unique_ptr<const Far::StencilTableReal<double>> table(
-      Factory::Create(refiner.refiner(), options));
+  std::unique_ptr<const Table> table(Factory::Create(refiner.refiner(), options));
   if (!table) far_errors += far_errors.empty() ? "no message" : "";
   throw_if_failed("OpenSubdiv could not build the stencil table");
-  return std::make_unique<OsdStencils>(std::move(table));
+  return table;
+}
+
+} // namespace
+
+std::unique_ptr<OsdStencils> osd_stencils_new(const OsdRefiner &refiner) {
+  using Factory = Far::StencilTableFactoryReal<double>;
+  return std::make_unique<OsdStencils>(
+      last_level_stencils<Factory, Far::StencilTableReal<double>>(refiner));
 }
 
 std::size_t OsdStencils::stencil_count() const { return std::size_t(table_->GetNumStencils()); }
@@ -307,19 +318,8 @@ OsdParallelStencils::OsdParallelStencils(std::unique_ptr<const Far::StencilTable
 
 std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner,
                                                                uint32_t threads) {
-  install_callbacks();
-  using Factory = Far::StencilTableFactory;
-  Factory::Options options;
-  options.interpolationMode = Factory::INTERPOLATE_VERTEX;
-  options.generateOffsets = true;
-  options.generateControlVerts = false;
-  options.generateIntermediateLevels = false;
-  options.factorizeIntermediateLevels = true;
-  options.maxLevel = unsigned(refiner.refiner().GetMaxLevel());
-  std::unique_ptr<const Far::StencilTable> table(Factory::Create(refiner.refiner(), options));
-  if (!table) far_errors += far_errors.empty() ? "no message" : "";
-  throw_if_failed("OpenSubdiv could not build the stencil table");
-  return std::make_unique<OsdParallelStencils>(std::move(table), int(threads));
+  return std::make_unique<OsdParallelStencils>(
+      last_level_stencils<Far::StencilTableFactory, Far::StencilTable>(refiner), int(threads));
 }
 
 std::size_t OsdParallelStencils::stencil_count() const {

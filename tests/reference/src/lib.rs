@@ -8,7 +8,7 @@
 //! carrying their message.
 //!
 //! - [`opensubdiv_refine`], [`opensubdiv_refine_vertex_data`],
-//!   [`opensubdiv_refine_varying`], [`opensubdiv_refine_face_varying`],
+//!   [`opensubdiv_refine_vertex_data`], [`opensubdiv_refine_face_varying`],
 //!   [`opensubdiv_limit`]: Far `TopologyDescriptor` → `TopologyRefinerFactory`
 //!   → `RefineUniform` → `PrimvarRefinerReal<double>`, level by level.
 //! - [`OsdRefiner`]: the same refiner, built once and applied to several
@@ -665,9 +665,18 @@ pub fn opensubdiv_refine(
     Ok(mesh)
 }
 
+/// How per-vertex data is refined: OpenSubdiv's vertex primvars (with the
+/// positions' weights) or varying ones (linear).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Primvar {
+    /// `PrimvarRefiner::Interpolate`.
+    Vertex,
+    /// `PrimvarRefiner::InterpolateVarying`.
+    Varying,
+}
+
 /// Per-vertex data of any `width` carried through OpenSubdiv's refinement
-/// like positions (`PrimvarRefiner::Interpolate`), in the vertex order of
-/// [`opensubdiv_refine`]'s output.
+/// as `kind` says, in the vertex order of [`opensubdiv_refine`]'s output.
 ///
 /// # Errors
 /// As [`OsdRefiner::new`].
@@ -678,29 +687,14 @@ pub fn opensubdiv_refine_vertex_data(
     cage: &RefMesh,
     options: &OsdOptions,
     levels: u32,
-    vertex_data: &[f64],
-    width: usize,
+    (vertex_data, width): (&[f64], usize),
+    kind: Primvar,
 ) -> Result<Vec<f64>, ReferenceError> {
-    Ok(OsdRefiner::new(cage, options, levels)?.interpolate(vertex_data, width))
-}
-
-/// Per-vertex data of any `width` interpolated as OpenSubdiv's *varying*
-/// primvars (`PrimvarRefiner::InterpolateVarying`: linear), in the vertex
-/// order of [`opensubdiv_refine`]'s output.
-///
-/// # Errors
-/// As [`OsdRefiner::new`].
-///
-/// # Panics
-/// As [`opensubdiv_refine_vertex_data`].
-pub fn opensubdiv_refine_varying(
-    cage: &RefMesh,
-    options: &OsdOptions,
-    levels: u32,
-    vertex_data: &[f64],
-    width: usize,
-) -> Result<Vec<f64>, ReferenceError> {
-    Ok(OsdRefiner::new(cage, options, levels)?.interpolate_varying(vertex_data, width))
+    let refiner = OsdRefiner::new(cage, options, levels)?;
+    Ok(match kind {
+        Primvar::Vertex => refiner.interpolate(vertex_data, width),
+        Primvar::Varying => refiner.interpolate_varying(vertex_data, width),
+    })
 }
 
 /// UVs carried face-varying: `uvs` holds 2 numbers per value, `uv_indices`

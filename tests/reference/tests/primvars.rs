@@ -34,7 +34,8 @@ fn vertex_data_follows_positions_and_keeps_affine_functions() {
         })
         .collect();
     let refined = opensubdiv_refine(&cage, &catmark(), 2).unwrap();
-    let out = opensubdiv_refine_vertex_data(&cage, &catmark(), 2, &data, 5).unwrap();
+    let out =
+        opensubdiv_refine_vertex_data(&cage, &catmark(), 2, (&data, 5), Primvar::Vertex).unwrap();
     assert_eq!(out.len(), refined.vertex_count() * 5);
     for v in 0..refined.vertex_count() {
         let [x, y, z] = refined.position(v);
@@ -48,7 +49,9 @@ fn vertex_data_follows_positions_and_keeps_affine_functions() {
 #[test]
 fn varying_data_is_linear() {
     let cage = skewed_cube();
-    let out = opensubdiv_refine_varying(&cage, &catmark(), 1, &cage.positions, 3).unwrap();
+    let out =
+        opensubdiv_refine_vertex_data(&cage, &catmark(), 1, (&cage.positions, 3), Primvar::Varying)
+            .unwrap();
     // Vertex children keep their values; face points are corner averages.
     assert_eq!(&out[..24], &cage.positions[..]);
     let corners = [0usize, 2, 3, 1];
@@ -76,7 +79,8 @@ fn face_varying_without_seams_equals_vertex_interpolation() {
     let (values, indices) =
         opensubdiv_refine_face_varying(&cage, &options, 2, &uvs, &cage.face_indices).unwrap();
     let refined = opensubdiv_refine(&cage, &options, 2).unwrap();
-    let smooth = opensubdiv_refine_vertex_data(&cage, &options, 2, &uvs, 2).unwrap();
+    let smooth =
+        opensubdiv_refine_vertex_data(&cage, &options, 2, (&uvs, 2), Primvar::Vertex).unwrap();
     assert_eq!(indices.len(), refined.face_indices.len());
     for (c, &v) in refined.face_indices.iter().enumerate() {
         let value = indices[c] as usize;

@@ -3,6 +3,7 @@
 
 use clap::ValueEnum;
 
+use weft::toolbar::tile::{TileFaces, TileFill};
 use weft::toolbar::transform::{InsetMode, OffsetType};
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -16,40 +17,6 @@ pub(crate) enum DirectionArg {
     Free,
     AlongNormal,
     Tangential,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum OffsetArg {
-    Diagonal,
-    HypotenuseAverage,
-    PlanesIntersection,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum InsetArg {
-    EdgeFraction,
-    Parallelogram,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum FillArg {
-    Skip,
-    Best,
-    TriangleFan,
-    TriangleHand,
-    TriangleKnit,
-    TriangleZigzag,
-    QuadStitch,
-    QuadFan,
-}
-
-#[derive(Clone, Copy, ValueEnum)]
-pub(crate) enum FacesArg {
-    All,
-    QuadsAndMore,
-    PentagonsAndMore,
-    Triangles,
-    Quads,
 }
 
 #[derive(Clone, Copy, ValueEnum)]
@@ -68,17 +35,36 @@ pub(crate) enum PrimitiveKind {
     Dipyramid,
 }
 
-pub(crate) fn offset_type(arg: OffsetArg) -> OffsetType {
-    match arg {
-        OffsetArg::Diagonal => OffsetType::Diagonal,
-        OffsetArg::HypotenuseAverage => OffsetType::HypotenuseAverage,
-        OffsetArg::PlanesIntersection => OffsetType::PlanesIntersection,
-    }
-}
+/// `offset --type` and `thicken --type`.
+pub(crate) const OFFSET_TYPES: &[(&str, OffsetType)] = &[
+    ("diagonal", OffsetType::Diagonal),
+    ("hypotenuse-average", OffsetType::HypotenuseAverage),
+    ("planes-intersection", OffsetType::PlanesIntersection),
+];
 
-pub(crate) fn inset_mode(arg: InsetArg) -> InsetMode {
-    match arg {
-        InsetArg::EdgeFraction => InsetMode::EdgeFraction,
-        InsetArg::Parallelogram => InsetMode::Parallelogram,
-    }
-}
+/// `window --mode` and `picture-frame --mode`.
+pub(crate) const INSET_MODES: &[(&str, InsetMode)] = &[
+    ("edge-fraction", InsetMode::EdgeFraction),
+    ("parallelogram", InsetMode::Parallelogram),
+];
+
+/// `tile --fill`.
+pub(crate) const TILE_FILLS: &[(&str, TileFill)] = &[
+    ("skip", TileFill::Skip),
+    ("best", TileFill::Best),
+    ("triangle-fan", TileFill::TriangleFan),
+    ("triangle-hand", TileFill::TriangleHand),
+    ("triangle-knit", TileFill::TriangleKnit),
+    ("triangle-zigzag", TileFill::TriangleZigzag),
+    ("quad-stitch", TileFill::QuadStitch),
+    ("quad-fan", TileFill::QuadFan),
+];
+
+/// `tile --faces`.
+pub(crate) const TILE_FACES: &[(&str, TileFaces)] = &[
+    ("all", TileFaces::All),
+    ("quads-and-more", TileFaces::QuadsAndMore),
+    ("pentagons-and-more", TileFaces::PentagonsAndMore),
+    ("triangles", TileFaces::Triangles),
+    ("quads", TileFaces::Quads),
+];
