@@ -30,7 +30,7 @@ const MODES: [NakedEdges; 4] = [
     NakedEdges::None,
 ];
 
-fn flat(points: &[DVec3]) -> Vec<f64> {
+fn flat_points(points: &[DVec3]) -> Vec<f64> {
     points.iter().flat_map(|p| p.to_array()).collect()
 }
 
@@ -144,7 +144,7 @@ fn assert_equals_opensubdiv(
     let map = vertex_map(&ours, &theirs, what);
     let tol = tolerance(&ours);
     assert_rows_close(
-        &flat(ours.positions()),
+        &flat_points(ours.positions()),
         &theirs.positions,
         3,
         &map,
@@ -184,7 +184,7 @@ fn assert_equals_opensubdiv(
     let their_limit = refiner.limit(&reference_cage.positions).unwrap();
     let our_limit = subdivider.limit().unwrap();
     assert_rows_close(
-        &flat(&our_limit.positions),
+        &flat_points(&our_limit.positions),
         &their_limit.positions,
         3,
         &map,
@@ -205,7 +205,7 @@ fn assert_equals_opensubdiv(
             })
             .collect();
         assert_rows_close(
-            &flat(&our_limit.normals),
+            &flat_points(&our_limit.normals),
             &their_limit.normals,
             3,
             &spanning,
@@ -442,7 +442,7 @@ fn split_polygons_is_opensubdivs_bilinear_scheme() {
                 let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
                 let map = vertex_map(&ours, &theirs, &what);
                 assert_rows_close(
-                    &flat(ours.positions()),
+                    &flat_points(ours.positions()),
                     &theirs.positions,
                     3,
                     &map,
@@ -454,6 +454,170 @@ fn split_polygons_is_opensubdivs_bilinear_scheme() {
                     theirs.face_count(),
                     "{what}: faces"
                 );
+            }
+        }
+    }
+}
+
+/// Sorted rows of `width` numbers, for comparing point sets whose points may
+/// coincide (so that no one-to-one match by position exists).
+fn sorted_rows(values: &[f64], width: usize) -> Vec<Vec<f64>> {
+    let mut rows: Vec<Vec<f64>> = values.chunks_exact(width).map(|r| r.to_vec()).collect();
+    rows.sort_by(|a, b| {
+        a.iter()
+            .zip(b)
+            .map(|(x, y)| x.total_cmp(y))
+            .find(|o| o.is_ne())
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    rows
+}
+
+/// Every row of ours matched to its own row of theirs within `tol` (rows
+/// may repeat, so the match is by multiset, not by position).
+fn assert_rows_equal(ours: &[Vec<f64>], theirs: &[Vec<f64>], tol: f64, what: &str) {
+    assert_eq!(ours.len(), theirs.len(), "{what}: counts");
+    let mut taken = vec![false; theirs.len()];
+    for (k, a) in ours.iter().enumerate() {
+        let close = |b: &Vec<f64>| a.iter().zip(b).all(|(x, y)| (x - y).abs() <= tol);
+        let found = (0..theirs.len()).find(|&r| !taken[r] && close(&theirs[r]));
+        let Some(r) = found else {
+            panic!("{what}: row {k} {a:?} has no OpenSubdiv row within {tol:e}");
+        };
+        taken[r] = true;
+    }
+}
+
+/// The faces as their corners' positions, three numbers a corner.
+fn face_points(positions: &[f64], sizes: &[u32], indices: &[u32]) -> Vec<Vec<f64>> {
+    let mut faces = Vec::new();
+    let mut start = 0;
+    for &n in sizes {
+        let corners = &indices[start..start + n as usize];
+        faces.push(
+            corners
+                .iter()
+                .flat_map(|&v| positions[3 * v as usize..3 * v as usize + 3].to_vec())
+                .collect(),
+        );
+        start += n as usize;
+    }
+    faces
+}
+
+/// Every face of ours matched to its own face of theirs with the same
+/// corners (in any order) within `tol`.
+fn assert_same_faces(ours: &[Vec<f64>], theirs: &[Vec<f64>], tol: f64, what: &str) {
+    assert_eq!(ours.len(), theirs.len(), "{what}: face counts");
+    let corners = |f: &Vec<f64>| f.chunks_exact(3).map(|c| c.to_vec()).collect::<Vec<_>>();
+    let same = |a: &Vec<f64>, b: &Vec<f64>| {
+        let (a, b) = (corners(a), corners(b));
+        a.len() == b.len()
+            && a.iter().all(|p| {
+                b.iter()
+                    .any(|q| p.iter().zip(q).all(|(x, y)| (x - y).abs() <= tol))
+            })
+    };
+    let mut taken = vec![false; theirs.len()];
+    for (k, a) in ours.iter().enumerate() {
+        let Some(r) = (0..theirs.len()).find(|&r| !taken[r] && same(a, &theirs[r])) else {
+            panic!("{what}: face {k} {a:?} has no OpenSubdiv face with the same corners");
+        };
+        taken[r] = true;
+    }
+}
+
+#[test]
+fn coincident_loop_triangles_equal_opensubdiv() {
+    let p = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+    let flat = [p(0.0, 0.0, 0.0), p(1.0, 0.0, 0.0), p(0.0, 1.0, 0.0)];
+    let mut doubled_faces: Vec<Vec<u32>> =
+        shapes::icosahedron().faces().map(|f| f.to_vec()).collect();
+    let twin = doubled_faces[3].iter().rev().copied().collect();
+    doubled_faces.push(twin);
+    let ico = shapes::icosahedron();
+    let cases = [
+        (
+            "pillow",
+            Mesh::from_polygons(flat.to_vec(), [[0u32, 1, 2], [1, 0, 2]]).unwrap(),
+        ),
+        (
+            "the same triangle twice",
+            Mesh::from_polygons(flat.to_vec(), [[0u32, 1, 2], [0, 1, 2]]).unwrap(),
+        ),
+        (
+            "three triangles on one vertex set",
+            Mesh::from_polygons(flat.to_vec(), [[2u32, 0, 1], [2, 1, 0], [0, 2, 1]]).unwrap(),
+        ),
+        (
+            "icosahedron with a face doubled",
+            Mesh::from_polygons(ico.positions().to_vec(), doubled_faces).unwrap(),
+        ),
+    ];
+    for (name, cage) in &cases {
+        let reference_cage = to_ref(cage);
+        for naked_edges in MODES {
+            for creasing in [Creasing::Uniform, Creasing::Chaikin] {
+                let options = SubdivisionOptions {
+                    naked_edges,
+                    creasing,
+                    creases: vec![(edge_of(cage, 0), 1.5)],
+                    ..SubdivisionOptions::default()
+                };
+                let osd = osd_options(Scheme::Loop, &options, &reference_cage);
+                for levels in 1..=3 {
+                    let what = format!("{name} {naked_edges:?} {creasing:?} level {levels}");
+                    let ours = subdivide_with(cage, Scheme::Loop, levels, &options).unwrap();
+                    let theirs = opensubdiv_refine(&reference_cage, &osd, levels).unwrap();
+                    let tol = tolerance(&ours);
+                    let our_positions = flat_points(ours.positions());
+                    assert_rows_equal(
+                        &sorted_rows(&our_positions, 3),
+                        &sorted_rows(&theirs.positions, 3),
+                        tol,
+                        &what,
+                    );
+                    assert_same_faces(
+                        &face_points(&our_positions, ours.face_sizes(), ours.face_indices()),
+                        &face_points(&theirs.positions, &theirs.face_sizes, &theirs.face_indices),
+                        tol,
+                        &format!("{what} faces"),
+                    );
+                    let plain = subdivide(cage, Scheme::Loop, levels, naked_edges).unwrap();
+                    let counts =
+                        weft::subdivide::refined_counts(cage, Scheme::Loop, levels).unwrap();
+                    assert_eq!(counts.vertex_count, plain.vertex_count(), "{what}: counts");
+                    if naked_edges != NakedEdges::None {
+                        assert_eq!(
+                            plain.vertex_count(),
+                            theirs.vertex_count(),
+                            "{what}: the plain path"
+                        );
+                    }
+                    if !manifold(cage) {
+                        // The limit at non-manifold vertices is OpenSubdiv's own
+                        // convention, compared in creases.rs where it applies.
+                        continue;
+                    }
+                    let full = OsdOptions {
+                        full_topology: true,
+                        ..osd.clone()
+                    };
+                    let limit = OsdRefiner::new(&reference_cage, &full, levels)
+                        .unwrap()
+                        .limit(&reference_cage.positions)
+                        .unwrap();
+                    let ours_limit = Subdivider::new(cage, Scheme::Loop, levels, &options)
+                        .unwrap()
+                        .limit()
+                        .unwrap();
+                    assert_rows_equal(
+                        &sorted_rows(&flat_points(&ours_limit.positions), 3),
+                        &sorted_rows(&limit.positions, 3),
+                        tol,
+                        &format!("{what} limit"),
+                    );
+                }
             }
         }
     }

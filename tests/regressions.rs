@@ -392,11 +392,12 @@ fn binary_stl_refuses_coordinates_beyond_f32() {
 }
 
 /// The operations fuzz target: Loop on three triangles over the same three
-/// vertices (each edge with three faces). Their middle children share the
-/// same three edge points, so the level has fewer edges than 2E + 3F, and
-/// `weft_subdivision_counts` announced 21 vertices at level 2 where the
-/// subdivision makes 15: a host sizing its buffers by it read unwritten
-/// values. The counts now follow groups of triangles on one vertex set.
+/// vertices (each edge with three faces). `weft_subdivision_counts` once
+/// announced more vertices than the subdivision made (which merged the
+/// inside edges of the triangles' middle children): a host sizing its
+/// buffers by it read unwritten values. Every triangle now keeps its own
+/// inside edges, as OpenSubdiv does, and the counts, both paths and
+/// OpenSubdiv agree: 2E + 3F edges a level.
 #[test]
 fn loop_counts_of_triangles_on_the_same_vertices_match_the_subdivision() {
     use weft::subdivide::{
@@ -432,8 +433,9 @@ fn loop_counts_of_triangles_on_the_same_vertices_match_the_subdivision() {
             assert_eq!(counts.vertex_count, plain.vertex_count());
         }
     }
+    // Level 1: 3 + 3 vertices and 2·3 + 3·3 edges; level 2: 6 + 15.
     assert_eq!(
         refined_counts(&m, Scheme::Loop, 2).unwrap().vertex_count,
-        15
+        21
     );
 }

@@ -166,7 +166,10 @@ impl Subdivider {
                 .map(|&e| is_sharp(sharpness.edges[e as usize]))
                 .collect();
             let mut rule = sharpness.rules[v];
-            if rule.is_smooth() && (corners.len() == 2 || !ordered) {
+            // Catmull-Clark's smooth limit has no mask for two faces
+            // (OpenSubdiv takes the corner's); Loop's covers any valence.
+            let two_quads = self.scheme == Scheme::CatmullClark && corners.len() == 2;
+            if rule.is_smooth() && (two_quads || !ordered) {
                 rule = Rule::Corner;
             }
             let [position, du, dv] = match rule {

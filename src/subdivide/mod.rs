@@ -227,8 +227,7 @@ pub fn refined_face_count(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<us
 }
 
 /// Vertex, face and index counts after `levels` levels, found from the
-/// cage's edges (and for Loop its distinct vertex triples); nothing of the
-/// result is allocated.
+/// cage's edges; nothing of the result is allocated.
 ///
 /// # Errors
 /// As [`refined_face_count`]; [`crate::Error::OutOfMemory`].
@@ -244,10 +243,6 @@ pub fn refined_counts(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Refine
         if cage.face_count() == 0 { 0 } else { levels },
     )?;
     debug_assert_eq!(faces as usize, face_count);
-    let vertices = match scheme {
-        Scheme::Loop if levels > 0 => loop_vertex_count(cage, edges, levels)?,
-        _ => vertices,
-    };
     Ok(RefinedCounts {
         vertex_count: vertices as usize,
         face_count: faces as usize,
@@ -285,29 +280,6 @@ pub fn refined_counts_with(
         }
     }
     Ok(counts)
-}
-
-/// The exact vertex count after `levels` levels of Loop. Triangles on the
-/// same three vertices (in any order) share the edges inside them: their
-/// middle children have the same three edge points, and so do their corner
-/// children at each vertex, so a group of such triangles stays a group at
-/// every level. With U distinct vertex sets among F triangles, a level makes
-/// E' = 2E + 3U edges (not 2E + 3F), V' = V + E and U' = 4U.
-fn loop_vertex_count(cage: &Mesh, edges: u64, levels: u32) -> Result<u64> {
-    let mut sets = try_vec(cage.face_count(), "triangle vertex sets")?;
-    sets.extend(cage.faces().map(|f| {
-        let mut set = [f[0], f[1], f[2]];
-        set.sort_unstable();
-        set
-    }));
-    sets.sort_unstable();
-    sets.dedup();
-    let (mut v, mut e, mut u) = (cage.vertex_count() as u64, edges, sets.len() as u64);
-    // Bounded by `check_counts`, which counted 2E + 3F edges per level.
-    for _ in 0..levels {
-        (v, e, u) = (v + e, 2 * e + 3 * u, 4 * u);
-    }
-    Ok(v)
 }
 
 #[cfg(test)]

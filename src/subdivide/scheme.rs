@@ -146,10 +146,8 @@ pub(crate) fn loop_smooth_weights(valence: usize) -> (f64, f64) {
 }
 
 /// Checks every level's size against [`MAX_ELEMENTS`] and returns the last
-/// level's vertex, face and index counts. The vertex and edge counts are
-/// exact for Catmull-Clark, and for Loop unless two triangles have the same
-/// three vertices (then an upper bound; see [`loop_vertex_count`]).
-/// See [`Scheme::next_counts`].
+/// level's vertex, face and index counts, all exact: every face has its own
+/// inside edges. See [`Scheme::next_counts`].
 pub(crate) fn check_counts(
     scheme: Scheme,
     vertices: u64,

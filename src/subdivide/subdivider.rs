@@ -84,7 +84,9 @@ impl Subdivider {
         let mut kept = Vec::new();
         for _ in 0..levels {
             let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
-            let next_connectivity = Connectivity::new(&next_faces)?;
+            // Written from this level's, so the edges inside each face are
+            // its own, as OpenSubdiv's are.
+            let next_connectivity = connectivity.refine(scheme, &faces, true)?;
             let mut next_sharpness = child_sharpness(
                 scheme,
                 options.creasing,

@@ -4,7 +4,7 @@
 //! Equal, array for array, to bucketing the child faces
 //! ([`Connectivity::new`]); `tests.rs` checks it on every named shape.
 
-use super::{position, Connectivity, Faces};
+use super::{Connectivity, Faces};
 use crate::buffers::{fill_by_offsets, flatten, par_map, par_offsets, try_vec};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
@@ -193,8 +193,10 @@ impl Connectivity {
     /// `E_i = V + e_i` becomes `T_i = [v_i, E_i, E_(i-1)]` (i < 3) and
     /// `T_3 = [E0, E1, E2]`. The child edges, sorted, are `[v, V + e]` as for
     /// Catmull-Clark, then the edges inside the triangles, `[V + m, V + h]`
-    /// grouped by the lower parent edge m and sorted by h (two triangles that
-    /// share two edges share that child edge).
+    /// grouped by the lower parent edge m and sorted by h, then by face:
+    /// every triangle has its own three, even where two triangles share two
+    /// edges and so the same two edge points (OpenSubdiv's child edges of a
+    /// face belong to that face).
     fn refine_loop(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
         let (v_count, e_count, f_count) =
             (faces.vertex_count, self.edge_count(), faces.face_count());
@@ -209,9 +211,10 @@ impl Connectivity {
             ]
         };
 
-        // Inside edges grouped by their lower parent edge.
+        // Inside edges grouped by their lower parent edge: (higher parent
+        // edge, face).
         let mut inner_offsets = try_vec(e_count + 1, "edges")?;
-        let mut inner_high = try_vec(3 * f_count, "edges")?;
+        let mut inner_high: Vec<(u32, u32)> = try_vec(3 * f_count, "edges")?;
         inner_offsets.push(0u32);
         for m in 0..e_count as u32 {
             let start = inner_high.len();
@@ -221,16 +224,23 @@ impl Connectivity {
                 inner_high.extend(
                     [edges[(i + 1) % 3], edges[(i + 2) % 3]]
                         .into_iter()
-                        .filter(|&h| h > m),
+                        .filter(|&h| h > m)
+                        .map(|h| (h, f as u32)),
                 );
             }
-            sort_and_dedup_from(&mut inner_high, start);
+            inner_high[start..].sort_unstable();
             inner_offsets.push(inner_high.len() as u32);
         }
-        let inner = |x: u32, y: u32| -> u32 {
+        let inner_block =
+            |m: usize| &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
+        // The edge inside face f between its parent edges x and y.
+        let inner = |f: usize, x: u32, y: u32| -> u32 {
             let (m, h) = (x.min(y) as usize, x.max(y));
-            let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
-            two_e + inner_offsets[m] + position(block, h)
+            let k = inner_block(m)
+                .iter()
+                .position(|&entry| entry == (h, f as u32))
+                .unwrap_or(0);
+            two_e + inner_offsets[m] + k as u32
         };
 
         let edge_slots = 2 * e_count + inner_high.len();
@@ -241,8 +251,11 @@ impl Connectivity {
                 edges.extend(self.vertex_edges(v).iter().map(|&e| [v as u32, v_base + e]));
             }
             for m in 0..e_count {
-                let block = &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
-                edges.extend(block.iter().map(|&h| [v_base + m as u32, v_base + h]));
+                edges.extend(
+                    inner_block(m)
+                        .iter()
+                        .map(|&(h, _)| [v_base + m as u32, v_base + h]),
+                );
             }
 
             let mut corner_edges = try_vec(12 * f_count, "corner edges")?;
@@ -252,14 +265,14 @@ impl Connectivity {
                     let (v, e_previous) = (idx[3 * f + i], e[(i + 2) % 3]);
                     corner_edges.extend_from_slice(&[
                         self.vertex_edge_slot(v, e[i]),
-                        inner(e[i], e_previous),
+                        inner(f, e[i], e_previous),
                         self.vertex_edge_slot(v, e_previous),
                     ]);
                 }
                 corner_edges.extend_from_slice(&[
-                    inner(e[0], e[1]),
-                    inner(e[1], e[2]),
-                    inner(e[2], e[0]),
+                    inner(f, e[0], e[1]),
+                    inner(f, e[1], e[2]),
+                    inner(f, e[2], e[0]),
                 ]);
             }
             Ok((edges, corner_edges))
@@ -285,10 +298,13 @@ impl Connectivity {
                 }
             }
             for m in 0..e_count {
-                for &h in &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize] {
+                for &(h, face) in inner_block(m) {
                     let start = edge_corners.len();
                     for &c in self.edge_corners(m) {
                         let (f, i) = (c / 3, c % 3);
+                        if f != face {
+                            continue;
+                        }
                         let e = face_edges(f as usize);
                         // The inside edge {E_j, E_(j+1)} is T_(j+1)'s corner 1 and T_3's corner j.
                         let j = if e[(i as usize + 1) % 3] == h {
@@ -360,7 +376,7 @@ impl Connectivity {
                         let edges = face_edges(f);
                         for x in [edges[(i + 1) % 3], edges[(i + 2) % 3]] {
                             if x < e32 {
-                                vertex_edges.push(inner(x, e32));
+                                vertex_edges.push(inner(f, x, e32));
                             }
                         }
                     }
