@@ -108,6 +108,17 @@ namespace Weft.Tests
             return null;
         }
 
+        /// <summary>
+        /// The body of a test program's Main: runs the tests each group registers, in order,
+        /// on one runner, then prints the summary line and returns the exit code.
+        /// </summary>
+        public static int RunAll(params Action<Runner>[] groups)
+        {
+            var runner = new Runner();
+            foreach (Action<Runner> register in groups) register(runner);
+            return runner.Finish();
+        }
+
         /// <summary>Prints the summary line and returns the exit code.</summary>
         public int Finish()
         {

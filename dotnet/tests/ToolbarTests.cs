@@ -42,9 +42,7 @@ namespace Weft.Tests
             using (var cube = Shapes.Cube())
             using (var split = Toolbar.SplitPolygons(cube, 1))
             {
-                t.Equal(26, split.VertexCount, "V + E + F");
-                t.Equal(24, split.FaceCount, "a quad per corner");
-                t.True(split.Info().IsClosed, "welded and closed");
+                ClosedWithCounts(split, 26, "V + E + F", 24, "a quad per corner");
                 // No smoothing: every vertex stays on the unit cube.
                 double[] p = split.GetPositions();
                 bool onCube = true;
@@ -52,6 +50,14 @@ namespace Weft.Tests
                 t.True(onCube, "every vertex within the cube");
                 Shapes.Near(new[] { 0.5, 0.5, 0.0 }, Shapes.Vertex(split, 20), 1e-12, "face 0's centroid");
             }
+        }
+
+        /// <summary>Checks a result is closed and has the given numbers of vertices and faces, each with what it counts.</summary>
+        private static void ClosedWithCounts(WeftMesh mesh, int vertices, string whatVertices, int faces, string whatFaces)
+        {
+            t.Equal(vertices, mesh.VertexCount, whatVertices);
+            t.Equal(faces, mesh.FaceCount, whatFaces);
+            t.True(mesh.Info().IsClosed, "closed");
         }
 
         private static void SplitTriangles()
@@ -86,9 +92,7 @@ namespace Weft.Tests
             using (var cube = Shapes.Cube())
             using (var mid = Toolbar.Midedge(cube, 1))
             {
-                t.Equal(12, mid.VertexCount, "a vertex per edge");
-                t.Equal(14, mid.FaceCount, "a face per face and per vertex");
-                t.True(mid.Info().IsClosed, "closed");
+                ClosedWithCounts(mid, 12, "a vertex per edge", 14, "a face per face and per vertex");
             }
         }
 
@@ -97,9 +101,7 @@ namespace Weft.Tests
             using (var cube = Shapes.Cube())
             using (var inner = Toolbar.InnerPolygons(cube, 1, 0.5))
             {
-                t.Equal(30, inner.FaceCount, "an inner face and four quads per face");
-                t.Equal(8 + 24, inner.VertexCount, "an inner corner per face corner");
-                t.True(inner.Info().IsClosed, "closed");
+                ClosedWithCounts(inner, 8 + 24, "an inner corner per face corner", 30, "an inner face and four quads per face");
             }
         }
 
@@ -307,9 +309,7 @@ namespace Weft.Tests
             {
                 using (var edges = Toolbar.BevelEdges(cube, 0.25))
                 {
-                    t.Equal(26, edges.FaceCount, "rhombicuboctahedron: 6 + 12 + 8 faces");
-                    t.Equal(24, edges.VertexCount, "vertices");
-                    t.True(edges.Info().IsClosed, "closed");
+                    ClosedWithCounts(edges, 24, "vertices", 26, "rhombicuboctahedron: 6 + 12 + 8 faces");
                 }
                 using (var vertices = Toolbar.BevelVertices(cube, 0.25))
                 {

@@ -21,7 +21,14 @@ namespace Weft.Tests
 
         public static int Main()
         {
-            t = new Runner();
+            return Runner.RunAll(Register, HeaderTests.Register, SubdivisionTests.Register, MakingTests.Register,
+                                 MendingTests.Register, ToolbarTests.Register, CreaseTests.Register);
+        }
+
+        public static void Register(Runner runner)
+        {
+            t = runner;
+            Shapes.T = t;
             t.Run("version is the crate's", Version);
             t.Run("a folder named by the host is searched after the assembly's", SearchFolderFallback);
             t.Run("round trip of mixed polygons", RoundTrip);
@@ -40,14 +47,6 @@ namespace Weft.Tests
             t.Run("use after dispose refused", UseAfterDispose);
             t.Run("finalizer frees undisposed meshes", FinalizerFrees);
             t.Run("library located", LibraryLocated);
-            Shapes.T = t;
-            HeaderTests.Register(t);
-            SubdivisionTests.Register(t);
-            MakingTests.Register(t);
-            MendingTests.Register(t);
-            ToolbarTests.Register(t);
-            CreaseTests.Register(t);
-            return t.Finish();
         }
 
         private static void Version()

@@ -390,6 +390,59 @@ namespace Weft.Grasshopper
         }
     }
 
+    /// <summary>A mesh operation whose only option is one item input, declared as data.</summary>
+    public abstract class OptionOperationComponent<T> : MeshOperationComponent
+    {
+        private readonly ItemOption<T> option;
+        private readonly Func<WeftMesh, T, WeftMesh> operation;
+
+        protected OptionOperationComponent(string name, string nickname, string description,
+                                           ItemOption<T> option, Func<WeftMesh, T, WeftMesh> operation,
+                                           string subcategory, string iconName, string inputDescription, string outputDescription)
+            : base(name, nickname, description, subcategory, iconName, inputDescription, outputDescription)
+        {
+            this.option = option;
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            option.Register(pManager);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, option.Read(DA, 1));
+        }
+    }
+
+    /// <summary>A splitting operation with the levels input L (default 1) and one more item input after it, declared as data.</summary>
+    public abstract class LevelsOptionOperationComponent<T> : MeshOperationComponent
+    {
+        private readonly ItemOption<T> option;
+        private readonly Func<WeftMesh, int, T, WeftMesh> operation;
+
+        protected LevelsOptionOperationComponent(string name, string nickname, string description,
+                                                 ItemOption<T> option, Func<WeftMesh, int, T, WeftMesh> operation,
+                                                 string subcategory, string iconName)
+            : base(name, nickname, description, subcategory, iconName, "The mesh to split.", "The split mesh.")
+        {
+            this.option = option;
+            this.operation = operation;
+        }
+
+        protected sealed override void RegisterOptions(GH_InputParamManager pManager)
+        {
+            AddLevelsInput(pManager);
+            option.Register(pManager);
+        }
+
+        protected sealed override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        {
+            return operation(mesh, Get(DA, 1, 1), option.Read(DA, 2));
+        }
+    }
+
     /// <summary>A mesh operation whose only option is the fraction input F (default 0.25).</summary>
     public abstract class FractionOperationComponent : MeshOperationComponent
     {

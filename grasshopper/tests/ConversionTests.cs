@@ -11,7 +11,12 @@ namespace Weft.Tests
 
         public static int Main()
         {
-            t = new Runner();
+            return Runner.RunAll(Register, CreaseInputTests.Register);
+        }
+
+        public static void Register(Runner runner)
+        {
+            t = runner;
             t.Run("Rhino triangle (C == D) becomes a 3-vertex face", RhinoTriangle);
             t.Run("Rhino n-gon becomes one polygon in place of its faces", RhinoNgon);
             t.Run("Weft polygons to Rhino faces and n-gons", WeftToRhino);
@@ -29,8 +34,6 @@ namespace Weft.Tests
             t.Run("face polylines are closed rings of the face corners", FacePolylines);
             t.Run("split polylines: closed ones repeat their first point, empty ones skipped", SplitPolylines);
             t.Run("planarity flags and open rings", PlanarityAndRings);
-            CreaseInputTests.Register(t);
-            return t.Finish();
         }
 
         private static readonly double[] Grid =

@@ -91,6 +91,28 @@ def _mesh_op(function, mesh, *arguments):
     return take_mesh(out)
 
 
+def _counted_mesh_op(function, mesh, report, *arguments):
+    """Calls an operation of the form f(mesh, ..., WeftMesh **out, size_t *count):
+    the new mesh, or with ``report`` ``(mesh, count)``."""
+    handle = check_mesh(mesh)
+    count = ctypes.c_size_t()
+    out = _out()
+    function(handle, *arguments, ctypes.byref(out), ctypes.byref(count))
+    result = take_mesh(out)
+    return (result, count.value) if report else result
+
+
+def _segments(value, name, count):
+    """Line segments given as an (n, 2, 3) or (n, 6) array-like, as an (n, 6)
+    float array; ``count`` is the letter the error message uses for n."""
+    array = _arrays._as_numeric(value, name)
+    if array.ndim == 3:
+        if array.shape[1:] != (2, 3):
+            raise ValueError(f"{name} must have shape ({count}, 2, 3) or ({count}, 6), not {array.shape}")
+        array = array.reshape(-1, 6)
+    return _arrays.float_array(array, name, width=6)
+
+
 def _plane(plane):
     """A WeftPlane from None (world XY) or (origin, x_axis, y_axis)."""
     if plane is None:
@@ -460,11 +482,7 @@ def remove_unused_vertices(mesh, report=False):
         >>> weft.remove_unused_vertices(weft.Mesh([(0, 0, 0), (5, 5, 5), (1, 0, 0), (0, 1, 0)], [[0, 2, 3]])).faces
         [[0, 1, 2]]
     """
-    removed = ctypes.c_size_t()
-    out = _out()
-    lib.weft_remove_unused_vertices(check_mesh(mesh), ctypes.byref(out), ctypes.byref(removed))
-    result = take_mesh(out)
-    return (result, removed.value) if report else result
+    return _counted_mesh_op(lib.weft_remove_unused_vertices, mesh, report)
 
 
 def weld(meshes, tolerance=DEFAULT_WELD_TOLERANCE):
@@ -519,12 +537,8 @@ def repair_t_nodes(mesh, tolerance=DEFAULT_WELD_TOLERANCE, report=False):
         >>> inserted
         1
     """
-    inserted = ctypes.c_size_t()
-    handle = check_mesh(mesh)
-    out = _out()
-    lib.weft_repair_t_nodes(handle, _number(tolerance, "tolerance"), ctypes.byref(out), ctypes.byref(inserted))
-    result = take_mesh(out)
-    return (result, inserted.value) if report else result
+    check_mesh(mesh)  # a wrong mesh is reported before a wrong tolerance, as elsewhere
+    return _counted_mesh_op(lib.weft_repair_t_nodes, mesh, report, _number(tolerance, "tolerance"))
 
 
 def cull_adjacent(mesh, report=False):
@@ -537,11 +551,7 @@ def cull_adjacent(mesh, report=False):
         >>> removed
         2
     """
-    removed = ctypes.c_size_t()
-    out = _out()
-    lib.weft_cull_adjacent(check_mesh(mesh), ctypes.byref(out), ctypes.byref(removed))
-    result = take_mesh(out)
-    return (result, removed.value) if report else result
+    return _counted_mesh_op(lib.weft_cull_adjacent, mesh, report)
 
 
 def unify(mesh, report=False):
@@ -555,11 +565,7 @@ def unify(mesh, report=False):
         >>> flipped
         1
     """
-    flipped = ctypes.c_size_t()
-    out = _out()
-    lib.weft_unify_orientation(check_mesh(mesh), ctypes.byref(out), ctypes.byref(flipped))
-    result = take_mesh(out)
-    return (result, flipped.value) if report else result
+    return _counted_mesh_op(lib.weft_unify_orientation, mesh, report)
 
 
 unify_orientation = unify
@@ -842,12 +848,7 @@ def mesh_from_lines(segments, tolerance=DEFAULT_WELD_TOLERANCE, max_valence=4):
         >>> weft.mesh_from_lines([[(0, 0, 0), (1, 0, 0)], [(1, 0, 0), (1, 1, 0)], [(1, 1, 0), (0, 0, 0)]]).face_count
         1
     """
-    array = _arrays._as_numeric(segments, "segments")
-    if array.ndim == 3:
-        if array.shape[1:] != (2, 3):
-            raise ValueError(f"segments must have shape (s, 2, 3) or (s, 6), not {array.shape}")
-        array = array.reshape(-1, 6)
-    flat = _arrays.float_array(array, "segments", width=6)
+    flat = _segments(segments, "segments", "s")
     out = _out()
     lib.weft_mesh_from_lines(_arrays.address(flat), flat.shape[0], _number(tolerance, "tolerance"), _count(max_valence, "max_valence"), ctypes.byref(out))
     return take_mesh(out)
@@ -883,11 +884,7 @@ def as_triangles(mesh, report=False):
         >>> weft.as_triangles(weft.box(), report=True)[1]
         6
     """
-    split = ctypes.c_size_t()
-    out = _out()
-    lib.weft_as_triangles(check_mesh(mesh), ctypes.byref(out), ctypes.byref(split))
-    result = take_mesh(out)
-    return (result, split.value) if report else result
+    return _counted_mesh_op(lib.weft_as_triangles, mesh, report)
 
 
 def match_points_to_vertices(mesh, points, tolerance):
@@ -914,12 +911,7 @@ def match_lines_to_edges(mesh, lines, tolerance):
         array([[0, 4]], dtype=uint32)
     """
     handle = check_mesh(mesh)
-    array = _arrays._as_numeric(lines, "lines")
-    if array.ndim == 3:
-        if array.shape[1:] != (2, 3):
-            raise ValueError(f"lines must have shape (l, 2, 3) or (l, 6), not {array.shape}")
-        array = array.reshape(-1, 6)
-    flat = _arrays.float_array(array, "lines", width=6)
+    flat = _segments(lines, "lines", "l")
     out = np.empty((flat.shape[0], 2), dtype=np.uint32)
     lib.weft_match_lines_to_edges(handle, flat.shape[0], _arrays.address(flat), _number(tolerance, "tolerance"), _arrays.address(out))
     return out

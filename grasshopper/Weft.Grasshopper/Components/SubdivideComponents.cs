@@ -6,26 +6,21 @@ namespace Weft.Grasshopper
 {
     /// <summary>Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded. Takes Weaverbird's S input; a split moves no vertex, so every mode gives the same mesh.</summary>
     [Guid("387191f5-89ca-41c7-9d71-5ee42a29eae8")]
-    public sealed class SplitPolygonsComponent : MeshOperationComponent
+    public sealed class SplitPolygonsComponent : LevelsOptionOperationComponent<int>
     {
         public SplitPolygonsComponent()
             : base("Split Polygons Subdivision", "wbSplitPolygons",
                    "Splits each n-gon into n quads through its edge midpoints and centroid, without smoothing: the topology of Catmull-Clark on the unchanged surface, welded. S is Weaverbird's naked-edge input, kept so definitions connect as before: a split moves no vertex, naked or not, so 0, 1 and 2 give the same mesh.",
-                   "Subdivide", "split_polygons", "The mesh to split.", "The split mesh.")
+                   ItemOption.Integer("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed; a split moves no vertex, so all three give the same mesh.", 1),
+                   Split, "Subdivide", "split_polygons")
         {
         }
 
-        protected override void RegisterOptions(GH_InputParamManager pManager)
-        {
-            AddLevelsInput(pManager);
-            pManager.AddIntegerParameter("Smooth Naked Edges", "S", "0: fixed, 1: smooth, 2: corner fixed; a split moves no vertex, so all three give the same mesh.", GH_ParamAccess.item, 1);
-        }
-
-        protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
+        private static WeftMesh Split(WeftMesh mesh, int levels, int nakedEdges)
         {
             // Checked like every S input, though a linear split leaves naked vertices where they are.
-            ToNakedEdges(Get(DA, 2, 1));
-            return Toolbar.SplitPolygons(mesh, Get(DA, 1, 1));
+            ToNakedEdges(nakedEdges);
+            return Toolbar.SplitPolygons(mesh, levels);
         }
     }
 
@@ -82,24 +77,14 @@ namespace Weft.Grasshopper
 
     /// <summary>Gives each face an inner face, its corners pulled towards the centroid, joined to it by a quad per edge.</summary>
     [Guid("9696ea22-8f8c-4d47-a054-db59e8e4d0b4")]
-    public sealed class InnerPolygonsComponent : MeshOperationComponent
+    public sealed class InnerPolygonsComponent : LevelsOptionOperationComponent<double>
     {
         public InnerPolygonsComponent()
             : base("Inner Polygons Subdivision", "wbInnerPolygons",
                    "Gives each face an inner face, its corners pulled towards the centroid, joined to it by a quad per edge.",
-                   "Subdivide", "inner_polygons", "The mesh to split.", "The split mesh.")
+                   ItemOption.Number("Pull", "P", "How far the inner corners move towards the centroid, strictly between 0 and 1.", 0.5),
+                   Toolbar.InnerPolygons, "Subdivide", "inner_polygons")
         {
-        }
-
-        protected override void RegisterOptions(GH_InputParamManager pManager)
-        {
-            AddLevelsInput(pManager);
-            pManager.AddNumberParameter("Pull", "P", "How far the inner corners move towards the centroid, strictly between 0 and 1.", GH_ParamAccess.item, 0.5);
-        }
-
-        protected override WeftMesh Apply(WeftMesh mesh, IGH_DataAccess DA)
-        {
-            return Toolbar.InnerPolygons(mesh, Get(DA, 1, 1), Get(DA, 2, 0.5));
         }
     }
 
