@@ -5,11 +5,11 @@
 use glam::DVec3;
 
 use crate::ffi::boundary::{
-    check_room, copy_out, enum_arg, guard, input_slice, make_mesh, out_param, output_slice,
-    required, Failure, WeftStatus,
+    check_room, enum_arg, guard, input_slice, make_mesh, out_param, output_slice, required,
+    Failure, WeftStatus,
 };
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::ffi::subdivide::{naked_edges_arg, scheme_arg};
+use crate::ffi::subdivide::{naked_edges_arg, scheme_arg, write_parents};
 use crate::mesh::Mesh;
 use crate::subdivide::{
     self, Creasing, FaceVaryingLinear, Scheme, Subdivider, SubdivisionOptions, TriangleRule,
@@ -373,13 +373,13 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces_ex(
     capacity: usize,
 ) -> WeftStatus {
     // SAFETY: `mesh`, `options` and `out_parents` are as the `# Safety`
-    // section above requires; each is checked for NULL before it is used.
+    // section above requires; `options` is read once the mesh is checked.
     unsafe {
-        guard(|| {
-            let mesh = mesh_ref(mesh, "mesh")?;
+        write_parents(mesh, "mesh", (out_parents, capacity), |mesh| {
             let (scheme, options) = options_arg(options)?;
-            let parents = subdivide::parent_faces_with(mesh, scheme, levels, &options)?;
-            copy_out(out_parents, capacity, "out_parents", &parents)
+            Ok(subdivide::parent_faces_with(
+                mesh, scheme, levels, &options,
+            )?)
         })
     }
 }

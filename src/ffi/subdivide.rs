@@ -7,6 +7,7 @@ use crate::ffi::boundary::{
 };
 use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
 use crate::mesh::triangulate::{as_triangles, triangulate};
+use crate::mesh::Mesh;
 use crate::subdivide::{self, NakedEdges, Scheme};
 
 /// Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
@@ -193,20 +194,36 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces(
     capacity: usize,
 ) -> WeftStatus {
     // SAFETY: `cage` and `out_parents` are as the `# Safety` section
-    // above requires; each is checked for NULL before it is used.
+    // above requires.
     unsafe {
-        guard(|| {
-            let cage = mesh_ref(cage, "cage")?;
+        write_parents(cage, "cage", (out_parents, capacity), |cage| {
             // The room is checked before the parents are made.
             let scheme = scheme_arg(scheme)?;
             let needed = subdivide::refined_face_count(cage, scheme, levels)?;
             check_room("out_parents", capacity, needed)?;
-            copy_out(
-                out_parents,
-                capacity,
-                "out_parents",
-                &subdivide::parent_faces(cage, scheme, levels)?,
-            )
+            Ok(subdivide::parent_faces(cage, scheme, levels)?)
+        })
+    }
+}
+
+/// The parent-faces exports' shared steps: checks the mesh (named `name`),
+/// then copies the parents `parents` finds into the caller's buffer.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; `out` is NULL or holds its count of
+/// writable values.
+pub(crate) unsafe fn write_parents(
+    mesh: *const WeftMesh,
+    name: &str,
+    (out, capacity): (*mut u32, usize),
+    parents: impl FnOnce(&Mesh) -> Result<Vec<u32>, Failure>,
+) -> WeftStatus {
+    // SAFETY: `mesh` and `out` are as this function's `# Safety` section
+    // requires, which its callers promise; each is checked for NULL first.
+    unsafe {
+        guard(|| {
+            let parents = parents(mesh_ref(mesh, name)?)?;
+            copy_out(out, capacity, "out_parents", &parents)
         })
     }
 }

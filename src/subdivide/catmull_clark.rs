@@ -16,32 +16,22 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{Gathers, RefinedGathers};
-use super::level::{uniform_offsets, Connectivity, Faces, NONE};
-use super::scheme::VertexRule;
+use super::gathers::{sharp_vertex_point, Gathers, RefinedGathers};
+use super::level::{Connectivity, Faces, NONE};
 use crate::buffers::{flatten, par_map, try_vec};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
 const CHUNK: usize = 2048;
 
-/// The quads of the next level (see the module doc for their order), with
-/// their offsets when `with_offsets` (else `offsets` is left empty: every
-/// face is a quad).
-pub(crate) fn child_faces(
-    faces: &Faces,
-    connectivity: &Connectivity,
-    with_offsets: bool,
-) -> Result<Faces> {
-    let vertex_count = faces.vertex_count;
-    let edge_count = connectivity.edge_count();
-    let corner_count = faces.corner_count();
-    let offsets = uniform_offsets(corner_count, 4, with_offsets)?;
-    let edge_base = vertex_count as u32;
-    let face_base = (vertex_count + edge_count) as u32;
+/// The corners of the next level's quads, quad after quad (see the module
+/// doc for their order).
+pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Result<Vec<u32>> {
+    let edge_base = faces.vertex_count as u32;
+    let face_base = (faces.vertex_count + connectivity.edge_count()) as u32;
     let corner_edges = &connectivity.corner_edges;
     // Quad c = [v_c, e_c, f, e_prev(c)]: each written once, in place.
-    let quads = par_map(corner_count, "child faces", |c| {
+    let quads = par_map(faces.corner_count(), "child faces", |c| {
         let f = connectivity.face_of(c);
         [
             faces.indices[c],
@@ -50,18 +40,12 @@ pub(crate) fn child_faces(
             edge_base + corner_edges[faces.prev(c, f)],
         ]
     })?;
-    let indices = flatten(quads);
-    Ok(Faces {
-        vertex_count: vertex_count + edge_count + faces.face_count(),
-        size: 4,
-        offsets,
-        indices,
-    })
+    Ok(flatten(quads))
 }
 
 /// The quads two levels down from `parent`, written from the parent level
 /// alone (see [`RefinedGathers`]): the level between is never built. Their
-/// order is that of [`child_faces`] applied twice; without offsets.
+/// order is that of [`child_indices`] applied twice; without offsets.
 pub(crate) fn grandchild_faces(parent: &RefinedGathers) -> Result<Faces> {
     let corner_count = parent.face_count();
     let vertex_base = parent.vertex_count() as u32;
@@ -110,23 +94,16 @@ fn edge_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], e: 
 
 #[inline]
 fn vertex_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], v: usize) -> DVec3 {
-    let p = points[v];
-    match level.rule(v) {
-        VertexRule::Corner => p,
-        VertexRule::Crease => {
-            let [a, b] = level.crease_neighbours(v);
-            p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
-        }
-        VertexRule::Smooth => {
-            // Two sums side by side, each in ring order.
-            let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
-            let n = level.around(v, |u, f| {
-                neighbours += points[u as usize];
-                faces += face_points[f as usize];
-            }) as f64;
-            (p * (n - 2.0) + (neighbours + faces) / n) / n
-        }
+    if let Some(sharp) = sharp_vertex_point(level, points, v) {
+        return sharp;
     }
+    // Two sums side by side, each in ring order.
+    let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
+    let n = level.around(v, |u, f| {
+        neighbours += points[u as usize];
+        faces += face_points[f as usize];
+    }) as f64;
+    (points[v] * (n - 2.0) + (neighbours + faces) / n) / n
 }
 
 /// Applies one level's gathers: reads `points` (the level's V positions) and

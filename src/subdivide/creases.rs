@@ -162,6 +162,23 @@ pub(crate) struct Sharpness {
 }
 
 impl Sharpness {
+    /// A level's sharpness from its parts; the edges at each vertex as
+    /// offsets and list ([`vertex_edges_of`]).
+    fn new(
+        edges: Vec<f32>,
+        vertices: Vec<f32>,
+        rules: Vec<Rule>,
+        (vertex_edge_offsets, vertex_edges): (Vec<u32>, Vec<u32>),
+    ) -> Sharpness {
+        Sharpness {
+            edges,
+            vertices,
+            rules,
+            vertex_edge_offsets,
+            vertex_edges,
+        }
+    }
+
     /// The edges at vertex `v`, ascending.
     #[inline]
     pub(crate) fn edges_at(&self, v: usize) -> &[u32] {
@@ -293,13 +310,8 @@ pub(crate) fn cage_sharpness(
             .count() as u32;
         rules.push(Rule::of(vertices[v], sharp_edges));
     }
-    Ok(Sharpness {
-        edges,
-        vertices,
-        rules,
-        vertex_edge_offsets,
-        vertex_edges,
-    })
+    let around = (vertex_edge_offsets, vertex_edges);
+    Ok(Sharpness::new(edges, vertices, rules, around))
 }
 
 /// The sharpness of the next level (`Vtr::Refinement::subdivideEdgeSharpness`,
@@ -341,7 +353,7 @@ pub(crate) fn child_sharpness(
             0.0
         }
     }));
-    let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&child.edges, child_vertices)?;
+    let around = vertex_edges_of(&child.edges, child_vertices)?;
 
     let mut vertices: Vec<f32> = zeroed(child_vertices, "vertex sharpness")?;
     let mut rules = try_vec(child_vertices, "vertex rules")?;
@@ -378,13 +390,7 @@ pub(crate) fn child_sharpness(
         });
     }
     rules.extend(std::iter::repeat_n(Rule::Smooth, face_points));
-    Ok(Sharpness {
-        edges,
-        vertices,
-        rules,
-        vertex_edge_offsets,
-        vertex_edges,
-    })
+    Ok(Sharpness::new(edges, vertices, rules, around))
 }
 
 /// The sharpness every edge at `v` will have after one level

@@ -9,6 +9,8 @@
 //! connectivity is never built. All give the same gathers in the same
 //! order, so all give the same bits.
 
+use glam::DVec3;
+
 use super::level::{Connectivity, Faces, NONE};
 use super::rules::Tags;
 use super::scheme::{Scheme, VertexRule};
@@ -106,6 +108,26 @@ pub(crate) fn plan(
 }
 
 /// The gathers of one level, as the scheme's point rules read them.
+/// Vertex `v`'s point when its rule is sharp, the same in both schemes: a
+/// corner stays, a crease takes 3/4 of itself and 1/8 of each crease
+/// neighbour. `None` for a smooth vertex, whose mask is the scheme's.
+#[inline]
+pub(crate) fn sharp_vertex_point(
+    level: &impl Gathers,
+    points: &[DVec3],
+    v: usize,
+) -> Option<DVec3> {
+    let p = points[v];
+    match level.rule(v) {
+        VertexRule::Corner => Some(p),
+        VertexRule::Crease => {
+            let [a, b] = level.crease_neighbours(v);
+            Some(p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125)
+        }
+        VertexRule::Smooth => None,
+    }
+}
+
 pub(crate) trait Gathers: Sync {
     /// Vertex count of the level read.
     fn vertex_count(&self) -> usize;

@@ -15,31 +15,23 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::Gathers;
-use super::level::{uniform_offsets, Connectivity, Faces, NONE};
-use super::scheme::{loop_smooth_weights, VertexRule};
+use super::gathers::{sharp_vertex_point, Gathers};
+use super::level::{Connectivity, Faces, NONE};
+use super::scheme::loop_smooth_weights;
 use crate::buffers::{flatten, par_map, try_vec};
 use crate::error::Result;
 
 const CHUNK: usize = 2048;
 
-/// The triangles of the next level (see the module doc for their order),
-/// with their offsets when `with_offsets` (else `offsets` is left empty).
-/// Every face of `faces` is a triangle.
-pub(crate) fn child_faces(
-    faces: &Faces,
-    connectivity: &Connectivity,
-    with_offsets: bool,
-) -> Result<Faces> {
-    let vertex_count = faces.vertex_count;
-    let face_count = faces.face_count();
-    let offsets = uniform_offsets(4 * face_count, 3, with_offsets)?;
-    let base = vertex_count as u32;
+/// The corners of the next level's triangles, triangle after triangle (see
+/// the module doc for their order). Every face of `faces` is a triangle.
+pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Result<Vec<u32>> {
+    let base = faces.vertex_count as u32;
     let corner_edges = &connectivity.corner_edges;
     // Where each of the 12 indices of a triangle's children comes from: a
     // corner (0..3) or an edge (3..6) of the parent.
     const SOURCE: [usize; 12] = [0, 3, 5, 1, 4, 3, 2, 5, 4, 3, 4, 5];
-    let children = par_map(face_count, "child faces", |f| {
+    let children = par_map(faces.face_count(), "child faces", |f| {
         SOURCE.map(|source| {
             if source < 3 {
                 faces.indices[3 * f + source]
@@ -48,13 +40,7 @@ pub(crate) fn child_faces(
             }
         })
     })?;
-    let indices = flatten(children);
-    Ok(Faces {
-        vertex_count: vertex_count + connectivity.edge_count(),
-        size: 3,
-        offsets,
-        indices,
-    })
+    Ok(flatten(children))
 }
 
 #[inline]
@@ -70,20 +56,13 @@ fn edge_point(level: &impl Gathers, points: &[DVec3], e: usize) -> DVec3 {
 
 #[inline]
 fn vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
-    let p = points[v];
-    match level.rule(v) {
-        VertexRule::Corner => p,
-        VertexRule::Crease => {
-            let [a, b] = level.crease_neighbours(v);
-            p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125
-        }
-        VertexRule::Smooth => {
-            let mut sum = DVec3::ZERO;
-            let n = level.around(v, |u, _| sum += points[u as usize]);
-            let (own, each) = loop_smooth_weights(n);
-            p * own + sum * each
-        }
+    if let Some(sharp) = sharp_vertex_point(level, points, v) {
+        return sharp;
     }
+    let mut sum = DVec3::ZERO;
+    let n = level.around(v, |u, _| sum += points[u as usize]);
+    let (own, each) = loop_smooth_weights(n);
+    points[v] * own + sum * each
 }
 
 /// Applies one level's gathers: reads `points` (the level's V positions) and

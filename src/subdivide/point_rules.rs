@@ -6,7 +6,7 @@
 use glam::DVec3;
 
 use super::gathers::{Gathers, Plan};
-use super::level::{Connectivity, Faces};
+use super::level::{uniform_offsets, Connectivity, Faces};
 use super::scheme::Scheme;
 use super::{catmull_clark, loop_subdivision};
 use crate::error::Result;
@@ -19,10 +19,20 @@ pub(crate) fn child_faces(
     connectivity: &Connectivity,
     with_offsets: bool,
 ) -> Result<Faces> {
-    match scheme {
-        Scheme::CatmullClark => catmull_clark::child_faces(faces, connectivity, with_offsets),
-        Scheme::Loop => loop_subdivision::child_faces(faces, connectivity, with_offsets),
-    }
+    let indices = match scheme {
+        Scheme::CatmullClark => catmull_clark::child_indices(faces, connectivity)?,
+        Scheme::Loop => loop_subdivision::child_indices(faces, connectivity)?,
+    };
+    let size = scheme.refined_face_size();
+    let vertex_count = faces.vertex_count
+        + connectivity.edge_count()
+        + scheme.face_point_count(faces.face_count());
+    Ok(Faces {
+        vertex_count,
+        size,
+        offsets: uniform_offsets(indices.len() / size as usize, size, with_offsets)?,
+        indices,
+    })
 }
 
 /// Applies one level's gathers of `scheme` into a new vector, each point

@@ -32,5 +32,8 @@ void set_creases(WeftSubdivisionOptions *options, size_t count, const uint32_t *
     check_report(__FILE__, __LINE__, #call " returned an unexpected status"); \
     fprintf(stderr, "  got %u, message: %s\n", (unsigned)check_s_, weft_last_error_message()); } } while (0)
 #define CHECK_MESSAGE(needle) check_contains(__FILE__, __LINE__, weft_last_error_message(), (needle))
+/* A call refused with `expected` and a message that contains `needle`. */
+#define CHECK_FAILS_WITH(call, expected, needle) \
+  do { CHECK_STATUS(call, expected); CHECK_MESSAGE(needle); } while (0)
 
 #endif

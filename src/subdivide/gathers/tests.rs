@@ -1,6 +1,7 @@
 use super::*;
 use crate::mesh::shapes;
 use crate::subdivide::catmull_clark;
+use crate::subdivide::point_rules::child_faces;
 use crate::subdivide::rules::{cage_tags, child_tags};
 use crate::subdivide::scheme::NakedEdges;
 use glam::DVec3;
@@ -41,7 +42,7 @@ fn refined_gathers_equal_the_built_level() {
             let faces = Faces::of_mesh(mesh);
             let connectivity = Connectivity::new(&faces).unwrap();
             let tags = cage_tags(&faces, &connectivity, naked).unwrap();
-            let child = catmull_clark::child_faces(&faces, &connectivity, true).unwrap();
+            let child = child_faces(Scheme::CatmullClark, &faces, &connectivity, true).unwrap();
             let child_connectivity = connectivity
                 .refine(Scheme::CatmullClark, &faces, true)
                 .unwrap();
@@ -62,7 +63,7 @@ fn refined_gathers_equal_the_built_level() {
             };
             let what = format!("shape {s} {naked:?}");
             let grandchild =
-                catmull_clark::child_faces(&child, &child_connectivity, false).unwrap();
+                child_faces(Scheme::CatmullClark, &child, &child_connectivity, false).unwrap();
             assert_eq!(
                 catmull_clark::grandchild_faces(&refined).unwrap().indices,
                 grandchild.indices,

@@ -124,15 +124,8 @@ fn refined_connectivity_equals_bucketing() {
         let mut faces = Faces::of_mesh(&mesh);
         let mut connectivity = Connectivity::new(&faces).unwrap();
         for level in 1..=3 {
-            let child = match scheme {
-                Scheme::CatmullClark => {
-                    super::super::catmull_clark::child_faces(&faces, &connectivity, true)
-                }
-                Scheme::Loop => {
-                    super::super::loop_subdivision::child_faces(&faces, &connectivity, true)
-                }
-            }
-            .unwrap();
+            let child = super::super::point_rules::child_faces(scheme, &faces, &connectivity, true)
+                .unwrap();
             let derived = connectivity.refine(scheme, &faces, true).unwrap();
             // Bucketed through the offsets, not the faces' uniform size.
             let offsets_only = Faces {
@@ -163,7 +156,8 @@ fn loop_keeps_the_inside_edges_of_coincident_triangles_apart() {
     let mut connectivity = Connectivity::new(&faces).unwrap();
     for level in 1..=3 {
         let child =
-            super::super::loop_subdivision::child_faces(&faces, &connectivity, true).unwrap();
+            super::super::point_rules::child_faces(Scheme::Loop, &faces, &connectivity, true)
+                .unwrap();
         let derived = connectivity.refine(Scheme::Loop, &faces, true).unwrap();
         assert_eq!(
             derived.edge_count(),
