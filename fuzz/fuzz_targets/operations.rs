@@ -248,17 +248,10 @@ unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (We
             // Voronoi with a boundary polygon of hostile numbers.
             let boundary: Vec<f64> = (0..3 * bytes.small(7)).map(|_| bytes.number()).collect();
             let plane = WeftPlane { origin: [0.0; 3], x_axis: [1.0, 0.0, 0.0], y_axis: [0.0, 1.0, 0.0] };
-            let mut cells = null_mut();
-            let status =
-                weft_voronoi(points.as_ptr(), count, &plane, boundary.as_ptr(), boundary.len() / 3, bytes.number(), &mut cells);
-            if status == WeftStatus::Ok {
-                let status = weft_cells_to_mesh(cells, &mut out);
-                weft_cells_free(cells);
-                status
-            } else {
-                assert!(cells.is_null());
-                status
-            }
+            let radius = bytes.number();
+            cells_to_mesh(&mut out, |cells| {
+                weft_voronoi(points.as_ptr(), count, &plane, boundary.as_ptr(), boundary.len() / 3, radius, cells)
+            })
         }
         _ => extended_operation(bytes.small(EXTENDED_OPERATIONS), mesh, bytes, &mut out),
     };
@@ -402,18 +395,37 @@ unsafe fn counts(mesh: *mut WeftMesh, options: &WeftSubdivisionOptions, levels: 
     (status == WeftStatus::Ok && i < 1 << 16).then_some((v, f, i))
 }
 
-/// A buffer for an output of the creased exports: `pick` says how many
-/// values the counts need (any number when the counts are refused); its
-/// room is sometimes short or long (see `capacity`).
-unsafe fn output_for(
+/// Calls `export` with an output buffer for a creased export: `pick` says
+/// how many values the counts need (any number when the counts are
+/// refused), the room is sometimes short or long (see `capacity`); checks
+/// what the export wrote.
+unsafe fn with_output(
     mesh: *mut WeftMesh,
     options: &Options,
     levels: u32,
     bytes: &mut Bytes,
-    pick: impl Fn((usize, usize, usize)) -> usize,
-) -> (usize, Vec<f64>) {
+    (what, pick): (&str, impl Fn((usize, usize, usize)) -> usize),
+    export: impl FnOnce(*mut f64, usize) -> WeftStatus,
+) -> WeftStatus {
     let needed = counts(mesh, &options.raw, levels).map_or(bytes.small(64) as usize, pick);
-    (needed, marked(capacity(bytes, needed)))
+    let mut result = marked(capacity(bytes, needed));
+    let status = export(result.as_mut_ptr(), result.len());
+    check_written(status, &result, needed, what);
+    status
+}
+
+/// Makes Voronoi cells with `make` and, when it succeeds, their mesh into
+/// `out`; a failure must leave no cells.
+unsafe fn cells_to_mesh(out: &mut *mut WeftMesh, make: impl FnOnce(&mut *mut WeftCells) -> WeftStatus) -> WeftStatus {
+    let mut cells = null_mut();
+    let status = make(&mut cells);
+    if status != WeftStatus::Ok {
+        assert!(cells.is_null(), "failed cells left a handle");
+        return status;
+    }
+    let status = weft_cells_to_mesh(cells, out);
+    weft_cells_free(cells);
+    status
 }
 
 /// Levels for the creased exports: mostly 0 to 2, sometimes so many that
@@ -468,19 +480,10 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let width = bytes.small(5) as usize;
             let data_len = (count * width + bytes.small(3) as usize).saturating_sub(1);
             let data: Vec<f64> = (0..data_len).map(|_| bytes.number() * 1e-3 + bytes.finite()).collect();
-            let (needed, mut result) = output_for(mesh, &options, levels, bytes, |c| c.0 * width);
-            let status = weft_subdivide_vertex_data(
-                mesh,
-                &options.raw,
-                levels,
-                data.as_ptr(),
-                data.len(),
-                width,
-                result.as_mut_ptr(),
-                result.len(),
-            );
-            check_written(status, &result, needed, "weft_subdivide_vertex_data");
-            status
+            let wanted = ("weft_subdivide_vertex_data", |c: (usize, usize, usize)| c.0 * width);
+            with_output(mesh, &options, levels, bytes, wanted, |out, room| {
+                weft_subdivide_vertex_data(mesh, &options.raw, levels, data.as_ptr(), data.len(), width, out, room)
+            })
         }
         4 => {
             // Face-varying values: indices sometimes past the values, lengths off by one.
@@ -491,22 +494,14 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let values: Vec<f64> = (0..value_count * width).map(|_| bytes.finite()).collect();
             let index_count = (weft_mesh_index_count(mesh) + bytes.small(3) as usize).saturating_sub(1);
             let indices: Vec<u32> = (0..index_count).map(|_| bytes.small(value_count as u32 + 1)).collect();
-            let (needed, mut result) = output_for(mesh, &options, levels, bytes, |c| c.2 * width);
-            let status = weft_subdivide_face_varying(
-                mesh,
-                &options.raw,
-                levels,
-                bytes.small(8),
-                values.as_ptr(),
-                value_count,
-                width,
-                indices.as_ptr(),
-                indices.len(),
-                result.as_mut_ptr(),
-                result.len(),
-            );
-            check_written(status, &result, needed, "weft_subdivide_face_varying");
-            status
+            let linear = bytes.small(8);
+            let wanted = ("weft_subdivide_face_varying", |c: (usize, usize, usize)| c.2 * width);
+            with_output(mesh, &options, levels, bytes, wanted, |out, room| {
+                let (values, indices) = ((values.as_ptr(), value_count), (indices.as_ptr(), indices.len()));
+                weft_subdivide_face_varying(
+                    mesh, &options.raw, levels, linear, values.0, values.1, width, indices.0, indices.1, out, room,
+                )
+            })
         }
         5 => {
             // The limit, with or without normals.
@@ -778,16 +773,8 @@ fuzz_target!(|data: &[u8]| {
                 if bytes.byte() % 2 == 0 {
                     weft_delaunay(points.as_ptr(), count, &plane, &mut out, null_mut())
                 } else {
-                    let mut cells = null_mut();
-                    let status = weft_voronoi(points.as_ptr(), count, &plane, null(), 0, bytes.number(), &mut cells);
-                    if status == WeftStatus::Ok {
-                        let status = weft_cells_to_mesh(cells, &mut out);
-                        weft_cells_free(cells);
-                        status
-                    } else {
-                        assert!(cells.is_null());
-                        status
-                    }
+                    let radius = bytes.number();
+                    cells_to_mesh(&mut out, |cells| weft_voronoi(points.as_ptr(), count, &plane, null(), 0, radius, cells))
                 }
             }
             27 => {

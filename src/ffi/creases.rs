@@ -177,6 +177,21 @@ pub(crate) unsafe fn options_arg(
     }
 }
 
+/// `query` of `mesh` with the scheme and options `options` gives.
+///
+/// # Safety
+/// `options` as for `options_arg`.
+unsafe fn with_options<T>(
+    mesh: &Mesh,
+    options: *const WeftSubdivisionOptions,
+    levels: u32,
+    query: fn(&Mesh, Scheme, u32, &SubdivisionOptions) -> crate::Result<T>,
+) -> Result<T, Failure> {
+    // SAFETY: `options` is as this function's `# Safety` section requires.
+    let (scheme, options) = unsafe { options_arg(options)? };
+    Ok(query(mesh, scheme, levels, &options)?)
+}
+
 fn face_varying_arg(value: u32) -> Result<FaceVaryingLinear, Failure> {
     enum_arg(
         value,
@@ -345,10 +360,7 @@ pub unsafe extern "C" fn weft_subdivision_counts_ex(
     // above requires; `options` is read only once the rest is checked.
     unsafe {
         write_counts(mesh, outs, |mesh| {
-            let (scheme, options) = options_arg(options)?;
-            Ok(subdivide::refined_counts_with(
-                mesh, scheme, levels, &options,
-            )?)
+            with_options(mesh, options, levels, subdivide::refined_counts_with)
         })
     }
 }
@@ -376,10 +388,7 @@ pub unsafe extern "C" fn weft_subdivision_parent_faces_ex(
     // section above requires; `options` is read once the mesh is checked.
     unsafe {
         write_parents(mesh, "mesh", (out_parents, capacity), |mesh| {
-            let (scheme, options) = options_arg(options)?;
-            Ok(subdivide::parent_faces_with(
-                mesh, scheme, levels, &options,
-            )?)
+            with_options(mesh, options, levels, subdivide::parent_faces_with)
         })
     }
 }

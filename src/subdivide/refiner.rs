@@ -276,6 +276,13 @@ pub(crate) struct Levels<'a> {
 }
 
 impl Levels<'_> {
+    /// For each level to refine, whether it is the last and whether the
+    /// next one is.
+    fn steps(&self) -> impl Iterator<Item = (bool, bool)> {
+        let n = self.levels as usize;
+        (0..n).map(move |level| (level + 1 == n, level + 2 == n))
+    }
+
     /// The cage's faces, connectivity and tags, or its faces alone when
     /// there is nothing to refine (no level or no face). Checks the scheme's
     /// preconditions and every level's size before allocating.
@@ -299,19 +306,17 @@ impl Levels<'_> {
 /// Plans every level in turn, handing each plan to `each`, and returns the
 /// faces of the last level, with offsets.
 pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Result<Faces> {
-    let Levels { scheme, levels, .. } = request;
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
     };
-    for level in 0..levels as usize {
-        let last = level + 1 == levels as usize;
+    let scheme = request.scheme;
+    for (last, next_last) in request.steps() {
         let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
         if !last {
             // The next level's edges and adjacency, written from this one's.
-            let next_connectivity =
-                connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
+            let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
             connectivity = next_connectivity;
         } else {
@@ -337,20 +342,19 @@ pub(crate) fn gather_levels(
     request: Levels<'_>,
     mut each: impl FnMut(Step<'_>) -> Result<()>,
 ) -> Result<Faces> {
-    let Levels { scheme, levels, .. } = request;
+    let scheme = request.scheme;
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
     };
-    for level in 0..levels as usize {
-        let last = level + 1 == levels as usize;
+    for (last, next_last) in request.steps() {
         let gathers = LevelGathers {
             scheme,
             faces: &faces,
             connectivity: &connectivity,
             tags: &tags,
         };
-        if scheme == Scheme::CatmullClark && level + 2 == levels as usize {
+        if scheme == Scheme::CatmullClark && next_last {
             each(Step::Level(gathers))?;
             let refined = RefinedGathers { parent: gathers };
             let last_faces = catmull_clark::grandchild_faces(&refined)?;
@@ -364,7 +368,7 @@ pub(crate) fn gather_levels(
         }
         // The vertices' edges are read by the next refinement, and by
         // Catmull-Clark's refined gathers.
-        let next_connectivity = connectivity.refine(scheme, &faces, level + 2 < levels as usize)?;
+        let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
         tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
         (faces, connectivity) = (next_faces, next_connectivity);
     }

@@ -407,6 +407,25 @@ static void test_naked_boundaries(void) {
   weft_mesh_free(grid);
 }
 
+/* The argument checks both matching calls share: a bad tolerance, NULL
+ * buffers, and nothing written on failure (out[0] stays 99). */
+typedef WeftStatus (*MatchCall)(const WeftMesh *, size_t, const double *, double, uint32_t *);
+
+static void check_match_refusals(MatchCall match, WeftMesh *cube, const double *input, const char *input_name,
+                                 const char *out_name, uint32_t *out) {
+  char message[64];
+  CHECK_FAILS_WITH(match(cube, 1, input, -1.0, out), WEFT_STATUS_INVALID_ARGUMENT, "tolerance is -1");
+  CHECK_FAILS_WITH(match(cube, 1, input, NAN, out), WEFT_STATUS_INVALID_ARGUMENT, "tolerance is NaN");
+  CHECK_FAILS_WITH(match(cube, 1, input, INFINITY, out), WEFT_STATUS_INVALID_ARGUMENT, "tolerance is inf");
+  CHECK_FAILS_WITH(match(NULL, 1, input, 0.1, out), WEFT_STATUS_NULL_POINTER, "mesh is NULL");
+  snprintf(message, sizeof message, "%s is NULL", input_name);
+  CHECK_FAILS_WITH(match(cube, 1, NULL, 0.1, out), WEFT_STATUS_NULL_POINTER, message);
+  snprintf(message, sizeof message, "%s is NULL", out_name);
+  CHECK_FAILS_WITH(match(cube, 1, input, 0.1, NULL), WEFT_STATUS_NULL_POINTER, message);
+  CHECK(out[0] == 99);
+  CHECK_STATUS(match(cube, 0, NULL, 0.1, NULL), WEFT_STATUS_OK);
+}
+
 /* Points and lines matched to the cube's vertices and edges. */
 static void test_match_points_and_lines(void) {
   WeftMesh *cube = make_cube(0.0);
@@ -421,38 +440,18 @@ static void test_match_points_and_lines(void) {
   CHECK(vertices[0] == 3 && vertices[1] == 4 && vertices[2] == 99);
   vertices[0] = 99;
   CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 3, points, 0.05, vertices), WEFT_STATUS_INVALID_ARGUMENT,
-                "point 2 at (0.5, 0.5, 0.5) is no vertex of the mesh within 0.05");
-  CHECK(vertices[0] == 99);
-  CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 1, points, -1.0, vertices), WEFT_STATUS_INVALID_ARGUMENT,
-                "tolerance is -1");
-  CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 1, points, NAN, vertices), WEFT_STATUS_INVALID_ARGUMENT,
-                "tolerance is NaN");
+                   "point 2 at (0.5, 0.5, 0.5) is no vertex of the mesh within 0.05");
   CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 1, bad_point, 0.1, vertices), WEFT_STATUS_NON_FINITE_COORDINATE,
-                "points: point 0 has a non-finite coordinate");
-  CHECK_FAILS_WITH(weft_match_points_to_vertices(NULL, 1, points, 0.1, vertices), WEFT_STATUS_NULL_POINTER,
-                "mesh is NULL");
-  CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 1, NULL, 0.1, vertices), WEFT_STATUS_NULL_POINTER,
-                "points is NULL");
-  CHECK_FAILS_WITH(weft_match_points_to_vertices(cube, 1, points, 0.1, NULL), WEFT_STATUS_NULL_POINTER,
-                "out_vertices is NULL");
-  CHECK(vertices[0] == 99);
-  CHECK_STATUS(weft_match_points_to_vertices(cube, 0, NULL, 0.1, NULL), WEFT_STATUS_OK);
+                   "points: point 0 has a non-finite coordinate");
+  check_match_refusals(weft_match_points_to_vertices, cube, points, "points", "out_vertices", vertices);
 
   CHECK_STATUS(weft_match_lines_to_edges(cube, 2, lines, 0.05, pairs), WEFT_STATUS_OK);
   CHECK(pairs[0] == 3 && pairs[1] == 1 && pairs[2] == 2 && pairs[3] == 0 && pairs[4] == 99);
   pairs[0] = 99;
   CHECK_FAILS_WITH(weft_match_lines_to_edges(cube, 3, lines, 0.05, pairs), WEFT_STATUS_INVALID_ARGUMENT,
-                "line 2 from (0, 0, 0) to (1, 1, 0) matches no edge of the mesh within 0.05");
+                   "line 2 from (0, 0, 0) to (1, 1, 0) matches no edge of the mesh within 0.05");
   CHECK_MESSAGE("its ends are vertices but not the ends of one edge");
-  CHECK(pairs[0] == 99);
-  CHECK_FAILS_WITH(weft_match_lines_to_edges(cube, 1, lines, INFINITY, pairs), WEFT_STATUS_INVALID_ARGUMENT,
-                "tolerance is inf");
-  CHECK_FAILS_WITH(weft_match_lines_to_edges(cube, 1, NULL, 0.1, pairs), WEFT_STATUS_NULL_POINTER,
-                "lines is NULL");
-  CHECK_FAILS_WITH(weft_match_lines_to_edges(cube, 1, lines, 0.1, NULL), WEFT_STATUS_NULL_POINTER,
-                "out_vertex_pairs is NULL");
-  CHECK_STATUS(weft_match_lines_to_edges(NULL, 1, lines, 0.1, pairs), WEFT_STATUS_NULL_POINTER);
-  CHECK(pairs[0] == 99);
+  check_match_refusals(weft_match_lines_to_edges, cube, lines, "lines", "out_vertex_pairs", pairs);
   weft_mesh_free(cube);
 }
 
