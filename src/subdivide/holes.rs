@@ -227,8 +227,10 @@ mod tests {
             &SubdivisionOptions::default(),
         )
         .unwrap();
-        let mut options = SubdivisionOptions::default();
-        options.holes = vec![1, 4];
+        let options = SubdivisionOptions {
+            holes: vec![1, 4],
+            ..SubdivisionOptions::default()
+        };
         let holed = Subdivider::new(&cube, Scheme::CatmullClark, 2, &options).unwrap();
         assert_eq!(holed.vertex_count(), plain.vertex_count());
         assert_eq!(holed.face_count(), plain.face_count() - 2 * 16);
