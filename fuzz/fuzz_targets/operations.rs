@@ -12,6 +12,7 @@
 use std::ptr::{null, null_mut};
 
 use libfuzzer_sys::fuzz_target;
+use weft::ffi::crease_edges::*;
 use weft::ffi::creases::*;
 use weft::ffi::make::*;
 use weft::ffi::mend::*;
@@ -659,11 +660,16 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             assert!(weft_mesh_face_sizes(null()).is_null());
             let (scheme, levels) = (bytes.small(3), levels(bytes));
             let mut refiner = null_mut();
-            let status = weft_refiner_new(mesh, scheme, levels, bytes.small(4), &mut refiner);
+            let naked_edges = bytes.small(5);
+            let status = weft_refiner_new(mesh, scheme, levels, naked_edges, &mut refiner);
             if status == WeftStatus::Ok {
-                let mut faces = 0;
-                assert_eq!(weft_subdivision_face_count(mesh, scheme, levels, &mut faces), WeftStatus::Ok);
+                // All zeros is the default options (the header's rule); "none" leaves holes.
+                let options = WeftSubdivisionOptions { scheme, naked_edges, ..std::mem::zeroed() };
+                let (mut vertices, mut faces, mut indices) = (0, 0, 0);
+                let counted = weft_subdivision_counts_ex(mesh, &options, levels, &mut vertices, &mut faces, &mut indices);
+                assert_eq!(counted, WeftStatus::Ok);
                 assert_eq!(weft_refiner_face_count(refiner), faces);
+                assert_eq!(weft_refiner_vertex_count(refiner), vertices);
                 evaluate_hostile(refiner, mesh, bytes);
                 weft_refiner_free(refiner);
             } else {

@@ -24,6 +24,8 @@ pub mod subdivide;
 pub mod refiner;
 // Creases, corners and carried data (vertex data, UVs, the limit surface).
 pub mod creases;
+// Creases found on a mesh: unwelded seams and folds.
+pub mod crease_edges;
 // Join, weld, T-nodes, cull, normals, planarity.
 pub mod mend;
 // Unify, turn outward, flip.

@@ -17,8 +17,9 @@
 //!    cap; `scale.rs`, the exact scaling of huge coordinates.
 //! 2. `level.rs`: a level's faces and connectivity (the cage's from the
 //!    mesh's one builder, refined levels' written arithmetically).
-//! 3. `rules.rs` (boundary and non-manifold tags) and `creases.rs`
-//!    (sharpness).
+//! 3. `rules.rs` (boundary and non-manifold tags), `creases.rs`
+//!    (sharpness and the options) and `holes.rs` (the faces the result
+//!    leaves out).
 //! 4. `gathers.rs`: plans and gathers, where each new point finds its old
 //!    points; `stencils.rs`, the weighted sums of the creased path.
 //! 5. `catmull_clark.rs`, `loop_subdivision.rs`: each scheme's faces and
