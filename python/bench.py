@@ -95,9 +95,12 @@ def compile_c(folder):
     library = Path(weft.__file__).with_name("libweft.so")
     source, program = Path(folder) / "bench.c", Path(folder) / "bench"
     source.write_text(C_PROGRAM)
+    # The library names itself by its soname (libweft.so.0): the program
+    # finds it under that name beside itself.
+    (Path(folder) / "libweft.so.0").symlink_to(library)
     subprocess.run(
         ["cc", "-O2", "-std=c99", "-D_POSIX_C_SOURCE=199309L", f"-I{root / 'include'}", str(source), "-o", str(program),
-         str(library), f"-Wl,-rpath,{library.parent}"],
+         str(library), f"-Wl,-rpath,{folder}"],
         check=True,
     )
     return str(program)

@@ -30,6 +30,18 @@ pub(crate) fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
     Ok(v)
 }
 
+/// A copy of `values` in memory advised for huge pages when large (a host's
+/// buffers handed in: the copy is all page faults and memory traffic).
+/// Aborts, as `to_vec` does, when memory runs out.
+pub(crate) fn advised_copy<T: Copy>(values: &[T]) -> Vec<T> {
+    let mut copy = Vec::with_capacity(values.len());
+    if std::mem::size_of_val(values) >= HUGE_PAGE_ADVICE_BYTES {
+        weft_pages::advise_huge_pages(copy.spare_capacity_mut());
+    }
+    copy.extend_from_slice(values);
+    copy
+}
+
 /// A copy of `values`, reserved fallibly.
 pub(crate) fn try_copy<T: Clone>(values: &[T], what: &str) -> Result<Vec<T>> {
     let mut copy = try_vec(values.len(), what)?;

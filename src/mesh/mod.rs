@@ -14,6 +14,7 @@ pub mod triangulate;
 
 use glam::DVec3;
 
+use crate::buffers::advised_copy;
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
 
 /// A validated polygon mesh.
@@ -71,8 +72,12 @@ impl Mesh {
         // Check sizes before copying so a huge count fails without allocating.
         check_counts(coordinates.len() / 3, face_sizes, face_indices.len())?;
         // Three f64 are a DVec3: one block copy.
-        let positions = bytemuck::cast_slice::<f64, DVec3>(coordinates).to_vec();
-        Mesh::new(positions, face_sizes.to_vec(), face_indices.to_vec())
+        let positions = advised_copy(bytemuck::cast_slice::<f64, DVec3>(coordinates));
+        Mesh::new(
+            positions,
+            advised_copy(face_sizes),
+            advised_copy(face_indices),
+        )
     }
 
     /// Builds a mesh from a list of polygons, each a list of vertex indices.
