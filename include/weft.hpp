@@ -170,6 +170,8 @@ struct SubdivisionOptions {
   std::vector<double> crease_sharpness;            /**< one per creased edge */
   std::vector<uint32_t> corner_vertices;           /**< sharp vertices */
   std::vector<double> corner_sharpness;            /**< one per sharp vertex */
+  std::vector<uint32_t> hole_faces;                /**< faces left out of the result */
+  uint32_t triangles = WEFT_TRIANGLES_CATMARK;     /**< a WEFT_TRIANGLES_* value */
 
   /** Adds a creased edge (sharpness WEFT_SHARPNESS_INFINITE for a hard one). */
   SubdivisionOptions& crease(uint32_t from, uint32_t to, double sharpness = WEFT_SHARPNESS_INFINITE) {
@@ -182,6 +184,11 @@ struct SubdivisionOptions {
   SubdivisionOptions& corner(uint32_t vertex, double sharpness = WEFT_SHARPNESS_INFINITE) {
     corner_vertices.push_back(vertex);
     corner_sharpness.push_back(sharpness);
+    return *this;
+  }
+  /** Leaves a face out of the result; its vertices and edges still shape its neighbours. */
+  SubdivisionOptions& hole(uint32_t face) {
+    hole_faces.push_back(face);
     return *this;
   }
 
@@ -208,6 +215,9 @@ struct SubdivisionOptions {
     options.corner_count = corner_sharpness.size();
     options.corner_vertices = corner_vertices.empty() ? nullptr : corner_vertices.data();
     options.corner_sharpness = corner_sharpness.empty() ? nullptr : corner_sharpness.data();
+    options.hole_count = hole_faces.size();
+    options.hole_faces = hole_faces.empty() ? nullptr : hole_faces.data();
+    options.triangles = triangles;
     return options;
   }
 };
@@ -231,6 +241,23 @@ inline SubdivisionCounts subdivision_counts(const Mesh& mesh, uint32_t scheme, u
   detail::check(weft_subdivision_counts(mesh.get(), scheme, levels, &counts.vertex_count, &counts.face_count,
                                         &counts.index_count));
   return counts;
+}
+
+/** weft_subdivision_counts_ex: what `levels` steps with `options` make (holes leave no faces). */
+inline SubdivisionCounts subdivision_counts(const Mesh& mesh, const SubdivisionOptions& options, uint32_t levels) {
+  const WeftSubdivisionOptions c = options.c_options();
+  SubdivisionCounts counts;
+  detail::check(weft_subdivision_counts_ex(mesh.get(), &c, levels, &counts.vertex_count, &counts.face_count,
+                                           &counts.index_count));
+  return counts;
+}
+
+/** weft_subdivision_parent_faces_ex: the cage face each face of `subdivide(cage, options, levels)` comes from. */
+inline std::vector<uint32_t> parent_faces(const Mesh& cage, const SubdivisionOptions& options, uint32_t levels) {
+  const WeftSubdivisionOptions c = options.c_options();
+  std::vector<uint32_t> parents(subdivision_counts(cage, options, levels).face_count);
+  detail::check(weft_subdivision_parent_faces_ex(cage.get(), &c, levels, parents.data(), parents.size()));
+  return parents;
 }
 
 /** weft_subdivision_parent_faces: the cage face each refined face comes from. */

@@ -105,6 +105,24 @@ static void test_subdivision() {
   std::vector<uint32_t> parents = weft::parent_faces(cage, WEFT_SCHEME_CATMULL_CLARK, 1);
   CHECK(parents.size() == 24 && parents[0] == 0 && parents[3] == 0 && parents[4] == 1 && parents[23] == 5);
 
+  // Holes leave their children out and keep every vertex; the counts and
+  // parents with the same options agree; smooth triangles change nothing
+  // on a cube of quads.
+  weft::SubdivisionOptions holed;
+  holed.hole(1).hole(4);
+  weft::Mesh open_box = weft::subdivide(cage, holed, 2);
+  CHECK(open_box.vertex_count() == 98 && open_box.face_count() == 96 - 32);
+  weft::SubdivisionCounts holed_counts = weft::subdivision_counts(cage, holed, 2);
+  CHECK(holed_counts.face_count == open_box.face_count() && holed_counts.index_count == 4 * open_box.face_count());
+  std::vector<uint32_t> holed_parents = weft::parent_faces(cage, holed, 2);
+  CHECK(holed_parents.size() == 64 && holed_parents[0] == 0 && holed_parents[16] == 2 && holed_parents[63] == 5);
+  weft::SubdivisionOptions far_hole;
+  far_hole.hole(6);
+  expect_error(WEFT_STATUS_INVALID_ARGUMENT, [&] { weft::subdivide(cage, far_hole, 1); }, "a hole past the faces");
+  weft::SubdivisionOptions smooth_triangles;
+  smooth_triangles.triangles = WEFT_TRIANGLES_SMOOTH;
+  CHECK(max_difference(weft::subdivide(cage, smooth_triangles, 2).positions(), smooth.positions()) < 1e-12);
+
   // Loop: an icosahedron has 80 faces after one step (pmp's golden); not on quads.
   weft::Mesh ico = weft::platonic(WEFT_PLATONIC_ICOSAHEDRON);
   CHECK(weft::loop(ico, 1, WEFT_NAKED_EDGES_SMOOTH).face_count() == 80);
