@@ -1211,8 +1211,9 @@ WeftStatus weft_subdivide_vertex_data(const struct WeftMesh *mesh, const struct 
  * after face: `index_count` must equal the mesh's face-index count.
  * `out_values` has room for `capacity` doubles; it receives `width` doubles
  * per face corner of the refined mesh, face after face, and needs `width`
- * times the refined face-index count (`weft_subdivision_counts`), else the
- * call fails with WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
+ * times the refined face-index count (`weft_subdivision_counts_ex` with the
+ * same options: holes have no corners), else the call fails with
+ * WEFT_STATUS_BUFFER_TOO_SMALL and writes nothing.
  *
  * Fails as `weft_subdivide_ex`, with WEFT_STATUS_COUNT_MISMATCH (lengths),
  * WEFT_STATUS_INDEX_OUT_OF_RANGE (a value index past `value_count`) or
