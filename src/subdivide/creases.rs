@@ -260,19 +260,7 @@ pub(crate) fn cage_sharpness(
     let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&connectivity.edges, vertex_count)?;
     for (i, &([a, b], value)) in options.creases.iter().enumerate() {
         let s = user_sharpness(value, || format!("crease {i} ({a}, {b})"))?;
-        let (low, high) = (a.min(b), a.max(b));
-        let edge = (low as usize) < vertex_count && (high as usize) < vertex_count && low != high;
-        let found = edge
-            .then(|| {
-                let around = &vertex_edges[vertex_edge_offsets[low as usize] as usize
-                    ..vertex_edge_offsets[low as usize + 1] as usize];
-                around
-                    .iter()
-                    .find(|&&e| connectivity.edges[e as usize] == [low, high])
-                    .copied()
-            })
-            .flatten();
-        let Some(e) = found else {
+        let Some(e) = connectivity.find_edge(a, b) else {
             return Err(Error::InvalidArgument(format!(
                 "crease {i} joins vertices {a} and {b}, which are not an edge of the mesh"
             )));

@@ -77,17 +77,8 @@ fn hard_naked_edges(
     options: &SubdivisionOptions,
 ) -> Result<Vec<bool>> {
     let mut hard: Vec<bool> = zeroed(connectivity.edge_count(), "holes")?;
-    let vertex_count = connectivity.vertex_edge_offsets.len().saturating_sub(1);
     for &([a, b], sharpness) in &options.creases {
-        let (low, high) = (a.min(b), a.max(b));
-        if high as usize >= vertex_count {
-            continue;
-        }
-        let edge = connectivity
-            .vertex_edges(low as usize)
-            .iter()
-            .find(|&&e| connectivity.edges[e as usize] == [low, high]);
-        if let Some(&e) = edge {
+        if let Some(e) = connectivity.find_edge(a, b) {
             hard[e as usize] = sharpness >= SHARPNESS_INFINITE;
         }
     }

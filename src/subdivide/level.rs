@@ -210,6 +210,19 @@ impl Connectivity {
             [self.vertex_edge_offsets[v] as usize..self.vertex_edge_offsets[v + 1] as usize]
     }
 
+    /// The edge joining vertices `a` and `b` (either order), if there is one.
+    pub(crate) fn find_edge(&self, a: u32, b: u32) -> Option<u32> {
+        let (low, high) = (a.min(b), a.max(b));
+        let vertex_count = self.vertex_edge_offsets.len().saturating_sub(1);
+        if low == high || high as usize >= vertex_count {
+            return None;
+        }
+        self.vertex_edges(low as usize)
+            .iter()
+            .copied()
+            .find(|&e| self.edges[e as usize] == [low, high])
+    }
+
     /// The end of edge `vertex_edges[s]` whose list holds slot `s`.
     #[inline]
     pub(crate) fn slot_vertex(&self, s: usize) -> u32 {

@@ -177,10 +177,7 @@ pub fn subdivide(
 pub fn parent_faces(cage: &Mesh, scheme: Scheme, levels: u32) -> Result<Vec<u32>> {
     let face_count = refined_face_count(cage, scheme, levels)?;
     let mut parents = try_vec(face_count, "parent faces")?;
-    for (f, &size) in cage.face_sizes().iter().enumerate() {
-        let children = scheme.descendants_of_face(size, levels as usize);
-        parents.extend(std::iter::repeat_n(f as u32, children));
-    }
+    parents.extend(scheme.parents_of(cage.face_sizes().iter().copied(), levels as usize));
     Ok(parents)
 }
 

@@ -66,6 +66,18 @@ impl Scheme {
         }
     }
 
+    /// The cage face of every face `levels` levels make of faces of
+    /// `sizes`, in order: the children of a face are contiguous.
+    pub(crate) fn parents_of(
+        self,
+        sizes: impl IntoIterator<Item = u32>,
+        levels: usize,
+    ) -> impl Iterator<Item = u32> {
+        sizes.into_iter().enumerate().flat_map(move |(f, size)| {
+            std::iter::repeat_n(f as u32, self.descendants_of_face(size, levels))
+        })
+    }
+
     /// How many face points a level of `face_count` faces makes: one per
     /// face for Catmull-Clark, none for Loop. The new vertices of a level
     /// are its vertex points, edge points, then these.

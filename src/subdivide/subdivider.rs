@@ -213,13 +213,8 @@ impl Subdivider {
             Some(visible) => visible.parents.clone(),
             None => {
                 let cage = &self.levels[0].faces;
-                (0..cage.face_count())
-                    .flat_map(|f| {
-                        let size = cage.corners(f).len() as u32;
-                        let n = self.scheme.descendants_of_face(size, self.levels());
-                        std::iter::repeat_n(f as u32, n)
-                    })
-                    .collect()
+                let sizes = (0..cage.face_count()).map(|f| cage.corners(f).len() as u32);
+                self.scheme.parents_of(sizes, self.levels()).collect()
             }
         }
     }
