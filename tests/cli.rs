@@ -839,6 +839,27 @@ fn subdivide_takes_holes_boundary_none_and_smooth_triangles() {
         io::read_mesh(dir.join("two.obj")).unwrap().face_count(),
         2 * 16
     );
+    // An STL is welded first for --crease-angle; the holes survive the re-read.
+    io::write_mesh(dir.join("cube.stl"), &shapes::cube()).unwrap();
+    let o = weft(
+        &dir,
+        &[
+            "subdivide",
+            "cube.stl",
+            "cube.obj",
+            "--crease-angle",
+            "30",
+            "--hole",
+            "0",
+        ],
+    );
+    assert_exit(&o, 0);
+    assert_mentions(&stderr(&o), &["welded"]);
+    // 12 triangles, 3 quads each, less the hole's.
+    assert_eq!(
+        io::read_mesh(dir.join("cube.obj")).unwrap().face_count(),
+        36 - 3
+    );
     let o = weft(&dir, &["subdivide", "grid.obj", "x.obj", "--hole", "4"]);
     assert_exit(&o, 1);
     assert_mentions(&stderr(&o), &["--hole 4", "4 faces"]);

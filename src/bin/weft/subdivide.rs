@@ -77,6 +77,18 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
     } = args;
     let mut file = read_file(cli, &files.input)?;
     require_faces(&files.input, &file.mesh)?;
+    if crease_angle.is_some() && !file.has_attributes() && corners_split_by_format(&file.mesh) {
+        // Every corner its own vertex (STL, an unwelded OBJ): every edge
+        // would be a seam, and so a crease. Joined first, as --weld does.
+        let before = file.mesh.vertex_count();
+        file = read_file_welded(&files.input, true)?;
+        eprintln!(
+            "{}: no two faces share a vertex, as the format stores them: welded {} corners at identical positions first (as --weld), so that only folds crease",
+            files.input.display(),
+            before - file.mesh.vertex_count()
+        );
+    }
+    // After any re-read above, which keeps the faces in their order.
     if let Some(&face) = holes
         .iter()
         .find(|&&f| f as usize >= file.mesh.face_count())
@@ -91,17 +103,6 @@ pub fn run(cli: &Cli, args: &Subdivide) -> Result<(), Failure> {
     file.holes.extend(holes);
     file.holes.sort_unstable();
     file.holes.dedup();
-    if crease_angle.is_some() && !file.has_attributes() && corners_split_by_format(&file.mesh) {
-        // Every corner its own vertex (STL, an unwelded OBJ): every edge
-        // would be a seam, and so a crease. Joined first, as --weld does.
-        let before = file.mesh.vertex_count();
-        file = read_file_welded(&files.input, true)?;
-        eprintln!(
-            "{}: no two faces share a vertex, as the format stores them: welded {} corners at identical positions first (as --weld), so that only folds crease",
-            files.input.display(),
-            before - file.mesh.vertex_count()
-        );
-    }
     file.check_creases().map_err(|e| e.in_file(&files.input))?;
     let info = weft::Topology::try_new(&file.mesh)
         .map_err(|e| operation_failed(&files.input, "read the topology of", e))?
