@@ -24,6 +24,15 @@
 #define WEFT_VERSION_PATCH 0
 
 /**
+ * `weft_mesh_new_ex` flag: accept faces that name a vertex more than once
+ * (`0 1 1 2`, `0 1 2 1 3`). Subdivision treats them as OpenSubdiv does, as
+ * non-manifold topology: a degenerate edge `[v, v]`, and each further
+ * time a face meets a vertex pair, get an edge of their own, infinitely
+ * sharp. Other operations take such faces as they are.
+ */
+#define WEFT_MESH_ALLOW_REPEATED_VERTICES 1
+
+/**
  * Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
  */
 #define WEFT_NAKED_EDGES_FIXED 0
@@ -640,11 +649,23 @@ const char *weft_last_error_message(void);
  * WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
  * that names the face, corner or vertex. A vertex, face or index count past
  * 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
+ * A face that names a vertex twice is refused; `weft_mesh_new_ex` with
+ * WEFT_MESH_ALLOW_REPEATED_VERTICES accepts it.
  *
  * # Safety
  * Each non-NULL buffer must hold the number of elements stated.
  */
 WeftStatus weft_mesh_new(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, struct WeftMesh **out_mesh);
+
+/**
+ * As `weft_mesh_new`, with `flags` (0, or WEFT_MESH_ALLOW_REPEATED_VERTICES)
+ * saying what else to accept. An unknown flag fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ *
+ * # Safety
+ * As `weft_mesh_new`.
+ */
+WeftStatus weft_mesh_new_ex(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, uint32_t flags, struct WeftMesh **out_mesh);
 
 /**
  * Frees a mesh made by Weft. NULL is ignored.

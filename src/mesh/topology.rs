@@ -87,8 +87,12 @@ impl Topology {
             corner_next.extend(start + 1..end);
             corner_next.push(start);
         }
-        let adjacency =
-            Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
+        let adjacency = Adjacency::build(
+            mesh.vertex_count(),
+            indices,
+            |c| corner_next[c] as usize,
+            |c| corner_faces[c] as usize,
+        )?;
         Ok(Topology {
             adjacency,
             corner_faces,
@@ -170,12 +174,13 @@ impl Topology {
         self.edge_face_count(e) > 2
     }
 
-    /// The edge between vertices `a` and `b`, if there is one.
+    /// The edge between vertices `a` and `b`, if there is one (the first,
+    /// where a face repeating a vertex gives the pair more than one).
     pub fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
-        self.adjacency
-            .edges
-            .binary_search(&[a.min(b), a.max(b)])
-            .ok()
+        let pair = [a.min(b), a.max(b)];
+        let edges = &self.adjacency.edges;
+        let first = edges.partition_point(|&e| e < pair);
+        (edges.get(first) == Some(&pair)).then_some(first)
     }
 
     /// The corners at vertex `v`, ascending.
