@@ -81,17 +81,18 @@ class View {
 /** An immutable polygon mesh owning a WeftMesh handle (freed with weft_mesh_free). */
 class Mesh {
  public:
-  /** weft_mesh_new: copies the buffers (3 × vertex_count doubles, face_count sizes, index_count indices). */
+  /** weft_mesh_new_ex: copies the buffers (3 × vertex_count doubles, face_count sizes, index_count
+   *  indices); flags 0 or WEFT_MESH_ALLOW_REPEATED_VERTICES. */
   Mesh(const double* positions, std::size_t vertex_count, const uint32_t* face_sizes, std::size_t face_count,
-       const uint32_t* face_indices, std::size_t index_count) {
-    detail::check(
-        weft_mesh_new(positions, vertex_count, face_sizes, face_count, face_indices, index_count, &handle_));
+       const uint32_t* face_indices, std::size_t index_count, uint32_t flags = 0) {
+    detail::check(weft_mesh_new_ex(positions, vertex_count, face_sizes, face_count, face_indices, index_count, flags,
+                                   &handle_));
   }
-  /** weft_mesh_new from vectors: positions holds x, y, z per vertex. */
+  /** The same from vectors: positions holds x, y, z per vertex. */
   Mesh(const std::vector<double>& positions, const std::vector<uint32_t>& face_sizes,
-       const std::vector<uint32_t>& face_indices)
+       const std::vector<uint32_t>& face_indices, uint32_t flags = 0)
       : Mesh(positions.data(), detail::triples(positions, "positions"), face_sizes.data(), face_sizes.size(),
-             face_indices.data(), face_indices.size()) {}
+             face_indices.data(), face_indices.size(), flags) {}
 
   /** Takes ownership of a handle from the C API (NULL makes an empty, moved-from-like Mesh). */
   static Mesh adopt(WeftMesh* handle) noexcept { return Mesh(handle); }

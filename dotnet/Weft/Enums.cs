@@ -171,6 +171,8 @@ namespace Weft
         internal const uint VersionMinor = 1;
         /// <summary>Patch version of the library this header belongs to.</summary>
         internal const uint VersionPatch = 0;
+        /// <summary><c>weft_mesh_new_ex</c> flag: accept faces that name a vertex more than once (<c>0 1 1 2</c>, <c>0 1 2 1 3</c>). Subdivision treats them as OpenSubdiv does, as non-manifold topology: a degenerate edge <c>[v, v]</c>, and each further time a face meets a vertex pair, get an edge of their own, infinitely sharp. Other operations take such faces as they are.</summary>
+        internal const uint MeshAllowRepeatedVertices = 1;
         /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
         internal const double SharpnessInfinite = 10.0;
         /// <summary>How many reserved fields end a <c>WeftSubdivisionOptions</c>.</summary>

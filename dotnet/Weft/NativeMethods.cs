@@ -103,6 +103,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_mesh_new(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, out WeftMeshHandle outMesh);
 
+        /// <summary>As <c>weft_mesh_new</c>, with <c>flags</c> (0, or WEFT_MESH_ALLOW_REPEATED_VERTICES) saying what else to accept. An unknown flag fails with WEFT_STATUS_INVALID_ARGUMENT.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_new_ex(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, uint flags, out WeftMeshHandle outMesh);
+
         /// <summary>Frees a mesh made by Weft. NULL is ignored.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern void weft_mesh_free(IntPtr mesh);

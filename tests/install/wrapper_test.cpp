@@ -73,6 +73,13 @@ static void test_mesh_and_views() {
                "a face naming vertex 3 of 3");
   expect_error(WEFT_STATUS_COUNT_MISMATCH, [] { weft::Mesh({0, 0, 0, 1}, {}, {}); },
                "positions not a multiple of 3");
+
+  // A face naming a vertex twice: refused unless the flag allows it.
+  const std::vector<double> grid = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  expect_error(WEFT_STATUS_REPEATED_INDEX, [&] { weft::Mesh(grid, {5, 4}, {0, 1, 1, 4, 3, 1, 2, 5, 4}); },
+               "a face naming vertex 1 twice");
+  weft::Mesh repeating(grid, {5, 4}, {0, 1, 1, 4, 3, 1, 2, 5, 4}, WEFT_MESH_ALLOW_REPEATED_VERTICES);
+  CHECK(repeating.face_count() == 2 && weft::catmull_clark(repeating, 1).vertex_count() == 16);
 }
 
 static void test_subdivision() {
