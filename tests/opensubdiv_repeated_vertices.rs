@@ -1,9 +1,10 @@
 //! Faces that name a vertex more than once (`0 1 1 2`, `0 1 2 1 3`),
 //! accepted when the mesh is built with
 //! `MeshOptions::allow_repeated_vertices`, against OpenSubdiv 3.5, which
-//! subdivides them as non-manifold topology: the same refined faces,
-//! corner for corner, and the same points, at levels 1-3 in every
-//! naked-edge mode, with creases, for Catmull-Clark and Loop.
+//! subdivides them as non-manifold topology: the same refined faces and
+//! points, limit points and face-varying values (smooth and linear), at
+//! levels 1-3 in every naked-edge mode, with creases, for Catmull-Clark
+//! and Loop.
 //!
 //! Refined points of such faces coincide (the point of a degenerate edge
 //! sits on its vertex), so points are compared as a multiset and faces as
@@ -14,11 +15,13 @@ mod support;
 use support::{bumped, osd_options, to_ref, tolerance};
 use weft::mesh::shapes;
 use weft::subdivide::{
-    parent_faces_with, refined_counts_with, subdivide_with, Crease, Creasing, NakedEdges, Refiner,
-    Scheme, Subdivider, SubdivisionOptions,
+    parent_faces_with, refined_counts_with, subdivide_with, Crease, Creasing, FaceVaryingLinear,
+    NakedEdges, Refiner, Scheme, Subdivider, SubdivisionOptions,
 };
 use weft::{DVec3, Mesh, MeshError, MeshOptions};
-use weft_reference::{opensubdiv_refine, OsdOptions, OsdRefiner};
+use weft_reference::{
+    opensubdiv_refine, opensubdiv_refine_face_varying, FVarLinear, OsdOptions, OsdRefiner,
+};
 
 const ALLOW: MeshOptions = MeshOptions {
     allow_repeated_vertices: true,
@@ -127,6 +130,7 @@ fn assert_same_points_and_faces(
     what: &str,
 ) -> usize {
     assert_eq!(ours.0.len(), theirs.0.len(), "{what}: vertex counts");
+    assert!(!theirs.0.is_empty(), "{what}: no points");
     assert_eq!(ours.1.len(), theirs.1.len(), "{what}: face counts");
     let our_clusters = clusters(ours.0, theirs.0, tol, what);
     let their_clusters = clusters(theirs.0, theirs.0, tol, what);
@@ -166,12 +170,9 @@ fn assert_same_points_and_faces(
         cycles(theirs.1, &their_clusters),
         "{what}: faces"
     );
-    let distinct = counted(&their_clusters)
-        .windows(2)
-        .filter(|w| w[0] != w[1])
-        .count()
-        + 1;
-    theirs.0.len() - distinct
+    let mut distinct = counted(&their_clusters);
+    distinct.dedup();
+    theirs.0.len() - distinct.len()
 }
 
 fn points(flat: &[f64]) -> Vec<DVec3> {
@@ -253,6 +254,67 @@ fn assert_equals_opensubdiv(
         tol,
         &format!("{what} limit"),
     );
+
+    // Face-varying values, one per vertex, smooth and linear: per refined
+    // face, the cycle of its corners' values.
+    let values: Vec<f64> = cage
+        .positions()
+        .iter()
+        .flat_map(|p| [p.x + 0.3 * p.z, p.y - 0.2 * p.z])
+        .collect();
+    let indices = cage.face_indices().to_vec();
+    let linear_rules = [
+        (FaceVaryingLinear::Smooth, FVarLinear::None),
+        (FaceVaryingLinear::All, FVarLinear::All),
+    ];
+    // (Boundary "none" can leave no face at all.)
+    for (linear, their_linear) in linear_rules.into_iter().filter(|_| ours.face_count() > 0) {
+        let ours_values = subdivider
+            .face_varying(&values, 2, &indices, linear)
+            .unwrap();
+        let with_fvar = OsdOptions {
+            fvar_linear: their_linear,
+            ..osd.clone()
+        };
+        let (their_values, their_indices) =
+            opensubdiv_refine_face_varying(&reference_cage, &with_fvar, levels, &values, &indices)
+                .unwrap();
+        let as_points = |flat: &[f64]| -> Vec<DVec3> {
+            flat.chunks_exact(2)
+                .map(|uv| DVec3::new(uv[0], uv[1], 0.0))
+                .collect()
+        };
+        // Ours are per corner; theirs are indexed by corner.
+        let corner_faces = |sizes: &[u32]| -> Vec<Vec<u32>> {
+            let mut next = 0u32;
+            sizes
+                .iter()
+                .map(|&n| {
+                    next += n;
+                    (next - n..next).collect()
+                })
+                .collect()
+        };
+        let our_corners = corner_faces(ours.face_sizes());
+        let their_corners = corner_faces(&theirs.face_sizes);
+        let their_corner_values: Vec<f64> = their_indices
+            .iter()
+            .flat_map(|&i| {
+                [
+                    their_values[2 * i as usize],
+                    their_values[2 * i as usize + 1],
+                ]
+            })
+            .collect();
+        let ours_refs: Vec<&[u32]> = our_corners.iter().map(Vec::as_slice).collect();
+        let theirs_refs: Vec<&[u32]> = their_corners.iter().map(Vec::as_slice).collect();
+        assert_same_points_and_faces(
+            (&as_points(&ours_values), &ours_refs),
+            (&as_points(&their_corner_values), &theirs_refs),
+            tol,
+            &format!("{what} face-varying {linear:?}"),
+        );
+    }
     coincident
 }
 
