@@ -14,6 +14,7 @@ mod demo;
 mod files;
 mod info;
 mod mend;
+mod nurbs;
 mod progress;
 mod subdivide;
 mod toolbar;
@@ -109,6 +110,18 @@ weft subdivide block.ply block3.obj --levels 3 --creases block-creases.txt --lim
 weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaikin"
     )]
     Subdivide(subdivide::Subdivide),
+    /// Writes the Catmull-Clark limit surface of a cage as bicubic B-spline
+    /// patches in a STEP file (AP214), one per face of the cage refined
+    /// --isolation levels, with the options of `subdivide`; prints how many
+    /// patches are exact and the largest error of the others.
+    #[command(
+        after_help = "Patches away from extraordinary vertices and crease ends are the limit surface \
+exactly (bicubic B-splines); the few touching one are fitted to exact limit points, watertight \
+with their neighbours, and their largest distance from the limit is reported.\n\n\
+Examples:\n  weft nurbs cage.obj part.step --isolation 2 --naked-edges smooth\n  \
+weft nurbs block.obj block.step --isolation 3 --creases block-creases.txt"
+    )]
+    Nurbs(nurbs::Nurbs),
     /// Joins meshes into one and merges vertices closer than the tolerance;
     /// faces that collapse are removed and counted.
     #[command(
@@ -275,6 +288,7 @@ impl Command {
             | Command::Flip { files, .. }
             | Command::Triangulate { files }
             | Command::Convert { files, .. } => vec![files.output.as_path()],
+            Command::Nurbs(nurbs::Nurbs { output, .. }) => vec![output.as_path()],
             Command::TNodes { repair, .. } => repair.iter().map(PathBuf::as_path).collect(),
             // The demo creates its folder, and says so when it cannot.
             Command::Info { .. } | Command::Demo { .. } => Vec::new(),
@@ -360,6 +374,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             Ok(())
         }
         Command::Subdivide(args) => subdivide::run(cli, args),
+        Command::Nurbs(args) => nurbs::run(cli, args),
         Command::Weld {
             inputs,
             output,
