@@ -52,9 +52,9 @@ impl BezierPatch {
     pub fn point(&self, u: f64, v: f64) -> DVec3 {
         let (bu, bv) = (bernstein(u), bernstein(v));
         let mut p = DVec3::ZERO;
-        for i in 0..4 {
-            for j in 0..4 {
-                p += bu[i] * bv[j] * self.control[i][j];
+        for (row, &wu) in self.control.iter().zip(&bu) {
+            for (&c, &wv) in row.iter().zip(&bv) {
+                p += wu * wv * c;
             }
         }
         p
@@ -318,10 +318,11 @@ fn fit_patch(edges: &[[DVec3; 4]; 4], sample: impl Fn(usize, usize) -> DVec3) ->
 /// every patch).
 fn solve4(mut m: [[f64; 4]; 4], mut r: [DVec3; 4]) -> [DVec3; 4] {
     for k in 0..4 {
+        let pivot = m[k];
         for i in k + 1..4 {
-            let f = m[i][k] / m[k][k];
-            for j in k..4 {
-                m[i][j] -= f * m[k][j];
+            let f = m[i][k] / pivot[k];
+            for (x, &p) in m[i][k..].iter_mut().zip(&pivot[k..]) {
+                *x -= f * p;
             }
             r[i] -= f * r[k];
         }
