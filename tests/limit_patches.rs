@@ -64,9 +64,9 @@ fn patches_of_a_regular_torus_are_its_b_spline_surface() {
                     let (u, v) = path.iter().rev().fold(local, |p, &c| in_parent(c, p));
                     let (bu, bv) = (b_spline(u), b_spline(v));
                     let mut exact = DVec3::ZERO;
-                    for x in 0..4 {
-                        for y in 0..4 {
-                            exact += bu[x] * bv[y] * point(i + nu - 1 + x, j + nv - 1 + y);
+                    for (x, wu) in bu.iter().enumerate() {
+                        for (y, wv) in bv.iter().enumerate() {
+                            exact += wu * wv * point(i + nu - 1 + x, j + nv - 1 + y);
                         }
                     }
                     let ours = patch.point(local.0, local.1);
