@@ -225,10 +225,11 @@ fn bad_usage_exits_with_2() {
 }
 
 /// Every subcommand of `weft`, as `weft --help` lists them.
-const COMMANDS: [&str; 29] = [
+const COMMANDS: [&str; 30] = [
     "info",
     "render",
     "subdivide",
+    "nurbs",
     "weld",
     "cull-adjacent",
     "flip",
@@ -364,7 +365,7 @@ const fn reader(
 }
 
 /// Every command that reads a mesh file.
-const READERS: [Reader; 27] = [
+const READERS: [Reader; 28] = [
     reader(
         &["info", "IN"],
         None,
@@ -388,6 +389,12 @@ const READERS: [Reader; 27] = [
         Some("obj"),
         &["--scheme", "butterfly"],
         "--scheme",
+    ),
+    reader(
+        &["nurbs", "IN", "OUT", "--isolation", "1"],
+        Some("step"),
+        &["--isolation", "0"],
+        "--isolation",
     ),
     reader(
         &["weld", "IN", "-o", "OUT"],
@@ -557,7 +564,7 @@ fn every_reading_command_fails_cleanly() {
     // A folder cannot be read as a file: it stands in for an unreadable file,
     // since permissions do not stop a test run as root.
     std::fs::create_dir(dir.join("folder.obj")).unwrap();
-    for ext in ["obj", "ply", "off", "png"] {
+    for ext in ["obj", "ply", "off", "png", "step"] {
         std::fs::create_dir(dir.join(format!("taken.{ext}"))).unwrap();
     }
     let before = listing(&dir);
@@ -795,6 +802,70 @@ fn subdivide_runs_each_scheme_and_mode() {
         stderr(&o)
     );
     assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn nurbs_writes_the_limit_surface_as_step_and_reports_its_error() {
+    let dir = folder("nurbs");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    let text = succeeds(
+        &dir,
+        &[
+            "nurbs",
+            "cube.obj",
+            "cube.step",
+            "--isolation",
+            "2",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    assert_mentions(
+        &text,
+        &[
+            "isolation levels  2",
+            "patches           96",
+            "exact             72",
+            "approximate       24",
+            "largest error     ",
+        ],
+    );
+    let step = std::fs::read_to_string(dir.join("cube.step")).unwrap();
+    assert!(step.starts_with("ISO-10303-21;") && step.contains("AUTOMOTIVE_DESIGN"));
+    assert_eq!(step.matches("B_SPLINE_SURFACE_WITH_KNOTS(").count(), 96);
+    // More isolation, a smaller error.
+    let error = |text: &str| -> f64 {
+        let line = text.lines().find(|l| l.contains("largest error")).unwrap();
+        line.split_whitespace().nth(2).unwrap().parse().unwrap()
+    };
+    let finer = succeeds(
+        &dir,
+        &["nurbs", "cube.obj", "cube3.step", "--isolation", "3"],
+    );
+    assert!(error(&finer) < 0.6 * error(&text), "{text}\n{finer}");
+
+    // Loop has no tensor-product patches; a hole past the faces: nothing written.
+    let before = listing(&dir);
+    for (args, expected) in [
+        (
+            &["--scheme", "loop"][..],
+            "NURBS patches need --scheme catmull-clark",
+        ),
+        (&["--hole", "6"][..], "--hole 6: cube.obj has 6 faces"),
+    ] {
+        let mut all = vec!["nurbs", "cube.obj", "other.step"];
+        all.extend_from_slice(args);
+        let o = weft(&dir, &all);
+        assert_exit(&o, 1);
+        assert_mentions(&stderr(&o), &[expected]);
+        assert_eq!(listing(&dir), before, "{args:?}");
+    }
+    let o = weft(&dir, &["nurbs", "cube.obj", "cube.obj"]);
+    assert_exit(&o, 2);
+    assert_mentions(
+        &stderr(&o),
+        &["expected a STEP file ending in .step or .stp"],
+    );
 }
 
 #[test]
