@@ -65,7 +65,7 @@ ENUMS = [
 # The other constants, in NativeConstants.
 CONSTANTS = {"WEFT_SHARPNESS_INFINITE": "SharpnessInfinite", "WEFT_DEFAULT_WELD_TOLERANCE": "DefaultWeldTolerance",
              "WEFT_SUBDIVISION_OPTIONS_RESERVED": "SubdivisionOptionsReserved",
-             "WEFT_MESH_ALLOW_REPEATED_VERTICES": "MeshAllowRepeatedVertices",
+             "WEFT_MESH_ALLOW_REPEATED_VERTICES": "MeshAllowRepeatedVertices", "WEFT_PATCH_DOUBLES": "PatchDoubles",
              "WEFT_VERSION_MAJOR": "VersionMajor", "WEFT_VERSION_MINOR": "VersionMinor", "WEFT_VERSION_PATCH": "VersionPatch"}
 
 

@@ -123,6 +123,11 @@
 #define WEFT_SUBDIVISION_OPTIONS_RESERVED 8
 
 /**
+ * Doubles per patch in `weft_limit_patches`'s control points: 4 × 4 points of 3.
+ */
+#define WEFT_PATCH_DOUBLES 48
+
+/**
  * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
  * tolerance (a millimetre in a model in metres). It can collapse the faces
  * of small or dense meshes: without a tolerance of the host's own, prefer
@@ -1319,6 +1324,38 @@ WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle
  * `vertex_map_capacity` writable indices.
  */
 WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
+
+/**
+ * The limit surface of the Catmull-Clark subdivision `options` describes
+ * (its scheme must be WEFT_SCHEME_CATMULL_CLARK) as one bicubic Bézier
+ * patch per face of `cage` refined `isolation` levels (1 to 8), in the
+ * refined faces' order, `weft_subdivision_counts_ex(cage, options,
+ * isolation, ...)` of them.
+ *
+ * Patch p's control point i along u and j along v (u from the refined
+ * face's first corner towards its second, v towards its last, so du × dv
+ * points out of a counter-clockwise face) is `out_control_points[48 p +
+ * 12 i + 3 j + k]`, k = x, y, z: a B-spline surface of degree 3 × 3 with
+ * knots 0, 0, 0, 0, 1, 1, 1, 1 in each direction. Patches that meet at an
+ * edge share its boundary control points bit for bit. Where the limit
+ * surface is a bicubic B-spline (away from extraordinary vertices, crease
+ * ends and corners) a patch is exact; the others are fitted to exact limit
+ * points. `out_errors[p]` is patch p's largest distance from the limit
+ * points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
+ * lies on; both may be NULL. `*out_patch_count` receives the number of
+ * patches and `*out_max_error` (may be NULL) the largest error.
+ *
+ * `capacity` is the room in patches: `out_control_points` holds 48 ×
+ * `capacity` doubles, `out_cage_faces` and `out_errors` `capacity` elements
+ * each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
+ * outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
+ * options fail as `weft_subdivide_ex`'s. Nothing is written on failure.
+ *
+ * # Safety
+ * `cage` and `options` are NULL or valid; each non-NULL output holds what
+ * `capacity` says; `out_patch_count` is writable.
+ */
+WeftStatus weft_limit_patches(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error);
 
 /**
  * Joins meshes into one: the vertices of each follow those of the meshes

@@ -177,6 +177,8 @@ namespace Weft
         internal const double SharpnessInfinite = 10.0;
         /// <summary>How many reserved fields end a <c>WeftSubdivisionOptions</c>.</summary>
         internal const uint SubdivisionOptionsReserved = 8;
+        /// <summary>Doubles per patch in <c>weft_limit_patches</c>'s control points: 4 × 4 points of 3.</summary>
+        internal const uint PatchDoubles = 48;
         /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
         internal const double DefaultWeldTolerance = 0.001;
     }

@@ -31,6 +31,41 @@ namespace Weft.Tests
             t.Run("disposed and null meshes are refused", DisposedMesh);
             t.Run("holes leave their faces out, keep their vertices, and the counts and parents agree", Holes);
             t.Run("naked edges none and smooth triangles reach the library; bad values are named", NoneAndTriangles);
+            t.Run("limit patches: one per refined face, corners on the limit, exact away from the cube's corners", LimitPatchesOfCube);
+        }
+
+        private static void LimitPatchesOfCube()
+        {
+            var options = new SubdivisionOptions(NakedEdges.Smooth);
+            using (var cube = Shapes.Cube())
+            using (var refined = Subdivision.Subdivide(cube, Scheme.CatmullClark, 2, options))
+            {
+                LimitPatches patches = Subdivision.LimitPatches(cube, options, 2);
+                t.Equal(96, patches.Count, "patches");
+                t.Equal(48 * 96, patches.ControlPoints.Length, "control points");
+                int exact = 0;
+                foreach (double e in patches.Errors) if (e < 1e-12) exact++;
+                t.Equal(72, exact, "exact patches: all but the 3 at each of the 8 corners");
+                t.True(patches.MaxError > 1e-4 && patches.MaxError < 1e-2, "the corners' error: " + patches.MaxError);
+                t.Equal(5u, patches.CageFaces[95], "the last patch lies on face 5");
+                // Corner (0, 0) of patch p is the limit point of refined face p's first corner.
+                LimitSurface limit = Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 2, options);
+                uint[] corners = refined.GetFaceIndices();
+                double worst = 0;
+                for (int p = 0; p < 96; p++)
+                    for (int k = 0; k < 3; k++)
+                        worst = Math.Max(worst, Math.Abs(patches.ControlPoints[48 * p + k] - limit.Positions[3 * corners[4 * p] + k]));
+                t.True(worst < 1e-14, "patch corners on the limit: " + worst);
+                try
+                {
+                    Subdivision.LimitPatches(cube, options, 0);
+                    t.True(false, "isolation 0 was accepted");
+                }
+                catch (WeftException e)
+                {
+                    t.Equal(WeftStatus.InvalidArgument, e.Status, "isolation 0");
+                }
+            }
         }
 
         private static SubdivisionOptions Hard(uint[] pairs)

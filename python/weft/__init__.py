@@ -49,6 +49,7 @@ from ._ops import (
     join,
     laplacian_hc_smooth,
     laplacian_smooth,
+    limit_patches,
     loop,
     match_lines_to_edges,
     match_points_to_vertices,

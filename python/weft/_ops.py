@@ -318,6 +318,36 @@ def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed",
     return positions, normals
 
 
+def limit_patches(mesh, isolation=2, naked_edges="fixed", creases=None, corners=None, creasing="uniform", holes=None,
+                  triangles="catmark"):
+    """The Catmull-Clark limit surface as bicubic Bézier patches, one per
+    face of ``mesh`` refined ``isolation`` levels (1 to 8), what ``weft
+    nurbs`` writes as STEP: ``(control_points, cage_faces, errors)``.
+    ``control_points[p, i, j]`` is patch p's control point i along u and j
+    along v (a B-spline of degree 3 × 3, knots 0, 0, 0, 0, 1, 1, 1, 1), an
+    (n, 4, 4, 3) array; ``cage_faces[p]`` the face of ``mesh`` it lies on;
+    ``errors[p]`` its largest distance from the limit surface (0 to rounding
+    where the surface is a bicubic B-spline, away from extraordinary
+    vertices)::
+
+        >>> control, faces, errors = weft.limit_patches(weft.box(1, 1, 1), isolation=2)
+        >>> control.shape, int((errors < 1e-12).sum())
+        ((96, 4, 4, 3), 72)
+    """
+    options = _Options("catmull-clark", naked_edges, creases, corners, creasing, holes, triangles)
+    isolation = _count(isolation, "isolation")
+    _, count, _ = subdivision_counts(mesh, "catmull-clark", isolation, naked_edges, holes)
+    control = np.empty((count, 4, 4, 3), dtype=np.float64)
+    faces = np.empty(count, dtype=np.uint32)
+    errors = np.empty(count, dtype=np.float64)
+    written = ctypes.c_size_t()
+    lib.weft_limit_patches(
+        check_mesh(mesh), options.ref, isolation, _arrays.address(control), _arrays.address(faces),
+        _arrays.address(errors), count, ctypes.byref(written), None
+    )
+    return control, faces, errors
+
+
 def subdivision_face_count(mesh, scheme="catmull-clark", levels=1):
     """The number of faces ``levels`` steps of ``scheme`` make, without subdividing::
 

@@ -26,6 +26,8 @@ pub mod refiner;
 pub mod creases;
 // Creases found on a mesh: unwelded seams and folds.
 pub mod crease_edges;
+// The limit surface as bicubic patches, for NURBS export.
+pub mod limit_patches;
 // Join, weld, T-nodes, cull, normals, planarity.
 pub mod mend;
 // Unify, turn outward, flip.
