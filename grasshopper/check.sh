@@ -10,8 +10,8 @@
 #     out/ref, a misspelled member, a wrong pointer type and (against the
 #     Rhino 7 stubs) a Rhino 8-only member;
 #  3. runs the Rhino-free conversion tests on Mono;
-#  4. replays RhinoMeshes' calls on openNURBS (rhino3dm 8.35.0 from PyPI,
-#     installed into build/py);
+#  4. replays RhinoMeshes' and RhinoSurfaces' calls on openNURBS (rhino3dm
+#     8.35.0 from PyPI, installed into build/py);
 #  5. assembles the three Yak layouts with package.sh (the Linux library
 #     standing in for the Windows and Mac ones) and checks every file and
 #     manifest, and that the project references RhinoCommon 7.x for net48
@@ -179,6 +179,11 @@ if PYTHONPATH="$build/py" python3 "$here/tests/replay_rhino_meshes.py" "$here/We
   pass "RhinoMeshes replayed on openNURBS (rhino3dm $rhino3dm_version)"
 else
   fail "RhinoMeshes replayed on openNURBS (rhino3dm $rhino3dm_version)"
+fi
+if PYTHONPATH="$build/py" python3 "$here/tests/replay_rhino_surfaces.py" "$here/Weft.Grasshopper/RhinoSurfaces.cs"; then
+  pass "RhinoSurfaces replayed on openNURBS (rhino3dm $rhino3dm_version)"
+else
+  fail "RhinoSurfaces replayed on openNURBS (rhino3dm $rhino3dm_version)"
 fi
 
 # 5. The Yak layouts, with the Linux library standing in for weft.dll and libweft.dylib.

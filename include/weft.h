@@ -1343,7 +1343,9 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
  * points. `out_errors[p]` is patch p's largest distance from the limit
  * points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
  * lies on; both may be NULL. `*out_patch_count` receives the number of
- * patches and `*out_max_error` (may be NULL) the largest error.
+ * patches, `*out_max_error` (may be NULL) the largest error and
+ * `*out_exact_count` (may be NULL) how many patches are exact (an error
+ * within 1e-12 of the cage's bounding-box diagonal).
  *
  * `capacity` is the room in patches: `out_control_points` holds 48 ×
  * `capacity` doubles, `out_cage_faces` and `out_errors` `capacity` elements
@@ -1355,7 +1357,7 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
  * `cage` and `options` are NULL or valid; each non-NULL output holds what
  * `capacity` says; `out_patch_count` is writable.
  */
-WeftStatus weft_limit_patches(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error);
+WeftStatus weft_limit_patches(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error, size_t *out_exact_count);
 
 /**
  * Joins meshes into one: the vertices of each follow those of the meshes

@@ -31,6 +31,8 @@ namespace Weft
         public double[] Errors { get; internal set; }
         /// <summary>The largest of <see cref="Errors"/>.</summary>
         public double MaxError { get; internal set; }
+        /// <summary>How many patches are exact: an error within 1e-12 of the cage's bounding-box diagonal.</summary>
+        public int ExactCount { get; internal set; }
     }
 
     public static partial class Subdivision
@@ -53,14 +55,14 @@ namespace Weft
             var points = new double[checked(NativeConstants.PatchDoubles * count)];
             var faces = new uint[count];
             var errors = new double[count];
-            UIntPtr written;
+            UIntPtr written, exact;
             var maxError = new double[1];
             uint status;
             using (SubdivisionOptions.Pinned pinned = SubdivisionOptions.Pin(options, Scheme.CatmullClark))
             {
                 NativeSubdivisionOptions native = pinned.Native;
                 status = NativeMethods.weft_limit_patches(
-                    handle, ref native, levels, points, faces, errors, (UIntPtr)count, out written, maxError);
+                    handle, ref native, levels, points, faces, errors, (UIntPtr)count, out written, maxError, out exact);
             }
             WeftException.Check(status);
             return new LimitPatches
@@ -71,6 +73,7 @@ namespace Weft
                 CageFaces = faces,
                 Errors = errors,
                 MaxError = maxError[0],
+                ExactCount = Arguments.ToInt(exact),
             };
         }
     }

@@ -257,7 +257,7 @@ namespace Weft
 
         /// <summary>The limit surface of the Catmull-Clark subdivision <c>options</c> describes (its scheme must be WEFT_SCHEME_CATMULL_CLARK) as one bicubic Bézier patch per face of <c>cage</c> refined <c>isolation</c> levels (1 to 8), in the refined faces' order, <c>weft_subdivision_counts_ex(cage, options, isolation, ...)</c> of them.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
-        internal static extern uint weft_limit_patches(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint isolation, [Out] double[] outControlPoints, [Out] uint[] outCageFaces, [Out] double[] outErrors, UIntPtr capacity, out UIntPtr outPatchCount, [Out] double[] outMaxError);
+        internal static extern uint weft_limit_patches(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint isolation, [Out] double[] outControlPoints, [Out] uint[] outCageFaces, [Out] double[] outErrors, UIntPtr capacity, out UIntPtr outPatchCount, [Out] double[] outMaxError, out UIntPtr outExactCount);
 
         /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

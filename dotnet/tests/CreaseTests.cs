@@ -46,6 +46,7 @@ namespace Weft.Tests
                 int exact = 0;
                 foreach (double e in patches.Errors) if (e < 1e-12) exact++;
                 t.Equal(72, exact, "exact patches: all but the 3 at each of the 8 corners");
+                t.Equal(72, patches.ExactCount, "the library's count of exact patches");
                 t.True(patches.MaxError > 1e-4 && patches.MaxError < 1e-2, "the corners' error: " + patches.MaxError);
                 t.Equal(5u, patches.CageFaces[95], "the last patch lies on face 5");
                 // Corner (0, 0) of patch p is the limit point of refined face p's first corner.

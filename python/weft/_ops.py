@@ -343,7 +343,7 @@ def limit_patches(mesh, isolation=2, naked_edges="fixed", creases=None, corners=
     written = ctypes.c_size_t()
     lib.weft_limit_patches(
         check_mesh(mesh), options.ref, isolation, _arrays.address(control), _arrays.address(faces),
-        _arrays.address(errors), count, ctypes.byref(written), None
+        _arrays.address(errors), count, ctypes.byref(written), None, None
     )
     return control, faces, errors
 

@@ -26,7 +26,9 @@ pub const WEFT_PATCH_DOUBLES: usize = 48;
 /// points. `out_errors[p]` is patch p's largest distance from the limit
 /// points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
 /// lies on; both may be NULL. `*out_patch_count` receives the number of
-/// patches and `*out_max_error` (may be NULL) the largest error.
+/// patches, `*out_max_error` (may be NULL) the largest error and
+/// `*out_exact_count` (may be NULL) how many patches are exact (an error
+/// within 1e-12 of the cage's bounding-box diagonal).
 ///
 /// `capacity` is the room in patches: `out_control_points` holds 48 ×
 /// `capacity` doubles, `out_cage_faces` and `out_errors` `capacity` elements
@@ -49,6 +51,7 @@ pub unsafe extern "C" fn weft_limit_patches(
     capacity: usize,
     out_patch_count: *mut usize,
     out_max_error: *mut f64,
+    out_exact_count: *mut usize,
 ) -> WeftStatus {
     // SAFETY: the pointers are as the `# Safety` section above requires;
     // each is checked for NULL before it is used.
@@ -112,6 +115,9 @@ pub unsafe extern "C" fn weft_limit_patches(
             *out_patch_count = count;
             if !out_max_error.is_null() {
                 *out_max_error = patches.max_error;
+            }
+            if !out_exact_count.is_null() {
+                *out_exact_count = patches.exact_count;
             }
             Ok(())
         })

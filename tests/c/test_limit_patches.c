@@ -25,14 +25,16 @@ static void test_patches_of_a_cube(void) {
   static double points[WEFT_PATCH_DOUBLES * 24];
   uint32_t faces[24];
   double errors[24], max_error = -1;
-  size_t vertices = 0, refined_faces = 0, indices = 0, count = 0, p;
+  size_t vertices = 0, refined_faces = 0, indices = 0, count = 0, exact = 99, p;
   int corner_on_limit = 1, faces_in_order = 1, errors_bounded = 1;
   double limit[3 * 26];
 
   CHECK_STATUS(weft_subdivision_counts_ex(cube, &options, 1, &vertices, &refined_faces, &indices), WEFT_STATUS_OK);
   CHECK(refined_faces == 24);
-  CHECK_STATUS(weft_limit_patches(cube, &options, 1, points, faces, errors, 24, &count, &max_error), WEFT_STATUS_OK);
-  CHECK(count == 24 && max_error > 1e-4 && max_error < 1e-2);
+  CHECK_STATUS(weft_limit_patches(cube, &options, 1, points, faces, errors, 24, &count, &max_error, &exact),
+               WEFT_STATUS_OK);
+  /* At isolation 1 every face of the cube touches a corner of valence 3. */
+  CHECK(count == 24 && exact == 0 && max_error > 1e-4 && max_error < 1e-2);
   /* Corner 0 of patch p is the limit point of refined face p's first corner. */
   CHECK_STATUS(weft_subdivide_limit(cube, &options, 1, limit, NULL, 3 * 26), WEFT_STATUS_OK);
   {
@@ -57,21 +59,21 @@ static void test_patches_of_a_cube(void) {
   /* Refusals: nothing written. */
   points[0] = 42;
   count = 7;
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 23, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 23, &count, NULL, NULL),
                    WEFT_STATUS_BUFFER_TOO_SMALL, "room for 23 elements but 24 are needed");
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 0, points, NULL, NULL, 24, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 0, points, NULL, NULL, 24, &count, NULL, NULL),
                    WEFT_STATUS_INVALID_ARGUMENT, "isolation is 0");
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 9, points, NULL, NULL, 24, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 9, points, NULL, NULL, 24, &count, NULL, NULL),
                    WEFT_STATUS_INVALID_ARGUMENT, "isolation is 9");
   options.scheme = WEFT_SCHEME_LOOP;
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, &count, NULL, NULL),
                    WEFT_STATUS_INVALID_ARGUMENT, "WEFT_SCHEME_CATMULL_CLARK");
   options.scheme = WEFT_SCHEME_CATMULL_CLARK;
-  CHECK_FAILS_WITH(weft_limit_patches(NULL, &options, 1, points, NULL, NULL, 24, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(NULL, &options, 1, points, NULL, NULL, 24, &count, NULL, NULL),
                    WEFT_STATUS_NULL_POINTER, "cage");
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, NULL, NULL, NULL, 24, &count, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, NULL, NULL, NULL, 24, &count, NULL, NULL),
                    WEFT_STATUS_NULL_POINTER, "out_control_points");
-  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, NULL, NULL),
+  CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, NULL, NULL, NULL),
                    WEFT_STATUS_NULL_POINTER, "out_patch_count");
   CHECK(points[0] == 42 && count == 7);
   weft_mesh_free(cube);
