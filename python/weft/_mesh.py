@@ -196,16 +196,18 @@ def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
     if not isinstance(allow_repeated_vertices, bool):
         raise TypeError(f"allow_repeated_vertices must be True or False, not {allow_repeated_vertices!r}")
     handle = ctypes.c_void_p()
-    lib.weft_mesh_new_ex(
+    buffers = (
         _arrays.address(positions),
         positions.shape[0],
         _arrays.address(sizes),
         sizes.size,
         _arrays.address(indices),
         indices.size,
-        1 if allow_repeated_vertices else 0,
-        ctypes.byref(handle),
     )
+    if allow_repeated_vertices:
+        lib.weft_mesh_new_ex(*buffers, 1, ctypes.byref(handle))  # WEFT_MESH_ALLOW_REPEATED_VERTICES
+    else:
+        lib.weft_mesh_new(*buffers, ctypes.byref(handle))
     return handle.value
 
 
