@@ -1348,7 +1348,7 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
  * within 1e-12 of the cage's bounding-box diagonal).
  *
  * `capacity` is the room in patches: `out_control_points` holds 48 ×
- * `capacity` doubles, `out_cage_faces` and `out_errors` `capacity` elements
+ * `capacity` doubles (it may be NULL when `capacity` is 0), `out_cage_faces` and `out_errors` `capacity` elements
  * each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
  * outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
  * options fail as `weft_subdivide_ex`'s. Nothing is written on failure.

@@ -300,6 +300,34 @@ inline LimitSurface subdivide_limit(const Mesh& mesh, const SubdivisionOptions& 
   return limit;
 }
 
+/** weft_limit_patches: the Catmull-Clark limit surface as bicubic Bézier patches. */
+struct LimitPatches {
+  /** 48 doubles per patch: control point i along u and j along v of patch p at 48 p + 12 i + 3 j. */
+  std::vector<double> control_points;
+  /** The cage face each patch lies on. */
+  std::vector<uint32_t> cage_faces;
+  /** Each patch's largest distance from the limit surface. */
+  std::vector<double> errors;
+  double max_error = 0;
+  /** How many patches are exact (the limit surface to rounding). */
+  std::size_t exact_count = 0;
+  std::size_t size() const noexcept { return cage_faces.size(); }
+};
+
+/** weft_limit_patches: one patch per face of `cage` refined `isolation` levels (1 to 8), Catmull-Clark. */
+inline LimitPatches limit_patches(const Mesh& cage, const SubdivisionOptions& options, uint32_t isolation) {
+  const WeftSubdivisionOptions c = options.c_options();
+  LimitPatches patches;
+  const std::size_t count = subdivision_counts(cage, options, isolation).face_count;
+  patches.control_points.resize(WEFT_PATCH_DOUBLES * count);
+  patches.cage_faces.resize(count);
+  patches.errors.resize(count);
+  std::size_t written = 0;
+  detail::check(weft_limit_patches(cage.get(), &c, isolation, patches.control_points.data(), patches.cage_faces.data(),
+                                   patches.errors.data(), count, &written, &patches.max_error, &patches.exact_count));
+  return patches;
+}
+
 /** A subdivision planned once for one cage topology, re-evaluated for new positions (owns a WeftRefiner). */
 class Refiner {
  public:

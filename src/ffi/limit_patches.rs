@@ -31,7 +31,7 @@ pub const WEFT_PATCH_DOUBLES: usize = 48;
 /// within 1e-12 of the cage's bounding-box diagonal).
 ///
 /// `capacity` is the room in patches: `out_control_points` holds 48 ×
-/// `capacity` doubles, `out_cage_faces` and `out_errors` `capacity` elements
+/// `capacity` doubles (it may be NULL when `capacity` is 0), `out_cage_faces` and `out_errors` `capacity` elements
 /// each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
 /// outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
 /// options fail as `weft_subdivide_ex`'s. Nothing is written on failure.
@@ -63,7 +63,7 @@ pub unsafe extern "C" fn weft_limit_patches(
                     "out_patch_count is NULL",
                 ));
             }
-            if out_control_points.is_null() {
+            if out_control_points.is_null() && capacity > 0 {
                 return Err(Failure::new(
                     WeftStatus::NullPointer,
                     "out_control_points is NULL",

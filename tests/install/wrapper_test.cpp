@@ -109,6 +109,14 @@ static void test_subdivision() {
   expect_error(WEFT_STATUS_INVALID_ARGUMENT, [&] { weft::subdivide(cage, not_an_edge, 1); },
                "a crease on the cube's diagonal");
 
+  // The limit surface as patches: 96 at isolation 2, all exact but the 3 at each corner.
+  weft::SubdivisionOptions smooth_cc;
+  smooth_cc.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
+  weft::LimitPatches patches = weft::limit_patches(cage, smooth_cc, 2);
+  CHECK(patches.size() == 96 && patches.exact_count == 72 && patches.max_error > 1e-4);
+  CHECK(patches.control_points.size() == 48 * 96 && patches.cage_faces[95] == 5);
+  expect_error(WEFT_STATUS_INVALID_ARGUMENT, [&] { weft::limit_patches(cage, smooth_cc, 9); }, "isolation 9");
+
   std::vector<uint32_t> parents = weft::parent_faces(cage, WEFT_SCHEME_CATMULL_CLARK, 1);
   CHECK(parents.size() == 24 && parents[0] == 0 && parents[3] == 0 && parents[4] == 1 && parents[23] == 5);
 
