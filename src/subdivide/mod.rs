@@ -58,6 +58,7 @@ mod gathers;
 mod holes;
 mod level;
 mod limit;
+mod limit_surface;
 mod loop_subdivision;
 mod point_rules;
 mod refiner;
@@ -75,6 +76,7 @@ pub use creases::{
 };
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
+pub use limit_surface::LimitSurface;
 pub use refiner::Refiner;
 use refiner::Step;
 pub(crate) use scheme::check_counts;

@@ -1,0 +1,43 @@
+use super::*;
+use crate::mesh::shapes;
+use crate::subdivide::{NakedEdges, Subdivider};
+
+fn limit_at_corners(cage: &Mesh, scheme: Scheme, options: &SubdivisionOptions) -> f64 {
+    let surface = LimitSurface::new(cage, scheme, options).unwrap();
+    let limit = Subdivider::new(cage, scheme, 1, options).unwrap().limit().unwrap();
+    let mut worst: f64 = 0.0;
+    for f in 0..cage.face_count() {
+        let corners = cage.face(f);
+        for (k, &v) in corners.iter().enumerate() {
+            let uv = match (scheme, corners.len(), k) {
+                (Scheme::Loop, _, 0) | (_, 4, 0) => [0.0, 0.0],
+                (Scheme::Loop, _, 1) | (_, 4, 1) => [1.0, 0.0],
+                (Scheme::Loop, _, _) => [0.0, 1.0],
+                (_, 4, 2) => [1.0, 1.0],
+                (_, 4, _) => [0.0, 1.0],
+                (_, n, k) => [(k % tile_width(n)) as f64, (k / tile_width(n)) as f64],
+            };
+            let mut p = [DVec3::ZERO];
+            surface.evaluate(&[f as u32], &uv, &mut p, None, None).unwrap();
+            worst = worst.max((p[0] - limit.positions[v as usize]).length());
+        }
+    }
+    worst
+}
+
+#[test]
+fn corners_of_a_cube_are_the_limit_points() {
+    let cube = shapes::cube();
+    let options = SubdivisionOptions::new(NakedEdges::Smooth);
+    assert!(limit_at_corners(&cube, Scheme::CatmullClark, &options) < 1e-14);
+}
+
+#[test]
+fn graphs_stay_small_around_extraordinary_vertices() {
+    let cube = shapes::cube();
+    let options = SubdivisionOptions::new(NakedEdges::Smooth);
+    let surface = LimitSurface::new(&cube, Scheme::CatmullClark, &options).unwrap();
+    for graph in &surface.faces {
+        assert!(graph.nodes.len() < 40, "{} nodes", graph.nodes.len());
+    }
+}
