@@ -5,7 +5,7 @@
 //!
 //! A node's surface depends only on the faces around its corners (its
 //! 1-ring), and the 1-ring of each of its children lies among the children
-//! of those faces, so a node is a small mesh: its face first, the others in
+//! of those faces, so a node is a small mesh: those faces in their level's
 //! order, vertices numbered as first met, with the sharpness of its level
 //! as explicit creases and corners. One level of [`Subdivider`] on it gives
 //! every child's points as weights of the node's (all rules apply: naked
@@ -18,7 +18,7 @@ use std::collections::HashMap;
 
 use glam::DVec3;
 
-use super::super::creases::SubdivisionOptions;
+use super::super::creases::{Rule, SubdivisionOptions, SHARPNESS_INFINITE};
 use super::super::scheme::{NakedEdges, Scheme};
 use super::super::subdivider::{KeptLevel, Subdivider};
 use super::patches::{corner_kind, regular_patch, Row};
@@ -81,7 +81,8 @@ pub(super) struct Child {
 
 /// The limit at a corner of a node: position, first and second tangent
 /// (rows 0, 1, 2), and whether the corner is irregular (an extraordinary
-/// vertex, a crease end or a corner), where evaluation stops.
+/// vertex, a crease end or a corner) with nothing semi-sharp left at it,
+/// where evaluation stops.
 #[derive(Debug, Clone)]
 pub(super) struct CornerLimit {
     pub(super) irregular: bool,
@@ -103,6 +104,8 @@ pub(super) enum Kind {
 #[derive(Debug, Clone)]
 pub(super) struct Node {
     pub(super) point_count: usize,
+    /// The node's points at the corners of its face, in the face's order.
+    pub(super) corners: Vec<u32>,
     pub(super) kind: Kind,
 }
 
@@ -120,15 +123,19 @@ impl FaceGraph {
     }
 }
 
-/// A node's small mesh, its options and its identity.
+/// A node's small mesh, which of its faces is the node's, its options and
+/// its identity.
 struct Local {
     mesh: Mesh,
+    face: usize,
     options: SubdivisionOptions,
     key: Vec<u64>,
 }
 
-/// Face `g` of `level` with the faces around its corners as a small mesh
-/// (face 0), and the level's vertex of each of its vertices.
+/// Face `g` of `level` with the faces around its corners as a small mesh,
+/// and the level's vertex of each of its vertices. The faces keep the
+/// level's order, so each vertex's edges are walked from the same face as
+/// in the whole level (Chaikin's sums of sharpness add in the same order).
 fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Vec<u32>) {
     let (faces, connectivity, sharpness) = (&level.faces, &level.connectivity, &level.sharpness);
     let mut around: Vec<usize> = faces
@@ -136,10 +143,10 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
         .iter()
         .flat_map(|&v| connectivity.vertex_corners(v as usize).iter())
         .map(|&c| connectivity.face_of(c as usize))
-        .filter(|&f| f != g)
         .collect();
     around.sort_unstable();
     around.dedup();
+    let face = around.iter().position(|&f| f == g).unwrap_or(0);
     let mut map: Vec<u32> = Vec::new();
     let local = |v: u32, map: &mut Vec<u32>| match map.iter().position(|&w| w == v) {
         Some(i) => i as u32,
@@ -151,7 +158,7 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
     let (mut sizes, mut indices) = (Vec::new(), Vec::new());
     let (mut seen, mut creases) = (Vec::new(), Vec::new());
     let mut key = Vec::new();
-    for f in std::iter::once(g).chain(around) {
+    for f in around {
         let corners = faces.corners(f);
         sizes.push(corners.len() as u32);
         for c in corners {
@@ -171,6 +178,7 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
         .map(|(i, &v)| (i as u32, sharpness.vertices[v as usize]))
         .filter(|&(_, s)| s > 0.0)
         .collect();
+    key.push(face as u64);
     key.extend(sizes.iter().map(|&s| u64::from(s)));
     key.push(u64::MAX);
     key.extend(indices.iter().map(|&i| u64::from(i)));
@@ -190,7 +198,15 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
     };
     let positions = vec![DVec3::ZERO; map.len()];
     let mesh = Mesh::from_valid_parts(positions, sizes, indices);
-    (Local { mesh, options, key }, map)
+    (
+        Local {
+            mesh,
+            face,
+            options,
+            key,
+        },
+        map,
+    )
 }
 
 /// A linear map of `count` points as a dense matrix: `out[r * count + j][w]`
@@ -234,25 +250,47 @@ enum Expanded {
 fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     let zero = Subdivider::new(&local.mesh, scheme, 0, &local.options)?;
     let level = &zero.levels[0];
-    if let Some(rows) = regular_patch(scheme, level, 0) {
+    let g = local.face;
+    if let Some(rows) = regular_patch(scheme, level, g) {
         return Ok(Expanded::Patch(rows));
     }
     let m = local.mesh.vertex_count();
-    let corner_count = local.mesh.face_sizes()[0] as usize;
+    let own = local.mesh.face(g).to_vec();
+    let corner_count = own.len();
     let size = scheme.refined_face_size();
     let mut corners = vec![None; corner_count];
     if local.mesh.face_sizes().iter().all(|&s| s == size) {
         let masks = dense(m, |basis, values| {
             let limit = zero.limit_of(basis)?;
             values.clear();
-            values.extend(
-                (0..corner_count).map(|v| [limit.positions[v], limit.du[v], limit.dv[v]]),
-            );
+            values.extend(own.iter().map(|&v| {
+                let v = v as usize;
+                [limit.positions[v], limit.du[v], limit.dv[v]]
+            }));
             Ok(())
         })?;
         for (k, slot) in corners.iter_mut().enumerate() {
-            let c = level.faces.corners(0).start + k;
-            let irregular = corner_kind(scheme, level, 0, c).is_none();
+            let c = level.faces.corners(g).start + k;
+            // Stop at an irregular corner once nothing at it is semi-sharp:
+            // the masks are exact from that level on.
+            let v = level.faces.indices[c] as usize;
+            let sharpness = &level.sharpness;
+            let settled = |s: f32| s == 0.0 || s >= SHARPNESS_INFINITE as f32;
+            let decayed = settled(sharpness.vertices[v])
+                && sharpness
+                    .edges_at(v)
+                    .iter()
+                    .all(|&e| settled(sharpness.edges[e as usize]));
+            // Catmull-Clark's masks have no smooth limit at two faces (they
+            // keep the point where it is); such a point is approached.
+            let two_faces = scheme == Scheme::CatmullClark
+                && sharpness.rules[v].is_smooth()
+                && level.connectivity.vertex_corners(v).len() == 2;
+            // A corner's masks are its first two edges, which turn from
+            // level to level: a corner is approached too.
+            let corner = sharpness.rules[v] == Rule::Corner;
+            let irregular =
+                decayed && !two_faces && !corner && corner_kind(scheme, level, g, c).is_none();
             let masks = &masks;
             let row = |w: usize| (0..m).map(move |j| masks[k * m + j][w]);
             let masks = Sparse::from_dense([row(0), row(1), row(2)].into_iter());
@@ -272,9 +310,14 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
         Scheme::CatmullClark => corner_count,
         Scheme::Loop => 4,
     };
+    // The children of face g start after those of the faces before it.
+    let first = match scheme {
+        Scheme::CatmullClark => local.mesh.face_sizes()[..g].iter().sum::<u32>() as usize,
+        Scheme::Loop => 4 * g,
+    };
     let mut out = Vec::with_capacity(children);
     for j in 0..children {
-        let (child, map) = extract(refined, j, &local.options);
+        let (child, map) = extract(refined, first + j, &local.options);
         let weights = &weights;
         let points = Sparse::from_dense(
             map.iter()
@@ -317,6 +360,7 @@ pub(super) fn face_graph(
             .collect();
         let node = Node {
             point_count: vertices.len(),
+            corners: Vec::new(),
             kind: Kind::Patch(rows),
         };
         return Ok(FaceGraph {
@@ -331,6 +375,7 @@ pub(super) fn face_graph(
     let mut pending = vec![(0u32, root)];
     while let Some((id, local)) = pending.pop() {
         let point_count = local.mesh.vertex_count();
+        let corners = local.mesh.face(local.face).to_vec();
         let kind = match expand(scheme, &local)? {
             Expanded::Patch(rows) => Kind::Patch(rows),
             Expanded::Refine(children, corners) => {
@@ -360,7 +405,11 @@ pub(super) fn face_graph(
                 }
             }
         };
-        nodes[id as usize] = Some(Node { point_count, kind });
+        nodes[id as usize] = Some(Node {
+            point_count,
+            corners,
+            kind,
+        });
     }
     let nodes = nodes.into_iter().map(|n| n.expect("every node is expanded")).collect();
     Ok(FaceGraph { vertices, nodes })

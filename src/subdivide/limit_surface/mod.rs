@@ -23,17 +23,21 @@
 //! child is again a patch or refined further. Evaluation walks down to the
 //! patch that holds the sample, applying each level's weights to a few dozen
 //! points, and evaluates the patch: the result is the limit surface to
-//! rounding. Exactly at an extraordinary vertex, a crease end or a corner the
-//! limit masks of [`super::Limit`] give the point and its tangents. A sample
-//! within 2⁻⁶⁰ of the face size of such a point takes the point's values
-//! (an error far below rounding in the position).
+//! rounding. Exactly at an extraordinary vertex or a crease end the limit
+//! masks of [`super::Limit`] give the point and its tangents. A sample at a
+//! corner, or within 2⁻⁶⁰ of the face size of an irregular point, is
+//! followed 60 levels down and takes the limit of the nearest corner there,
+//! with that tiny face's edges as derivatives (an error far below rounding
+//! in the position, about 2⁻⁶⁰ relative in the derivatives).
 //!
 //! # Derivatives
 //! `du` and `dv` are the derivatives of the position by the face's u and v.
-//! At an extraordinary vertex, a crease end or a corner the parameterisation
-//! has no derivative; there `du` and `dv` are the limit tangents that
+//! At an extraordinary vertex or a crease end the parameterisation has no
+//! derivative; there `du` and `dv` are the limit tangents that
 //! [`super::Limit`] gives (scaled to the refinement level), so that
-//! `du × dv` is the limit normal.
+//! `du × dv` is the limit normal. At a corner (an infinitely sharp vertex,
+//! where the surface has a kink) they are the one-sided derivatives of the
+//! face evaluated, so each face gives its own normal there.
 
 mod basis;
 mod local;
@@ -246,8 +250,13 @@ impl LimitSurface {
     ) -> Sample {
         let graph = &self.faces[f];
         let [mut here, mut next] = std::mem::take(scratch);
+        // Points are kept relative to `origin`, moved to the first point at
+        // every level: their differences, which shrink by half per level,
+        // keep their full precision however deep the walk goes.
+        let origin_index = graph.vertices.first().map_or(0, |&c| c as usize);
+        let mut origin = self.cage_positions.get(origin_index).copied().unwrap_or_default();
         for (slot, &c) in here.iter_mut().zip(&graph.vertices) {
-            *slot = self.cage_positions[c as usize];
+            *slot = self.cage_positions[c as usize] - origin;
         }
         // (Pu, Pv) = (a Ps + b Pt, c Ps + d Pt) for the node's own (s, t).
         let mut frame = [1.0, 0.0, 0.0, 1.0];
@@ -270,7 +279,10 @@ impl LimitSurface {
                     }
                     if depth == MAX_DEPTH {
                         let k = nearest_corner(self.scheme, s, t);
-                        result = limit(k).map(|l| corner_limit(self.scheme, l, k, &here));
+                        let corner = here[current.corners[k] as usize];
+                        let position = limit(k).map_or(corner, |l| l.masks.apply(0, &here));
+                        let [ps, pt] = chords(self.scheme, k, &current.corners, &here);
+                        result = Some([position, ps, pt]);
                         break;
                     }
                     let (j, s2, t2, step) = match (depth, sub_face) {
@@ -282,8 +294,14 @@ impl LimitSurface {
                     let [a, b, c, d] = frame;
                     frame = [a * ss + b * st, a * ts + b * tt, c * ss + d * st, c * ts + d * tt];
                     let child = &children[j];
-                    for (r, slot) in next.iter_mut().enumerate().take(child.points.rows()) {
+                    let rows = child.points.rows();
+                    for (r, slot) in next.iter_mut().enumerate().take(rows) {
                         *slot = child.points.apply(r, &here);
+                    }
+                    let shift = next[0];
+                    origin += shift;
+                    for slot in next.iter_mut().take(rows) {
+                        *slot -= shift;
                     }
                     std::mem::swap(&mut here, &mut next);
                     (s, t) = (s2, t2);
@@ -294,7 +312,7 @@ impl LimitSurface {
         *scratch = [here, next];
         let [p, ps, pt] = result.unwrap_or([DVec3::NAN; 3]);
         let [a, b, c, d] = frame;
-        [p, ps * a + pt * b, ps * c + pt * d]
+        [origin + p, ps * a + pt * b, ps * c + pt * d]
     }
 }
 
@@ -375,6 +393,21 @@ fn corner_limit(scheme: Scheme, limit: &local::CornerLimit, k: usize, points: &[
         _ => (du, dv),
     };
     [p, ps, pt]
+}
+
+/// The derivatives at corner `k` of a node's face (`corners` its points
+/// among `points`) 2⁻⁶⁰ of the cage face across: its edges there, which at that
+/// size lie along the surface's one-sided tangents (at a corner or a crease
+/// end, each face has its own).
+fn chords(scheme: Scheme, k: usize, corners: &[u32], points: &[DVec3]) -> [DVec3; 2] {
+    let p = |i: usize| points[corners[i] as usize];
+    match (scheme, k) {
+        (Scheme::Loop, _) => [p(1) - p(0), p(2) - p(0)],
+        (_, 0) => [p(1) - p(0), p(3) - p(0)],
+        (_, 1) => [p(1) - p(0), p(2) - p(1)],
+        (_, 2) => [p(2) - p(3), p(2) - p(1)],
+        _ => [p(2) - p(3), p(3) - p(0)],
+    }
 }
 
 /// The child holding `(s, t)`, its coordinates there, and the derivatives

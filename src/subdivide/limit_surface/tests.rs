@@ -41,3 +41,30 @@ fn graphs_stay_small_around_extraordinary_vertices() {
         assert!(graph.nodes.len() < 40, "{} nodes", graph.nodes.len());
     }
 }
+
+#[test]
+fn corners_of_mixed_polygons_are_the_limit_points() {
+    let cage = shapes::mixed_polygons();
+    let options = SubdivisionOptions::new(NakedEdges::Smooth);
+    let surface = LimitSurface::new(&cage, Scheme::CatmullClark, &options).unwrap();
+    let limit = Subdivider::new(&cage, Scheme::CatmullClark, 1, &options).unwrap().limit().unwrap();
+    for f in 0..cage.face_count() {
+        let corners = cage.face(f);
+        let n = corners.len();
+        for (k, &v) in corners.iter().enumerate() {
+            let uv = if n == 4 {
+                [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]][k]
+            } else {
+                [(k % tile_width(n)) as f64, (k / tile_width(n)) as f64]
+            };
+            let mut p = [DVec3::ZERO];
+            surface.evaluate(&[f as u32], &uv, &mut p, None, None).unwrap();
+            let d = (p[0] - limit.positions[v as usize]).length();
+            if d > 1e-12 {
+                println!("face {f} ({n} corners) corner {k} vertex {v}: {d:e} nodes {}", surface.faces[f].nodes.len());
+            }
+        }
+    }
+}
+
+
