@@ -16,9 +16,7 @@ mod support;
 
 use support::{bumped, osd_options, to_ref};
 use weft::mesh::shapes;
-use weft::subdivide::{
-    Creasing, LimitSurface, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
-};
+use weft::subdivide::{Creasing, LimitSurface, NakedEdges, Scheme, Subdivider, SubdivisionOptions};
 use weft::{DVec3, Mesh};
 use weft_reference::OsdRefiner;
 
@@ -53,7 +51,11 @@ fn corner_uv(scheme: Scheme, n: usize, k: usize) -> [f64; 2] {
 /// Evaluates `surface` at every sample; positions, du, dv.
 fn evaluate(surface: &LimitSurface, faces: &[u32], uvs: &[f64]) -> [Vec<DVec3>; 3] {
     let n = faces.len();
-    let mut out = [vec![DVec3::ZERO; n], vec![DVec3::ZERO; n], vec![DVec3::ZERO; n]];
+    let mut out = [
+        vec![DVec3::ZERO; n],
+        vec![DVec3::ZERO; n],
+        vec![DVec3::ZERO; n],
+    ];
     let [p, du, dv] = &mut out;
     surface.evaluate(faces, uvs, p, Some(du), Some(dv)).unwrap();
     out
@@ -159,20 +161,29 @@ fn corners_are_the_limit_at_the_vertices() {
     ];
     let open_loop = [
         ("triangle grid", open_triangles()),
-        ("triangle grid with hole", bumped(shapes::triangle_grid_with_hole())),
+        (
+            "triangle grid with hole",
+            bumped(shapes::triangle_grid_with_hole()),
+        ),
         ("fin", shapes::fin()),
         ("bow tie", shapes::bow_tie()),
     ];
     let mut worst = (0.0f64, 0.0f64);
     for (scheme, shapes) in [
-        (Scheme::CatmullClark, closed_cc.iter().chain(&open_cc).collect::<Vec<_>>()),
+        (
+            Scheme::CatmullClark,
+            closed_cc.iter().chain(&open_cc).collect::<Vec<_>>(),
+        ),
         (Scheme::Loop, closed_loop.iter().chain(&open_loop).collect()),
     ] {
         for (name, cage) in shapes {
             for mode in MODES {
                 let options = SubdivisionOptions::new(mode);
                 let (p, n) = corner_deviation(cage, scheme, &options);
-                assert!(p < 1e-12 && n < 1e-12, "{scheme:?} {name} {mode:?}: {p:e} {n:e}");
+                assert!(
+                    p < 1e-12 && n < 1e-12,
+                    "{scheme:?} {name} {mode:?}: {p:e} {n:e}"
+                );
                 worst = (worst.0.max(p), worst.1.max(n));
             }
         }
@@ -184,12 +195,18 @@ fn corners_are_the_limit_at_the_vertices() {
             for creasing in [Creasing::Uniform, Creasing::Chaikin] {
                 let options = creased(&grid, mode, creasing);
                 let (p, n) = corner_deviation(&grid, scheme, &options);
-                assert!(p < 1e-12 && n < 1e-12, "{scheme:?} creased {mode:?} {creasing:?}: {p:e} {n:e}");
+                assert!(
+                    p < 1e-12 && n < 1e-12,
+                    "{scheme:?} creased {mode:?} {creasing:?}: {p:e} {n:e}"
+                );
                 worst = (worst.0.max(p), worst.1.max(n));
             }
         }
     }
-    println!("largest deviation at corners: position {:e}, normal {:e}", worst.0, worst.1);
+    println!(
+        "largest deviation at corners: position {:e}, normal {:e}",
+        worst.0, worst.1
+    );
 }
 
 /// A deterministic spread of `(u, v)` in a face's domain, corners and
@@ -260,23 +277,63 @@ fn regular_faces_equal_bfr() {
     let torus = shapes::torus(8, 6);
     let all = |m: &Mesh| (0..m.face_count() as u32).collect::<Vec<_>>();
     let mut cases: Vec<(&str, Mesh, Scheme, SubdivisionOptions, Vec<u32>)> = Vec::new();
-    cases.push(("torus", torus.clone(), Scheme::CatmullClark, SubdivisionOptions::new(NakedEdges::Smooth), all(&torus)));
+    cases.push((
+        "torus",
+        torus.clone(),
+        Scheme::CatmullClark,
+        SubdivisionOptions::new(NakedEdges::Smooth),
+        all(&torus),
+    ));
     // Infinitely sharp creases around the torus: boundary patches each side.
     let mut sharp = SubdivisionOptions::new(NakedEdges::Smooth);
-    sharp.creases = (0..8u32).map(|i| ([i * 6, ((i + 1) % 8) * 6], 10.0)).collect();
-    cases.push(("creased torus", torus.clone(), Scheme::CatmullClark, sharp.clone(), all(&torus)));
+    sharp.creases = (0..8u32)
+        .map(|i| ([i * 6, ((i + 1) % 8) * 6], 10.0))
+        .collect();
+    cases.push((
+        "creased torus",
+        torus.clone(),
+        Scheme::CatmullClark,
+        sharp.clone(),
+        all(&torus),
+    ));
     let triangles = shapes::triangle_torus(8, 6);
-    cases.push(("triangle torus", triangles.clone(), Scheme::Loop, SubdivisionOptions::new(NakedEdges::Smooth), all(&triangles)));
-    cases.push(("creased triangle torus", triangles.clone(), Scheme::Loop, sharp, all(&triangles)));
+    cases.push((
+        "triangle torus",
+        triangles.clone(),
+        Scheme::Loop,
+        SubdivisionOptions::new(NakedEdges::Smooth),
+        all(&triangles),
+    ));
+    cases.push((
+        "creased triangle torus",
+        triangles.clone(),
+        Scheme::Loop,
+        sharp,
+        all(&triangles),
+    ));
     // Open grids: the faces whose corners are all regular (not the grid's
     // corner faces, whose corners have one face).
     let grid = bumped(shapes::quad_grid(5, 4));
-    let inner: Vec<u32> = (0..20u32).filter(|&f| ![0, 4, 15, 19].contains(&f)).collect();
+    let inner: Vec<u32> = (0..20u32)
+        .filter(|&f| ![0, 4, 15, 19].contains(&f))
+        .collect();
     for mode in [NakedEdges::Smooth, NakedEdges::CornerFixed] {
-        cases.push(("grid", grid.clone(), Scheme::CatmullClark, SubdivisionOptions::new(mode), inner.clone()));
+        cases.push((
+            "grid",
+            grid.clone(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(mode),
+            inner.clone(),
+        ));
     }
     // Corner Fixed makes the grid's corners regular corner patches.
-    cases.push(("grid corners", grid.clone(), Scheme::CatmullClark, SubdivisionOptions::new(NakedEdges::CornerFixed), all(&grid)));
+    cases.push((
+        "grid corners",
+        grid.clone(),
+        Scheme::CatmullClark,
+        SubdivisionOptions::new(NakedEdges::CornerFixed),
+        all(&grid),
+    ));
     let tri_grid = bumped(shapes::triangle_grid(5, 4));
     let regular: Vec<u32> = (0..tri_grid.face_count() as u32)
         .filter(|&f| {
@@ -287,7 +344,13 @@ fn regular_faces_equal_bfr() {
             })
         })
         .collect();
-    cases.push(("triangle grid", tri_grid.clone(), Scheme::Loop, SubdivisionOptions::new(NakedEdges::Smooth), regular));
+    cases.push((
+        "triangle grid",
+        tri_grid.clone(),
+        Scheme::Loop,
+        SubdivisionOptions::new(NakedEdges::Smooth),
+        regular,
+    ));
     let mut worst = [0.0f64; 3];
     for (name, cage, scheme, options, faces) in &cases {
         let (fs, uvs) = spread(cage, *scheme, faces);
@@ -304,10 +367,30 @@ fn regular_faces_equal_bfr() {
 #[test]
 fn bfr_converges_to_weft_around_extraordinary_vertices() {
     let cases = [
-        ("cube", shapes::cube(), Scheme::CatmullClark, SubdivisionOptions::new(NakedEdges::Smooth)),
-        ("tetrahedron", shapes::tetrahedron(), Scheme::CatmullClark, SubdivisionOptions::new(NakedEdges::Smooth)),
-        ("icosahedron", shapes::icosahedron(), Scheme::Loop, SubdivisionOptions::new(NakedEdges::Smooth)),
-        ("creased grid", open_quads(), Scheme::CatmullClark, creased(&open_quads(), NakedEdges::Smooth, Creasing::Chaikin)),
+        (
+            "cube",
+            shapes::cube(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "tetrahedron",
+            shapes::tetrahedron(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "icosahedron",
+            shapes::icosahedron(),
+            Scheme::Loop,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "creased grid",
+            open_quads(),
+            Scheme::CatmullClark,
+            creased(&open_quads(), NakedEdges::Smooth, Creasing::Chaikin),
+        ),
     ];
     for (name, cage, scheme, options) in cases {
         let faces: Vec<u32> = (0..cage.face_count() as u32).collect();
@@ -347,4 +430,103 @@ fn bfr_converges_to_weft_around_extraordinary_vertices() {
             assert!(pair[1] <= pair[0] * 1.01 + 1e-15, "{name}: {errors:?}");
         }
     }
+}
+
+#[test]
+fn samples_outside_a_face_or_on_a_hole_are_refused_and_nothing_is_written() {
+    let mut p = [DVec3::splat(-7.0); 2];
+    let expect = |surface: &LimitSurface, faces: &[u32], uvs: &[f64], needle: &str| {
+        let mut p = [DVec3::splat(-7.0); 2];
+        let error = surface
+            .evaluate(faces, uvs, &mut p[..faces.len()], None, None)
+            .unwrap_err();
+        assert!(error.to_string().contains(needle), "{error}");
+        assert!(p.iter().all(|&q| q == DVec3::splat(-7.0)));
+    };
+    let icosahedron = LimitSurface::new(
+        &shapes::icosahedron(),
+        Scheme::Loop,
+        &SubdivisionOptions::new(NakedEdges::Smooth),
+    )
+    .unwrap();
+    expect(
+        &icosahedron,
+        &[0, 3],
+        &[0.2, 0.2, 0.7, 0.4],
+        "sample 1: (u, v) = (0.7, 0.4) is outside the domain of face 3 (a triangle",
+    );
+    expect(
+        &icosahedron,
+        &[0, 30],
+        &[0.2, 0.2, 0.1, 0.1],
+        "sample 1: face 30 is out of range (the cage has 20 faces)",
+    );
+    expect(
+        &icosahedron,
+        &[1, 2],
+        &[-0.0, f64::NAN, 0.1, 0.1],
+        "sample 0 on face 1: (u, v) = (-0, NaN) is not finite",
+    );
+    // A pentagon's tiles leave gaps: u = 0.75 lies in none.
+    let mixed = shapes::mixed_polygons();
+    let pentagon = (0..mixed.face_count())
+        .find(|&f| mixed.face(f).len() == 5)
+        .unwrap() as u32;
+    let surface = LimitSurface::new(
+        &mixed,
+        Scheme::CatmullClark,
+        &SubdivisionOptions::new(NakedEdges::Smooth),
+    )
+    .unwrap();
+    expect(&surface, &[pentagon], &[0.75, 0.25], "outside the domain");
+    expect(&surface, &[pentagon], &[0.25, 1.75], "outside the domain");
+    surface
+        .evaluate(&[pentagon], &[2.5, 0.5], &mut p[..1], None, None)
+        .unwrap();
+    // Holes are not part of the surface.
+    let mut options = SubdivisionOptions::new(NakedEdges::Smooth);
+    options.holes = vec![5];
+    let grid = open_quads();
+    let holed = LimitSurface::new(&grid, Scheme::CatmullClark, &options).unwrap();
+    expect(
+        &holed,
+        &[4, 5],
+        &[0.5, 0.5, 0.5, 0.5],
+        "sample 1: face 5 is a hole",
+    );
+    holed
+        .evaluate(&[4, 6], &[0.5, 0.5, 0.5, 0.5], &mut p, None, None)
+        .unwrap();
+}
+
+#[test]
+fn extraordinary_corners_approached_from_inside_converge() {
+    // Along the diagonal towards a cube corner (valence 3), positions tend
+    // to the corner's limit and the normals to its normal.
+    let cube = shapes::cube();
+    let options = SubdivisionOptions::new(NakedEdges::Smooth);
+    let surface = LimitSurface::new(&cube, Scheme::CatmullClark, &options).unwrap();
+    let n = 40;
+    let faces = vec![0u32; n + 1];
+    let mut uvs = vec![0.0; 2 * (n + 1)];
+    for k in 0..n {
+        let t = 0.5f64.powi(k as i32 + 1) * 0.7;
+        uvs[2 * k] = t;
+        uvs[2 * k + 1] = 0.6 * t;
+    }
+    let [p, du, dv] = evaluate(&surface, &faces, &uvs);
+    let corner = p[n];
+    let normal = du[n].cross(dv[n]).normalize();
+    let turn = |k: usize| (du[k].cross(dv[k]).normalize() - normal).length();
+    for k in 1..n {
+        assert!((p[k] - corner).length() <= (p[k - 1] - corner).length() + 1e-15);
+        assert!(
+            turn(k) <= turn(k - 1) + 1e-12,
+            "{k}: {} after {}",
+            turn(k),
+            turn(k - 1)
+        );
+    }
+    assert!((p[n - 1] - corner).length() < 1e-9);
+    assert!(turn(n - 1) < 1e-6, "{}", turn(n - 1));
 }

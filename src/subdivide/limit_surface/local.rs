@@ -183,7 +183,11 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
     key.push(u64::MAX);
     key.extend(indices.iter().map(|&i| u64::from(i)));
     for &([a, b], s) in &creases {
-        key.extend([u64::MAX, u64::from(a.min(b)) << 32 | u64::from(a.max(b)), u64::from(s.to_bits())]);
+        key.extend([
+            u64::MAX,
+            u64::from(a.min(b)) << 32 | u64::from(a.max(b)),
+            u64::from(s.to_bits()),
+        ]);
     }
     for &(v, s) in &corners {
         key.extend([u64::MAX - 1, u64::from(v), u64::from(s.to_bits())]);
@@ -411,6 +415,9 @@ pub(super) fn face_graph(
             kind,
         });
     }
-    let nodes = nodes.into_iter().map(|n| n.expect("every node is expanded")).collect();
+    let nodes = nodes
+        .into_iter()
+        .map(|n| n.expect("every node is expanded"))
+        .collect();
     Ok(FaceGraph { vertices, nodes })
 }

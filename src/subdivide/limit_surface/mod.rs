@@ -220,22 +220,27 @@ impl LimitSurface {
             .zip(split(dv, count))
             .enumerate()
             .collect();
-        tasks.into_par_iter().for_each(|(chunk, ((p, mut du), mut dv))| {
-            let mut scratch = [vec![DVec3::ZERO; self.largest], vec![DVec3::ZERO; self.largest]];
-            for k in 0..p.len() {
-                let i = chunk * CHUNK + k;
-                let (u, v) = (uvs[2 * i], uvs[2 * i + 1]);
-                let [position, d_u, d_v] =
-                    self.sample(faces[i] as usize, u, v, sub_faces[i], &mut scratch);
-                p[k] = position;
-                if let Some(du) = du.as_deref_mut() {
-                    du[k] = d_u;
+        tasks
+            .into_par_iter()
+            .for_each(|(chunk, ((p, mut du), mut dv))| {
+                let mut scratch = [
+                    vec![DVec3::ZERO; self.largest],
+                    vec![DVec3::ZERO; self.largest],
+                ];
+                for k in 0..p.len() {
+                    let i = chunk * CHUNK + k;
+                    let (u, v) = (uvs[2 * i], uvs[2 * i + 1]);
+                    let [position, d_u, d_v] =
+                        self.sample(faces[i] as usize, u, v, sub_faces[i], &mut scratch);
+                    p[k] = position;
+                    if let Some(du) = du.as_deref_mut() {
+                        du[k] = d_u;
+                    }
+                    if let Some(dv) = dv.as_deref_mut() {
+                        dv[k] = d_v;
+                    }
                 }
-                if let Some(dv) = dv.as_deref_mut() {
-                    dv[k] = d_v;
-                }
-            }
-        });
+            });
         Ok(())
     }
 
@@ -254,7 +259,11 @@ impl LimitSurface {
         // every level: their differences, which shrink by half per level,
         // keep their full precision however deep the walk goes.
         let origin_index = graph.vertices.first().map_or(0, |&c| c as usize);
-        let mut origin = self.cage_positions.get(origin_index).copied().unwrap_or_default();
+        let mut origin = self
+            .cage_positions
+            .get(origin_index)
+            .copied()
+            .unwrap_or_default();
         for (slot, &c) in here.iter_mut().zip(&graph.vertices) {
             *slot = self.cage_positions[c as usize] - origin;
         }
@@ -292,7 +301,12 @@ impl LimitSurface {
                     // Chain rule: the child's (s', t') of the node's (s, t).
                     let [ss, st, ts, tt] = step;
                     let [a, b, c, d] = frame;
-                    frame = [a * ss + b * st, a * ts + b * tt, c * ss + d * st, c * ts + d * tt];
+                    frame = [
+                        a * ss + b * st,
+                        a * ts + b * tt,
+                        c * ss + d * st,
+                        c * ts + d * tt,
+                    ];
                     let child = &children[j];
                     let rows = child.points.rows();
                     for (r, slot) in next.iter_mut().enumerate().take(rows) {
@@ -419,7 +433,12 @@ fn child_at(scheme: Scheme, s: f64, t: f64) -> (usize, f64, f64, [f64; 4]) {
         Scheme::CatmullClark => match (s > 0.5, t > 0.5) {
             (false, false) => (0, unit(2.0 * s), unit(2.0 * t), [2.0, 0.0, 0.0, 2.0]),
             (true, false) => (1, unit(2.0 * t), unit(2.0 - 2.0 * s), [0.0, 2.0, -2.0, 0.0]),
-            (true, true) => (2, unit(2.0 - 2.0 * s), unit(2.0 - 2.0 * t), [-2.0, 0.0, 0.0, -2.0]),
+            (true, true) => (
+                2,
+                unit(2.0 - 2.0 * s),
+                unit(2.0 - 2.0 * t),
+                [-2.0, 0.0, 0.0, -2.0],
+            ),
             (false, true) => (3, unit(2.0 - 2.0 * t), unit(2.0 * s), [0.0, -2.0, 2.0, 0.0]),
         },
         Scheme::Loop => {

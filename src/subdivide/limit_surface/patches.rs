@@ -207,7 +207,12 @@ pub(super) fn regular_patch(scheme: Scheme, level: &KeptLevel, g: usize) -> Opti
     }
 }
 
-fn quad_grid(level: &KeptLevel, p: &[u32], kinds: &[Corner; 4], sharp: &[bool; 4]) -> Option<Vec<Row>> {
+fn quad_grid(
+    level: &KeptLevel,
+    p: &[u32],
+    kinds: &[Corner; 4],
+    sharp: &[bool; 4],
+) -> Option<Vec<Row>> {
     let mut g: [[Option<Row>; 4]; 4] = [[None; 4]; 4];
     let pt = |x: u32| Some(Row::point(x));
     g[1][1] = pt(p[0]);
@@ -230,7 +235,12 @@ fn quad_grid(level: &KeptLevel, p: &[u32], kinds: &[Corner; 4], sharp: &[bool; 4
         }
     }
     // Diagonal quads at smooth corners: (p_k, side point, diagonal, ...).
-    let diagonals = [((1, 0), (0, 0)), ((0, 2), (0, 3)), ((2, 3), (3, 3)), ((3, 1), (3, 0))];
+    let diagonals = [
+        ((1, 0), (0, 0)),
+        ((0, 2), (0, 3)),
+        ((2, 3), (3, 3)),
+        ((3, 1), (3, 0)),
+    ];
     for (k, &(side, diagonal)) in diagonals.iter().enumerate() {
         if kinds[k] == Corner::Smooth {
             let q = face_from(level, p[k], raw[side.0][side.1], 4)?;

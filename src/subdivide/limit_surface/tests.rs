@@ -4,7 +4,10 @@ use crate::subdivide::{NakedEdges, Subdivider};
 
 fn limit_at_corners(cage: &Mesh, scheme: Scheme, options: &SubdivisionOptions) -> f64 {
     let surface = LimitSurface::new(cage, scheme, options).unwrap();
-    let limit = Subdivider::new(cage, scheme, 1, options).unwrap().limit().unwrap();
+    let limit = Subdivider::new(cage, scheme, 1, options)
+        .unwrap()
+        .limit()
+        .unwrap();
     let mut worst: f64 = 0.0;
     for f in 0..cage.face_count() {
         let corners = cage.face(f);
@@ -18,7 +21,9 @@ fn limit_at_corners(cage: &Mesh, scheme: Scheme, options: &SubdivisionOptions) -
                 (_, n, k) => [(k % tile_width(n)) as f64, (k / tile_width(n)) as f64],
             };
             let mut p = [DVec3::ZERO];
-            surface.evaluate(&[f as u32], &uv, &mut p, None, None).unwrap();
+            surface
+                .evaluate(&[f as u32], &uv, &mut p, None, None)
+                .unwrap();
             worst = worst.max((p[0] - limit.positions[v as usize]).length());
         }
     }
@@ -47,7 +52,10 @@ fn corners_of_mixed_polygons_are_the_limit_points() {
     let cage = shapes::mixed_polygons();
     let options = SubdivisionOptions::new(NakedEdges::Smooth);
     let surface = LimitSurface::new(&cage, Scheme::CatmullClark, &options).unwrap();
-    let limit = Subdivider::new(&cage, Scheme::CatmullClark, 1, &options).unwrap().limit().unwrap();
+    let limit = Subdivider::new(&cage, Scheme::CatmullClark, 1, &options)
+        .unwrap()
+        .limit()
+        .unwrap();
     for f in 0..cage.face_count() {
         let corners = cage.face(f);
         let n = corners.len();
@@ -58,13 +66,16 @@ fn corners_of_mixed_polygons_are_the_limit_points() {
                 [(k % tile_width(n)) as f64, (k / tile_width(n)) as f64]
             };
             let mut p = [DVec3::ZERO];
-            surface.evaluate(&[f as u32], &uv, &mut p, None, None).unwrap();
+            surface
+                .evaluate(&[f as u32], &uv, &mut p, None, None)
+                .unwrap();
             let d = (p[0] - limit.positions[v as usize]).length();
             if d > 1e-12 {
-                println!("face {f} ({n} corners) corner {k} vertex {v}: {d:e} nodes {}", surface.faces[f].nodes.len());
+                println!(
+                    "face {f} ({n} corners) corner {k} vertex {v}: {d:e} nodes {}",
+                    surface.faces[f].nodes.len()
+                );
             }
         }
     }
 }
-
-
