@@ -58,7 +58,8 @@ impl Row {
 pub(super) enum Corner {
     Smooth,
     Crease,
-    Corner,
+    /// An infinitely sharp vertex with the face alone on its side.
+    Sharp,
 }
 
 fn infinite(s: f32) -> bool {
@@ -165,7 +166,7 @@ pub(super) fn corner_kind(scheme: Scheme, level: &KeptLevel, g: usize, c: usize)
         (Scheme::CatmullClark, 2, Rule::Crease) | (Scheme::Loop, 3, Rule::Crease) => {
             Some(Corner::Crease)
         }
-        (Scheme::CatmullClark, 1, Rule::Corner) => Some(Corner::Corner),
+        (Scheme::CatmullClark, 1, Rule::Corner) => Some(Corner::Sharp),
         _ => None,
     }
 }
@@ -195,7 +196,7 @@ pub(super) fn regular_patch(scheme: Scheme, level: &KeptLevel, g: usize) -> Opti
             Corner::Smooth => !before && !after,
             // A Loop crease may also pass through the corner alone.
             Corner::Crease => (before != after) || (scheme == Scheme::Loop && !before && !after),
-            Corner::Corner => before && after,
+            Corner::Sharp => before && after,
         };
         if !fits {
             return None;
@@ -258,20 +259,21 @@ fn quad_grid(
         (Some(a), Some(b)) => Row::combine(&[(2.0, a), (-1.0, b)]),
         _ => None,
     };
-    for r in 0..4 {
+    for row in g.iter_mut() {
         if sharp[3] {
-            g[r][0] = mirror(g[r][1], g[r][2]);
+            row[0] = mirror(row[1], row[2]);
         }
         if sharp[1] {
-            g[r][3] = mirror(g[r][2], g[r][1]);
+            row[3] = mirror(row[2], row[1]);
         }
     }
-    for c in 0..4 {
+    let [bottom, inner_bottom, inner_top, top] = &mut g;
+    for (((b, ib), it), t) in bottom.iter_mut().zip(inner_bottom).zip(inner_top).zip(top) {
         if sharp[0] {
-            g[0][c] = mirror(g[1][c], g[2][c]);
+            *b = mirror(*ib, *it);
         }
         if sharp[2] {
-            g[3][c] = mirror(g[2][c], g[1][c]);
+            *t = mirror(*it, *ib);
         }
     }
     g.iter().flatten().copied().collect()
