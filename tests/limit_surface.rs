@@ -530,3 +530,144 @@ fn extraordinary_corners_approached_from_inside_converge() {
     assert!((p[n - 1] - corner).length() < 1e-9);
     assert!(turn(n - 1) < 1e-6, "{}", turn(n - 1));
 }
+
+/// Queries around a cage: points of its surface pushed off along the normal
+/// both ways, and points scattered over its box and beyond.
+fn queries(surface: &LimitSurface, cage: &Mesh, scheme: Scheme) -> Vec<DVec3> {
+    let faces: Vec<u32> = (0..cage.face_count() as u32).collect();
+    let (fs, uvs) = spread(cage, scheme, &faces);
+    let [p, du, dv] = evaluate(surface, &fs, &uvs);
+    let scale = size(cage);
+    let mut out = Vec::new();
+    for i in (0..p.len()).step_by(17) {
+        let n = du[i].cross(dv[i]).normalize_or_zero();
+        let offset = [0.0, 0.05, -0.03, 0.2, -0.15][i % 5] * scale;
+        out.push(p[i] + n * offset);
+    }
+    let (mut lo, mut hi) = (DVec3::splat(f64::MAX), DVec3::splat(f64::MIN));
+    for &q in cage.positions() {
+        (lo, hi) = (lo.min(q), hi.max(q));
+    }
+    let mut state = 12345u64;
+    let mut next = || {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    for _ in 0..30 {
+        let t = DVec3::new(next(), next(), next()) * 1.6 - 0.3;
+        out.push(lo + (hi - lo) * t);
+    }
+    out
+}
+
+#[test]
+fn closest_points_lie_on_the_surface_and_nothing_sampled_is_nearer() {
+    let cases = [
+        (
+            "cube",
+            shapes::cube(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "mixed polygons",
+            shapes::mixed_polygons(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "open grid",
+            open_quads(),
+            Scheme::CatmullClark,
+            SubdivisionOptions::new(NakedEdges::CornerFixed),
+        ),
+        (
+            "creased grid",
+            open_quads(),
+            Scheme::CatmullClark,
+            creased(&open_quads(), NakedEdges::Fixed, Creasing::Chaikin),
+        ),
+        (
+            "icosahedron",
+            shapes::icosahedron(),
+            Scheme::Loop,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (
+            "open triangles",
+            open_triangles(),
+            Scheme::Loop,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+    ];
+    for (name, cage, scheme, options) in cases {
+        let surface = LimitSurface::new(&cage, scheme, &options).unwrap();
+        let points = queries(&surface, &cage, scheme);
+        let n = points.len();
+        let (mut faces, mut uvs, mut found) = (vec![0; n], vec![0.0; 2 * n], vec![DVec3::ZERO; n]);
+        surface
+            .closest_points(&points, &mut faces, &mut uvs, &mut found)
+            .unwrap();
+        // On the surface: the evaluation at the returned face and (u, v).
+        let [again, _, _] = evaluate(&surface, &faces, &uvs);
+        assert_eq!(again, found, "{name}");
+        // Nothing of a dense sampling of the surface is nearer.
+        let all: Vec<u32> = (0..cage.face_count() as u32).collect();
+        let (mut fs, mut dense) = (Vec::new(), Vec::new());
+        let steps = 16;
+        for &f in &all {
+            let k = cage.face(f as usize).len();
+            for i in 0..=steps {
+                for j in 0..=steps {
+                    let (a, b) = (i as f64 / steps as f64, j as f64 / steps as f64);
+                    match (scheme, k) {
+                        (Scheme::Loop, _) if a + b > 1.0 => {}
+                        (Scheme::Loop, _) | (_, 4) => {
+                            fs.push(f);
+                            dense.extend([a, b]);
+                        }
+                        (_, k) => {
+                            let w = if k < 5 { 2 } else { 3 };
+                            for t in 0..k {
+                                fs.push(f);
+                                dense.extend([(t % w) as f64 + 0.5 * a, (t / w) as f64 + 0.5 * b]);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        let [samples, _, _] = evaluate(&surface, &fs, &dense);
+        let tolerance = 1e-9 * size(&cage);
+        let mut worst: f64 = 0.0;
+        for (q, p) in points.iter().zip(&found) {
+            let d = (*q - *p).length();
+            let nearest = samples
+                .iter()
+                .map(|s| (*s - *q).length())
+                .fold(f64::INFINITY, f64::min);
+            if d > nearest + tolerance {
+                let i = samples
+                    .iter()
+                    .position(|s| (*s - *q).length() == nearest)
+                    .unwrap();
+                let k = points.iter().position(|x| x == q).unwrap();
+                eprintln!(
+                    "found face {} uv {:?}; sample face {} uv {:?}",
+                    faces[k],
+                    &uvs[2 * k..2 * k + 2],
+                    fs[i],
+                    &dense[2 * i..2 * i + 2]
+                );
+            }
+            assert!(
+                d <= nearest + tolerance,
+                "{name}: {q:?} found at {d}, a sample at {nearest}"
+            );
+            worst = worst.max(d - nearest);
+        }
+        println!("{name}: {n} queries, found distance minus nearest sample at most {worst:e}");
+    }
+}

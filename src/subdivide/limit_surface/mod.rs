@@ -40,6 +40,7 @@
 //! face evaluated, so each face gives its own normal there.
 
 mod basis;
+mod closest;
 mod local;
 mod patches;
 
@@ -72,7 +73,12 @@ pub struct LimitSurface {
     holes: Option<Vec<bool>>,
     faces: Vec<FaceGraph>,
     largest: usize,
+    /// Built on the first projection.
+    index: std::sync::OnceLock<closest::Index>,
 }
+
+/// Two buffers of local points for one evaluation at a time.
+type Scratch = [Vec<DVec3>; 2];
 
 /// One evaluated sample: position, d/du, d/dv.
 type Sample = [DVec3; 3];
@@ -108,6 +114,7 @@ impl LimitSurface {
             holes,
             faces,
             largest,
+            index: std::sync::OnceLock::new(),
         })
     }
 
@@ -149,7 +156,8 @@ impl LimitSurface {
         };
         match (self.scheme, n) {
             (Scheme::Loop, _) => {
-                if u < 0.0 || v < 0.0 || u + v > 1.0 {
+                // u + v may pass 1 by rounding when v = 1 - u was computed.
+                if u < 0.0 || v < 0.0 || u + v > 1.0 + 2.0 * f64::EPSILON {
                     return outside("a triangle: u ≥ 0, v ≥ 0, u + v ≤ 1");
                 }
                 Ok(None)
@@ -244,6 +252,13 @@ impl LimitSurface {
         Ok(())
     }
 
+    fn scratch(&self) -> Scratch {
+        [
+            vec![DVec3::ZERO; self.largest],
+            vec![DVec3::ZERO; self.largest],
+        ]
+    }
+
     /// One sample, its domain checked.
     fn sample(
         &self,
@@ -251,7 +266,7 @@ impl LimitSurface {
         u: f64,
         v: f64,
         sub_face: Option<(usize, f64, f64)>,
-        scratch: &mut [Vec<DVec3>; 2],
+        scratch: &mut Scratch,
     ) -> Sample {
         let graph = &self.faces[f];
         let [mut here, mut next] = std::mem::take(scratch);

@@ -79,3 +79,41 @@ fn corners_of_mixed_polygons_are_the_limit_points() {
         }
     }
 }
+
+#[test]
+fn derivatives_match_finite_differences_on_sub_faces() {
+    let cage = shapes::mixed_polygons();
+    let options = SubdivisionOptions::new(NakedEdges::Smooth);
+    let surface = LimitSurface::new(&cage, Scheme::CatmullClark, &options).unwrap();
+    for f in 0..cage.face_count() {
+        let n = cage.face(f).len();
+        let w = if n == 4 { 1 } else { tile_width(n) };
+        for tile in 0..(if n == 4 { 1 } else { n }) {
+            let (x, y) = ((tile % w) as f64, (tile / w) as f64);
+            let size = if n == 4 { 1.0 } else { 0.5 };
+            for &(a, b) in &[(0.3, 0.3), (0.7, 0.2), (0.5, 0.9)] {
+                let (u, v) = (x + size * a, y + size * b);
+                let h = 1e-6;
+                let at = |u: f64, v: f64| {
+                    let mut p = [DVec3::ZERO];
+                    let (mut du, mut dv) = ([DVec3::ZERO], [DVec3::ZERO]);
+                    surface
+                        .evaluate(&[f as u32], &[u, v], &mut p, Some(&mut du), Some(&mut dv))
+                        .unwrap();
+                    (p[0], du[0], dv[0])
+                };
+                let (_, du, dv) = at(u, v);
+                let fu = (at(u + h, v).0 - at(u - h, v).0) / (2.0 * h);
+                let fv = (at(u, v + h).0 - at(u, v - h).0) / (2.0 * h);
+                assert!(
+                    (fu - du).length() < 1e-6 * du.length().max(1.0),
+                    "face {f} ({n}) tile {tile} {u} {v}: {fu:?} {du:?}"
+                );
+                assert!(
+                    (fv - dv).length() < 1e-6 * dv.length().max(1.0),
+                    "face {f} ({n}) tile {tile} {u} {v}: {fv:?} {dv:?}"
+                );
+            }
+        }
+    }
+}
