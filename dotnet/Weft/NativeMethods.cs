@@ -251,6 +251,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_limit_surface_evaluate(WeftLimitSurfaceHandle surface, UIntPtr count, uint[] faces, double[] uvs, [Out] double[] outPositions, [Out] double[] outDu, [Out] double[] outDv);
 
+        /// <summary>Finds the nearest point of the limit surface to each of <c>count</c> query points: its face, its (u, v) on that face (parameters as <c>weft_limit_surface_evaluate</c>) and its position, which is the surface evaluated there.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_closest_point(WeftLimitSurfaceHandle surface, UIntPtr count, double[] points, [Out] uint[] outFaces, [Out] double[] outUvs, [Out] double[] outPositions);
+
         /// <summary>Frees a limit surface. NULL is ignored.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern void weft_limit_surface_free(IntPtr surface);

@@ -147,6 +147,7 @@ _SIGNATURES = {
     "weft_refiner_new_ex": (S, [P, OPTIONS, U, OUT]),
     "weft_limit_surface_new": (S, [P, OPTIONS, OUT]),
     "weft_limit_surface_evaluate": (S, [P, Z, P, P, P, P, P]),
+    "weft_limit_surface_closest_point": (S, [P, Z, P, P, P, P]),
     "weft_limit_surface_free": (None, [P]),
     "weft_crease_edges_from_mesh": (S, [P, D, OUT, P, Z, ZP]),
     "weft_crease_edges_from_mesh_ex": (S, [P, D, OUT, P, Z, ZP, P, Z]),

@@ -449,6 +449,20 @@ class LimitSurface:
                                         _arrays.address(positions), _arrays.address(du), _arrays.address(dv))
         return positions, du, dv
 
+    def closest_point(self, points):
+        """The nearest point of the surface to each of ``points`` (an (n, 3)
+        array-like): ``(faces, uvs, positions)``, an (n,) uint32 array, an
+        (n, 2) and an (n, 3) float64 array; the positions are the surface
+        evaluated at the faces and (u, v)."""
+        queries = _arrays.float_array(points, "points", width=3)
+        n = queries.shape[0]
+        faces = np.empty(n, dtype=np.uint32)
+        uvs = np.empty((n, 2), dtype=np.float64)
+        positions = np.empty((n, 3), dtype=np.float64)
+        lib.weft_limit_surface_closest_point(self._handle, n, _arrays.address(queries), _arrays.address(faces),
+                                             _arrays.address(uvs), _arrays.address(positions))
+        return faces, uvs, positions
+
     def __repr__(self):
         return "weft.LimitSurface()"
 

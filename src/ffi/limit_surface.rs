@@ -4,7 +4,8 @@
 use glam::DVec3;
 
 use crate::ffi::boundary::{
-    guard, input_slice, out_param, output_slice, point_count_arg, required, Failure, WeftStatus,
+    guard, input_slice, out_param, output_slice, point_count_arg, points_arg, required, Failure,
+    WeftStatus,
 };
 use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
@@ -161,6 +162,58 @@ pub unsafe extern "C" fn weft_limit_surface_evaluate(
             let positions =
                 std::slice::from_raw_parts_mut(positions.as_mut_ptr().cast::<DVec3>(), count);
             surface.evaluate(faces, uvs, positions, du, dv)?;
+            Ok(())
+        })
+    }
+}
+
+/// Finds the nearest point of the limit surface to each of `count` query
+/// points: its face, its (u, v) on that face (parameters as
+/// `weft_limit_surface_evaluate`) and its position, which is the surface
+/// evaluated there.
+///
+/// Candidate faces come from a grid of their bounding boxes (built on the
+/// first call), nearest first; on each, Gauss-Newton projects the query
+/// from the nearest surface samples, staying in the face's domain, until no
+/// other face can be nearer. Accuracy: the distance is that of the nearest
+/// point to rounding where the surface is smooth (tested against dense
+/// sampling on open and closed cages to about 1e-15 of the cage's size);
+/// where several points are equally near, any one of them is returned.
+///
+/// `surface` must not be NULL. `points` holds `3 * count` doubles;
+/// `out_faces` has room for `count` indices, `out_uvs` for `2 * count`
+/// doubles, `out_positions` for `3 * count` doubles; none may be NULL
+/// unless `count` is 0.
+///
+/// Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+/// (naming the query point) or WEFT_STATUS_INVALID_ARGUMENT (every face a
+/// hole), with nothing written.
+///
+/// # Safety
+/// `surface` is NULL or live; the buffers are NULL or hold the elements stated.
+#[no_mangle]
+pub unsafe extern "C" fn weft_limit_surface_closest_point(
+    surface: *const WeftLimitSurface,
+    count: usize,
+    points: *const f64,
+    out_faces: *mut u32,
+    out_uvs: *mut f64,
+    out_positions: *mut f64,
+) -> WeftStatus {
+    // SAFETY: `surface` and the buffers are as the `# Safety` section above
+    // requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let surface = &required(surface, "surface")?.surface;
+            let doubles = point_count_arg(count, "count")?;
+            let queries = points_arg(points, count, "points")?;
+            let faces = output_slice(out_faces, count, "out_faces")?;
+            let uvs = output_slice(out_uvs, 2 * count, "out_uvs")?;
+            let positions = output_slice(out_positions, doubles, "out_positions")?;
+            // DVec3 is three f64 in a row (`#[repr(C)]`, alignment of f64).
+            let positions =
+                std::slice::from_raw_parts_mut(positions.as_mut_ptr().cast::<DVec3>(), count);
+            surface.closest_points(&queries, faces, uvs, positions)?;
             Ok(())
         })
     }

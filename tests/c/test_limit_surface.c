@@ -1,5 +1,6 @@
 /* The limit surface anywhere through the C ABI: evaluation at corners equals
- * the limit at the vertices, derivatives are optional, and every bad sample
+ * the limit at the vertices, derivatives are optional, closest points lie on
+ * the surface, and every bad sample
  * (a face out of range, a parameter outside its face or not finite, a NULL
  * buffer) is refused with its own status, a message naming the sample and
  * the face, and nothing written. */
@@ -92,8 +93,41 @@ static void test_bad_samples_are_refused(void) {
   weft_mesh_free(mesh);
 }
 
+static void test_closest_points(void) {
+  WeftMesh *mesh = cube();
+  WeftSubdivisionOptions options = catmull_clark();
+  WeftLimitSurface *surface = NULL;
+  /* Above the middle of the top face and beside the middle of the front. */
+  const double points[] = {0.5, 0.5, 3.0, 0.5, -2.0, 0.5};
+  const double bad[] = {0.5, 0.5, 3.0, 0.5, NAN, 0.5};
+  uint32_t faces[2] = {99, 99};
+  double uvs[4] = {-1, -1, -1, -1}, p[6], again[6];
+  size_t i;
+  CHECK_STATUS(weft_limit_surface_new(mesh, &options, &surface), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_limit_surface_closest_point(surface, 2, points, faces, uvs, p), WEFT_STATUS_OK);
+  /* The points are the surface at the faces and parameters found... */
+  CHECK_STATUS(weft_limit_surface_evaluate(surface, 2, faces, uvs, again, NULL, NULL), WEFT_STATUS_OK);
+  for (i = 0; i < 6; ++i) CHECK(again[i] == p[i]);
+  /* ...and by symmetry right below and beside the queries. */
+  CHECK(near(p[0], 0.5) && near(p[1], 0.5) && p[2] > 0.5 && p[2] < 1.0);
+  CHECK(near(p[3], 0.5) && near(p[5], 0.5) && p[4] > 0.0 && p[4] < 0.5);
+  faces[0] = 99;
+  CHECK_FAILS_WITH(weft_limit_surface_closest_point(surface, 2, bad, faces, uvs, p),
+                   WEFT_STATUS_NON_FINITE_COORDINATE, "point 1");
+  CHECK(faces[0] == 99);
+  CHECK_FAILS_WITH(weft_limit_surface_closest_point(surface, 2, NULL, faces, uvs, p), WEFT_STATUS_NULL_POINTER,
+                   "points");
+  CHECK_FAILS_WITH(weft_limit_surface_closest_point(surface, 2, points, faces, NULL, p), WEFT_STATUS_NULL_POINTER,
+                   "out_uvs");
+  CHECK_FAILS_WITH(weft_limit_surface_closest_point(NULL, 2, points, faces, uvs, p), WEFT_STATUS_NULL_POINTER,
+                   "surface");
+  weft_limit_surface_free(surface);
+  weft_mesh_free(mesh);
+}
+
 int main(void) {
   test_corners_are_the_vertex_limit();
   test_bad_samples_are_refused();
+  test_closest_points();
   return check_summary("test_limit_surface");
 }

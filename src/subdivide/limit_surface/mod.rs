@@ -30,6 +30,11 @@
 //! with that tiny face's edges as derivatives (an error far below rounding
 //! in the position, about 2⁻⁶⁰ relative in the derivatives).
 //!
+//! # Closest points
+//! [`LimitSurface::closest_points`] (`closest.rs`) projects points onto the
+//! surface: candidate faces from a grid of their bounding boxes, nearest
+//! first, each by projected Gauss-Newton from its nearest surface samples.
+//!
 //! # Derivatives
 //! `du` and `dv` are the derivatives of the position by the face's u and v.
 //! At an extraordinary vertex or a crease end the parameterisation has no
