@@ -29,7 +29,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 # Opaque handles and the SafeHandle that owns each.
-HANDLES = {"WeftMesh": "WeftMeshHandle", "WeftRefiner": "WeftRefinerHandle", "WeftCells": "WeftCellsHandle"}
+HANDLES = {"WeftMesh": "WeftMeshHandle", "WeftRefiner": "WeftRefinerHandle", "WeftLimitSurface": "WeftLimitSurfaceHandle", "WeftCells": "WeftCellsHandle"}
 # Structs generated here (internal, passed by reference) under their C# names.
 NATIVE_STRUCTS = {"WeftSubdivisionOptions": "NativeSubdivisionOptions", "WeftMeshInfo": "NativeMeshInfo"}
 # Structs whose public C# declaration is hand-written in Structs.cs (same layout, documented API).

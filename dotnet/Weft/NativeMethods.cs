@@ -247,6 +247,22 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivide_limit(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, [Out] double[] outPositions, [Out] double[] outNormals, UIntPtr capacity);
 
+        /// <summary>Prepares the limit surface of <c>cage</c> subdivided as <c>options</c> say (scheme, naked-edge mode, creases, corners, holes, creasing, triangle weights), for evaluation anywhere with <c>weft_limit_surface_evaluate</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_new(WeftMeshHandle cage, ref NativeSubdivisionOptions options, out WeftLimitSurfaceHandle outSurface);
+
+        /// <summary>Evaluates the limit surface at <c>count</c> samples: sample i lies on cage face <c>faces[i]</c> at <c>(uvs[2 i], uvs[2 i + 1])</c>. Parallel; nothing is allocated per sample.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_evaluate(WeftLimitSurfaceHandle surface, UIntPtr count, uint[] faces, double[] uvs, [Out] double[] outPositions, [Out] double[] outDu, [Out] double[] outDv);
+
+        /// <summary>Finds the nearest point of the limit surface to each of <c>count</c> query points: its face, its (u, v) on that face (parameters as <c>weft_limit_surface_evaluate</c>) and its position, which is the surface evaluated there.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_closest_point(WeftLimitSurfaceHandle surface, UIntPtr count, double[] points, [Out] uint[] outFaces, [Out] double[] outUvs, [Out] double[] outPositions);
+
+        /// <summary>Frees a limit surface. NULL is ignored.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void weft_limit_surface_free(IntPtr surface);
+
         /// <summary>Prepares a mesh whose creases are unwelded seams or sharp folds for creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the same position, and lists as creases every edge that was naked before welding and has two faces after, and every edge whose faces' normals differ by more than <c>angle_degrees</c> (180 or more: no fold test). Pass the pairs as <c>crease_vertex_pairs</c> with <c>WEFT_SHARPNESS_INFINITE</c> sharpness. <c>weft_crease_edges_from_mesh_ex</c> also gives which welded vertex each input vertex became.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount);

@@ -27,6 +27,7 @@ from ._ops import (
     TNODE_DTYPE,
     Cells,
     OrientReport,
+    LimitSurface,
     Refiner,
     WeldReport,
     as_triangles,

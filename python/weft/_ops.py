@@ -441,6 +441,62 @@ class Refiner:
         return f"weft.Refiner({self.vertex_count} vertices, {self.face_count} faces)"
 
 
+class LimitSurface:
+    """The limit surface of a cage, evaluated anywhere: positions and the
+    derivatives by u and v at (face, u, v) samples, exact (bicubic B-spline
+    or box-spline patches, local refinement around extraordinary vertices).
+
+    Options as in :func:`subdivide`. A quad's (u, v) runs from its first
+    corner, u towards the second and v towards the last; a Loop triangle's
+    is barycentric (corner 1 at (1, 0), corner 2 at (0, 1)); other faces
+    follow OpenSubdiv's Bfr quad sub-faces (see ``include/weft.h``)::
+
+        >>> surface = weft.LimitSurface(weft.box(), scheme="catmull-clark")
+        >>> p, du, dv = surface.evaluate([0, 0], [[0.5, 0.5], [0.0, 0.0]])
+        >>> p.shape
+        (2, 3)
+    """
+
+    def __init__(self, cage, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,
+                 creasing="uniform", holes=None, triangles="catmark"):
+        handle = check_mesh(cage, "cage")
+        options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
+        out = _out()
+        lib.weft_limit_surface_new(handle, options.ref, ctypes.byref(out))
+        self._handle = out.value
+        self._finalizer = weakref.finalize(self, lib.weft_limit_surface_free, self._handle)
+
+    def evaluate(self, faces, uvs):
+        """Positions, d/du and d/dv at sample i on face ``faces[i]`` at
+        ``uvs[i]`` (an (n, 2) array-like), as three (n, 3) float64 arrays."""
+        faces = _arrays.index_array(faces, "faces").reshape(-1)
+        uvs = _arrays.float_array(uvs, "uvs", width=2)
+        if uvs.shape[0] != faces.size:
+            raise ValueError(f"{faces.size} faces but {uvs.shape[0]} (u, v) pairs")
+        n = faces.size
+        positions, du, dv = (np.empty((n, 3), dtype=np.float64) for _ in range(3))
+        lib.weft_limit_surface_evaluate(self._handle, n, _arrays.address(faces), _arrays.address(uvs),
+                                        _arrays.address(positions), _arrays.address(du), _arrays.address(dv))
+        return positions, du, dv
+
+    def closest_point(self, points):
+        """The nearest point of the surface to each of ``points`` (an (n, 3)
+        array-like): ``(faces, uvs, positions)``, an (n,) uint32 array, an
+        (n, 2) and an (n, 3) float64 array; the positions are the surface
+        evaluated at the faces and (u, v)."""
+        queries = _arrays.float_array(points, "points", width=3)
+        n = queries.shape[0]
+        faces = np.empty(n, dtype=np.uint32)
+        uvs = np.empty((n, 2), dtype=np.float64)
+        positions = np.empty((n, 3), dtype=np.float64)
+        lib.weft_limit_surface_closest_point(self._handle, n, _arrays.address(queries), _arrays.address(faces),
+                                             _arrays.address(uvs), _arrays.address(positions))
+        return faces, uvs, positions
+
+    def __repr__(self):
+        return "weft.LimitSurface()"
+
+
 def crease_edges_from_mesh(mesh, angle_degrees=180.0, vertex_map=False):
     """Prepares a mesh whose creases are unwelded seams or sharp folds for
     creased subdivision, as Rhino's ToSubD: welds vertices at the same
