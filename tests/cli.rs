@@ -225,11 +225,12 @@ fn bad_usage_exits_with_2() {
 }
 
 /// Every subcommand of `weft`, as `weft --help` lists them.
-const COMMANDS: [&str; 30] = [
+const COMMANDS: [&str; 31] = [
     "info",
     "render",
     "subdivide",
     "nurbs",
+    "evaluate",
     "weld",
     "cull-adjacent",
     "flip",
@@ -365,7 +366,7 @@ const fn reader(
 }
 
 /// Every command that reads a mesh file.
-const READERS: [Reader; 28] = [
+const READERS: [Reader; 29] = [
     reader(
         &["info", "IN"],
         None,
@@ -389,6 +390,12 @@ const READERS: [Reader; 28] = [
         Some("obj"),
         &["--scheme", "butterfly"],
         "--scheme",
+    ),
+    reader(
+        &["evaluate", "IN", "--samples", "uv.txt", "-o", "OUT"],
+        Some("txt"),
+        &["--samples"],
+        "--samples",
     ),
     reader(
         &["nurbs", "IN", "OUT", "--isolation", "1"],
@@ -564,7 +571,8 @@ fn every_reading_command_fails_cleanly() {
     // A folder cannot be read as a file: it stands in for an unreadable file,
     // since permissions do not stop a test run as root.
     std::fs::create_dir(dir.join("folder.obj")).unwrap();
-    for ext in ["obj", "ply", "off", "png", "step"] {
+    std::fs::write(dir.join("uv.txt"), "0 0.5 0.5\n").unwrap();
+    for ext in ["obj", "ply", "off", "png", "step", "txt"] {
         std::fs::create_dir(dir.join(format!("taken.{ext}"))).unwrap();
     }
     let before = listing(&dir);
@@ -866,6 +874,107 @@ fn nurbs_writes_the_limit_surface_as_step_and_reports_its_error() {
         &stderr(&o),
         &["expected a STEP file ending in .step or .stp"],
     );
+}
+
+#[test]
+fn evaluate_gives_limit_points_and_normals_and_refuses_bad_samples() {
+    let dir = folder("evaluate");
+    let cube = shapes::cube();
+    io::write_mesh(dir.join("cube.obj"), &cube).unwrap();
+    // Face 2's first corner, then its centre and a point on an edge.
+    std::fs::write(
+        dir.join("uv.txt"),
+        "# face u v\n2 0 0\n2 0.5 0.5  # the centre\n\n2 0.25 0\n",
+    )
+    .unwrap();
+    let text = succeeds(
+        &dir,
+        &[
+            "evaluate",
+            "cube.obj",
+            "--samples",
+            "uv.txt",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 3, "{text}");
+    // The corner is the limit point of the cage vertex, as subdivide --limit gives it.
+    succeeds(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "limit.obj",
+            "--levels",
+            "1",
+            "--limit",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    let limit = io::read_mesh(dir.join("limit.obj")).unwrap();
+    let corner = limit.positions()[cube.face(2)[0] as usize];
+    for (k, &x) in corner.to_array().iter().enumerate() {
+        assert!((rows[0][k] - x).abs() < 1e-12, "{text}");
+    }
+    for row in &rows {
+        let n = (row[3] * row[3] + row[4] * row[4] + row[5] * row[5]).sqrt();
+        assert!((n - 1.0).abs() < 1e-12, "unit normals: {text}");
+    }
+    // Written to a file, the same lines.
+    succeeds(
+        &dir,
+        &[
+            "evaluate",
+            "cube.obj",
+            "--samples",
+            "uv.txt",
+            "-o",
+            "points.txt",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("points.txt")).unwrap(),
+        text
+    );
+
+    let before = listing(&dir);
+    for (samples, expected) in [
+        ("9 0 0\n", "sample 0: face 9 is out of range"),
+        (
+            "0 0 0\n1 1.5 0\n",
+            "sample 1: (u, v) = (1.5, 0) is outside the domain of face 1",
+        ),
+        ("0 nan 0\n", "sample 0"),
+        ("0 x 0\n", "line 1: \"x\" is not a number"),
+        ("0 0\n", "line 1: 2 values"),
+        ("# nothing\n", "holds no sample"),
+    ] {
+        std::fs::write(dir.join("bad.txt"), samples).unwrap();
+        let o = weft(
+            &dir,
+            &[
+                "evaluate",
+                "cube.obj",
+                "--samples",
+                "bad.txt",
+                "-o",
+                "out.txt",
+            ],
+        );
+        assert_exit(&o, 1);
+        assert_mentions(&stderr(&o), &["bad.txt: ", expected]);
+        assert!(!dir.join("out.txt").exists(), "{samples:?}");
+    }
+    std::fs::remove_file(dir.join("bad.txt")).unwrap();
+    assert_eq!(listing(&dir), before);
 }
 
 #[test]
