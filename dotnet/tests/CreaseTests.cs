@@ -21,6 +21,7 @@ namespace Weft.Tests
             t.Run("vertex data equal to the positions gives the refined positions", VertexDataIsPositions);
             t.Run("face-varying values without seams equal the refined vertex values", FaceVaryingWithoutSeams);
             t.Run("limit surface: corner kept, unit outward normals, normals optional", LimitSurface);
+            t.Run("limit surface anywhere: corners are the vertex limit, closest points lie on it", LimitSurfaceAnywhere);
             t.Run("refiner with creases re-evaluated equals a fresh creased subdivision", RefinerWithOptions);
             t.Run("crease edges from an unwelded cube: welded, 12 creases, stays a cube", CreaseEdgesFromUnweldedCube);
             t.Run("crease edges from folds by angle", CreaseEdgesByAngle);
@@ -247,6 +248,31 @@ namespace Weft.Tests
                     for (int k = 0; k < 3; k++) expected[3 * c + k] = positions[3 * indices[c] + k];
                 }
                 Shapes.Near(expected, values, 1e-12, "face-varying = vertex values at each corner");
+            }
+        }
+
+        private static void LimitSurfaceAnywhere()
+        {
+            var options = new SubdivisionOptions(NakedEdges.Smooth);
+            using (var cube = Shapes.Cube())
+            using (var surface = new LimitSurfaceEvaluator(cube, Scheme.CatmullClark, options))
+            {
+                LimitSurface limit = Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, options);
+                uint v = (uint)cube.GetFaceIndices()[0];
+                var p = new double[6];
+                var du = new double[6];
+                surface.Evaluate(new uint[] { 0, 0 }, new[] { 0.0, 0.0, 0.5, 0.5 }, p, du, null);
+                Shapes.Near(new[] { limit.Positions[3 * v], limit.Positions[3 * v + 1], limit.Positions[3 * v + 2] },
+                            new[] { p[0], p[1], p[2] }, 1e-12, "corner 0 of face 0 is its vertex's limit");
+                var faces = new uint[1];
+                var uvs = new double[2];
+                var found = new double[3];
+                surface.ClosestPoints(new[] { 0.5, 0.5, 3.0 }, faces, uvs, found);
+                var again = new double[3];
+                surface.Evaluate(faces, uvs, again, null, null);
+                t.Sequence(again, found, "the closest point is the surface at its face and (u, v)");
+                var e = t.Throws<WeftException>(() => surface.Evaluate(new uint[] { 6 }, new[] { 0.5, 0.5 }, p, null, null), "a face out of range");
+                t.Equal(WeftStatus.IndexOutOfRange, e.Status, "its status");
             }
         }
 

@@ -19,12 +19,15 @@ const STARTS: usize = 5;
 /// Gauss-Newton iterations at most per start.
 const ITERATIONS: usize = 50;
 
+/// A starting sample: its (u, v) and its point.
+type Start = ([f64; 2], DVec3);
+
 /// The starting samples and the boxes of every face, and the grid over them.
 #[derive(Debug, Clone)]
 pub(super) struct Index {
     /// Per face, its samples `starts[offsets[f]..offsets[f + 1]]`: (u, v), point.
     offsets: Vec<u32>,
-    starts: Vec<([f64; 2], DVec3)>,
+    starts: Vec<Start>,
     boxes: Vec<[DVec3; 2]>,
     origin: DVec3,
     cell: f64,
@@ -186,7 +189,7 @@ impl LimitSurface {
     /// Builds the index (once, on the first projection).
     pub(super) fn build_index(&self) -> Result<Index> {
         let face_count = self.face_count();
-        let per_face: Vec<(Vec<([f64; 2], DVec3)>, [DVec3; 2])> = (0..face_count)
+        let per_face: Vec<(Vec<Start>, [DVec3; 2])> = (0..face_count)
             .into_par_iter()
             .map(|f| {
                 let mut scratch = self.scratch();

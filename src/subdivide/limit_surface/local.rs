@@ -391,7 +391,8 @@ pub(super) fn face_graph(
                             if nodes.len() >= MAX_NODES {
                                 return Err(Error::InvalidArgument(format!(
                                     "the limit surface of face {f} needs more than {MAX_NODES} \
-                                     local refinements (semi-sharp creases too sharp?)"
+                                     local refinements (semi-sharp creases near sharpness 10 \
+                                     around it need the most)"
                                 )));
                             }
                             let node = nodes.len() as u32;

@@ -327,7 +327,9 @@ impl LimitSurface {
                         c * ss + d * st,
                         c * ts + d * tt,
                     ];
-                    let child = &children[j];
+                    let Some(child) = children.get(j) else {
+                        break;
+                    };
                     let rows = child.points.rows();
                     for (r, slot) in next.iter_mut().enumerate().take(rows) {
                         *slot = child.points.apply(r, &here);
