@@ -163,7 +163,7 @@ cp "$root/target/debug/libweft.so" "$build/"
 if mcs "${mcs_flags[@]}" -target:exe -out:"$build/Conversion.Tests.exe" -r:"$build/Weft.Interop.dll" \
     "$here/tests/ConversionTests.cs" "$here/tests/CreaseInputTests.cs" "$root/dotnet/tests/Runner.cs" "$root/dotnet/tests/UnitCube.cs" \
     "$here/Weft.Grasshopper/MeshArrays.cs" "$here/Weft.Grasshopper/FlatGeometry.cs" "$here/Weft.Grasshopper/RefinerCache.cs" \
-    "$here/Weft.Grasshopper/CreaseInputs.cs" "$here/Weft.Grasshopper/FaceBudget.cs" \
+    "$here/Weft.Grasshopper/CreaseInputs.cs" "$here/Weft.Grasshopper/FaceBudget.cs" "$here/Weft.Grasshopper/LimitSamples.cs" \
   && LD_LIBRARY_PATH="$root/target/debug${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" mono --debug "$build/Conversion.Tests.exe"; then
   pass "mesh conversion tests"
 else
