@@ -12,16 +12,16 @@
 
 mod support;
 
-use support::{bumped, osd_options, to_ref, tolerance};
+use support::{
+    assert_drivers_agree, bumped, face_varying_both, opensubdiv_limit_at_vertices, osd_options,
+    to_ref, tolerance,
+};
 use weft::mesh::shapes;
 use weft::subdivide::{
-    parent_faces_with, refined_counts_with, subdivide_with, Crease, Creasing, FaceVaryingLinear,
-    NakedEdges, Refiner, Scheme, Subdivider, SubdivisionOptions,
+    Crease, Creasing, NakedEdges, Refiner, Scheme, Subdivider, SubdivisionOptions,
 };
 use weft::{DVec3, Mesh, MeshError, MeshOptions};
-use weft_reference::{
-    opensubdiv_refine, opensubdiv_refine_face_varying, FVarLinear, OsdOptions, OsdRefiner,
-};
+use weft_reference::opensubdiv_refine;
 
 const ALLOW: MeshOptions = MeshOptions {
     allow_repeated_vertices: true,
@@ -204,22 +204,7 @@ fn assert_equals_opensubdiv(
     );
 
     // Every driver says the same.
-    assert_eq!(
-        subdivide_with(cage, scheme, levels, options).unwrap(),
-        ours,
-        "{what}: one-shot"
-    );
-    let counts = refined_counts_with(cage, scheme, levels, options).unwrap();
-    assert_eq!(
-        (counts.vertex_count, counts.face_count, counts.index_count),
-        (ours.vertex_count(), ours.face_count(), ours.index_count()),
-        "{what}: counts"
-    );
-    assert_eq!(
-        parent_faces_with(cage, scheme, levels, options).unwrap(),
-        subdivider.parent_faces(),
-        "{what}: parent faces"
-    );
+    assert_drivers_agree(cage, (scheme, levels, options), &subdivider, &ours, what);
     if options.creases.is_empty() {
         // The refiner's stencils sum a repeated vertex's weights first, so
         // its points may differ from the one-shot's in the last bits.
@@ -241,12 +226,7 @@ fn assert_equals_opensubdiv(
     }
 
     // The limit at every vertex.
-    let full = OsdOptions {
-        full_topology: true,
-        ..osd.clone()
-    };
-    let refiner = OsdRefiner::new(&reference_cage, &full, levels).unwrap();
-    let their_limit = refiner.limit(&reference_cage.positions).unwrap();
+    let their_limit = opensubdiv_limit_at_vertices(&reference_cage, &osd, levels);
     let our_limit = subdivider.limit().unwrap();
     assert_same_points_and_faces(
         (&our_limit.positions, &our_faces),
@@ -256,29 +236,13 @@ fn assert_equals_opensubdiv(
     );
 
     // Face-varying values, one per vertex, smooth and linear: per refined
-    // face, the cycle of its corners' values.
-    let values: Vec<f64> = cage
-        .positions()
-        .iter()
-        .flat_map(|p| [p.x + 0.3 * p.z, p.y - 0.2 * p.z])
-        .collect();
-    let indices = cage.face_indices().to_vec();
-    let linear_rules = [
-        (FaceVaryingLinear::Smooth, FVarLinear::None),
-        (FaceVaryingLinear::All, FVarLinear::All),
-    ];
-    // (Boundary "none" can leave no face at all.)
-    for (linear, their_linear) in linear_rules.into_iter().filter(|_| ours.face_count() > 0) {
-        let ours_values = subdivider
-            .face_varying(&values, 2, &indices, linear)
-            .unwrap();
-        let with_fvar = OsdOptions {
-            fvar_linear: their_linear,
-            ..osd.clone()
-        };
-        let (their_values, their_indices) =
-            opensubdiv_refine_face_varying(&reference_cage, &with_fvar, levels, &values, &indices)
-                .unwrap();
+    // face, the cycle of its corners' values. (Boundary "none" can leave no
+    // face at all.)
+    let refined_values = match ours.face_count() {
+        0 => Vec::new(),
+        _ => face_varying_both(cage, &osd, levels, &subdivider),
+    };
+    for (linear, ours_values, their_values, their_indices) in refined_values {
         let as_points = |flat: &[f64]| -> Vec<DVec3> {
             flat.chunks_exact(2)
                 .map(|uv| DVec3::new(uv[0], uv[1], 0.0))

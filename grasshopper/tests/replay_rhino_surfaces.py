@@ -14,6 +14,8 @@ import sys
 
 import rhino3dm
 
+from replay_checks import check, finish
+
 # RhinoCommon member used by RhinoSurfaces -> the rhino3dm call replaying it.
 REPLAYED = {
     "NurbsSurface.Create": "rhino3dm.NurbsSurface.Create(3, False, 4, 4, 4, 4)",
@@ -22,17 +24,6 @@ REPLAYED = {
     "Points.SetPoint": "surface.Points[i, j] = Point4d(x, y, z, 1) (ON_NurbsSurface::SetCV, non-rational)",
 }
 
-passed = failed = 0
-
-
-def check(name, condition, detail=""):
-    global passed, failed
-    if condition:
-        passed += 1
-        print(f"ok   {name}")
-    else:
-        failed += 1
-        print(f"FAIL {name}{': ' + detail if detail else ''}")
 
 
 def bernstein(t):
@@ -76,8 +67,7 @@ def main():
     corner = surface.PointAt(1, 0)
     check("corner (1, 0) is control point [3][0]", (corner.X, corner.Y, corner.Z) == control[3][0], str(corner))
 
-    print(f"rhino3dm surface replay: {passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return finish("rhino3dm surface replay")
 
 
 if __name__ == "__main__":

@@ -6,21 +6,13 @@
 
 #include "check.h"
 
-static WeftSubdivisionOptions smooth_catmull_clark(void) {
-  WeftSubdivisionOptions options;
-  memset(&options, 0, sizeof options);
-  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
-  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
-  return options;
-}
-
 /* Control point (i, j) of patch p. */
 static const double *control(const double *points, size_t p, int i, int j) {
   return points + WEFT_PATCH_DOUBLES * p + 12 * i + 3 * j;
 }
 
 static void test_patches_of_a_cube(void) {
-  WeftMesh *cube = make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24);
+  WeftMesh *cube = unit_cube();
   WeftSubdivisionOptions options = smooth_catmull_clark();
   static double points[WEFT_PATCH_DOUBLES * 24];
   uint32_t faces[24];

@@ -9,21 +9,11 @@
 
 #include "check.h"
 
-static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
-
-static WeftSubdivisionOptions catmull_clark(void) {
-  WeftSubdivisionOptions options;
-  memset(&options, 0, sizeof options);
-  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
-  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
-  return options;
-}
-
 static int near(double a, double b) { return fabs(a - b) < 1e-12; }
 
 static void test_corners_are_the_vertex_limit(void) {
-  WeftMesh *mesh = cube();
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   WeftLimitSurface *surface = NULL;
   double limit[3 * 26], normals[3 * 26];
   /* Corner 0 of face 0 is cage vertex cube_indices[0]. */
@@ -53,8 +43,8 @@ static void test_corners_are_the_vertex_limit(void) {
 }
 
 static void test_bad_samples_are_refused(void) {
-  WeftMesh *mesh = cube();
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   WeftLimitSurface *surface = NULL, *untouched = (WeftLimitSurface *)&options;
   const uint32_t faces[] = {0, 6};
   const uint32_t good_faces[] = {0, 1};
@@ -94,8 +84,8 @@ static void test_bad_samples_are_refused(void) {
 }
 
 static void test_closest_points(void) {
-  WeftMesh *mesh = cube();
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   WeftLimitSurface *surface = NULL;
   /* Above the middle of the top face and beside the middle of the front. */
   const double points[] = {0.5, 0.5, 3.0, 0.5, -2.0, 0.5};

@@ -6,10 +6,9 @@
 #include "check.h"
 
 
-static WeftMesh *make_cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
 
 static void test_construction_and_accessors(void) {
-  WeftMesh *mesh = make_cube();
+  WeftMesh *mesh = unit_cube();
   double positions[24];
   uint32_t sizes[6], indices[24];
   CHECK(weft_mesh_vertex_count(mesh) == 8);
@@ -47,7 +46,7 @@ static void test_empty_mesh(void) {
 }
 
 static void test_info(void) {
-  WeftMesh *cube = make_cube(), *grid = NULL, *fin = NULL;
+  WeftMesh *cube = unit_cube(), *grid = NULL, *fin = NULL;
   WeftMeshInfo info;
   /* A 2 x 1 open quad grid. */
   static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};

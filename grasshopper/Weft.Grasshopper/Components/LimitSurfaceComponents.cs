@@ -1,3 +1,4 @@
+using System.Collections.Generic;
 using System.Runtime.InteropServices;
 using Grasshopper.Kernel;
 using Rhino.Geometry;
@@ -36,20 +37,6 @@ namespace Weft.Grasshopper
             {
                 return new LimitSurfaceEvaluator(mesh, scheme, new SubdivisionOptions(nakedEdges));
             }
-        }
-
-        protected static Point3d[] Points(double[] xyz)
-        {
-            var points = new Point3d[xyz.Length / 3];
-            for (int i = 0; i < points.Length; i++) points[i] = new Point3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-            return points;
-        }
-
-        protected static Vector3d[] Vectors(double[] xyz)
-        {
-            var vectors = new Vector3d[xyz.Length / 3];
-            for (int i = 0; i < vectors.Length; i++) vectors[i] = new Vector3d(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
-            return vectors;
         }
     }
 
@@ -98,14 +85,14 @@ namespace Weft.Grasshopper
                 if (surface == null) return;
                 surface.Evaluate(sampleFaces, uvs, positions, du, dv);
             }
-            Vector3d[] dus = Vectors(du), dvs = Vectors(dv);
+            List<Vector3d> dus = RhinoMeshes.ToVectors(du), dvs = RhinoMeshes.ToVectors(dv);
             var normals = new Vector3d[count];
             for (int i = 0; i < count; i++)
             {
                 normals[i] = Vector3d.CrossProduct(dus[i], dvs[i]);
                 normals[i].Unitize();
             }
-            DA.SetDataList(0, Points(positions));
+            DA.SetDataList(0, RhinoMeshes.ToPoints(positions));
             DA.SetDataList(1, normals);
             DA.SetDataList(2, dus);
             DA.SetDataList(3, dvs);
@@ -141,13 +128,7 @@ namespace Weft.Grasshopper
         {
             Point3d[] points = GetList<Point3d>(DA, 1);
             int count = points.Length;
-            var xyz = new double[3 * count];
-            for (int i = 0; i < count; i++)
-            {
-                xyz[3 * i] = points[i].X;
-                xyz[3 * i + 1] = points[i].Y;
-                xyz[3 * i + 2] = points[i].Z;
-            }
+            double[] xyz = RhinoMeshes.FromPoints(points);
             var faces = new uint[count];
             var uvs = new double[2 * count];
             var positions = new double[3 * count];
@@ -163,7 +144,7 @@ namespace Weft.Grasshopper
                 faceIndices[i] = (int)faces[i];
                 parameters[i] = new Point3d(uvs[2 * i], uvs[2 * i + 1], 0);
             }
-            DA.SetDataList(0, Points(positions));
+            DA.SetDataList(0, RhinoMeshes.ToPoints(positions));
             DA.SetDataList(1, faceIndices);
             DA.SetDataList(2, parameters);
         }
