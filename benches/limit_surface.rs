@@ -1,109 +1,135 @@
-//! The limit surface evaluated anywhere: 1,000,000 samples on cages of
-//! about 10,000 faces, Weft's `LimitSurface::evaluate` (positions and both
-//! derivatives, on one thread and on all) beside OpenSubdiv's Bfr on the
-//! same samples (`Bfr::RefinerSurfaceFactory`, one `Surface<double>` per
-//! face kept for that face's samples, `Evaluate` with derivatives; one
-//! thread, as Bfr evaluates). Building each evaluator is timed apart.
+//! Evaluation of the limit surface anywhere: 1 M samples on a 10k-quad
+//! torus (every face regular) and on a 10k-face cage with extraordinary
+//! vertices (the torus with every fourth quad split into two triangles,
+//! subdivided by Catmull-Clark), Weft's `LimitSurface::evaluate` (positions
+//! and both derivatives, on one thread and on two) beside OpenSubdiv's Bfr
+//! (`Surface<double>::Evaluate`, one surface per face kept for that face's
+//! samples, as its users evaluate; with Bfr's default approximation of
+//! irregular faces; one thread), and the preparation of Weft's surface
+//! (`LimitSurface::new`). The largest distance between the two over the
+//! samples is printed.
 //!
-//! Run with `cargo bench --bench limit_surface`.
+//! `cargo bench --bench limit_surface`.
 
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use weft::mesh::shapes;
-use weft::subdivide::{subdivide, LimitSurface, NakedEdges, Scheme, SubdivisionOptions};
+use weft::subdivide::{LimitSurface, NakedEdges, Scheme, SubdivisionOptions};
 use weft::{DVec3, Mesh};
-use weft_reference::{BoundaryInterpolation, OsdOptions, OsdRefiner, RefMesh, Scheme as OsdScheme};
+use weft_reference::{BoundaryInterpolation, OsdOptions, OsdRefiner, RefMesh};
 
 const SAMPLES: usize = 1_000_000;
 
-/// The cages: a regular torus of 10,000 quads, and a cube refined 5 times
-/// (6,144 quads, 8 extraordinary vertices).
-fn cages() -> Vec<(&'static str, Mesh)> {
-    vec![
-        ("torus-10k", shapes::torus(100, 100)),
-        (
-            "cube-6k",
-            subdivide(&shapes::cube(), Scheme::CatmullClark, 5, NakedEdges::Smooth).unwrap(),
-        ),
-    ]
+/// The torus with every fourth quad split into two triangles.
+fn irregular_torus() -> Mesh {
+    let torus = shapes::torus(100, 100);
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    for f in 0..torus.face_count() {
+        let q = torus.face(f);
+        if f % 4 == 0 {
+            faces.push(vec![q[0], q[1], q[2]]);
+            faces.push(vec![q[0], q[2], q[3]]);
+        } else {
+            faces.push(q.to_vec());
+        }
+    }
+    Mesh::from_polygons(torus.positions().to_vec(), faces).unwrap()
 }
 
-/// `SAMPLES` samples spread over the faces in face order, at scattered
-/// parameters of each.
-fn samples(face_count: usize) -> (Vec<u32>, Vec<f64>) {
-    let mut faces = Vec::with_capacity(SAMPLES);
-    let mut uvs = Vec::with_capacity(2 * SAMPLES);
-    for k in 0..SAMPLES {
-        faces.push((k * face_count / SAMPLES) as u32);
-        uvs.push(((k * 7919) % 1000) as f64 / 999.0);
-        uvs.push(((k * 104_729) % 1000) as f64 / 999.0);
+/// `SAMPLES` parameters spread over the faces, face by face.
+fn samples(cage: &Mesh) -> (Vec<u32>, Vec<f64>) {
+    let per_face = SAMPLES.div_ceil(cage.face_count());
+    let side = (per_face as f64).sqrt().ceil() as usize;
+    let (mut faces, mut uvs) = (Vec::new(), Vec::new());
+    for f in 0..cage.face_count() {
+        let n = cage.face(f).len();
+        for k in 0..per_face {
+            let (a, b) = ((k % side) as f64 + 0.5, (k / side) as f64 + 0.5);
+            let (u, v) = (a / side as f64, b / side as f64);
+            faces.push(f as u32);
+            if n == 4 {
+                uvs.extend([u, v]);
+            } else {
+                // Sub-face k mod n of the face, in its tile.
+                let w = if n < 5 { 2 } else { 3 };
+                let tile = k % n;
+                uvs.extend([(tile % w) as f64 + 0.5 * u, (tile / w) as f64 + 0.5 * v]);
+            }
+        }
     }
+    faces.truncate(SAMPLES);
+    uvs.truncate(2 * SAMPLES);
     (faces, uvs)
+}
+
+fn to_ref(mesh: &Mesh) -> RefMesh {
+    RefMesh {
+        positions: mesh.positions().iter().flat_map(|p| p.to_array()).collect(),
+        face_sizes: mesh.face_sizes().to_vec(),
+        face_indices: mesh.face_indices().to_vec(),
+    }
 }
 
 fn limit_surface(c: &mut Criterion) {
     let mut group = c.benchmark_group("limit-surface");
     group.sample_size(10);
     let options = SubdivisionOptions::new(NakedEdges::Smooth);
-    for (name, cage) in cages() {
-        let (faces, uvs) = samples(cage.face_count());
-        let surface = LimitSurface::new(&cage, Scheme::CatmullClark, &options).unwrap();
-        let (mut p, mut du, mut dv) = (
-            vec![DVec3::ZERO; SAMPLES],
-            vec![DVec3::ZERO; SAMPLES],
-            vec![DVec3::ZERO; SAMPLES],
-        );
-        group.bench_function(format!("{name}/weft-build"), |b| {
+    for (name, cage) in [
+        ("torus-10k", shapes::torus(100, 100)),
+        ("irregular-10k", irregular_torus()),
+    ] {
+        let (faces, uvs) = samples(&cage);
+        group.bench_function(format!("{name}/weft-new"), |b| {
             b.iter(|| LimitSurface::new(black_box(&cage), Scheme::CatmullClark, &options).unwrap())
         });
+        let surface = LimitSurface::new(&cage, Scheme::CatmullClark, &options).unwrap();
+        let mut out = [
+            vec![DVec3::ZERO; faces.len()],
+            vec![DVec3::ZERO; faces.len()],
+            vec![DVec3::ZERO; faces.len()],
+        ];
         for threads in [1, 2] {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
                 .build()
                 .unwrap();
-            group.bench_function(format!("{name}/weft-{threads}t"), |b| {
+            group.bench_function(format!("{name}/weft-evaluate-1M-{threads}t"), |b| {
                 b.iter(|| {
+                    let [p, du, dv] = &mut out;
                     pool.install(|| {
                         surface
-                            .evaluate(
-                                black_box(&faces),
-                                &uvs,
-                                &mut p,
-                                Some(&mut du),
-                                Some(&mut dv),
-                            )
+                            .evaluate(black_box(&faces), &uvs, p, Some(du), Some(dv))
                             .unwrap()
-                    })
+                    });
                 })
             });
         }
-
-        let reference = RefMesh {
-            positions: cage.positions().iter().flat_map(|q| q.to_array()).collect(),
-            face_sizes: cage.face_sizes().to_vec(),
-            face_indices: cage.face_indices().to_vec(),
-        };
-        let osd = OsdOptions::new(OsdScheme::CatmullClark, BoundaryInterpolation::EdgeOnly);
-        let refiner = OsdRefiner::new(&reference, &osd, 0).unwrap();
-        // Bfr's default approximation of irregular faces (smooth 2, sharp 6).
-        group.bench_function(format!("{name}/bfr-1t"), |b| {
+        let reference = to_ref(&cage);
+        let osd = OsdRefiner::new(
+            &reference,
+            &OsdOptions::new(
+                weft_reference::Scheme::CatmullClark,
+                BoundaryInterpolation::EdgeOnly,
+            ),
+            0,
+        )
+        .unwrap();
+        group.bench_function(format!("{name}/bfr-evaluate-1M-1t"), |b| {
             b.iter(|| {
-                refiner
-                    .bfr_evaluate(&reference.positions, (2, 6), black_box(&faces), &uvs)
+                osd.bfr_evaluate(&reference.positions, (2, 6), black_box(&faces), &uvs)
                     .unwrap()
             })
         });
-        // The same points, to the rounding of the patches where both are exact.
-        let [theirs, _, _] = refiner
+        let [theirs, _, _] = osd
             .bfr_evaluate(&reference.positions, (2, 6), &faces, &uvs)
             .unwrap();
-        let worst = p
+        let worst = out[0]
             .iter()
             .zip(theirs.chunks_exact(3))
             .map(|(a, b)| (*a - DVec3::from_slice(b)).length())
             .fold(0.0, f64::max);
-        eprintln!("{name}: largest distance between Weft and Bfr over the samples {worst:.2e}");
+        eprintln!("{name}: largest distance between Weft and Bfr over the samples: {worst:.2e}");
     }
     group.finish();
 }

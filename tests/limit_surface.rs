@@ -642,29 +642,20 @@ fn closest_points_lie_on_the_surface_and_nothing_sampled_is_nearer() {
         let [samples, _, _] = evaluate(&surface, &fs, &dense);
         let tolerance = 1e-9 * size(&cage);
         let mut worst: f64 = 0.0;
-        for (q, p) in points.iter().zip(&found) {
+        for (k, (q, p)) in points.iter().zip(&found).enumerate() {
             let d = (*q - *p).length();
-            let nearest = samples
+            let (i, nearest) = samples
                 .iter()
                 .map(|s| (*s - *q).length())
-                .fold(f64::INFINITY, f64::min);
-            if d > nearest + tolerance {
-                let i = samples
-                    .iter()
-                    .position(|s| (*s - *q).length() == nearest)
-                    .unwrap();
-                let k = points.iter().position(|x| x == q).unwrap();
-                eprintln!(
-                    "found face {} uv {:?}; sample face {} uv {:?}",
-                    faces[k],
-                    &uvs[2 * k..2 * k + 2],
-                    fs[i],
-                    &dense[2 * i..2 * i + 2]
-                );
-            }
+                .enumerate()
+                .fold((0, f64::INFINITY), |a, b| if b.1 < a.1 { b } else { a });
             assert!(
                 d <= nearest + tolerance,
-                "{name}: {q:?} found at {d}, a sample at {nearest}"
+                "{name}: {q:?} found at {d} on face {} at {:?}, a sample at {nearest} on face {} at {:?}",
+                faces[k],
+                &uvs[2 * k..2 * k + 2],
+                fs[i],
+                &dense[2 * i..2 * i + 2]
             );
             worst = worst.max(d - nearest);
         }

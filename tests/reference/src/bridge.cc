@@ -287,16 +287,15 @@ void OsdRefiner::bfr_evaluate(rust::Slice<const double> cage_positions, int32_t 
   Bfr::RefinerSurfaceFactory<> factory(*refiner_, options);
   Bfr::Surface<double> surface;
   std::vector<double> patch_points;
-  // As Bfr's users do: one surface per face, kept for the samples that follow on it.
-  std::size_t prepared = faces.size();
+  // Samples of the same face in a row share its surface, as Bfr's users
+  // evaluate a face's samples together.
   for (std::size_t i = 0; i < faces.size(); ++i) {
-    if (prepared == faces.size() || faces[prepared] != faces[i]) {
+    if (i == 0 || faces[i] != faces[i - 1]) {
       if (!factory.InitVertexSurface<double>(int(faces[i]), &surface) || !surface.IsValid()) {
         throw std::runtime_error("Bfr has no limit surface for face " + std::to_string(faces[i]));
       }
       patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
       surface.PreparePatchPoints(cage_positions.data(), 3, patch_points.data(), 3);
-      prepared = i;
     }
     const double uv[2] = {uvs[2 * i], uvs[2 * i + 1]};
     surface.Evaluate(uv, patch_points.data(), 3, &positions[3 * i], &du[3 * i], &dv[3 * i]);
