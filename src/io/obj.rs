@@ -29,16 +29,18 @@
 
 use std::collections::HashMap;
 use std::io::Write;
+use std::path::Path;
 
 use glam::DVec3;
 
-use super::mesh_file::{Colours, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
+use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh, IoError, Location};
 use crate::mesh::Mesh;
 use crate::subdivide::SHARPNESS_INFINITE;
 use tags::tag;
 
+mod fast;
 mod tags;
 
 /// Parses an OBJ file into its mesh alone.
@@ -60,15 +62,62 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
 /// [`IoError::InvalidMesh`] for a face the mesh rejects (an index past the
 /// last vertex, fewer than 3 corners, a repeated vertex), each with its line.
 pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
-    match read(data)? {
+    with_attribute_error(read(data))
+}
+
+fn with_attribute_error(
+    read: Result<(MeshFile, Option<IoError>), IoError>,
+) -> Result<MeshFile, IoError> {
+    match read? {
         (_, Some(attribute_error)) => Err(attribute_error),
         (file, None) => Ok(file),
     }
 }
 
-/// Reads the mesh and its attributes; returns the first problem with an
-/// attribute beside the file instead of failing on it.
+/// Reads the mesh and its attributes: on all threads when every line is
+/// well formed (the common case), else line by line, which finds the first
+/// problem and its line. The two give the same result.
 fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
+    match fast::read_bytes(data, fast::BLOCK, fast::PIECE) {
+        Some(file) => Ok((file, None)),
+        None => read_sequential(data),
+    }
+}
+
+/// Reads an OBJ file from disk a block at a time, never holding all its
+/// bytes (see [`read`]); returns the first problem with an attribute
+/// beside the file. Errors name the file.
+pub(crate) fn read_path(path: &Path) -> Result<(MeshFile, Option<IoError>), IoError> {
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(failed)?;
+    match fast::read_source(file, fast::BLOCK, fast::PIECE).map_err(failed)? {
+        Some(file) => Ok((file, None)),
+        None => {
+            let data = super::read_bytes(path)?;
+            read_sequential(&data)
+                .map(|(file, problem)| (file, problem.map(|e| e.in_file(path))))
+                .map_err(|e| e.in_file(path))
+        }
+    }
+}
+
+/// As [`parse_file`], for a file on disk.
+pub(crate) fn read_file_at(path: &Path) -> Result<MeshFile, IoError> {
+    with_attribute_error(read_path(path))
+}
+
+/// As [`parse`], for a file on disk.
+pub(crate) fn read_mesh_at(path: &Path) -> Result<Mesh, IoError> {
+    read_path(path).map(|(file, _)| file.mesh)
+}
+
+/// Reads the mesh and its attributes line by line; returns the first
+/// problem with an attribute beside the file instead of failing on it.
+fn read_sequential(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut attribute_error: Option<IoError> = None;
     let mut note = |e: IoError| {
         if attribute_error.is_none() {
@@ -87,14 +136,7 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut face_sizes = Vec::new();
     let mut face_indices = Vec::new();
     let mut face_lines = Vec::new();
-    let mut creases = Vec::new();
-    let mut corners = Vec::new();
-    let mut holes: Vec<(u32, usize)> = Vec::new();
-    // Polyline vertices to check against the vertex count at the end.
-    let mut line_vertices: Vec<(u32, usize)> = Vec::new();
-    let mut materials = Materials::default();
-    let mut material = NO_MATERIAL;
-    let mut material_index: HashMap<Vec<u8>, u32> = HashMap::new();
+    let mut statements = Statements::new();
     for (line, text) in lines(data) {
         let mut w = words(text);
         match w.next() {
@@ -230,167 +272,303 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
                 }
                 face_sizes.push(size);
                 face_lines.push(line);
-                materials.face_materials.push(material);
+                statements.face();
             }
-            Some(b"mtllib") => {
-                materials
-                    .libraries
-                    .extend(w.map(|name| String::from_utf8_lossy(name).into_owned()));
-            }
-            Some(b"usemtl") => {
-                // The name is the rest of the line: names may hold spaces.
-                let name = rest_of_line(text, b"usemtl");
-                let next = materials.names.len() as u32;
-                material = *material_index.entry(name.to_vec()).or_insert_with(|| {
-                    materials
-                        .names
-                        .push(String::from_utf8_lossy(name).into_owned());
-                    next
-                });
-            }
+            Some(b"mtllib") => statements.mtllib(w),
+            Some(b"usemtl") => statements.usemtl(text),
             Some(b"l") => {
-                let mut previous = None;
-                let mut count = 0;
-                for corner in w {
-                    let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
-                    let v = match parse_i64(index, line, "a vertex index")
-                        .and_then(|value| resolve(value, positions.len(), line, corner, "vertex"))
-                    {
-                        Ok(v) => v,
-                        Err(e) => {
-                            note(e);
-                            break;
-                        }
-                    };
-                    line_vertices.push((v, line));
-                    if let Some(p) = previous.filter(|&p| p != v) {
-                        creases.push(FileCrease {
-                            edge: [p, v],
-                            sharpness: SHARPNESS_INFINITE,
-                            line,
-                        });
-                    }
-                    previous = Some(v);
-                    count += 1;
-                }
-                if count < 2 {
-                    note(IoError::parse(
-                        Location::Line(line),
-                        "expected \"l\" and at least 2 vertex indices",
-                    ));
+                if let Some(e) = statements.polyline(w, line, positions.len()) {
+                    note(e);
                 }
             }
             Some(b"t") => {
-                if let Err(e) = tag(w.collect(), line, &mut creases, &mut corners, &mut holes) {
+                if let Err(e) = statements.tag(w, line) {
                     note(e);
                 }
             }
             _ => {}
         }
     }
-    let tagged = creases
-        .iter()
-        .flat_map(|c| c.edge.map(|v| (v, c.line)))
-        .chain(corners.iter().map(|c| (c.vertex, c.line)));
-    if let Some((v, line)) = tagged
-        .filter(|(v, _)| *v as usize >= positions.len())
-        .min_by_key(|&(_, line)| line)
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
-                positions.len(),
-                positions.len().max(1) - 1
-            ),
-        ));
-    }
-    if let Some(&(f, line)) = holes
-        .iter()
-        .filter(|(f, _)| *f as usize >= face_sizes.len())
-        .min_by_key(|&&(_, line)| line)
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "hole face {f} is past the last face: the file has {} (0 to {} in tags)",
-                face_sizes.len(),
-                face_sizes.len().max(1) - 1
-            ),
-        ));
-    }
-    let mut holes: Vec<u32> = holes
-        .into_iter()
-        .map(|(f, _)| f)
-        .filter(|&f| (f as usize) < face_sizes.len())
-        .collect();
-    holes.sort_unstable();
-    holes.dedup();
-    if let Some(&(v, line)) = line_vertices
-        .iter()
-        .find(|(v, _)| *v as usize >= positions.len())
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "polyline vertex {} is past the last vertex ({})",
-                v as u64 + 1,
-                positions.len()
-            ),
-        ));
-    }
-    if let Some(i) = uv_indices
-        .iter()
-        .position(|&i| i as usize >= uv_values.len())
-    {
-        // Find the face of corner i for its line.
-        let face = face_sizes
-            .iter()
-            .scan(0usize, |end, &s| {
-                *end += s as usize;
-                Some(*end)
-            })
-            .position(|end| end > i)
-            .unwrap_or(0);
-        note(IoError::parse(
-            Location::Line(face_lines[face]),
-            format!(
-                "texture coordinate index {} is past the last \"vt\" ({})",
-                uv_indices[i] as u64 + 1,
-                uv_values.len()
-            ),
-        ));
-    }
-    let has_uvs = faces_have_uvs.is_some_and(|(uvs, _)| uvs);
-    let mesh = build_mesh(
-        positions,
-        face_sizes,
-        face_indices,
-        |v| Location::Line(vertex_lines[v]),
-        |f| Location::Line(face_lines[f]),
-    )?;
     let colours = match colours.first() {
-        Some(Some(_)) => Some(Colours {
-            rgba: colours.into_iter().flatten().collect(),
-            alpha,
-        }),
+        Some(Some(_)) => Some(colours.into_iter().flatten().collect()),
         _ => None,
     };
-    let file = MeshFile {
-        mesh,
+    let collected = Collected {
+        positions,
+        vertex_lines,
         colours,
-        uvs: has_uvs.then_some(Uvs {
-            values: uv_values,
-            indices: uv_indices,
-        }),
-        normals: None,
-        creases,
-        corners,
-        materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
-            .then_some(materials),
-        holes,
+        alpha,
+        uv_values,
+        uv_indices,
+        has_uvs: faces_have_uvs.is_some_and(|(uvs, _)| uvs),
+        face_sizes,
+        face_indices,
+        face_lines,
+        statements,
     };
-    Ok((file, attribute_error))
+    collected.finish(attribute_error)
+}
+
+/// What a pass over the lines gathers, before the checks that need the
+/// whole file. The line-by-line reader and the parallel one both make it.
+pub(super) struct Collected {
+    pub(super) positions: Vec<DVec3>,
+    /// The line of each vertex; empty when the reader did not keep them
+    /// (a problem is then found again line by line).
+    pub(super) vertex_lines: Vec<usize>,
+    /// One colour per vertex, when the first vertex has one.
+    pub(super) colours: Option<Vec<[f64; 4]>>,
+    pub(super) alpha: bool,
+    pub(super) uv_values: Vec<[f64; 2]>,
+    pub(super) uv_indices: Vec<u32>,
+    /// Whether the faces name UVs.
+    pub(super) has_uvs: bool,
+    pub(super) face_sizes: Vec<u32>,
+    pub(super) face_indices: Vec<u32>,
+    /// The line of each face; empty as `vertex_lines`.
+    pub(super) face_lines: Vec<usize>,
+    pub(super) statements: Statements,
+}
+
+/// The statements besides vertices and faces: polylines, tags and
+/// materials, read in file order by both readers.
+#[derive(Default)]
+pub(super) struct Statements {
+    pub(super) creases: Vec<FileCrease>,
+    pub(super) corners: Vec<FileCorner>,
+    pub(super) holes: Vec<(u32, usize)>,
+    /// Polyline vertices to check against the vertex count at the end.
+    pub(super) line_vertices: Vec<(u32, usize)>,
+    pub(super) materials: Materials,
+    /// The material in force.
+    material: u32,
+    material_index: HashMap<Vec<u8>, u32>,
+}
+
+impl Statements {
+    pub(super) fn new() -> Statements {
+        Statements {
+            material: NO_MATERIAL,
+            ..Statements::default()
+        }
+    }
+
+    /// A face was read: it takes the material in force.
+    pub(super) fn face(&mut self) {
+        self.materials.face_materials.push(self.material);
+    }
+
+    /// `count` faces were read without a material statement among them.
+    pub(super) fn faces(&mut self, count: usize) {
+        let materials = &mut self.materials.face_materials;
+        materials.resize(materials.len() + count, self.material);
+    }
+
+    /// `mtllib` and its file names.
+    pub(super) fn mtllib<'a>(&mut self, words: impl Iterator<Item = &'a [u8]>) {
+        self.materials
+            .libraries
+            .extend(words.map(|name| String::from_utf8_lossy(name).into_owned()));
+    }
+
+    /// `usemtl` on the line `text`.
+    pub(super) fn usemtl(&mut self, text: &[u8]) {
+        // The name is the rest of the line: names may hold spaces.
+        let name = rest_of_line(text, b"usemtl");
+        let next = self.materials.names.len() as u32;
+        let names = &mut self.materials.names;
+        self.material = *self.material_index.entry(name.to_vec()).or_insert_with(|| {
+            names.push(String::from_utf8_lossy(name).into_owned());
+            next
+        });
+    }
+
+    /// `l` and its vertex indices, `vertex_count` vertices having been read:
+    /// every segment an infinitely sharp crease. Returns the first problem.
+    pub(super) fn polyline<'a>(
+        &mut self,
+        words: impl Iterator<Item = &'a [u8]>,
+        line: usize,
+        vertex_count: usize,
+    ) -> Option<IoError> {
+        let mut previous = None;
+        let mut count = 0;
+        for corner in words {
+            let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
+            let v = match parse_i64(index, line, "a vertex index")
+                .and_then(|value| resolve(value, vertex_count, line, corner, "vertex"))
+            {
+                Ok(v) => v,
+                Err(e) => return Some(e),
+            };
+            self.line_vertices.push((v, line));
+            if let Some(p) = previous.filter(|&p| p != v) {
+                self.creases.push(FileCrease {
+                    edge: [p, v],
+                    sharpness: SHARPNESS_INFINITE,
+                    line,
+                });
+            }
+            previous = Some(v);
+            count += 1;
+        }
+        (count < 2).then(|| {
+            IoError::parse(
+                Location::Line(line),
+                "expected \"l\" and at least 2 vertex indices",
+            )
+        })
+    }
+
+    /// `t` and its words: an OpenSubdiv tag.
+    pub(super) fn tag<'a>(
+        &mut self,
+        words: impl Iterator<Item = &'a [u8]>,
+        line: usize,
+    ) -> Result<(), IoError> {
+        tag(
+            words.collect(),
+            line,
+            &mut self.creases,
+            &mut self.corners,
+            &mut self.holes,
+        )
+    }
+}
+
+impl Collected {
+    /// The checks that need the whole file, and the mesh; `attribute_error`
+    /// is the first problem with an attribute found while reading.
+    pub(super) fn finish(
+        self,
+        attribute_error: Option<IoError>,
+    ) -> Result<(MeshFile, Option<IoError>), IoError> {
+        let mut attribute_error = attribute_error;
+        let mut note = |e: IoError| {
+            if attribute_error.is_none() {
+                attribute_error = Some(e);
+            }
+        };
+        let Collected {
+            positions,
+            vertex_lines,
+            colours,
+            alpha,
+            uv_values,
+            uv_indices,
+            has_uvs,
+            face_sizes,
+            face_indices,
+            face_lines,
+            statements,
+        } = self;
+        let Statements {
+            creases,
+            corners,
+            holes,
+            line_vertices,
+            materials,
+            ..
+        } = statements;
+        let line_of =
+            |lines: &[usize], k: usize| Location::Line(lines.get(k).copied().unwrap_or(0));
+        let tagged = creases
+            .iter()
+            .flat_map(|c| c.edge.map(|v| (v, c.line)))
+            .chain(corners.iter().map(|c| (c.vertex, c.line)));
+        if let Some((v, line)) = tagged
+            .filter(|(v, _)| *v as usize >= positions.len())
+            .min_by_key(|&(_, line)| line)
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
+                    positions.len(),
+                    positions.len().max(1) - 1
+                ),
+            ));
+        }
+        if let Some(&(f, line)) = holes
+            .iter()
+            .filter(|(f, _)| *f as usize >= face_sizes.len())
+            .min_by_key(|&&(_, line)| line)
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "hole face {f} is past the last face: the file has {} (0 to {} in tags)",
+                    face_sizes.len(),
+                    face_sizes.len().max(1) - 1
+                ),
+            ));
+        }
+        let mut holes: Vec<u32> = holes
+            .into_iter()
+            .map(|(f, _)| f)
+            .filter(|&f| (f as usize) < face_sizes.len())
+            .collect();
+        holes.sort_unstable();
+        holes.dedup();
+        if let Some(&(v, line)) = line_vertices
+            .iter()
+            .find(|(v, _)| *v as usize >= positions.len())
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "polyline vertex {} is past the last vertex ({})",
+                    v as u64 + 1,
+                    positions.len()
+                ),
+            ));
+        }
+        if let Some(i) = uv_indices
+            .iter()
+            .position(|&i| i as usize >= uv_values.len())
+        {
+            // Find the face of corner i for its line.
+            let face = face_sizes
+                .iter()
+                .scan(0usize, |end, &s| {
+                    *end += s as usize;
+                    Some(*end)
+                })
+                .position(|end| end > i)
+                .unwrap_or(0);
+            note(IoError::parse(
+                line_of(&face_lines, face),
+                format!(
+                    "texture coordinate index {} is past the last \"vt\" ({})",
+                    uv_indices[i] as u64 + 1,
+                    uv_values.len()
+                ),
+            ));
+        }
+        let mesh = build_mesh(
+            positions,
+            face_sizes,
+            face_indices,
+            |v| line_of(&vertex_lines, v),
+            |f| line_of(&face_lines, f),
+        )?;
+        let colours = colours.map(|rgba| Colours { rgba, alpha });
+        let file = MeshFile {
+            mesh,
+            colours,
+            uvs: has_uvs.then_some(Uvs {
+                values: uv_values,
+                indices: uv_indices,
+            }),
+            normals: None,
+            creases,
+            corners,
+            materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
+                .then_some(materials),
+            holes,
+        };
+        Ok((file, attribute_error))
+    }
 }
 
 /// The text of a line after its keyword, without surrounding white space.
