@@ -342,6 +342,9 @@ pub(super) struct Statements {
     pub(super) materials: Materials,
     /// The material in force.
     material: u32,
+    /// Faces read before any material, not yet in `materials` (most files
+    /// have no materials, and then none are stored).
+    unwritten: usize,
     material_index: HashMap<Vec<u8>, u32>,
 }
 
@@ -355,13 +358,28 @@ impl Statements {
 
     /// A face was read: it takes the material in force.
     pub(super) fn face(&mut self) {
-        self.materials.face_materials.push(self.material);
+        self.faces(1);
     }
 
     /// `count` faces were read without a material statement among them.
     pub(super) fn faces(&mut self, count: usize) {
-        let materials = &mut self.materials.face_materials;
-        materials.resize(materials.len() + count, self.material);
+        if self.material == NO_MATERIAL && self.materials.face_materials.is_empty() {
+            self.unwritten += count;
+        } else {
+            self.write_materials();
+            let materials = &mut self.materials.face_materials;
+            materials.resize(materials.len() + count, self.material);
+        }
+    }
+
+    /// Stores the materials of the faces read before any.
+    fn write_materials(&mut self) {
+        if self.unwritten > 0 {
+            self.materials
+                .face_materials
+                .resize(self.unwritten, NO_MATERIAL);
+            self.unwritten = 0;
+        }
     }
 
     /// `mtllib` and its file names.
@@ -462,6 +480,11 @@ impl Collected {
             face_lines,
             statements,
         } = self;
+        let mut statements = statements;
+        let kept = &statements.materials;
+        if !kept.libraries.is_empty() || !kept.names.is_empty() {
+            statements.write_materials();
+        }
         let Statements {
             creases,
             corners,

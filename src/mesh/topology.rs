@@ -9,7 +9,9 @@
 //! the *edge of a corner* runs from that corner's vertex to the next corner's
 //! vertex in the same face.
 
-use crate::buffers::{try_copy, try_vec};
+use rayon::prelude::*;
+
+use crate::buffers::{fill_by_offsets, zeroed, CHUNK};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 use crate::mesh::Mesh;
@@ -77,23 +79,39 @@ impl Topology {
     /// # Errors
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub fn try_new(mesh: &Mesh) -> Result<Topology> {
-        let corner_count = mesh.index_count();
         let indices = mesh.face_indices();
-        let mut corner_faces = try_vec(corner_count, "corner faces")?;
-        let mut corner_next = try_vec(corner_count, "next corners")?;
-        for (f, w) in mesh.face_offsets().windows(2).enumerate() {
-            let (start, end) = (w[0], w[1]);
-            corner_faces.extend(std::iter::repeat_n(f as u32, (end - start) as usize));
-            corner_next.extend(start + 1..end);
-            corner_next.push(start);
-        }
-        let adjacency =
-            Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize)?;
+        let offsets = mesh.face_offsets();
+        // Each face's corners in parallel; then the edges on one thread
+        // beside the corners' faces and vertices on the other.
+        let corner_next = fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
+            let start = offsets[f];
+            for (k, slot) in next.iter_mut().enumerate() {
+                *slot = start + k as u32 + 1;
+            }
+            if let Some(last) = next.last_mut() {
+                *last = start;
+            }
+        })?;
+        let (adjacency, corners) = rayon::join(
+            || Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize),
+            || -> Result<(Vec<u32>, Vec<u32>)> {
+                let corner_faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
+                    faces.fill(f as u32);
+                })?;
+                let mut face_vertices = zeroed(indices.len(), "corner vertices")?;
+                face_vertices
+                    .par_chunks_mut(CHUNK)
+                    .zip(indices.par_chunks(CHUNK))
+                    .for_each(|(to, from)| to.copy_from_slice(from));
+                Ok((corner_faces, face_vertices))
+            },
+        );
+        let (corner_faces, face_vertices) = corners?;
         Ok(Topology {
-            adjacency,
+            adjacency: adjacency?,
             corner_faces,
             corner_next,
-            face_vertices: try_copy(indices, "corner vertices")?,
+            face_vertices,
         })
     }
 
@@ -272,6 +290,72 @@ impl Topology {
             .collect()
     }
 
+    /// How many vertices [`Topology::non_manifold_vertices`] lists, worked
+    /// out vertex by vertex in parallel: the corners at a vertex are joined
+    /// across each manifold edge there (the edge's two faces' corners at
+    /// the vertex), which are exactly the joins of that method's fans, so
+    /// the count is the same without a union-find over all corners.
+    /// `face_offsets` are the mesh's.
+    fn non_manifold_vertex_count(&self, face_offsets: &[u32]) -> usize {
+        let vertex_count = self.adjacency.vertex_offsets.len() - 1;
+        let corner_edges = &self.adjacency.corner_edges;
+        let previous = |c: u32| {
+            let f = self.corner_faces[c as usize] as usize;
+            if c == face_offsets[f] {
+                face_offsets[f + 1] - 1
+            } else {
+                c - 1
+            }
+        };
+        (0..vertex_count)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .fold(
+                || (0usize, Vec::new()),
+                |(count, mut parent): (usize, Vec<u32>), v| {
+                    let corners = self.vertex_corners(v);
+                    parent.clear();
+                    parent.extend(0..corners.len() as u32);
+                    let mut non_manifold = false;
+                    for (i, &c) in corners.iter().enumerate() {
+                        // The edge out of v and the edge into v in c's face,
+                        // each with the corner whose edge it is.
+                        let before = previous(c);
+                        for (own, edge) in [
+                            (c, corner_edges[c as usize]),
+                            (before, corner_edges[before as usize]),
+                        ] {
+                            match self.edge_corners(edge as usize) {
+                                &[c1, c2] => {
+                                    let other = if c1 == own { c2 } else { c1 };
+                                    let at_v = if self.face_vertices[other as usize] as usize == v {
+                                        other
+                                    } else {
+                                        self.corner_next[other as usize]
+                                    };
+                                    if let Ok(j) = corners.binary_search(&at_v) {
+                                        let (a, b) = (
+                                            root(&mut parent, i as u32),
+                                            root(&mut parent, j as u32),
+                                        );
+                                        parent[a.max(b) as usize] = a.min(b);
+                                    }
+                                }
+                                [_] => {}
+                                _ => non_manifold = true,
+                            }
+                        }
+                    }
+                    if !non_manifold {
+                        non_manifold = (1..corners.len() as u32).any(|i| root(&mut parent, i) != 0);
+                    }
+                    (count + non_manifold as usize, parent)
+                },
+            )
+            .map(|(count, _)| count)
+            .sum()
+    }
+
     /// The connected component of each face (faces sharing any edge are
     /// connected), numbered from 0 in order of their first face, and the count.
     pub fn face_components(&self) -> (Vec<u32>, usize) {
@@ -377,24 +461,48 @@ impl Topology {
 
     /// The counts and flags that `weft info` and `weft_mesh_info` report.
     pub fn info(&self, mesh: &Mesh) -> MeshInfo {
-        let naked_edge_count = (0..self.edge_count())
-            .filter(|&e| self.is_naked_edge(e))
-            .count();
-        let non_manifold_edge_count = (0..self.edge_count())
-            .filter(|&e| self.is_non_manifold_edge(e))
-            .count();
-        let orientation = self.orientation();
-        let is_oriented = (0..self.edge_count()).all(|e| match self.edge_corners(e) {
-            &[c1, c2] => self.face_vertices[c1 as usize] != self.face_vertices[c2 as usize],
-            _ => true,
-        });
+        // Edges by how many corners they have, and whether the manifold
+        // ones already run opposite ways in their two faces: one parallel
+        // pass; the orientation walk and the fans beside it.
+        let offsets = &self.adjacency.edge_offsets;
+        let ((naked_edge_count, non_manifold_edge_count, is_oriented), (orientation, fans)) =
+            rayon::join(
+                || {
+                    (0..self.edge_count())
+                        .into_par_iter()
+                        .with_min_len(CHUNK)
+                        .fold(
+                            || (0usize, 0usize, true),
+                            |(naked, non_manifold, oriented), e| {
+                                let corners = offsets[e + 1] - offsets[e];
+                                let opposite = corners != 2 || {
+                                    let c = &self.adjacency.edge_corners[offsets[e] as usize..];
+                                    self.face_vertices[c[0] as usize]
+                                        != self.face_vertices[c[1] as usize]
+                                };
+                                (
+                                    naked + (corners == 1) as usize,
+                                    non_manifold + (corners > 2) as usize,
+                                    oriented && opposite,
+                                )
+                            },
+                        )
+                        .reduce(|| (0, 0, true), |a, b| (a.0 + b.0, a.1 + b.1, a.2 && b.2))
+                },
+                || {
+                    rayon::join(
+                        || self.orientation(),
+                        || self.non_manifold_vertex_count(mesh.face_offsets()),
+                    )
+                },
+            );
         MeshInfo {
             vertex_count: mesh.vertex_count(),
             edge_count: self.edge_count(),
             face_count: mesh.face_count(),
             naked_edge_count,
             non_manifold_edge_count,
-            non_manifold_vertex_count: self.non_manifold_vertices().len(),
+            non_manifold_vertex_count: fans,
             component_count: orientation.component_orientable.len(),
             is_closed: mesh.face_count() > 0
                 && naked_edge_count == 0
@@ -403,6 +511,16 @@ impl Topology {
             is_oriented,
         }
     }
+}
+
+/// The root of `x` in a small forest of parent links, halving the path.
+fn root(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let grandparent = parent[parent[x as usize] as usize];
+        parent[x as usize] = grandparent;
+        x = grandparent;
+    }
+    x
 }
 
 /// Disjoint sets over `0..n` with path halving and union by size.
@@ -507,6 +625,45 @@ mod tests {
         let info = Topology::new(&strip).info(&strip);
         assert!(!info.is_orientable);
         assert_eq!(info.naked_edge_count, 16);
+    }
+
+    #[test]
+    fn fan_count_equals_the_listed_non_manifold_vertices() {
+        // Shapes with bow-ties, fins, flipped faces (edges run the same
+        // way in both faces), n-gons, holes and a Möbius strip.
+        let cube = shapes::cube();
+        let mut flipped: Vec<Vec<u32>> = cube.faces().map(|f| f.to_vec()).collect();
+        flipped[1].reverse();
+        flipped[4].reverse();
+        let flipped = Mesh::from_polygons(cube.positions().to_vec(), flipped).unwrap();
+        let grid = shapes::quad_grid(4, 3);
+        let mut pinched: Vec<Vec<u32>> = grid.faces().map(|f| f.to_vec()).collect();
+        pinched.retain(|f| !f.contains(&6) || f.contains(&0));
+        let pinched = Mesh::from_polygons(grid.positions().to_vec(), pinched).unwrap();
+        let fin = shapes::fin();
+        let mut fin_flipped: Vec<Vec<u32>> = fin.faces().map(|f| f.to_vec()).collect();
+        fin_flipped[0].reverse();
+        let fin_flipped = Mesh::from_polygons(fin.positions().to_vec(), fin_flipped).unwrap();
+        for mesh in [
+            cube,
+            flipped,
+            pinched,
+            fin,
+            fin_flipped,
+            shapes::bow_tie(),
+            shapes::mobius_strip(7),
+            shapes::mixed_polygons(),
+            shapes::quad_grid_with_hole(),
+            shapes::triangle_grid_with_hole(),
+            shapes::l_shaped_hexagon(0.0),
+            shapes::torus(5, 4),
+        ] {
+            let topology = Topology::new(&mesh);
+            assert_eq!(
+                topology.non_manifold_vertex_count(mesh.face_offsets()),
+                topology.non_manifold_vertices().len()
+            );
+        }
     }
 
     #[test]
