@@ -31,6 +31,8 @@ use std::collections::HashMap;
 use std::io::Write;
 use std::path::Path;
 
+use rayon::prelude::*;
+
 use glam::DVec3;
 
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
@@ -621,6 +623,54 @@ fn resolve(value: i64, count: usize, line: usize, word: &[u8], what: &str) -> Re
     })
 }
 
+/// Appends `value` in decimal, as `write!(w, "{value}")` does.
+#[inline]
+fn push_decimal(w: &mut Vec<u8>, mut value: u64) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (value % 10) as u8;
+        value /= 10;
+        if value == 0 {
+            break;
+        }
+    }
+    w.extend_from_slice(&digits[at..]);
+}
+
+/// Writes `count` items (vertices, faces) through `format`, which appends
+/// the text of a range of them to a buffer: blocks of items are formatted
+/// on all threads, a round at a time into buffers used again for the next
+/// round, and written in order, so the text is the same as one thread's.
+fn write_in_blocks(
+    w: &mut dyn Write,
+    count: usize,
+    format: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> std::io::Result<()> + Sync,
+) -> std::io::Result<()> {
+    const ITEMS: usize = 1 << 14;
+    let mut buffers = vec![Vec::new(); 4 * rayon::current_num_threads().max(1)];
+    let round = ITEMS * buffers.len();
+    for start in (0..count).step_by(round) {
+        let end = (start + round).min(count);
+        buffers
+            .par_iter_mut()
+            .enumerate()
+            .try_for_each(|(k, buffer)| {
+                buffer.clear();
+                let first = start + k * ITEMS;
+                if first < end {
+                    format(first..(first + ITEMS).min(end), buffer)?;
+                }
+                Ok::<(), std::io::Error>(())
+            })?;
+        for buffer in &buffers {
+            w.write_all(buffer)?;
+        }
+    }
+    Ok(())
+}
+
 /// Writes a mesh as OBJ.
 ///
 /// # Errors
@@ -644,17 +694,22 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
         mesh.vertex_count(),
         mesh.face_count()
     )?;
-    for (i, p) in mesh.positions().iter().enumerate() {
-        write!(w, "v {} {} {}", p.x, p.y, p.z)?;
-        if let Some(colours) = &file.colours {
-            let [r, g, b, a] = colours.rgba[i];
-            write!(w, " {r} {g} {b}")?;
-            if colours.alpha {
-                write!(w, " {a}")?;
+    let positions = mesh.positions();
+    write_in_blocks(w, positions.len(), |vertices, w| {
+        for i in vertices {
+            let p = positions[i];
+            write!(w, "v {} {} {}", p.x, p.y, p.z)?;
+            if let Some(colours) = &file.colours {
+                let [r, g, b, a] = colours.rgba[i];
+                write!(w, " {r} {g} {b}")?;
+                if colours.alpha {
+                    write!(w, " {a}")?;
+                }
             }
+            w.push(b'\n');
         }
-        w.write_all(b"\n")?;
-    }
+        Ok(())
+    })?;
     if let Some(normals) = &file.normals {
         for n in normals {
             writeln!(w, "vn {} {} {}", n.x, n.y, n.z)?;
@@ -669,29 +724,41 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
     if let Some(libraries) = materials.map(|m| &m.libraries).filter(|l| !l.is_empty()) {
         writeln!(w, "mtllib {}", libraries.join(" "))?;
     }
-    let mut current = NO_MATERIAL;
-    let mut corner = 0;
-    for (f, face) in mesh.faces().enumerate() {
-        if let Some(m) = materials {
-            let material = m.face_materials[f];
-            if material != current && material != NO_MATERIAL {
-                writeln!(w, "usemtl {}", m.names[material as usize])?;
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        // The material in force after the face before the block.
+        let mut current = match (materials, faces.start) {
+            (Some(m), f) if f > 0 => m.face_materials[f - 1],
+            _ => NO_MATERIAL,
+        };
+        let mut corner = mesh.face_offsets()[faces.start] as usize;
+        for f in faces {
+            if let Some(m) = materials {
+                let material = m.face_materials[f];
+                if material != current && material != NO_MATERIAL {
+                    writeln!(w, "usemtl {}", m.names[material as usize])?;
+                }
+                current = material;
             }
-            current = material;
-        }
-        w.write_all(b"f")?;
-        for &v in face {
-            let v = v as u64 + 1;
-            match (&file.uvs, &file.normals) {
-                (None, None) => write!(w, " {v}")?,
-                (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
-                (None, Some(_)) => write!(w, " {v}//{v}")?,
-                (Some(uvs), Some(_)) => write!(w, " {v}/{}/{v}", uvs.indices[corner] as u64 + 1)?,
+            w.push(b'f');
+            for &v in mesh.face(f) {
+                let v = v as u64 + 1;
+                match (&file.uvs, &file.normals) {
+                    (None, None) => {
+                        w.push(b' ');
+                        push_decimal(w, v);
+                    }
+                    (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
+                    (None, Some(_)) => write!(w, " {v}//{v}")?,
+                    (Some(uvs), Some(_)) => {
+                        write!(w, " {v}/{}/{v}", uvs.indices[corner] as u64 + 1)?
+                    }
+                }
+                corner += 1;
             }
-            corner += 1;
+            w.push(b'\n');
         }
-        w.write_all(b"\n")?;
-    }
+        Ok(())
+    })?;
     for c in &file.creases {
         let [a, b] = c.edge;
         if c.sharpness >= SHARPNESS_INFINITE {
