@@ -14,7 +14,7 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use glam::DVec3;
-use rayon::slice::ParallelSliceMut;
+use rayon::prelude::*;
 
 use crate::buffers::try_vec;
 use crate::error::{Error, Result, MAX_ELEMENTS};
@@ -127,19 +127,26 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     let clusters = vertex_clusters(positions, tolerance)?;
 
     // The cluster of each vertex, numbered in order of its first vertex.
+    // Each vertex's root, found on all threads, then numbered in order.
     let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
+    cluster_of.par_extend(
+        (0..vertex_count as u32)
+            .into_par_iter()
+            .with_min_len(4096)
+            .map(|v| clusters.root(v)),
+    );
+    drop(clusters);
     let mut first_vertex: Vec<u32> = Vec::new();
     {
         let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
         label.resize(vertex_count, u32::MAX);
-        let mut clusters = clusters;
-        for v in 0..vertex_count as u32 {
-            let root = clusters.find(v) as usize;
+        for (v, cluster) in cluster_of.iter_mut().enumerate() {
+            let root = *cluster as usize;
             if label[root] == u32::MAX {
                 label[root] = first_vertex.len() as u32;
-                first_vertex.push(v);
+                first_vertex.push(v as u32);
             }
-            cluster_of.push(label[root]);
+            *cluster = label[root];
         }
     }
     let cluster_count = first_vertex.len();
@@ -301,6 +308,8 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     // This keeps crowded cells, down to a tolerance larger than the whole
     // mesh, linear.
     let tight: Vec<bool> = (0..cell_keys.len())
+        .into_par_iter()
+        .with_min_len(1024)
         .map(|k| {
             let here = cell_sites(k);
             let first = positions[here[0] as usize];
@@ -311,44 +320,51 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
             within(lo, hi, tolerance)
         })
         .collect();
-    for (k, &key) in cell_keys.iter().enumerate() {
-        let here = cell_sites(k);
-        if tight[k] {
-            for &b in &here[1..] {
-                clusters.union(here[0], b);
-            }
-        } else {
-            for (i, &a) in here.iter().enumerate() {
-                let pa = positions[a as usize];
-                for &b in &here[i + 1..] {
-                    if within(pa, positions[b as usize], tolerance) {
-                        clusters.union(a, b);
-                    }
-                }
-            }
-        }
-        // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
-        for offset in FORWARD_NEIGHBOURS {
-            let Some(&other) = cell_lookup.get(&key.offset(offset)) else {
-                continue;
-            };
-            let there = cell_sites(other as usize);
-            let both_tight = tight[k] && tight[other as usize];
-            if both_tight && clusters.find(here[0]) == clusters.find(there[0]) {
-                continue;
-            }
-            'pairs: for &a in here {
-                let pa = positions[a as usize];
-                for &b in there {
-                    if within(pa, positions[b as usize], tolerance) {
-                        clusters.union(a, b);
-                        if both_tight {
-                            break 'pairs;
+    // The pairs to join, cell by cell on all threads (the clusters do not
+    // depend on the order the pairs are joined in), then joined on one.
+    let pairs: Vec<Vec<(u32, u32)>> = (0..cell_keys.len())
+        .into_par_iter()
+        .with_min_len(1024)
+        .fold(Vec::new, |mut pairs, k| {
+            let key = cell_keys[k];
+            let here = cell_sites(k);
+            if tight[k] {
+                pairs.extend(here[1..].iter().map(|&b| (here[0], b)));
+            } else {
+                for (i, &a) in here.iter().enumerate() {
+                    let pa = positions[a as usize];
+                    for &b in &here[i + 1..] {
+                        if within(pa, positions[b as usize], tolerance) {
+                            pairs.push((a, b));
                         }
                     }
                 }
             }
-        }
+            // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
+            for offset in FORWARD_NEIGHBOURS {
+                let Some(&other) = cell_lookup.get(&key.offset(offset)) else {
+                    continue;
+                };
+                let there = cell_sites(other as usize);
+                // Two tight cells are each one cluster: one close pair joins them.
+                let both_tight = tight[k] && tight[other as usize];
+                'pairs: for &a in here {
+                    let pa = positions[a as usize];
+                    for &b in there {
+                        if within(pa, positions[b as usize], tolerance) {
+                            pairs.push((a, b));
+                            if both_tight {
+                                break 'pairs;
+                            }
+                        }
+                    }
+                }
+            }
+            pairs
+        })
+        .collect();
+    for (a, b) in pairs.into_iter().flatten() {
+        clusters.union(a, b);
     }
     Ok(clusters)
 }

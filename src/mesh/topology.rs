@@ -30,6 +30,83 @@ pub struct Topology {
     face_vertices: Vec<u32>,
 }
 
+/// The edges of a mesh and each corner's edge, without the rest of a
+/// [`Topology`] (the corners' faces, next corners and vertices): what a
+/// pass that only asks which edges are naked needs, at a little over half
+/// the memory. Built by the same edge builder.
+#[derive(Debug, Clone)]
+pub(crate) struct Edges {
+    adjacency: Adjacency,
+}
+
+impl Edges {
+    /// The edges of `mesh`.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
+    pub(crate) fn try_new(mesh: &Mesh) -> Result<Edges> {
+        let indices = mesh.face_indices();
+        let sizes = mesh.face_sizes();
+        let adjacency = match sizes.first() {
+            // Faces of one size: the next corner is arithmetic.
+            Some(&size) if sizes.par_iter().all(|&s| s == size) => {
+                let size = size as usize;
+                Adjacency::build(mesh.vertex_count(), indices, |c| {
+                    if c % size == size - 1 {
+                        c + 1 - size
+                    } else {
+                        c + 1
+                    }
+                })?
+            }
+            _ => {
+                let next = corner_next(mesh.face_offsets())?;
+                Adjacency::build(mesh.vertex_count(), indices, |c| next[c] as usize)?
+            }
+        };
+        Ok(Edges { adjacency })
+    }
+
+    /// For each corner, the edge from it to the next corner of its face.
+    #[inline]
+    pub(crate) fn corner_edges(&self) -> &[u32] {
+        &self.adjacency.corner_edges
+    }
+
+    /// Number of unique edges.
+    #[inline]
+    pub(crate) fn edge_count(&self) -> usize {
+        self.adjacency.edges.len()
+    }
+
+    /// Whether edge `e` has exactly one face.
+    #[inline]
+    pub(crate) fn is_naked_edge(&self, e: usize) -> bool {
+        self.adjacency.edge_offsets[e + 1] - self.adjacency.edge_offsets[e] == 1
+    }
+
+    /// The edge between vertices `a` and `b`, if there is one.
+    pub(crate) fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
+        self.adjacency
+            .edges
+            .binary_search(&[a.min(b), a.max(b)])
+            .ok()
+    }
+}
+
+/// For each corner, the next corner of its face, written in parallel.
+fn corner_next(offsets: &[u32]) -> Result<Vec<u32>> {
+    fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
+        let start = offsets[f];
+        for (k, slot) in next.iter_mut().enumerate() {
+            *slot = start + k as u32 + 1;
+        }
+        if let Some(last) = next.last_mut() {
+            *last = start;
+        }
+    })
+}
+
 /// What [`Topology::info`] counts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub struct MeshInfo {
@@ -83,15 +160,7 @@ impl Topology {
         let offsets = mesh.face_offsets();
         // Each face's corners in parallel; then the edges on one thread
         // beside the corners' faces and vertices on the other.
-        let corner_next = fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
-            let start = offsets[f];
-            for (k, slot) in next.iter_mut().enumerate() {
-                *slot = start + k as u32 + 1;
-            }
-            if let Some(last) = next.last_mut() {
-                *last = start;
-            }
-        })?;
+        let corner_next = corner_next(offsets)?;
         let (adjacency, corners) = rayon::join(
             || Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize),
             || -> Result<(Vec<u32>, Vec<u32>)> {
@@ -542,6 +611,15 @@ impl UnionFind {
             let grandparent = self.parent[self.parent[x as usize] as usize];
             self.parent[x as usize] = grandparent;
             x = grandparent;
+        }
+        x
+    }
+
+    /// The root of `x`, without shortening the path (so it can be asked
+    /// from many threads at once).
+    pub(crate) fn root(&self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
         }
         x
     }
