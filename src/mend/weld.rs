@@ -296,11 +296,6 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         return Ok(clusters);
     }
 
-    let mut cell_lookup: CellMap<u32> = CellMap::default();
-    cell_lookup.reserve(cell_keys.len());
-    for (k, &key) in cell_keys.iter().enumerate() {
-        cell_lookup.insert(key, k as u32);
-    }
     let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
     // A cell whose sites all lie within the tolerance of each other (its
     // box's diagonal is short enough) is one cluster without comparing its
@@ -320,41 +315,58 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
             within(lo, hi, tolerance)
         })
         .collect();
-    // The pairs to join, cell by cell on all threads (the clusters do not
+    // The pairs to join, blocks of cells on all threads (the clusters do not
     // depend on the order the pairs are joined in), then joined on one.
-    let pairs: Vec<Vec<(u32, u32)>> = (0..cell_keys.len())
+    // The cells are sorted, and so are the cells one offset away from
+    // them: each block finds its neighbours across an offset by walking
+    // both sorted lists side by side, without hashing.
+    const CELLS: usize = 4096;
+    let pairs: Vec<Vec<(u32, u32)>> = (0..cell_keys.len().div_ceil(CELLS))
         .into_par_iter()
-        .with_min_len(1024)
-        .fold(Vec::new, |mut pairs, k| {
-            let key = cell_keys[k];
-            let here = cell_sites(k);
-            if tight[k] {
-                pairs.extend(here[1..].iter().map(|&b| (here[0], b)));
-            } else {
-                for (i, &a) in here.iter().enumerate() {
-                    let pa = positions[a as usize];
-                    for &b in &here[i + 1..] {
-                        if within(pa, positions[b as usize], tolerance) {
-                            pairs.push((a, b));
+        .map(|block| {
+            let cells = block * CELLS..((block + 1) * CELLS).min(cell_keys.len());
+            let mut pairs = Vec::new();
+            for k in cells.clone() {
+                let here = cell_sites(k);
+                if tight[k] {
+                    pairs.extend(here[1..].iter().map(|&b| (here[0], b)));
+                } else {
+                    for (i, &a) in here.iter().enumerate() {
+                        let pa = positions[a as usize];
+                        for &b in &here[i + 1..] {
+                            if within(pa, positions[b as usize], tolerance) {
+                                pairs.push((a, b));
+                            }
                         }
                     }
                 }
             }
             // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
             for offset in FORWARD_NEIGHBOURS {
-                let Some(&other) = cell_lookup.get(&key.offset(offset)) else {
-                    continue;
-                };
-                let there = cell_sites(other as usize);
-                // Two tight cells are each one cluster: one close pair joins them.
-                let both_tight = tight[k] && tight[other as usize];
-                'pairs: for &a in here {
-                    let pa = positions[a as usize];
-                    for &b in there {
-                        if within(pa, positions[b as usize], tolerance) {
-                            pairs.push((a, b));
-                            if both_tight {
-                                break 'pairs;
+                let first = cell_keys[cells.start].offset(offset);
+                let mut other = cell_keys.partition_point(|&c| c < first);
+                for k in cells.clone() {
+                    let wanted = cell_keys[k].offset(offset);
+                    while other < cell_keys.len() && cell_keys[other] < wanted {
+                        other += 1;
+                    }
+                    if other == cell_keys.len() {
+                        break;
+                    }
+                    if cell_keys[other] != wanted {
+                        continue;
+                    }
+                    let (here, there) = (cell_sites(k), cell_sites(other));
+                    // Two tight cells are each one cluster: one close pair joins them.
+                    let both_tight = tight[k] && tight[other];
+                    'pairs: for &a in here {
+                        let pa = positions[a as usize];
+                        for &b in there {
+                            if within(pa, positions[b as usize], tolerance) {
+                                pairs.push((a, b));
+                                if both_tight {
+                                    break 'pairs;
+                                }
                             }
                         }
                     }
