@@ -250,9 +250,30 @@ pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    let entries = grid.sorted_cells(positions, "the weld cells")?;
+    // By cell, then within the cell by exact position, then index (one
+    // parallel sort): duplicates become neighbours with their lowest index
+    // first.
+    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
+    entries.par_extend(
+        positions
+            .par_iter()
+            .enumerate()
+            .with_min_len(4096)
+            .map(|(v, &p)| (grid.cell(p), v as u32)),
+    );
+    entries.par_sort_unstable_by(|&(cell_a, a), &(cell_b, b)| {
+        cell_a.cmp(&cell_b).then_with(|| {
+            let (pa, pb) = (positions[a as usize], positions[b as usize]);
+            // Adding 0 makes -0 and +0 one key: they are one position.
+            let (pa, pb) = (pa + 0.0, pb + 0.0);
+            pa.x.total_cmp(&pb.x)
+                .then(pa.y.total_cmp(&pb.y))
+                .then(pa.z.total_cmp(&pb.z))
+                .then(a.cmp(&b))
+        })
+    });
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
-    order.extend(entries.iter().map(|&(_, v)| v));
+    order.par_extend(entries.par_iter().with_min_len(4096).map(|&(_, v)| v));
 
     let mut clusters = UnionFind::new(positions.len());
     // Distinct positions ("sites"), each standing for its exact duplicates.
@@ -264,20 +285,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     while start < entries.len() {
         let key = entries[start].0;
         let end = start + entries[start..].partition_point(|e| e.0 == key);
-        // Within the cell by exact position, then index: duplicates become
-        // neighbours with their lowest index first.
-        let group = &mut order[start..end];
-        if group.len() > 1 {
-            group.sort_unstable_by(|&a, &b| {
-                let (pa, pb) = (positions[a as usize], positions[b as usize]);
-                // Adding 0 makes -0 and +0 one key: they are one position.
-                let (pa, pb) = (pa + 0.0, pb + 0.0);
-                pa.x.total_cmp(&pb.x)
-                    .then(pa.y.total_cmp(&pb.y))
-                    .then(pa.z.total_cmp(&pb.z))
-                    .then(a.cmp(&b))
-            });
-        }
+        let group = &order[start..end];
         cell_keys.push(key);
         cell_starts.push(sites.len() as u32);
         let first_site = sites.len();
@@ -292,6 +300,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         start = end;
     }
     cell_starts.push(sites.len() as u32);
+    drop((entries, order));
     if tolerance == 0.0 {
         return Ok(clusters);
     }
