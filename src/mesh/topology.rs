@@ -11,7 +11,7 @@
 
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, zeroed, CHUNK};
+use crate::buffers::{fill_by_offsets, try_vec, zeroed, CHUNK};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 use crate::mesh::Mesh;
@@ -476,15 +476,39 @@ impl Topology {
     /// Gives every face a winding relative to the first face of its component,
     /// walking across manifold edges; non-manifold edges do not constrain.
     pub fn orientation(&self) -> Orientation {
-        let face_count = self.face_count();
-        let (face_component, component_count) = self.face_components();
-        let mut face_flip = vec![false; face_count];
+        // The components on one thread, the walk on the other; the walk's
+        // disagreements are charged to their components afterwards.
+        let ((face_component, component_count), (face_flip, disagreeing)) =
+            rayon::join(|| self.face_components(), || self.walk_windings());
         let mut component_orientable = vec![true; component_count];
-        let mut visited = vec![false; face_count];
-        let mut face_first_corner = vec![0u32; face_count];
-        for (c, &f) in self.corner_faces.iter().enumerate().rev() {
-            face_first_corner[f as usize] = c as u32;
+        for g in disagreeing {
+            component_orientable[face_component[g as usize] as usize] = false;
         }
+        Orientation {
+            face_component,
+            face_flip,
+            component_orientable,
+        }
+    }
+
+    /// The walk of [`Topology::orientation`] across manifold edges: each
+    /// face's flip relative to the first face of its walk, and the faces
+    /// where an edge disagrees with a flip already given.
+    fn walk_windings(&self) -> (Vec<bool>, Vec<u32>) {
+        let face_count = self.face_count();
+        let mut face_flip = vec![false; face_count];
+        let mut disagreeing = Vec::new();
+        let mut visited = vec![false; face_count];
+        // The faces' first corners: where the (ascending) corner faces step.
+        let corner_faces = &self.corner_faces;
+        let mut face_first_corner =
+            try_vec::<u32>(face_count, "first corners").unwrap_or_else(|error| panic!("{error}"));
+        face_first_corner.par_extend(
+            (0..face_count as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|f| corner_faces.partition_point(|&g| g < f) as u32),
+        );
         let mut stack = Vec::new();
         for seed in 0..face_count {
             if visited[seed] {
@@ -510,7 +534,7 @@ impl Topology {
                                 face_flip[g] = wanted;
                                 stack.push(g as u32);
                             } else if face_flip[g] != wanted {
-                                component_orientable[face_component[g] as usize] = false;
+                                disagreeing.push(g as u32);
                             }
                         }
                     }
@@ -521,11 +545,7 @@ impl Topology {
                 }
             }
         }
-        Orientation {
-            face_component,
-            face_flip,
-            component_orientable,
-        }
+        (face_flip, disagreeing)
     }
 
     /// The counts and flags that `weft info` and `weft_mesh_info` report.
