@@ -25,7 +25,7 @@ suite "cargo fmt --check" cargo fmt --all --check
 suite "cargo clippy" cargo clippy --workspace --all-targets --quiet -- -D warnings
 suite "cargo test" cargo test --workspace
 suite "C tests" tests/c/run.sh
-for script in dotnet/test.sh grasshopper/check.sh python/test.sh tests/install/run.sh fuzz/smoke.sh; do
+for script in dotnet/test.sh grasshopper/check.sh python/test.sh tests/install/run.sh tests/step/run.sh fuzz/smoke.sh; do
   [ -x "$script" ] && suite "$script" "$script"
 done
 

@@ -29,7 +29,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 
 # Opaque handles and the SafeHandle that owns each.
-HANDLES = {"WeftMesh": "WeftMeshHandle", "WeftRefiner": "WeftRefinerHandle", "WeftCells": "WeftCellsHandle"}
+HANDLES = {"WeftMesh": "WeftMeshHandle", "WeftRefiner": "WeftRefinerHandle", "WeftLimitSurface": "WeftLimitSurfaceHandle", "WeftCells": "WeftCellsHandle"}
 # Structs generated here (internal, passed by reference) under their C# names.
 NATIVE_STRUCTS = {"WeftSubdivisionOptions": "NativeSubdivisionOptions", "WeftMeshInfo": "NativeMeshInfo"}
 # Structs whose public C# declaration is hand-written in Structs.cs (same layout, documented API).
@@ -65,6 +65,7 @@ ENUMS = [
 # The other constants, in NativeConstants.
 CONSTANTS = {"WEFT_SHARPNESS_INFINITE": "SharpnessInfinite", "WEFT_DEFAULT_WELD_TOLERANCE": "DefaultWeldTolerance",
              "WEFT_SUBDIVISION_OPTIONS_RESERVED": "SubdivisionOptionsReserved",
+             "WEFT_MESH_ALLOW_REPEATED_VERTICES": "MeshAllowRepeatedVertices", "WEFT_PATCH_DOUBLES": "PatchDoubles",
              "WEFT_VERSION_MAJOR": "VersionMajor", "WEFT_VERSION_MINOR": "VersionMinor", "WEFT_VERSION_PATCH": "VersionPatch"}
 
 

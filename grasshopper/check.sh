@@ -10,8 +10,8 @@
 #     out/ref, a misspelled member, a wrong pointer type and (against the
 #     Rhino 7 stubs) a Rhino 8-only member;
 #  3. runs the Rhino-free conversion tests on Mono;
-#  4. replays RhinoMeshes' calls on openNURBS (rhino3dm 8.35.0 from PyPI,
-#     installed into build/py);
+#  4. replays RhinoMeshes' and RhinoSurfaces' calls on openNURBS (rhino3dm
+#     8.35.0 from PyPI, installed into build/py);
 #  5. assembles the three Yak layouts with package.sh (the Linux library
 #     standing in for the Windows and Mac ones) and checks every file and
 #     manifest, and that the project references RhinoCommon 7.x for net48
@@ -163,7 +163,7 @@ cp "$root/target/debug/libweft.so" "$build/"
 if mcs "${mcs_flags[@]}" -target:exe -out:"$build/Conversion.Tests.exe" -r:"$build/Weft.Interop.dll" \
     "$here/tests/ConversionTests.cs" "$here/tests/CreaseInputTests.cs" "$root/dotnet/tests/Runner.cs" "$root/dotnet/tests/UnitCube.cs" \
     "$here/Weft.Grasshopper/MeshArrays.cs" "$here/Weft.Grasshopper/FlatGeometry.cs" "$here/Weft.Grasshopper/RefinerCache.cs" \
-    "$here/Weft.Grasshopper/CreaseInputs.cs" "$here/Weft.Grasshopper/FaceBudget.cs" \
+    "$here/Weft.Grasshopper/CreaseInputs.cs" "$here/Weft.Grasshopper/FaceBudget.cs" "$here/Weft.Grasshopper/LimitSamples.cs" \
   && LD_LIBRARY_PATH="$root/target/debug${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}" mono --debug "$build/Conversion.Tests.exe"; then
   pass "mesh conversion tests"
 else
@@ -179,6 +179,11 @@ if PYTHONPATH="$build/py" python3 "$here/tests/replay_rhino_meshes.py" "$here/We
   pass "RhinoMeshes replayed on openNURBS (rhino3dm $rhino3dm_version)"
 else
   fail "RhinoMeshes replayed on openNURBS (rhino3dm $rhino3dm_version)"
+fi
+if PYTHONPATH="$build/py" python3 "$here/tests/replay_rhino_surfaces.py" "$here/Weft.Grasshopper/RhinoSurfaces.cs"; then
+  pass "RhinoSurfaces replayed on openNURBS (rhino3dm $rhino3dm_version)"
+else
+  fail "RhinoSurfaces replayed on openNURBS (rhino3dm $rhino3dm_version)"
 fi
 
 # 5. The Yak layouts, with the Linux library standing in for weft.dll and libweft.dylib.

@@ -24,6 +24,15 @@
 #define WEFT_VERSION_PATCH 0
 
 /**
+ * `weft_mesh_new_ex` flag: accept faces that name a vertex more than once
+ * (`0 1 1 2`, `0 1 2 1 3`). Subdivision treats them as OpenSubdiv does, as
+ * non-manifold topology: a degenerate edge `[v, v]`, and each further
+ * time a face meets a vertex pair, get an edge of their own, infinitely
+ * sharp. Other operations take such faces as they are.
+ */
+#define WEFT_MESH_ALLOW_REPEATED_VERTICES 1
+
+/**
  * Naked edges stay where they are: boundary vertices do not move, new boundary vertices are edge midpoints.
  */
 #define WEFT_NAKED_EDGES_FIXED 0
@@ -112,6 +121,11 @@
  * How many reserved fields end a `WeftSubdivisionOptions`.
  */
 #define WEFT_SUBDIVISION_OPTIONS_RESERVED 8
+
+/**
+ * Doubles per patch in `weft_limit_patches`'s control points: 4 × 4 points of 3.
+ */
+#define WEFT_PATCH_DOUBLES 48
 
 /**
  * An absolute weld tolerance: 0.001 model units, Rhino's default absolute
@@ -378,6 +392,13 @@ typedef uint32_t WeftStatus;
 typedef struct WeftCells WeftCells;
 
 /**
+ * The limit surface of one cage, prepared for evaluation anywhere. Create
+ * it with `weft_limit_surface_new`, free it with `weft_limit_surface_free`.
+ * Evaluating is thread-safe.
+ */
+typedef struct WeftLimitSurface WeftLimitSurface;
+
+/**
  * An immutable polygon mesh owned by Weft. Create it with `weft_mesh_new`
  * or receive it from an operation; free it with `weft_mesh_free`.
  */
@@ -640,11 +661,23 @@ const char *weft_last_error_message(void);
  * WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
  * that names the face, corner or vertex. A vertex, face or index count past
  * 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
+ * A face that names a vertex twice is refused; `weft_mesh_new_ex` with
+ * WEFT_MESH_ALLOW_REPEATED_VERTICES accepts it.
  *
  * # Safety
  * Each non-NULL buffer must hold the number of elements stated.
  */
 WeftStatus weft_mesh_new(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, struct WeftMesh **out_mesh);
+
+/**
+ * As `weft_mesh_new`, with `flags` (0, or WEFT_MESH_ALLOW_REPEATED_VERTICES)
+ * saying what else to accept. An unknown flag fails with
+ * WEFT_STATUS_INVALID_ARGUMENT.
+ *
+ * # Safety
+ * As `weft_mesh_new`.
+ */
+WeftStatus weft_mesh_new_ex(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, uint32_t flags, struct WeftMesh **out_mesh);
 
 /**
  * Frees a mesh made by Weft. NULL is ignored.
@@ -1249,6 +1282,115 @@ WeftStatus weft_subdivide_face_varying(const struct WeftMesh *mesh, const struct
 WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSubdivisionOptions *options, uint32_t levels, double *out_positions, double *out_normals, size_t capacity);
 
 /**
+ * Prepares the limit surface of `cage` subdivided as `options` say
+ * (scheme, naked-edge mode, creases, corners, holes, creasing, triangle
+ * weights), for evaluation anywhere with `weft_limit_surface_evaluate`.
+ *
+ * Evaluation is exact: a regular face is its bicubic B-spline
+ * (Catmull-Clark) or quartic box-spline (Loop) patch; any other face is
+ * refined locally with the subdivision's own rules, once here, until every
+ * part of it is such a patch, and evaluation follows that refinement as
+ * deep as a sample needs. Results equal OpenSubdiv's Bfr on regular faces
+ * to about 1e-15 of the cage's size, and its approximation converges to
+ * them elsewhere.
+ *
+ * `cage` and `options` must not be NULL. `out_surface` receives the surface
+ * on success (free it with `weft_limit_surface_free`) and is left untouched
+ * on failure; it must not be NULL.
+ *
+ * Fails as `weft_subdivide_ex` (WEFT_STATUS_NOT_TRIANGLES for Loop on
+ * another polygon, a bad crease, corner or hole), with
+ * WEFT_STATUS_NON_FINITE_COORDINATE for a cage coordinate that is not
+ * finite, and WEFT_STATUS_INVALID_ARGUMENT for a face whose semi-sharp
+ * creases would need more than 65536 local refinements.
+ *
+ * # Safety
+ * `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;
+ * `out_surface` is NULL or writable.
+ */
+WeftStatus weft_limit_surface_new(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, struct WeftLimitSurface **out_surface);
+
+/**
+ * Evaluates the limit surface at `count` samples: sample i lies on cage
+ * face `faces[i]` at `(uvs[2 i], uvs[2 i + 1])`. Parallel; nothing is
+ * allocated per sample.
+ *
+ * Parameters, per face:
+ * - a quad (Catmull-Clark): 0 ≤ u, v ≤ 1 from its first corner, u towards
+ *   the second corner and v towards the last;
+ * - a triangle (Loop): barycentric, u, v ≥ 0 and u + v ≤ 1, corner 0 at
+ *   (0, 0), corner 1 at (1, 0), corner 2 at (0, 1);
+ * - any other face of n corners (Catmull-Clark triangles and n-gons) as
+ *   OpenSubdiv's Bfr::Parameterization QUAD_SUBFACES: the face is the n
+ *   quads of its first subdivision, quad i (at corner i) the tile
+ *   [x, x + 1/2] × [y, y + 1/2] with x = i mod w, y = i div w, and w = 2
+ *   for n < 5, 3 for n < 10, else 1 + floor(sqrt(n - 1)); in the tile u runs
+ *   from corner i towards the middle of edge i (corner i to i + 1), v
+ *   towards the middle of the edge before it. Corner i is at (x, y).
+ *
+ * `surface` must not be NULL. `faces` holds `count` face indices; `uvs`
+ * holds `2 * count` doubles. `out_positions` must have room for
+ * `3 * count` doubles. `out_du` and `out_dv` receive the derivatives by u
+ * and by v (3 doubles per sample) and may each be NULL. At an
+ * extraordinary vertex or the end of a crease, where the parameterisation
+ * has no derivative, they are the limit tangents, whose cross product is
+ * the limit normal that `weft_subdivide_limit` gives; at a corner (an
+ * infinitely sharp vertex) they are the one-sided derivatives of the face
+ * evaluated. The normal is `du × dv` normalised.
+ *
+ * Accuracy: exact to rounding (about 1e-15 of the cage's size in the
+ * positions); a sample within 2^-60 of a face's size of an irregular point
+ * takes that point's limit, far below rounding.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER (a NULL surface or buffer),
+ * WEFT_STATUS_INDEX_OUT_OF_RANGE (a face past the cage's),
+ * WEFT_STATUS_NON_FINITE_COORDINATE (a NaN or infinite parameter) or
+ * WEFT_STATUS_INVALID_ARGUMENT (a parameter outside the face's domain, or a
+ * face that is a hole), the message naming the sample and its face;
+ * nothing is written then.
+ *
+ * # Safety
+ * `surface` is NULL or live; the buffers are NULL or hold the elements stated.
+ */
+WeftStatus weft_limit_surface_evaluate(const struct WeftLimitSurface *surface, size_t count, const uint32_t *faces, const double *uvs, double *out_positions, double *out_du, double *out_dv);
+
+/**
+ * Finds the nearest point of the limit surface to each of `count` query
+ * points: its face, its (u, v) on that face (parameters as
+ * `weft_limit_surface_evaluate`) and its position, which is the surface
+ * evaluated there.
+ *
+ * Candidate faces come from a grid of their bounding boxes (built on the
+ * first call), nearest first; on each, Gauss-Newton projects the query
+ * from the nearest surface samples, staying in the face's domain, until no
+ * other face can be nearer. Accuracy: the distance is that of the nearest
+ * point to rounding where the surface is smooth (tested against dense
+ * sampling on open and closed cages to about 1e-15 of the cage's size);
+ * where several points are equally near, any one of them is returned.
+ *
+ * `surface` must not be NULL. `points` holds `3 * count` doubles;
+ * `out_faces` has room for `count` indices, `out_uvs` for `2 * count`
+ * doubles, `out_positions` for `3 * count` doubles; none may be NULL
+ * unless `count` is 0.
+ *
+ * Fails with WEFT_STATUS_NULL_POINTER, WEFT_STATUS_NON_FINITE_COORDINATE
+ * (naming the query point) or WEFT_STATUS_INVALID_ARGUMENT (every face a
+ * hole), with nothing written.
+ *
+ * # Safety
+ * `surface` is NULL or live; the buffers are NULL or hold the elements stated.
+ */
+WeftStatus weft_limit_surface_closest_point(const struct WeftLimitSurface *surface, size_t count, const double *points, uint32_t *out_faces, double *out_uvs, double *out_positions);
+
+/**
+ * Frees a limit surface. NULL is ignored.
+ *
+ * # Safety
+ * `surface` is NULL or a surface not yet freed; it is invalid afterwards.
+ */
+void weft_limit_surface_free(struct WeftLimitSurface *surface);
+
+/**
  * Prepares a mesh whose creases are unwelded seams or sharp folds for
  * creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the
  * same position, and lists as creases every edge that was naked before
@@ -1298,6 +1440,40 @@ WeftStatus weft_crease_edges_from_mesh(const struct WeftMesh *mesh, double angle
  * `vertex_map_capacity` writable indices.
  */
 WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double angle_degrees, struct WeftMesh **out_welded, uint32_t *out_pairs, size_t capacity, size_t *out_crease_count, uint32_t *out_vertex_map, size_t vertex_map_capacity);
+
+/**
+ * The limit surface of the Catmull-Clark subdivision `options` describes
+ * (its scheme must be WEFT_SCHEME_CATMULL_CLARK) as one bicubic Bézier
+ * patch per face of `cage` refined `isolation` levels (1 to 8), in the
+ * refined faces' order, `weft_subdivision_counts_ex(cage, options,
+ * isolation, ...)` of them.
+ *
+ * Patch p's control point i along u and j along v (u from the refined
+ * face's first corner towards its second, v towards its last, so du × dv
+ * points out of a counter-clockwise face) is `out_control_points[48 p +
+ * 12 i + 3 j + k]`, k = x, y, z: a B-spline surface of degree 3 × 3 with
+ * knots 0, 0, 0, 0, 1, 1, 1, 1 in each direction. Patches that meet at an
+ * edge share its boundary control points bit for bit. Where the limit
+ * surface is a bicubic B-spline (away from extraordinary vertices, crease
+ * ends and corners) a patch is exact; the others are fitted to exact limit
+ * points. `out_errors[p]` is patch p's largest distance from the limit
+ * points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
+ * lies on; both may be NULL. `*out_patch_count` receives the number of
+ * patches, `*out_max_error` (may be NULL) the largest error and
+ * `*out_exact_count` (may be NULL) how many patches are exact (an error
+ * within 1e-12 of the cage's bounding-box diagonal).
+ *
+ * `capacity` is the room in patches: `out_control_points` holds 48 ×
+ * `capacity` doubles (it may be NULL when `capacity` is 0), `out_cage_faces` and `out_errors` `capacity` elements
+ * each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
+ * outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
+ * options fail as `weft_subdivide_ex`'s. Nothing is written on failure.
+ *
+ * # Safety
+ * `cage` and `options` are NULL or valid; each non-NULL output holds what
+ * `capacity` says; `out_patch_count` is writable.
+ */
+WeftStatus weft_limit_patches(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error, size_t *out_exact_count);
 
 /**
  * Joins meshes into one: the vertices of each follow those of the meshes

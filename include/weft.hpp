@@ -81,17 +81,18 @@ class View {
 /** An immutable polygon mesh owning a WeftMesh handle (freed with weft_mesh_free). */
 class Mesh {
  public:
-  /** weft_mesh_new: copies the buffers (3 × vertex_count doubles, face_count sizes, index_count indices). */
+  /** weft_mesh_new_ex: copies the buffers (3 × vertex_count doubles, face_count sizes, index_count
+   *  indices); flags 0 or WEFT_MESH_ALLOW_REPEATED_VERTICES. */
   Mesh(const double* positions, std::size_t vertex_count, const uint32_t* face_sizes, std::size_t face_count,
-       const uint32_t* face_indices, std::size_t index_count) {
-    detail::check(
-        weft_mesh_new(positions, vertex_count, face_sizes, face_count, face_indices, index_count, &handle_));
+       const uint32_t* face_indices, std::size_t index_count, uint32_t flags = 0) {
+    detail::check(weft_mesh_new_ex(positions, vertex_count, face_sizes, face_count, face_indices, index_count, flags,
+                                   &handle_));
   }
-  /** weft_mesh_new from vectors: positions holds x, y, z per vertex. */
+  /** The same from vectors: positions holds x, y, z per vertex. */
   Mesh(const std::vector<double>& positions, const std::vector<uint32_t>& face_sizes,
-       const std::vector<uint32_t>& face_indices)
+       const std::vector<uint32_t>& face_indices, uint32_t flags = 0)
       : Mesh(positions.data(), detail::triples(positions, "positions"), face_sizes.data(), face_sizes.size(),
-             face_indices.data(), face_indices.size()) {}
+             face_indices.data(), face_indices.size(), flags) {}
 
   /** Takes ownership of a handle from the C API (NULL makes an empty, moved-from-like Mesh). */
   static Mesh adopt(WeftMesh* handle) noexcept { return Mesh(handle); }
@@ -297,6 +298,34 @@ inline LimitSurface subdivide_limit(const Mesh& mesh, const SubdivisionOptions& 
   detail::check(
       weft_subdivide_limit(mesh.get(), &c, levels, limit.positions.data(), limit.normals.data(), capacity));
   return limit;
+}
+
+/** weft_limit_patches: the Catmull-Clark limit surface as bicubic Bézier patches. */
+struct LimitPatches {
+  /** 48 doubles per patch: control point i along u and j along v of patch p at 48 p + 12 i + 3 j. */
+  std::vector<double> control_points;
+  /** The cage face each patch lies on. */
+  std::vector<uint32_t> cage_faces;
+  /** Each patch's largest distance from the limit surface. */
+  std::vector<double> errors;
+  double max_error = 0;
+  /** How many patches are exact (the limit surface to rounding). */
+  std::size_t exact_count = 0;
+  std::size_t size() const noexcept { return cage_faces.size(); }
+};
+
+/** weft_limit_patches: one patch per face of `cage` refined `isolation` levels (1 to 8), Catmull-Clark. */
+inline LimitPatches limit_patches(const Mesh& cage, const SubdivisionOptions& options, uint32_t isolation) {
+  const WeftSubdivisionOptions c = options.c_options();
+  LimitPatches patches;
+  const std::size_t count = subdivision_counts(cage, options, isolation).face_count;
+  patches.control_points.resize(WEFT_PATCH_DOUBLES * count);
+  patches.cage_faces.resize(count);
+  patches.errors.resize(count);
+  std::size_t written = 0;
+  detail::check(weft_limit_patches(cage.get(), &c, isolation, patches.control_points.data(), patches.cage_faces.data(),
+                                   patches.errors.data(), count, &written, &patches.max_error, &patches.exact_count));
+  return patches;
 }
 
 /** A subdivision planned once for one cage topology, re-evaluated for new positions (owns a WeftRefiner). */

@@ -62,7 +62,7 @@ pub mod ffi;
 pub use error::{Error, MeshError, Result};
 pub use glam::DVec3;
 pub use mesh::topology::{MeshInfo, Topology};
-pub use mesh::Mesh;
+pub use mesh::{Mesh, MeshOptions};
 
 /// The library's version, as in `Cargo.toml`.
 pub const VERSION: &str = env!("CARGO_PKG_VERSION");

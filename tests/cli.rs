@@ -225,10 +225,12 @@ fn bad_usage_exits_with_2() {
 }
 
 /// Every subcommand of `weft`, as `weft --help` lists them.
-const COMMANDS: [&str; 29] = [
+const COMMANDS: [&str; 31] = [
     "info",
     "render",
     "subdivide",
+    "nurbs",
+    "evaluate",
     "weld",
     "cull-adjacent",
     "flip",
@@ -364,7 +366,7 @@ const fn reader(
 }
 
 /// Every command that reads a mesh file.
-const READERS: [Reader; 27] = [
+const READERS: [Reader; 29] = [
     reader(
         &["info", "IN"],
         None,
@@ -388,6 +390,18 @@ const READERS: [Reader; 27] = [
         Some("obj"),
         &["--scheme", "butterfly"],
         "--scheme",
+    ),
+    reader(
+        &["evaluate", "IN", "--samples", "uv.txt", "-o", "OUT"],
+        Some("txt"),
+        &["--samples"],
+        "--samples",
+    ),
+    reader(
+        &["nurbs", "IN", "OUT", "--isolation", "1"],
+        Some("step"),
+        &["--isolation", "0"],
+        "--isolation",
     ),
     reader(
         &["weld", "IN", "-o", "OUT"],
@@ -557,7 +571,8 @@ fn every_reading_command_fails_cleanly() {
     // A folder cannot be read as a file: it stands in for an unreadable file,
     // since permissions do not stop a test run as root.
     std::fs::create_dir(dir.join("folder.obj")).unwrap();
-    for ext in ["obj", "ply", "off", "png"] {
+    std::fs::write(dir.join("uv.txt"), "0 0.5 0.5\n").unwrap();
+    for ext in ["obj", "ply", "off", "png", "step", "txt"] {
         std::fs::create_dir(dir.join(format!("taken.{ext}"))).unwrap();
     }
     let before = listing(&dir);
@@ -795,6 +810,171 @@ fn subdivide_runs_each_scheme_and_mode() {
         stderr(&o)
     );
     assert!(!dir.join("x.obj").exists());
+}
+
+#[test]
+fn nurbs_writes_the_limit_surface_as_step_and_reports_its_error() {
+    let dir = folder("nurbs");
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    let text = succeeds(
+        &dir,
+        &[
+            "nurbs",
+            "cube.obj",
+            "cube.step",
+            "--isolation",
+            "2",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    assert_mentions(
+        &text,
+        &[
+            "isolation levels  2",
+            "patches           96",
+            "exact             72",
+            "approximate       24",
+            "largest error     ",
+        ],
+    );
+    let step = std::fs::read_to_string(dir.join("cube.step")).unwrap();
+    assert!(step.starts_with("ISO-10303-21;") && step.contains("AUTOMOTIVE_DESIGN"));
+    assert_eq!(step.matches("B_SPLINE_SURFACE_WITH_KNOTS(").count(), 96);
+    // More isolation, a smaller error.
+    let error = |text: &str| -> f64 {
+        let line = text.lines().find(|l| l.contains("largest error")).unwrap();
+        line.split_whitespace().nth(2).unwrap().parse().unwrap()
+    };
+    let finer = succeeds(
+        &dir,
+        &["nurbs", "cube.obj", "cube3.step", "--isolation", "3"],
+    );
+    assert!(error(&finer) < 0.6 * error(&text), "{text}\n{finer}");
+
+    // Loop has no tensor-product patches; a hole past the faces: nothing written.
+    let before = listing(&dir);
+    for (args, expected) in [
+        (
+            &["--scheme", "loop"][..],
+            "NURBS patches need --scheme catmull-clark",
+        ),
+        (&["--hole", "6"][..], "--hole 6: cube.obj has 6 faces"),
+    ] {
+        let mut all = vec!["nurbs", "cube.obj", "other.step"];
+        all.extend_from_slice(args);
+        let o = weft(&dir, &all);
+        assert_exit(&o, 1);
+        assert_mentions(&stderr(&o), &[expected]);
+        assert_eq!(listing(&dir), before, "{args:?}");
+    }
+    let o = weft(&dir, &["nurbs", "cube.obj", "cube.obj"]);
+    assert_exit(&o, 2);
+    assert_mentions(
+        &stderr(&o),
+        &["expected a STEP file ending in .step or .stp"],
+    );
+}
+
+#[test]
+fn evaluate_gives_limit_points_and_normals_and_refuses_bad_samples() {
+    let dir = folder("evaluate");
+    let cube = shapes::cube();
+    io::write_mesh(dir.join("cube.obj"), &cube).unwrap();
+    // Face 2's first corner, then its centre and a point on an edge.
+    std::fs::write(
+        dir.join("uv.txt"),
+        "# face u v\n2 0 0\n2 0.5 0.5  # the centre\n\n2 0.25 0\n",
+    )
+    .unwrap();
+    let text = succeeds(
+        &dir,
+        &[
+            "evaluate",
+            "cube.obj",
+            "--samples",
+            "uv.txt",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    let rows: Vec<Vec<f64>> = text
+        .lines()
+        .map(|l| l.split_whitespace().map(|x| x.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 3, "{text}");
+    // The corner is the limit point of the cage vertex, as subdivide --limit gives it.
+    succeeds(
+        &dir,
+        &[
+            "subdivide",
+            "cube.obj",
+            "limit.obj",
+            "--levels",
+            "1",
+            "--limit",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    let limit = io::read_mesh(dir.join("limit.obj")).unwrap();
+    let corner = limit.positions()[cube.face(2)[0] as usize];
+    for (k, &x) in corner.to_array().iter().enumerate() {
+        assert!((rows[0][k] - x).abs() < 1e-12, "{text}");
+    }
+    for row in &rows {
+        let n = (row[3] * row[3] + row[4] * row[4] + row[5] * row[5]).sqrt();
+        assert!((n - 1.0).abs() < 1e-12, "unit normals: {text}");
+    }
+    // Written to a file, the same lines.
+    succeeds(
+        &dir,
+        &[
+            "evaluate",
+            "cube.obj",
+            "--samples",
+            "uv.txt",
+            "-o",
+            "points.txt",
+            "--naked-edges",
+            "smooth",
+        ],
+    );
+    assert_eq!(
+        std::fs::read_to_string(dir.join("points.txt")).unwrap(),
+        text
+    );
+
+    let before = listing(&dir);
+    for (samples, expected) in [
+        ("9 0 0\n", "sample 0: face 9 is out of range"),
+        (
+            "0 0 0\n1 1.5 0\n",
+            "sample 1: (u, v) = (1.5, 0) is outside the domain of face 1",
+        ),
+        ("0 nan 0\n", "sample 0"),
+        ("0 x 0\n", "line 1: \"x\" is not a number"),
+        ("0 0\n", "line 1: 2 values"),
+        ("# nothing\n", "holds no sample"),
+    ] {
+        std::fs::write(dir.join("bad.txt"), samples).unwrap();
+        let o = weft(
+            &dir,
+            &[
+                "evaluate",
+                "cube.obj",
+                "--samples",
+                "bad.txt",
+                "-o",
+                "out.txt",
+            ],
+        );
+        assert_exit(&o, 1);
+        assert_mentions(&stderr(&o), &["bad.txt: ", expected]);
+        assert!(!dir.join("out.txt").exists(), "{samples:?}");
+    }
+    std::fs::remove_file(dir.join("bad.txt")).unwrap();
+    assert_eq!(listing(&dir), before);
 }
 
 #[test]

@@ -10,18 +10,18 @@
 
 mod support;
 
-use support::{assert_rows_close, bumped, face_map, osd_options, to_ref, tolerance, vertex_map};
+use support::{
+    assert_drivers_agree, assert_rows_close, bumped, face_map, face_varying_both,
+    opensubdiv_limit_at_vertices, osd_options, to_ref, tolerance, vertex_map,
+};
 use weft::mesh::shapes;
 use weft::subdivide::{
-    parent_faces_with, refined_counts_with, subdivide, subdivide_with, Crease, Creasing,
-    FaceVaryingLinear, NakedEdges, Refiner, Scheme, Subdivider, SubdivisionOptions, TriangleRule,
+    subdivide, subdivide_with, Crease, Creasing, NakedEdges, Refiner, Scheme, Subdivider,
+    SubdivisionOptions, TriangleRule,
 };
 use weft::toolbar::split::split_polygons;
 use weft::{DVec3, Mesh};
-use weft_reference::{
-    opensubdiv_refine, opensubdiv_refine_face_varying, BoundaryInterpolation, FVarLinear,
-    OsdOptions, OsdRefiner,
-};
+use weft_reference::{opensubdiv_refine, BoundaryInterpolation, OsdOptions, OsdRefiner};
 
 const MODES: [NakedEdges; 4] = [
     NakedEdges::Fixed,
@@ -155,19 +155,8 @@ fn assert_equals_opensubdiv(
     assert_eq!(faces.len(), theirs.face_count(), "{what}: faces");
 
     // The one-shot drivers and the counts say the same.
-    assert_eq!(
-        subdivide_with(cage, scheme, levels, options).unwrap(),
-        ours,
-        "{what}: one-shot"
-    );
-    let counts = refined_counts_with(cage, scheme, levels, options).unwrap();
-    assert_eq!(
-        (counts.vertex_count, counts.face_count, counts.index_count),
-        (ours.vertex_count(), ours.face_count(), ours.index_count()),
-        "{what}: counts"
-    );
-    let parents = parent_faces_with(cage, scheme, levels, options).unwrap();
-    assert_eq!(parents, subdivider.parent_faces(), "{what}: parent faces");
+    assert_drivers_agree(cage, (scheme, levels, options), &subdivider, &ours, what);
+    let parents = subdivider.parent_faces();
     assert!(
         parents.iter().all(|p| !options.holes.contains(p)),
         "{what}: a hole's child"
@@ -176,12 +165,7 @@ fn assert_equals_opensubdiv(
     // The limit at every vertex. Normals are compared where the tangents
     // span a plane: at a valence-2 vertex between two symmetric faces they
     // are parallel, Weft's normal is zero and OpenSubdiv's rounding noise.
-    let full = OsdOptions {
-        full_topology: true,
-        ..osd.clone()
-    };
-    let refiner = OsdRefiner::new(&reference_cage, &full, levels).unwrap();
-    let their_limit = refiner.limit(&reference_cage.positions).unwrap();
+    let their_limit = opensubdiv_limit_at_vertices(&reference_cage, &osd, levels);
     let our_limit = subdivider.limit().unwrap();
     assert_rows_close(
         &flat_points(&our_limit.positions),
@@ -215,26 +199,9 @@ fn assert_equals_opensubdiv(
     }
 
     // Face-varying values: a value per vertex, smooth and linear.
-    let values: Vec<f64> = cage
-        .positions()
-        .iter()
-        .flat_map(|p| [p.x + 0.3 * p.z, p.y - 0.2 * p.z])
-        .collect();
-    let indices = cage.face_indices().to_vec();
-    for (linear, their_linear) in [
-        (FaceVaryingLinear::Smooth, FVarLinear::None),
-        (FaceVaryingLinear::All, FVarLinear::All),
-    ] {
-        let ours_values = subdivider
-            .face_varying(&values, 2, &indices, linear)
-            .unwrap();
-        let with_fvar = OsdOptions {
-            fvar_linear: their_linear,
-            ..osd.clone()
-        };
-        let (their_values, their_indices) =
-            opensubdiv_refine_face_varying(&reference_cage, &with_fvar, levels, &values, &indices)
-                .unwrap();
+    for (linear, ours_values, their_values, their_indices) in
+        face_varying_both(cage, &osd, levels, &subdivider)
+    {
         assert_eq!(
             ours_values.len(),
             2 * their_indices.len(),

@@ -171,10 +171,14 @@ namespace Weft
         internal const uint VersionMinor = 1;
         /// <summary>Patch version of the library this header belongs to.</summary>
         internal const uint VersionPatch = 0;
+        /// <summary><c>weft_mesh_new_ex</c> flag: accept faces that name a vertex more than once (<c>0 1 1 2</c>, <c>0 1 2 1 3</c>). Subdivision treats them as OpenSubdiv does, as non-manifold topology: a degenerate edge <c>[v, v]</c>, and each further time a face meets a vertex pair, get an edge of their own, infinitely sharp. Other operations take such faces as they are.</summary>
+        internal const uint MeshAllowRepeatedVertices = 1;
         /// <summary>The sharpness at and above which a crease or corner never softens.</summary>
         internal const double SharpnessInfinite = 10.0;
         /// <summary>How many reserved fields end a <c>WeftSubdivisionOptions</c>.</summary>
         internal const uint SubdivisionOptionsReserved = 8;
+        /// <summary>Doubles per patch in <c>weft_limit_patches</c>'s control points: 4 × 4 points of 3.</summary>
+        internal const uint PatchDoubles = 48;
         /// <summary>An absolute weld tolerance: 0.001 model units, Rhino's default absolute tolerance (a millimetre in a model in metres). It can collapse the faces of small or dense meshes: without a tolerance of the host's own, prefer <c>weft_weld_relative_tolerance</c>.</summary>
         internal const double DefaultWeldTolerance = 0.001;
     }

@@ -103,6 +103,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_mesh_new(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, out WeftMeshHandle outMesh);
 
+        /// <summary>As <c>weft_mesh_new</c>, with <c>flags</c> (0, or WEFT_MESH_ALLOW_REPEATED_VERTICES) saying what else to accept. An unknown flag fails with WEFT_STATUS_INVALID_ARGUMENT.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_new_ex(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, uint flags, out WeftMeshHandle outMesh);
+
         /// <summary>Frees a mesh made by Weft. NULL is ignored.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern void weft_mesh_free(IntPtr mesh);
@@ -243,6 +247,22 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivide_limit(WeftMeshHandle mesh, ref NativeSubdivisionOptions options, uint levels, [Out] double[] outPositions, [Out] double[] outNormals, UIntPtr capacity);
 
+        /// <summary>Prepares the limit surface of <c>cage</c> subdivided as <c>options</c> say (scheme, naked-edge mode, creases, corners, holes, creasing, triangle weights), for evaluation anywhere with <c>weft_limit_surface_evaluate</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_new(WeftMeshHandle cage, ref NativeSubdivisionOptions options, out WeftLimitSurfaceHandle outSurface);
+
+        /// <summary>Evaluates the limit surface at <c>count</c> samples: sample i lies on cage face <c>faces[i]</c> at <c>(uvs[2 i], uvs[2 i + 1])</c>. Parallel; nothing is allocated per sample.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_evaluate(WeftLimitSurfaceHandle surface, UIntPtr count, uint[] faces, double[] uvs, [Out] double[] outPositions, [Out] double[] outDu, [Out] double[] outDv);
+
+        /// <summary>Finds the nearest point of the limit surface to each of <c>count</c> query points: its face, its (u, v) on that face (parameters as <c>weft_limit_surface_evaluate</c>) and its position, which is the surface evaluated there.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_closest_point(WeftLimitSurfaceHandle surface, UIntPtr count, double[] points, [Out] uint[] outFaces, [Out] double[] outUvs, [Out] double[] outPositions);
+
+        /// <summary>Frees a limit surface. NULL is ignored.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern void weft_limit_surface_free(IntPtr surface);
+
         /// <summary>Prepares a mesh whose creases are unwelded seams or sharp folds for creased subdivision, as Rhino's ToSubD does: welds vertices at exactly the same position, and lists as creases every edge that was naked before welding and has two faces after, and every edge whose faces' normals differ by more than <c>angle_degrees</c> (180 or more: no fold test). Pass the pairs as <c>crease_vertex_pairs</c> with <c>WEFT_SHARPNESS_INFINITE</c> sharpness. <c>weft_crease_edges_from_mesh_ex</c> also gives which welded vertex each input vertex became.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount);
@@ -250,6 +270,10 @@ namespace Weft
         /// <summary>As <c>weft_crease_edges_from_mesh</c>, and gives the vertex map of the weld: for each vertex of <c>mesh</c>, the index of the vertex of the welded mesh it became (the first of the vertices at its position). With it a host carries per-vertex data given on the input (colours, weights, its own creases and corners) onto the welded mesh: welded vertex <c>out_vertex_map[v]</c> takes vertex <c>v</c>'s value.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_crease_edges_from_mesh_ex(WeftMeshHandle mesh, double angleDegrees, out WeftMeshHandle outWelded, [Out] uint[] outPairs, UIntPtr capacity, out UIntPtr outCreaseCount, [Out] uint[] outVertexMap, UIntPtr vertexMapCapacity);
+
+        /// <summary>The limit surface of the Catmull-Clark subdivision <c>options</c> describes (its scheme must be WEFT_SCHEME_CATMULL_CLARK) as one bicubic Bézier patch per face of <c>cage</c> refined <c>isolation</c> levels (1 to 8), in the refined faces' order, <c>weft_subdivision_counts_ex(cage, options, isolation, ...)</c> of them.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_patches(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint isolation, [Out] double[] outControlPoints, [Out] uint[] outCageFaces, [Out] double[] outErrors, UIntPtr capacity, out UIntPtr outPatchCount, [Out] double[] outMaxError, out UIntPtr outExactCount);
 
         /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

@@ -66,6 +66,17 @@ namespace Weft
         /// </exception>
         public static WeftMesh Create(double[] positions, uint[] faceSizes, uint[] faceIndices)
         {
+            return Create(positions, faceSizes, faceIndices, false);
+        }
+
+        /// <summary>
+        /// As <see cref="Create(double[], uint[], uint[])"/>; with
+        /// <paramref name="allowRepeatedVertices"/>, faces that name a vertex more
+        /// than once (0 1 1 2) are accepted, and subdivision treats them as
+        /// OpenSubdiv does, as non-manifold topology.
+        /// </summary>
+        public static WeftMesh Create(double[] positions, uint[] faceSizes, uint[] faceIndices, bool allowRepeatedVertices)
+        {
             if (positions == null) throw new ArgumentNullException("positions");
             if (faceSizes == null) throw new ArgumentNullException("faceSizes");
             if (faceIndices == null) throw new ArgumentNullException("faceIndices");
@@ -76,10 +87,11 @@ namespace Weft
                     "positions holds " + positions.Length + " doubles, which is not 3 per vertex");
             }
             WeftMeshHandle created;
-            uint status = NativeMethods.weft_mesh_new(
+            uint status = NativeMethods.weft_mesh_new_ex(
                 positions, (UIntPtr)(positions.Length / 3),
                 faceSizes, (UIntPtr)faceSizes.Length,
                 faceIndices, (UIntPtr)faceIndices.Length,
+                allowRepeatedVertices ? NativeConstants.MeshAllowRepeatedVertices : 0u,
                 out created);
             return FromCall(status, created);
         }

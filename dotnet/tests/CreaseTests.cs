@@ -21,6 +21,7 @@ namespace Weft.Tests
             t.Run("vertex data equal to the positions gives the refined positions", VertexDataIsPositions);
             t.Run("face-varying values without seams equal the refined vertex values", FaceVaryingWithoutSeams);
             t.Run("limit surface: corner kept, unit outward normals, normals optional", LimitSurface);
+            t.Run("limit surface anywhere: corners are the vertex limit, closest points lie on it", LimitSurfaceAnywhere);
             t.Run("refiner with creases re-evaluated equals a fresh creased subdivision", RefinerWithOptions);
             t.Run("crease edges from an unwelded cube: welded, 12 creases, stays a cube", CreaseEdgesFromUnweldedCube);
             t.Run("crease edges from folds by angle", CreaseEdgesByAngle);
@@ -31,6 +32,42 @@ namespace Weft.Tests
             t.Run("disposed and null meshes are refused", DisposedMesh);
             t.Run("holes leave their faces out, keep their vertices, and the counts and parents agree", Holes);
             t.Run("naked edges none and smooth triangles reach the library; bad values are named", NoneAndTriangles);
+            t.Run("limit patches: one per refined face, corners on the limit, exact away from the cube's corners", LimitPatchesOfCube);
+        }
+
+        private static void LimitPatchesOfCube()
+        {
+            var options = new SubdivisionOptions(NakedEdges.Smooth);
+            using (var cube = Shapes.Cube())
+            using (var refined = Subdivision.Subdivide(cube, Scheme.CatmullClark, 2, options))
+            {
+                LimitPatches patches = Subdivision.LimitPatches(cube, options, 2);
+                t.Equal(96, patches.Count, "patches");
+                t.Equal(48 * 96, patches.ControlPoints.Length, "control points");
+                int exact = 0;
+                foreach (double e in patches.Errors) if (e < 1e-12) exact++;
+                t.Equal(72, exact, "exact patches: all but the 3 at each of the 8 corners");
+                t.Equal(72, patches.ExactCount, "the library's count of exact patches");
+                t.True(patches.MaxError > 1e-4 && patches.MaxError < 1e-2, "the corners' error: " + patches.MaxError);
+                t.Equal(5u, patches.CageFaces[95], "the last patch lies on face 5");
+                // Corner (0, 0) of patch p is the limit point of refined face p's first corner.
+                LimitSurface limit = Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 2, options);
+                uint[] corners = refined.GetFaceIndices();
+                double worst = 0;
+                for (int p = 0; p < 96; p++)
+                    for (int k = 0; k < 3; k++)
+                        worst = Math.Max(worst, Math.Abs(patches.ControlPoints[48 * p + k] - limit.Positions[3 * corners[4 * p] + k]));
+                t.True(worst < 1e-14, "patch corners on the limit: " + worst);
+                try
+                {
+                    Subdivision.LimitPatches(cube, options, 0);
+                    t.True(false, "isolation 0 was accepted");
+                }
+                catch (WeftException e)
+                {
+                    t.Equal(WeftStatus.InvalidArgument, e.Status, "isolation 0");
+                }
+            }
         }
 
         private static SubdivisionOptions Hard(uint[] pairs)
@@ -211,6 +248,31 @@ namespace Weft.Tests
                     for (int k = 0; k < 3; k++) expected[3 * c + k] = positions[3 * indices[c] + k];
                 }
                 Shapes.Near(expected, values, 1e-12, "face-varying = vertex values at each corner");
+            }
+        }
+
+        private static void LimitSurfaceAnywhere()
+        {
+            var options = new SubdivisionOptions(NakedEdges.Smooth);
+            using (var cube = Shapes.Cube())
+            using (var surface = new LimitSurfaceEvaluator(cube, Scheme.CatmullClark, options))
+            {
+                LimitSurface limit = Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, options);
+                uint v = (uint)cube.GetFaceIndices()[0];
+                var p = new double[6];
+                var du = new double[6];
+                surface.Evaluate(new uint[] { 0, 0 }, new[] { 0.0, 0.0, 0.5, 0.5 }, p, du, null);
+                Shapes.Near(new[] { limit.Positions[3 * v], limit.Positions[3 * v + 1], limit.Positions[3 * v + 2] },
+                            new[] { p[0], p[1], p[2] }, 1e-12, "corner 0 of face 0 is its vertex's limit");
+                var faces = new uint[1];
+                var uvs = new double[2];
+                var found = new double[3];
+                surface.ClosestPoints(new[] { 0.5, 0.5, 3.0 }, faces, uvs, found);
+                var again = new double[3];
+                surface.Evaluate(faces, uvs, again, null, null);
+                t.Sequence(again, found, "the closest point is the surface at its face and (u, v)");
+                var e = t.Throws<WeftException>(() => surface.Evaluate(new uint[] { 6 }, new[] { 0.5, 0.5 }, p, null, null), "a face out of range");
+                t.Equal(WeftStatus.IndexOutOfRange, e.Status, "its status");
             }
         }
 

@@ -38,6 +38,7 @@ namespace Weft.Tests
             t.Run("error: index out of range", ErrorIndexOutOfRange);
             t.Run("error: face too small", ErrorFaceTooSmall);
             t.Run("error: repeated index", ErrorRepeatedIndex);
+            t.Run("repeated vertices accepted on request and subdivided", RepeatedVerticesAllowed);
             t.Run("error: NaN and infinite coordinates", ErrorNonFinite);
             t.Run("error: face sizes and index count disagree", ErrorCountMismatch);
             t.Run("error: positions not 3 per vertex", ErrorPositionsNotTriples);
@@ -171,6 +172,24 @@ namespace Weft.Tests
                 () => WeftMesh.Create(Square, new uint[] { 3 }, new uint[] { 0, 1, 1 }),
                 WeftStatus.RepeatedIndex,
                 "face 0 uses vertex 1 twice");
+        }
+
+        private static void RepeatedVerticesAllowed()
+        {
+            // A pentagon with the degenerate edge 1-1 beside a quad.
+            var positions = new double[] { 0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0 };
+            var sizes = new uint[] { 5, 4 };
+            var indices = new uint[] { 0, 1, 1, 4, 3, 1, 2, 5, 4 };
+            ExpectFailure(() => WeftMesh.Create(positions, sizes, indices, false), WeftStatus.RepeatedIndex,
+                          "face 0 uses vertex 1 twice");
+            using (var mesh = WeftMesh.Create(positions, sizes, indices, true))
+            using (var smooth = Subdivision.CatmullClark(mesh, 1, NakedEdges.Smooth))
+            {
+                t.Equal(9, mesh.IndexCount, "indices kept");
+                // 6 vertices, 8 edges (one degenerate), 2 faces; 5 + 4 children.
+                t.Equal(16, smooth.VertexCount, "refined vertices");
+                t.Equal(9, smooth.FaceCount, "refined faces");
+            }
         }
 
         private static void ErrorNonFinite()

@@ -3,6 +3,9 @@
 //! numbers included — as a host would call it. Each call must return a
 //! status; a success must hand back a valid mesh (the checking constructor
 //! accepts its buffers: distinct in-range corners, finite coordinates).
+//! One input in eight builds its mesh with faces that may name a vertex
+//! more than once (`WEFT_MESH_ALLOW_REPEATED_VERTICES`); every operation
+//! must then work on those too, and its results are checked allowing them.
 //! Primitives get counts that are either small or past the size cap, so a
 //! refusal must come before any allocation. Exports that fill caller
 //! buffers get capacities that are sometimes one short, and must then write
@@ -10,6 +13,7 @@
 #![no_main]
 
 use std::ptr::{null, null_mut};
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use libfuzzer_sys::fuzz_target;
 use weft::ffi::crease_edges::*;
@@ -68,6 +72,9 @@ impl Bytes<'_> {
     }
 }
 
+/// The flags the input's mesh was built with, for checking results alike.
+static MESH_FLAGS: AtomicU32 = AtomicU32::new(0);
+
 /// A valid mesh made from the bytes: up to 12 vertices and 10 faces of 3 to 6 corners.
 /// The input's last byte picks the scale of the coordinates: mostly around
 /// 1, sometimes near `f64::MAX`, near the smallest normal numbers, or far
@@ -80,6 +87,11 @@ fn build_mesh(bytes: &mut Bytes, scale_byte: u8) -> *mut WeftMesh {
         3 => (1.0, 1e9),
         _ => (1.0, 0.0),
     };
+    // The top bits of the scale byte are free: 7 of them in 8 keep the
+    // corpus's meshes as they were.
+    let repeats = scale_byte >> 5 == 7;
+    let flags = if repeats { WEFT_MESH_ALLOW_REPEATED_VERTICES } else { 0 };
+    MESH_FLAGS.store(flags, Ordering::Relaxed);
     let vertex_count = 3 + bytes.small(10) as usize;
     let positions: Vec<f64> = (0..vertex_count * 3).map(|_| bytes.finite() * scale + shift).collect();
     let mut sizes = Vec::new();
@@ -89,7 +101,7 @@ fn build_mesh(bytes: &mut Bytes, scale_byte: u8) -> *mut WeftMesh {
         let mut face: Vec<u32> = Vec::new();
         while face.len() < size.min(vertex_count) {
             let v = bytes.small(vertex_count as u32);
-            if !face.contains(&v) {
+            if repeats || !face.contains(&v) {
                 face.push(v);
             } else if bytes.0.is_empty() {
                 face.push((0..vertex_count as u32).find(|c| !face.contains(c)).unwrap());
@@ -100,13 +112,14 @@ fn build_mesh(bytes: &mut Bytes, scale_byte: u8) -> *mut WeftMesh {
     }
     let mut mesh = null_mut();
     let status = unsafe {
-        weft_mesh_new(
+        weft_mesh_new_ex(
             positions.as_ptr(),
             vertex_count,
             sizes.as_ptr(),
             sizes.len(),
             indices.as_ptr(),
             indices.len(),
+            flags,
             &mut mesh,
         )
     };
@@ -135,13 +148,14 @@ fn settle(status: WeftStatus, out: *mut WeftMesh) {
                 WeftStatus::Ok
             );
             let mut copy = null_mut();
-            let status = weft_mesh_new(
+            let status = weft_mesh_new_ex(
                 positions.as_ptr(),
                 info.vertex_count,
                 sizes.as_ptr(),
                 sizes.len(),
                 indices.as_ptr(),
                 indices.len(),
+                MESH_FLAGS.load(Ordering::Relaxed),
                 &mut copy,
             );
             assert_eq!(status, WeftStatus::Ok, "an operation returned an invalid mesh: {}", message());

@@ -34,9 +34,9 @@ from pathlib import Path
 WANTED = {
     "Rhino.Geometry": ["GeometryBase", "Mesh", "MeshFace", "MeshNgon", "MeshUnsafeLock",
                        "Point3d", "Point3f", "Vector3d", "Vector3f", "Curve", "PolylineCurve", "Polyline",
-                       "Line", "Plane"],
+                       "Line", "Plane", "Surface", "NurbsSurface"],
     "Rhino.Geometry.Collections": ["MeshVertexList", "MeshFaceList", "MeshNgonList", "MeshVertexNormalList",
-                                   "MeshVertexColorList"],
+                                   "MeshVertexColorList", "NurbsSurfacePointList", "NurbsSurfaceKnotList"],
     "Grasshopper.Kernel": ["GH_Component", "IGH_DataAccess", "IGH_Param", "GH_RuntimeMessageLevel",
                            "GH_ParamAccess", "GH_Exposure", "GH_Convert", "GH_Conversion",
                            "GH_AssemblyInfo", "GH_AssemblyPriority", "GH_LoadingInstruction",

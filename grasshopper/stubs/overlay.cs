@@ -64,6 +64,7 @@ namespace Grasshopper.Kernel
             public int AddGenericParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddMeshParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddCurveParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
+            public int AddSurfaceParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddPointParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddLineParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }
             public int AddVectorParameter(string name, string nickname, string description, GH_ParamAccess access) { throw null; }

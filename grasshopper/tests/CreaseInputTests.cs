@@ -22,6 +22,44 @@ namespace Weft.Tests
             t.Run("colours carried through Crease Edges From Mesh's weld: the first of coincident vertices wins", ColoursThroughCreaseWeld);
             t.Run("refiner cache with creases: same creases reuse, other creases re-plan", CacheWithCreases);
             t.Run("crease segments are the pairs' end points", Segments);
+            t.Run("limit samples: one face for all or one each, evaluated on the cube's limit surface", LimitSamplesOnCube);
+        }
+
+        private static void LimitSamplesOnCube()
+        {
+            uint[] faces;
+            double[] uvs;
+            LimitSamples.Build(new[] { 2 }, new[] { 0.0, 0.5 }, new[] { 0.0, 0.5 }, out faces, out uvs);
+            t.Equal(2, faces.Length, "one sample per U");
+            t.True(faces[0] == 2 && faces[1] == 2 && uvs[2] == 0.5 && uvs[3] == 0.5, "F broadcast, (u, v) paired");
+            LimitSamples.Build(new[] { 0, 5 }, new[] { 0.25, 1.0 }, new[] { 0.75, 0.0 }, out faces, out uvs);
+            t.True(faces[1] == 5 && uvs[0] == 0.25 && uvs[1] == 0.75, "one face each");
+            var options = new SubdivisionOptions(NakedEdges.Smooth);
+            using (WeftMesh cube = CubeMesh())
+            using (var surface = new LimitSurfaceEvaluator(cube, Scheme.CatmullClark, options))
+            {
+                LimitSamples.Build(new[] { 0 }, new[] { 0.0 }, new[] { 0.0 }, out faces, out uvs);
+                var position = new double[3];
+                surface.Evaluate(faces, uvs, position, null, null);
+                LimitSurface limit = Subdivision.SubdivideLimit(cube, Scheme.CatmullClark, 1, options);
+                int corner = (int)UnitCube.Indices[0];
+                double gap = 0;
+                for (int k = 0; k < 3; k++) gap = Math.Max(gap, Math.Abs(position[k] - limit.Positions[3 * corner + k]));
+                t.True(gap < 1e-12, "face 0 at (0, 0) is the limit of its first corner: " + gap);
+            }
+            foreach (var bad in new[] { Tuple.Create(new[] { 0, 1 }, 3, "F has 2 faces for 3 samples"),
+                                        Tuple.Create(new[] { -1 }, 1, "F[0] is -1") })
+            {
+                try
+                {
+                    LimitSamples.Build(bad.Item1, new double[bad.Item2], new double[bad.Item2], out faces, out uvs);
+                    t.True(false, bad.Item3 + " was accepted");
+                }
+                catch (WeftException e)
+                {
+                    t.True(e.Message.Contains(bad.Item3), e.Message);
+                }
+            }
         }
 
         private static uint[] Edges()

@@ -14,6 +14,8 @@ import sys
 
 import rhino3dm
 
+from replay_checks import check, finish
+
 # RhinoCommon member used by RhinoMeshes -> the rhino3dm call replaying it.
 REPLAYED = {
     "new Mesh()": "rhino3dm.Mesh()",
@@ -38,17 +40,6 @@ NOT_BOUND = {
     "BoundaryVertexIndexList", "FaceIndexList",
 }
 
-passed = failed = 0
-
-
-def check(name, condition, detail=""):
-    global passed, failed
-    if condition:
-        passed += 1
-        print(f"ok   {name}")
-    else:
-        failed += 1
-        print(f"FAIL {name}{': ' + detail if detail else ''}")
 
 
 def from_arrays(positions, faces, count_first=True):
@@ -185,8 +176,7 @@ def main():
     check("normals replaced one per vertex", len(mesh.Normals) == 4 and mesh.Normals[2].Z == 1)
 
     print("not replayed (rhino3dm has no binding): " + ", ".join(sorted(NOT_BOUND & set(used))))
-    print(f"rhino3dm replay: {passed} passed, {failed} failed")
-    return 0 if failed == 0 else 1
+    return finish("rhino3dm replay")
 
 
 if __name__ == "__main__":

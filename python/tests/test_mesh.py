@@ -103,6 +103,29 @@ def test_non_finite_coordinates_are_a_weft_error_naming_the_vertex(bad):
     assert "vertex 2" in caught.value.message
 
 
+GRID = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]]
+REPEATING = [[0, 1, 1, 4, 3], [1, 2, 5, 4]]
+
+
+def test_repeated_vertices_are_accepted_on_request_and_survive_pickle_and_copy():
+    with pytest.raises(weft.WeftError) as caught:
+        weft.Mesh(GRID, REPEATING)
+    assert caught.value.status == weft.Status.REPEATED_INDEX and "face 0" in caught.value.message
+    mesh = weft.Mesh(GRID, REPEATING, allow_repeated_vertices=True)
+    assert mesh.faces == REPEATING
+    flat = weft.Mesh.from_arrays(GRID, [5, 4], sum(REPEATING, []), allow_repeated_vertices=True)
+    assert flat == mesh
+    assert pickle.loads(pickle.dumps(mesh)) == mesh
+    assert copy.copy(mesh) == mesh
+    # 6 vertices, 8 edges (the degenerate 1-1 among them), 2 faces.
+    smooth = weft.catmull_clark(mesh, levels=1)
+    assert len(smooth.vertices) == 16 and smooth.face_count == 9
+    # The point of the degenerate edge (the third edge) stays on vertex 1.
+    assert smooth.vertices[6 + 2].tolist() == GRID[1]
+    with pytest.raises(TypeError, match="allow_repeated_vertices"):
+        weft.Mesh(GRID, REPEATING, allow_repeated_vertices=1)
+
+
 def test_weft_error_pickles():
     error = weft.WeftError(weft.Status.NOT_TRIANGLES, "face 3 has 4 corners")
     again = pickle.loads(pickle.dumps(error))

@@ -298,3 +298,19 @@ def test_toolbar(cage, pentagon_mesh):
     assert weft.reroute_faces(box, 1).faces[0] == box.faces[0][1:] + box.faces[0][:1]
     assert weft.tile(box, "triangle-fan", "quads").face_count == 24
     assert weft.version() == weft.__version__
+
+
+def test_limit_patches_are_the_c_abis_and_exact_away_from_corners():
+    cube = weft.box(1, 1, 1)
+    control, faces, errors = weft.limit_patches(cube, isolation=2, naked_edges="smooth")
+    assert control.shape == (96, 4, 4, 3) and faces.dtype == np.uint32
+    assert faces.tolist() == np.repeat(np.arange(6), 16).tolist()
+    # Three patches touch each of the 8 corners; the others are the limit to rounding.
+    assert int((errors < 1e-12).sum()) == 72 and errors.max() > 1e-4
+    # Corner (0, 0) of each patch is the limit point of its face's first corner.
+    points, _ = weft.subdivide_limit(cube, levels=2, naked_edges="smooth")
+    refined = weft.subdivide(cube, levels=2, naked_edges="smooth")
+    first = refined.face_indices.reshape(-1, 4)[:, 0]
+    assert np.abs(control[:, 0, 0] - points[first]).max() < 1e-14
+    with pytest.raises(weft.WeftError, match="isolation is 0"):
+        weft.limit_patches(cube, isolation=0)

@@ -37,19 +37,28 @@ class Mesh:
     library refuses: an index out of range, a face of fewer than three
     vertices, a repeated index, a NaN or infinite coordinate.
 
+    With ``allow_repeated_vertices=True``, faces that name a vertex more
+    than once (``[0, 1, 1, 2]``) are accepted, and subdivision treats them
+    as OpenSubdiv does, as non-manifold topology::
+
+        >>> grid = [[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0]]
+        >>> m = weft.Mesh(grid, [[0, 1, 1, 4, 3], [1, 2, 5, 4]], allow_repeated_vertices=True)
+        >>> len(weft.catmull_clark(m, levels=1).vertices)
+        16
+
     Meshes pickle, and ``copy.copy`` / ``copy.deepcopy`` give an equal mesh
     with buffers of its own; ``==`` compares vertices and faces bit for bit.
     """
 
     __slots__ = ("_handle", "_finalizer", "__weakref__")
 
-    def __init__(self, vertices, faces):
+    def __init__(self, vertices, faces, allow_repeated_vertices=False):
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes, indices = _arrays.faces_arrays(faces)
-        self._adopt(_new_handle(positions, sizes, indices))
+        self._adopt(_new_handle(positions, sizes, indices, allow_repeated_vertices))
 
     @classmethod
-    def from_arrays(cls, vertices, face_sizes, face_indices):
+    def from_arrays(cls, vertices, face_sizes, face_indices, allow_repeated_vertices=False):
         """A mesh from flat buffers, as the C ABI takes them: ``face_sizes``
         holds the corner count of each face and ``face_indices`` their
         concatenation (integers of any dtype)::
@@ -57,6 +66,8 @@ class Mesh:
             >>> vertices = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [-1, 0.5, 0]]
             >>> weft.Mesh.from_arrays(vertices, [3, 4], [0, 1, 2, 0, 2, 3, 4]).faces
             [[0, 1, 2], [0, 2, 3, 4]]
+
+        ``allow_repeated_vertices`` as for :class:`Mesh`.
         """
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes = _arrays.index_array(face_sizes, "face_sizes")
@@ -65,7 +76,7 @@ class Mesh:
             raise ValueError(f"face_sizes must be one-dimensional, not of shape {sizes.shape}")
         if indices.ndim != 1:
             raise ValueError(f"face_indices must be one-dimensional, not of shape {indices.shape}")
-        return cls._from_handle(_new_handle(positions, sizes, indices))
+        return cls._from_handle(_new_handle(positions, sizes, indices, allow_repeated_vertices))
 
     @classmethod
     def _from_handle(cls, handle):
@@ -155,11 +166,12 @@ class Mesh:
         lib.weft_mesh_copy_faces(self._handle, _arrays.address(sizes), sizes.size, _arrays.address(indices), indices.size)
         return positions, sizes, indices
 
+    # The mesh was valid when made: accept its repeated vertices, if any, again.
     def __reduce__(self):
-        return (Mesh.from_arrays, self.copy_arrays())
+        return (Mesh.from_arrays, (*self.copy_arrays(), True))
 
     def __copy__(self):
-        return Mesh.from_arrays(*self.copy_arrays())
+        return Mesh.from_arrays(*self.copy_arrays(), allow_repeated_vertices=True)
 
     def __deepcopy__(self, memo):
         return self.__copy__()
@@ -180,17 +192,22 @@ class Mesh:
         return f"weft.Mesh({self.vertex_count} vertices, {self.face_count} faces)"
 
 
-def _new_handle(positions, sizes, indices):
+def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
+    if not isinstance(allow_repeated_vertices, bool):
+        raise TypeError(f"allow_repeated_vertices must be True or False, not {allow_repeated_vertices!r}")
     handle = ctypes.c_void_p()
-    lib.weft_mesh_new(
+    buffers = (
         _arrays.address(positions),
         positions.shape[0],
         _arrays.address(sizes),
         sizes.size,
         _arrays.address(indices),
         indices.size,
-        ctypes.byref(handle),
     )
+    if allow_repeated_vertices:
+        lib.weft_mesh_new_ex(*buffers, 1, ctypes.byref(handle))  # WEFT_MESH_ALLOW_REPEATED_VERTICES
+    else:
+        lib.weft_mesh_new(*buffers, ctypes.byref(handle))
     return handle.value
 
 

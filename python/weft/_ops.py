@@ -318,6 +318,36 @@ def subdivide_limit(mesh, levels=1, scheme="catmull-clark", naked_edges="fixed",
     return positions, normals
 
 
+def limit_patches(mesh, isolation=2, naked_edges="fixed", creases=None, corners=None, creasing="uniform", holes=None,
+                  triangles="catmark"):
+    """The Catmull-Clark limit surface as bicubic Bézier patches, one per
+    face of ``mesh`` refined ``isolation`` levels (1 to 8), what ``weft
+    nurbs`` writes as STEP: ``(control_points, cage_faces, errors)``.
+    ``control_points[p, i, j]`` is patch p's control point i along u and j
+    along v (a B-spline of degree 3 × 3, knots 0, 0, 0, 0, 1, 1, 1, 1), an
+    (n, 4, 4, 3) array; ``cage_faces[p]`` the face of ``mesh`` it lies on;
+    ``errors[p]`` its largest distance from the limit surface (0 to rounding
+    where the surface is a bicubic B-spline, away from extraordinary
+    vertices)::
+
+        >>> control, faces, errors = weft.limit_patches(weft.box(1, 1, 1), isolation=2)
+        >>> control.shape, int((errors < 1e-12).sum())
+        ((96, 4, 4, 3), 72)
+    """
+    options = _Options("catmull-clark", naked_edges, creases, corners, creasing, holes, triangles)
+    isolation = _count(isolation, "isolation")
+    _, count, _ = subdivision_counts(mesh, "catmull-clark", isolation, naked_edges, holes)
+    control = np.empty((count, 4, 4, 3), dtype=np.float64)
+    faces = np.empty(count, dtype=np.uint32)
+    errors = np.empty(count, dtype=np.float64)
+    written = ctypes.c_size_t()
+    lib.weft_limit_patches(
+        check_mesh(mesh), options.ref, isolation, _arrays.address(control), _arrays.address(faces),
+        _arrays.address(errors), count, ctypes.byref(written), None, None
+    )
+    return control, faces, errors
+
+
 def subdivision_face_count(mesh, scheme="catmull-clark", levels=1):
     """The number of faces ``levels`` steps of ``scheme`` make, without subdividing::
 
@@ -409,6 +439,62 @@ class Refiner:
 
     def __repr__(self):
         return f"weft.Refiner({self.vertex_count} vertices, {self.face_count} faces)"
+
+
+class LimitSurface:
+    """The limit surface of a cage, evaluated anywhere: positions and the
+    derivatives by u and v at (face, u, v) samples, exact (bicubic B-spline
+    or box-spline patches, local refinement around extraordinary vertices).
+
+    Options as in :func:`subdivide`. A quad's (u, v) runs from its first
+    corner, u towards the second and v towards the last; a Loop triangle's
+    is barycentric (corner 1 at (1, 0), corner 2 at (0, 1)); other faces
+    follow OpenSubdiv's Bfr quad sub-faces (see ``include/weft.h``)::
+
+        >>> surface = weft.LimitSurface(weft.box(), scheme="catmull-clark")
+        >>> p, du, dv = surface.evaluate([0, 0], [[0.5, 0.5], [0.0, 0.0]])
+        >>> p.shape
+        (2, 3)
+    """
+
+    def __init__(self, cage, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,
+                 creasing="uniform", holes=None, triangles="catmark"):
+        handle = check_mesh(cage, "cage")
+        options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
+        out = _out()
+        lib.weft_limit_surface_new(handle, options.ref, ctypes.byref(out))
+        self._handle = out.value
+        self._finalizer = weakref.finalize(self, lib.weft_limit_surface_free, self._handle)
+
+    def evaluate(self, faces, uvs):
+        """Positions, d/du and d/dv at sample i on face ``faces[i]`` at
+        ``uvs[i]`` (an (n, 2) array-like), as three (n, 3) float64 arrays."""
+        faces = _arrays.index_array(faces, "faces").reshape(-1)
+        uvs = _arrays.float_array(uvs, "uvs", width=2)
+        if uvs.shape[0] != faces.size:
+            raise ValueError(f"{faces.size} faces but {uvs.shape[0]} (u, v) pairs")
+        n = faces.size
+        positions, du, dv = (np.empty((n, 3), dtype=np.float64) for _ in range(3))
+        lib.weft_limit_surface_evaluate(self._handle, n, _arrays.address(faces), _arrays.address(uvs),
+                                        _arrays.address(positions), _arrays.address(du), _arrays.address(dv))
+        return positions, du, dv
+
+    def closest_point(self, points):
+        """The nearest point of the surface to each of ``points`` (an (n, 3)
+        array-like): ``(faces, uvs, positions)``, an (n,) uint32 array, an
+        (n, 2) and an (n, 3) float64 array; the positions are the surface
+        evaluated at the faces and (u, v)."""
+        queries = _arrays.float_array(points, "points", width=3)
+        n = queries.shape[0]
+        faces = np.empty(n, dtype=np.uint32)
+        uvs = np.empty((n, 2), dtype=np.float64)
+        positions = np.empty((n, 3), dtype=np.float64)
+        lib.weft_limit_surface_closest_point(self._handle, n, _arrays.address(queries), _arrays.address(faces),
+                                             _arrays.address(uvs), _arrays.address(positions))
+        return faces, uvs, positions
+
+    def __repr__(self):
+        return "weft.LimitSurface()"
 
 
 def crease_edges_from_mesh(mesh, angle_degrees=180.0, vertex_map=False):

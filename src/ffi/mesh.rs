@@ -8,7 +8,7 @@ use crate::ffi::boundary::{
     Failure, WeftStatus,
 };
 use crate::mesh::topology::Topology;
-use crate::mesh::{check_element_counts, Mesh};
+use crate::mesh::{check_element_counts, Mesh, MeshOptions};
 
 /// Major version of the library this header belongs to.
 pub const WEFT_VERSION_MAJOR: u32 = 0;
@@ -132,6 +132,8 @@ pub extern "C" fn weft_last_error_message() -> *const c_char {
 /// WEFT_STATUS_COUNT_MISMATCH or WEFT_STATUS_INPUT_TOO_LARGE, with a message
 /// that names the face, corner or vertex. A vertex, face or index count past
 /// 2^31 - 1 fails with WEFT_STATUS_INPUT_TOO_LARGE before any buffer is read.
+/// A face that names a vertex twice is refused; `weft_mesh_new_ex` with
+/// WEFT_MESH_ALLOW_REPEATED_VERTICES accepts it.
 ///
 /// # Safety
 /// Each non-NULL buffer must hold the number of elements stated.
@@ -145,10 +147,59 @@ pub unsafe extern "C" fn weft_mesh_new(
     index_count: usize,
     out_mesh: *mut *mut WeftMesh,
 ) -> WeftStatus {
+    // SAFETY: as `weft_mesh_new_ex`, whose requirements are this function's.
+    unsafe {
+        weft_mesh_new_ex(
+            positions,
+            vertex_count,
+            face_sizes,
+            face_count,
+            face_indices,
+            index_count,
+            0,
+            out_mesh,
+        )
+    }
+}
+
+/// `weft_mesh_new_ex` flag: accept faces that name a vertex more than once
+/// (`0 1 1 2`, `0 1 2 1 3`). Subdivision treats them as OpenSubdiv does, as
+/// non-manifold topology: a degenerate edge `[v, v]`, and each further
+/// time a face meets a vertex pair, get an edge of their own, infinitely
+/// sharp. Other operations take such faces as they are.
+pub const WEFT_MESH_ALLOW_REPEATED_VERTICES: u32 = 1;
+
+/// As `weft_mesh_new`, with `flags` (0, or WEFT_MESH_ALLOW_REPEATED_VERTICES)
+/// saying what else to accept. An unknown flag fails with
+/// WEFT_STATUS_INVALID_ARGUMENT.
+///
+/// # Safety
+/// As `weft_mesh_new`.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn weft_mesh_new_ex(
+    positions: *const f64,
+    vertex_count: usize,
+    face_sizes: *const u32,
+    face_count: usize,
+    face_indices: *const u32,
+    index_count: usize,
+    flags: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
     // SAFETY: `positions`, `face_sizes`, `face_indices` and `out_mesh` are as the `# Safety`
     // section above requires; each is checked for NULL before it is used.
     unsafe {
         make_mesh(out_mesh, || {
+            let unknown = flags & !WEFT_MESH_ALLOW_REPEATED_VERTICES;
+            if unknown != 0 {
+                return Err(Failure::invalid_argument(format!(
+                    "flags has unknown bits {unknown:#x}; the known flag is WEFT_MESH_ALLOW_REPEATED_VERTICES (1)"
+                )));
+            }
+            let options = MeshOptions {
+                allow_repeated_vertices: flags & WEFT_MESH_ALLOW_REPEATED_VERTICES != 0,
+            };
             // Every count is checked before any buffer is viewed: a slice longer
             // than the caller's buffer is undefined behaviour even if never read.
             check_element_counts(vertex_count, face_count, index_count)?;
@@ -161,7 +212,7 @@ pub unsafe extern "C" fn weft_mesh_new(
             let positions = input_slice(positions, coordinate_count, "positions")?;
             let face_sizes = input_slice(face_sizes, face_count, "face_sizes")?;
             let face_indices = input_slice(face_indices, index_count, "face_indices")?;
-            let mesh = Mesh::from_flat(positions, face_sizes, face_indices)?;
+            let mesh = Mesh::from_flat_with(positions, face_sizes, face_indices, options)?;
             Ok(mesh)
         })
     }

@@ -24,8 +24,12 @@ pub mod subdivide;
 pub mod refiner;
 // Creases, corners and carried data (vertex data, UVs, the limit surface).
 pub mod creases;
+// The limit surface anywhere: evaluation with derivatives.
+pub mod limit_surface;
 // Creases found on a mesh: unwelded seams and folds.
 pub mod crease_edges;
+// The limit surface as bicubic patches, for NURBS export.
+pub mod limit_patches;
 // Join, weld, T-nodes, cull, normals, planarity.
 pub mod mend;
 // Unify, turn outward, flip.

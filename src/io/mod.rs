@@ -43,6 +43,7 @@ pub mod obj;
 pub mod off;
 pub mod ply;
 pub mod render;
+pub mod step;
 pub mod stl;
 mod text;
 

@@ -3,7 +3,9 @@
 //! Triangles, quads and n-gons may be mixed. Counter-clockwise seen from the
 //! front is the front face. A `Mesh` is always valid: every constructor checks
 //! its input, so operations may rely on in-range indices, faces of at least
-//! three distinct vertices and finite coordinates.
+//! three corners and finite coordinates. A face names each vertex once,
+//! unless the mesh was built with [`MeshOptions::allow_repeated_vertices`]
+//! (OpenSubdiv's non-manifold faces, such as `0 1 1 2`).
 
 pub(crate) mod adjacency;
 pub mod analysis;
@@ -16,6 +18,15 @@ use glam::DVec3;
 
 use crate::buffers::advised_copy;
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
+
+/// What a constructor accepts beyond the faces every mesh may have.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub struct MeshOptions {
+    /// Accept faces that name a vertex more than once (`0 1 1 2`,
+    /// `0 1 2 1 3`), which OpenSubdiv subdivides as non-manifold topology.
+    /// Off by default, since such a face is most often broken input.
+    pub allow_repeated_vertices: bool,
+}
 
 /// A validated polygon mesh.
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -46,10 +57,23 @@ impl Mesh {
         face_sizes: Vec<u32>,
         face_indices: Vec<u32>,
     ) -> Result<Mesh, MeshError> {
+        Mesh::new_with(positions, face_sizes, face_indices, MeshOptions::default())
+    }
+
+    /// As [`Mesh::new`], accepting what `options` allows.
+    ///
+    /// # Errors
+    /// As [`Mesh::new`].
+    pub fn new_with(
+        positions: Vec<DVec3>,
+        face_sizes: Vec<u32>,
+        face_indices: Vec<u32>,
+        options: MeshOptions,
+    ) -> Result<Mesh, MeshError> {
         check_counts(positions.len(), &face_sizes, face_indices.len())?;
         check_positions(&positions)?;
         let mesh = Mesh::with_offsets(positions, face_sizes, face_indices);
-        mesh.check_faces()?;
+        mesh.check_faces(options.allow_repeated_vertices)?;
         Ok(mesh)
     }
 
@@ -63,6 +87,24 @@ impl Mesh {
         face_sizes: &[u32],
         face_indices: &[u32],
     ) -> Result<Mesh, MeshError> {
+        Mesh::from_flat_with(
+            coordinates,
+            face_sizes,
+            face_indices,
+            MeshOptions::default(),
+        )
+    }
+
+    /// As [`Mesh::from_flat`], accepting what `options` allows.
+    ///
+    /// # Errors
+    /// As [`Mesh::from_flat`].
+    pub fn from_flat_with(
+        coordinates: &[f64],
+        face_sizes: &[u32],
+        face_indices: &[u32],
+        options: MeshOptions,
+    ) -> Result<Mesh, MeshError> {
         if coordinates.len() % 3 != 0 {
             return Err(MeshError::CountMismatch {
                 sum: (coordinates.len() / 3 * 3) as u64,
@@ -73,10 +115,11 @@ impl Mesh {
         check_counts(coordinates.len() / 3, face_sizes, face_indices.len())?;
         // Three f64 are a DVec3: one block copy.
         let positions = advised_copy(bytemuck::cast_slice::<f64, DVec3>(coordinates));
-        Mesh::new(
+        Mesh::new_with(
             positions,
             advised_copy(face_sizes),
             advised_copy(face_indices),
+            options,
         )
     }
 
@@ -88,6 +131,18 @@ impl Mesh {
         positions: Vec<DVec3>,
         polygons: impl IntoIterator<Item = F>,
     ) -> Result<Mesh, MeshError> {
+        Mesh::from_polygons_with(positions, polygons, MeshOptions::default())
+    }
+
+    /// As [`Mesh::from_polygons`], accepting what `options` allows.
+    ///
+    /// # Errors
+    /// As [`Mesh::new`].
+    pub fn from_polygons_with<F: AsRef<[u32]>>(
+        positions: Vec<DVec3>,
+        polygons: impl IntoIterator<Item = F>,
+        options: MeshOptions,
+    ) -> Result<Mesh, MeshError> {
         let mut face_sizes = Vec::new();
         let mut face_indices = Vec::new();
         for polygon in polygons {
@@ -95,7 +150,7 @@ impl Mesh {
             face_sizes.push(u32::try_from(polygon.len()).unwrap_or(u32::MAX));
             face_indices.extend_from_slice(polygon);
         }
-        Mesh::new(positions, face_sizes, face_indices)
+        Mesh::new_with(positions, face_sizes, face_indices, options)
     }
 
     /// Builds a mesh from parts an operation has produced itself and knows to
@@ -112,7 +167,7 @@ impl Mesh {
             mesh.face_indices.len()
         )
         .is_ok());
-        debug_assert_eq!(mesh.check_faces(), Ok(()));
+        debug_assert_eq!(mesh.check_faces(true), Ok(()));
         mesh
     }
 
@@ -154,7 +209,7 @@ impl Mesh {
             face_offsets,
         };
         debug_assert_eq!(mesh.face_offsets, offsets(&mesh.face_sizes));
-        debug_assert_eq!(mesh.check_faces(), Ok(()));
+        debug_assert_eq!(mesh.check_faces(true), Ok(()));
         Ok(mesh)
     }
 
@@ -280,8 +335,9 @@ impl Mesh {
     }
 
     /// Checks every face; the error names the first bad one. (One thread:
-    /// the check is as fast as the memory it reads.)
-    fn check_faces(&self) -> Result<(), MeshError> {
+    /// the check is as fast as the memory it reads.) Repeated vertices are
+    /// refused unless `allow_repeats`.
+    fn check_faces(&self, allow_repeats: bool) -> Result<(), MeshError> {
         let vertex_count = self.positions.len();
         for (face, corners) in self.faces().enumerate() {
             // One pass over the common small faces; the error's details
@@ -302,7 +358,7 @@ impl Mesh {
                 _ => false,
             };
             if !fine {
-                face_error(face, corners, vertex_count)?;
+                face_error(face, corners, vertex_count, allow_repeats)?;
             }
         }
         Ok(())
@@ -312,7 +368,12 @@ impl Mesh {
 /// The error of a face that failed the quick check (or of any other
 /// face), naming the first problem: too few corners, an index out of range,
 /// a repeated vertex.
-fn face_error(face: usize, corners: &[u32], vertex_count: usize) -> Result<(), MeshError> {
+fn face_error(
+    face: usize,
+    corners: &[u32],
+    vertex_count: usize,
+    allow_repeats: bool,
+) -> Result<(), MeshError> {
     if corners.len() < 3 {
         return Err(MeshError::FaceTooSmall {
             face,
@@ -327,7 +388,7 @@ fn face_error(face: usize, corners: &[u32], vertex_count: usize) -> Result<(), M
             vertex_count,
         });
     }
-    match repeated_corner(corners) {
+    match repeated_corner(corners).filter(|_| !allow_repeats) {
         Some((first, second)) => Err(MeshError::RepeatedIndex {
             face,
             index: corners[first],

@@ -51,17 +51,31 @@ impl Edges {
             // Faces of one size: the next corner is arithmetic.
             Some(&size) if sizes.par_iter().all(|&s| s == size) => {
                 let size = size as usize;
-                Adjacency::build(mesh.vertex_count(), indices, |c| {
-                    if c % size == size - 1 {
-                        c + 1 - size
-                    } else {
-                        c + 1
-                    }
-                })?
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| {
+                        if c % size == size - 1 {
+                            c + 1 - size
+                        } else {
+                            c + 1
+                        }
+                    },
+                    |c| c / size,
+                )?
             }
             _ => {
-                let next = corner_next(mesh.face_offsets())?;
-                Adjacency::build(mesh.vertex_count(), indices, |c| next[c] as usize)?
+                let offsets = mesh.face_offsets();
+                let next = corner_next(offsets)?;
+                let faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
+                    faces.fill(f as u32);
+                })?;
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| next[c] as usize,
+                    |c| faces[c] as usize,
+                )?
             }
         };
         Ok(Edges { adjacency })
@@ -85,12 +99,14 @@ impl Edges {
         self.adjacency.edge_offsets[e + 1] - self.adjacency.edge_offsets[e] == 1
     }
 
-    /// The edge between vertices `a` and `b`, if there is one.
+    /// The edge between vertices `a` and `b`, if there is one (the first,
+    /// where a face repeating a vertex gives the pair more than one), as
+    /// [`Topology::find_edge`].
     pub(crate) fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
-        self.adjacency
-            .edges
-            .binary_search(&[a.min(b), a.max(b)])
-            .ok()
+        let pair = [a.min(b), a.max(b)];
+        let edges = &self.adjacency.edges;
+        let first = edges.partition_point(|&e| e < pair);
+        (edges.get(first) == Some(&pair)).then_some(first)
     }
 }
 
@@ -158,24 +174,33 @@ impl Topology {
     pub fn try_new(mesh: &Mesh) -> Result<Topology> {
         let indices = mesh.face_indices();
         let offsets = mesh.face_offsets();
-        // Each face's corners in parallel; then the edges on one thread
-        // beside the corners' faces and vertices on the other.
-        let corner_next = corner_next(offsets)?;
-        let (adjacency, corners) = rayon::join(
-            || Adjacency::build(mesh.vertex_count(), indices, |c| corner_next[c] as usize),
-            || -> Result<(Vec<u32>, Vec<u32>)> {
-                let corner_faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
-                    faces.fill(f as u32);
-                })?;
+        // Each face's corners in parallel (their next corners and faces,
+        // which the edge builder reads); then the edges on one thread beside
+        // the corners' vertices on the other.
+        let (corner_next, corner_faces) = rayon::join(
+            || corner_next(offsets),
+            || fill_by_offsets(offsets, "corner faces", |f, faces| faces.fill(f as u32)),
+        );
+        let (corner_next, corner_faces) = (corner_next?, corner_faces?);
+        let (adjacency, face_vertices) = rayon::join(
+            || {
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| corner_next[c] as usize,
+                    |c| corner_faces[c] as usize,
+                )
+            },
+            || -> Result<Vec<u32>> {
                 let mut face_vertices = zeroed(indices.len(), "corner vertices")?;
                 face_vertices
                     .par_chunks_mut(CHUNK)
                     .zip(indices.par_chunks(CHUNK))
                     .for_each(|(to, from)| to.copy_from_slice(from));
-                Ok((corner_faces, face_vertices))
+                Ok(face_vertices)
             },
         );
-        let (corner_faces, face_vertices) = corners?;
+        let face_vertices = face_vertices?;
         Ok(Topology {
             adjacency: adjacency?,
             corner_faces,
@@ -257,12 +282,13 @@ impl Topology {
         self.edge_face_count(e) > 2
     }
 
-    /// The edge between vertices `a` and `b`, if there is one.
+    /// The edge between vertices `a` and `b`, if there is one (the first,
+    /// where a face repeating a vertex gives the pair more than one).
     pub fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
-        self.adjacency
-            .edges
-            .binary_search(&[a.min(b), a.max(b)])
-            .ok()
+        let pair = [a.min(b), a.max(b)];
+        let edges = &self.adjacency.edges;
+        let first = edges.partition_point(|&e| e < pair);
+        (edges.get(first) == Some(&pair)).then_some(first)
     }
 
     /// The corners at vertex `v`, ascending.
@@ -742,7 +768,21 @@ mod tests {
         let mut fin_flipped: Vec<Vec<u32>> = fin.faces().map(|f| f.to_vec()).collect();
         fin_flipped[0].reverse();
         let fin_flipped = Mesh::from_polygons(fin.positions().to_vec(), fin_flipped).unwrap();
+        // Faces that repeat a vertex (a pinched quad, a face meeting a pair
+        // twice), as meshes built to allow them may hold.
+        let repeats = Mesh::new_with(
+            (0..7)
+                .map(|i| glam::DVec3::new(i as f64, (i * i % 5) as f64, 0.0))
+                .collect(),
+            vec![4, 3, 5, 3],
+            vec![0, 1, 0, 2, 0, 1, 3, 1, 2, 3, 4, 5, 3, 5, 6],
+            crate::mesh::MeshOptions {
+                allow_repeated_vertices: true,
+            },
+        )
+        .unwrap();
         for mesh in [
+            repeats,
             cube,
             flipped,
             pinched,

@@ -181,8 +181,12 @@ impl Connectivity {
             0 => corner_faces[c] as usize,
             size => c / size as usize,
         };
-        let adjacency =
-            Adjacency::build(vertex_count, &faces.indices, |c| faces.next(c, face_of(c)))?;
+        let adjacency = Adjacency::build(
+            vertex_count,
+            &faces.indices,
+            |c| faces.next(c, face_of(c)),
+            face_of,
+        )?;
         let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&adjacency.edges, vertex_count)?;
         Ok(Connectivity {
             adjacency,
@@ -248,14 +252,39 @@ impl Connectivity {
             self.vertex_edge_slot(v, self.corner_edges[c]),
             two_e + self.edge_corner_slot(c),
             two_e + self.edge_corner_slot(previous),
-            self.vertex_edge_slot(v, self.corner_edges[previous]),
+            self.vertex_edge_slot_arriving(v, self.corner_edges[previous]),
         ]
     }
 
-    /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`.
+    /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`; for a
+    /// degenerate edge `[v, v]`, listed twice, the slot of the end it
+    /// leaves `v` from.
     #[inline]
     pub(crate) fn vertex_edge_slot(&self, v: u32, e: u32) -> u32 {
         self.vertex_edge_offsets[v as usize] + position(self.vertex_edges(v as usize), e)
+    }
+
+    /// As [`Connectivity::vertex_edge_slot`], but for a degenerate edge the
+    /// slot of the end it arrives at `v` by.
+    #[inline]
+    pub(crate) fn vertex_edge_slot_arriving(&self, v: u32, e: u32) -> u32 {
+        let list = self.vertex_edges(v as usize);
+        let k = list.iter().rposition(|&y| y == e).unwrap_or(0);
+        self.vertex_edge_offsets[v as usize] + k as u32
+    }
+
+    /// Whether the child edge of vertex-edge slot `s` (the half of its edge
+    /// at `v`) belongs to the child face at corner `c` of that edge, rather
+    /// than to the one at the corner after `c`.
+    #[inline]
+    pub(crate) fn slot_leaves_at(&self, s: usize, v: u32, c: usize, indices: &[u32]) -> bool {
+        let e = self.vertex_edges[s];
+        let [a, b] = self.edges[e as usize];
+        if a == b {
+            s as u32 == self.vertex_edge_slot(v, e)
+        } else {
+            indices[c] == v
+        }
     }
 
     /// Where corner `c` sits in `edge_corners`.

@@ -58,6 +58,8 @@ mod gathers;
 mod holes;
 mod level;
 mod limit;
+mod limit_patches;
+mod limit_surface;
 mod loop_subdivision;
 mod point_rules;
 mod refiner;
@@ -75,6 +77,8 @@ pub use creases::{
 };
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
+pub use limit_patches::{limit_patches, BezierPatch, LimitPatches, MAX_ISOLATION};
+pub use limit_surface::LimitSurface;
 pub use refiner::Refiner;
 use refiner::Step;
 pub(crate) use scheme::check_counts;

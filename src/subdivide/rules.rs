@@ -5,8 +5,9 @@
 //!
 //! On the cage (level 0):
 //! - an edge is *sharp* (infinitely) when it has one face (naked), three or
-//!   more faces, or two faces that run it in the same direction (OpenSubdiv
-//!   calls the last two non-manifold);
+//!   more faces, two faces that run it in the same direction, or comes of a
+//!   face repeating a vertex (degenerate, or one of a pair's several edges;
+//!   OpenSubdiv calls all but the first non-manifold);
 //! - a vertex is *non-manifold* when it lies on a non-manifold edge, has no
 //!   face, or its faces do not form one fan;
 //! - a vertex is *infinitely sharp* when it has no face; in
@@ -90,7 +91,12 @@ pub(crate) fn forced_sharpness(
         let naked = corners.len() == 1;
         let same_direction = corners.len() == 2
             && faces.indices[corners[0] as usize] == faces.indices[corners[1] as usize];
-        let non_manifold = corners.len() > 2 || same_direction;
+        // A degenerate edge, or one of a pair's several edges (a face
+        // meeting the pair twice), as OpenSubdiv marks them.
+        let repeated = a == b
+            || (e > 0 && connectivity.edges[e - 1] == [a, b])
+            || connectivity.edges.get(e + 1) == Some(&[a, b]);
+        let non_manifold = corners.len() > 2 || same_direction || repeated;
         let sharp = naked || non_manifold;
         edge_sharp[e] = sharp;
         for v in [a, b] {

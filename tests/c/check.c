@@ -16,6 +16,17 @@ WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t
   return mesh;
 }
 
+WeftSubdivisionOptions smooth_catmull_clark(void) {
+  WeftSubdivisionOptions options;
+  memset(&options, 0, sizeof options);
+  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
+  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
+  options.creasing = WEFT_CREASING_UNIFORM;
+  return options;
+}
+
+WeftMesh *unit_cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
+
 void set_creases(WeftSubdivisionOptions *options, size_t count, const uint32_t *pairs, const double *sharpness) {
   options->crease_count = count;
   options->crease_vertex_pairs = pairs;

@@ -18,10 +18,15 @@ int check_contains(const char *file, int line, const char *message, const char *
 extern const double cube_positions[24];
 extern const uint32_t cube_sizes[6];
 extern const uint32_t cube_indices[24];
+/* The unit cube as a mesh (make_mesh). */
+WeftMesh *unit_cube(void);
 /* A mesh made from caller buffers with weft_mesh_new; a failure to make it
  * is a failed check (and NULL). */
 WeftMesh *make_mesh(const double *positions, size_t vertex_count, const uint32_t *sizes, size_t face_count,
                     const uint32_t *indices, size_t index_count);
+/* Catmull-Clark options, every other field 0: smooth naked edges, uniform
+ * creasing, no creases, corners or holes. */
+WeftSubdivisionOptions smooth_catmull_clark(void);
 /* Gives `options` `count` creases: vertex pairs (two indices each) and their
  * sharpness. */
 void set_creases(WeftSubdivisionOptions *options, size_t count, const uint32_t *pairs, const double *sharpness);

@@ -10,22 +10,11 @@
 static const uint32_t cube_edges[] = {0, 1, 0, 2, 0, 4, 1, 3, 1, 5, 2, 3,
                                       2, 6, 3, 7, 4, 5, 4, 6, 5, 7, 6, 7};
 
-static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
-
-static WeftSubdivisionOptions catmull_clark(void) {
-  WeftSubdivisionOptions options;
-  memset(&options, 0, sizeof options);
-  options.scheme = WEFT_SCHEME_CATMULL_CLARK;
-  options.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
-  options.creasing = WEFT_CREASING_UNIFORM;
-  return options;
-}
-
 static int near(double a, double b) { return fabs(a - b) < 1e-12; }
 
 static void test_creases_and_corners(void) {
-  WeftMesh *mesh = cube(), *out = NULL, *plain = NULL;
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube(), *out = NULL, *plain = NULL;
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   /* The four edges of face 0 infinitely sharp, vertex 7 a corner. */
   const uint32_t pairs[] = {0, 2, 2, 3, 3, 1, 1, 0};
   const double sharpness[] = {INFINITY, 10.0, 12.0, INFINITY};
@@ -67,8 +56,8 @@ static void test_creases_and_corners(void) {
 }
 
 static void test_counts_and_vertex_data(void) {
-  WeftMesh *mesh = cube(), *out = NULL;
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube(), *out = NULL;
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   const uint32_t pairs[] = {0, 1};
   const double sharpness[] = {1.5};
   double data[16], refined[2 * 98];
@@ -102,8 +91,8 @@ static void test_counts_and_vertex_data(void) {
 }
 
 static void test_face_varying(void) {
-  WeftMesh *mesh = cube();
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   double uvs[16], out[2 * 96];
   uint32_t bad[24];
   size_t v;
@@ -133,8 +122,8 @@ static void test_face_varying(void) {
 }
 
 static void test_limit(void) {
-  WeftMesh *mesh = cube();
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   double sharpness[12], positions[3 * 26], normals[3 * 26];
   size_t i;
   /* Every edge infinitely sharp: the limit is the cube itself, its faces flat. */
@@ -154,9 +143,9 @@ static void test_limit(void) {
 }
 
 static void test_refiner(void) {
-  WeftMesh *mesh = cube(), *moved_mesh = NULL, *expected = NULL;
+  WeftMesh *mesh = unit_cube(), *moved_mesh = NULL, *expected = NULL;
   WeftRefiner *refiner = NULL;
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   const uint32_t pairs[] = {0, 2, 2, 3};
   const double sharpness[] = {2.5, 0.5};
   double moved[24], out[3 * 98];
@@ -179,9 +168,9 @@ static void test_refiner(void) {
 }
 
 static void test_errors(void) {
-  WeftMesh *mesh = cube(), *out = NULL;
+  WeftMesh *mesh = unit_cube(), *out = NULL;
   WeftRefiner *refiner = NULL;
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   const uint32_t unknown[] = {0, 7};
   const uint32_t pairs[] = {0, 1};
   const double negative[] = {-1.0};
@@ -209,23 +198,23 @@ static void test_errors(void) {
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_NULL_POINTER);
   CHECK_MESSAGE("crease_sharpness is NULL");
 
-  options = catmull_clark();
+  options = smooth_catmull_clark();
   options.corner_count = 1;
   options.corner_vertices = far_corner;
   options.corner_sharpness = one;
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("corner 0 is vertex 8, but the mesh has 8 vertices");
 
-  options = catmull_clark();
+  options = smooth_catmull_clark();
   options.creasing = 7;
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_INVALID_ARGUMENT);
   CHECK_MESSAGE("creasing is 7");
-  options = catmull_clark();
+  options = smooth_catmull_clark();
   options.scheme = WEFT_SCHEME_LOOP;
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, &out), WEFT_STATUS_NOT_TRIANGLES);
   CHECK_STATUS(weft_subdivide_ex(mesh, NULL, 1, &out), WEFT_STATUS_NULL_POINTER);
   CHECK_MESSAGE("options is NULL");
-  options = catmull_clark();
+  options = smooth_catmull_clark();
   CHECK_STATUS(weft_subdivide_ex(NULL, &options, 1, &out), WEFT_STATUS_NULL_POINTER);
   CHECK_STATUS(weft_subdivide_ex(mesh, &options, 1, NULL), WEFT_STATUS_NULL_POINTER);
   CHECK(out == NULL);
@@ -237,7 +226,7 @@ static void test_crease_edges_from_mesh(void) {
   static const double p[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 2, 1, 0, 2, 0, 0};
   static const uint32_t sizes[] = {4, 4};
   static const uint32_t faces[] = {0, 1, 2, 3, 4, 7, 6, 5};
-  WeftMesh *mesh = NULL, *welded = NULL, *cube_mesh = cube();
+  WeftMesh *mesh = NULL, *welded = NULL, *cube_mesh = unit_cube();
   uint32_t pairs[16];
   size_t count = 99;
   CHECK_STATUS(weft_mesh_new(p, 8, sizes, 2, faces, 8, &mesh), WEFT_STATUS_OK);
@@ -318,7 +307,7 @@ static void test_crease_edges_vertex_map(void) {
 
   /* A welded mesh maps to itself. */
   {
-    WeftMesh *whole = cube();
+    WeftMesh *whole = unit_cube();
     CHECK_STATUS(weft_crease_edges_from_mesh_ex(whole, 45.0, &welded, pairs, 48, &count, map, 8), WEFT_STATUS_OK);
     CHECK(count == 12);
     for (v = 0; v < 8; ++v) CHECK(map[v] == v);
@@ -375,8 +364,8 @@ static void test_crease_edges_vertex_map(void) {
  * faces at the boundary; the smooth-triangle rule and the reserved fields
  * are checked. */
 static void test_holes_and_options(void) {
-  WeftMesh *mesh = cube(), *out = NULL, *plain = NULL;
-  WeftSubdivisionOptions options = catmull_clark();
+  WeftMesh *mesh = unit_cube(), *out = NULL, *plain = NULL;
+  WeftSubdivisionOptions options = smooth_catmull_clark();
   const uint32_t holes[] = {1, 4, 1};
   const uint32_t far_hole[] = {6};
   size_t vertices = 0, faces = 0, indices = 0;

@@ -6,10 +6,9 @@
 #include "check.h"
 
 
-static WeftMesh *make_cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
 
 static void test_construction_and_accessors(void) {
-  WeftMesh *mesh = make_cube();
+  WeftMesh *mesh = unit_cube();
   double positions[24];
   uint32_t sizes[6], indices[24];
   CHECK(weft_mesh_vertex_count(mesh) == 8);
@@ -47,7 +46,7 @@ static void test_empty_mesh(void) {
 }
 
 static void test_info(void) {
-  WeftMesh *cube = make_cube(), *grid = NULL, *fin = NULL;
+  WeftMesh *cube = unit_cube(), *grid = NULL, *fin = NULL;
   WeftMeshInfo info;
   /* A 2 x 1 open quad grid. */
   static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
@@ -123,6 +122,35 @@ static void test_construction_errors(void) {
   CHECK(mesh == untouched);
 }
 
+/* Faces that name a vertex twice: refused by default, accepted on request
+ * and subdivided (a degenerate edge keeps its point on its vertex). */
+static void test_repeated_vertices(void) {
+  static const double grid[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  static const uint32_t sizes[] = {5, 4};
+  static const uint32_t faces[] = {0, 1, 1, 4, 3, 1, 2, 5, 4};
+  WeftMesh *mesh = NULL, *out = NULL;
+  size_t vertices = 0, refined_faces = 0, indices = 0;
+  CHECK_FAILS_WITH(weft_mesh_new_ex(grid, 6, sizes, 2, faces, 9, 0, &mesh), WEFT_STATUS_REPEATED_INDEX,
+                   "face 0 uses vertex 1 twice");
+  CHECK_FAILS_WITH(weft_mesh_new_ex(grid, 6, sizes, 2, faces, 9, 6, &mesh), WEFT_STATUS_INVALID_ARGUMENT,
+                   "unknown bits 0x6");
+  CHECK(mesh == NULL);
+  CHECK_STATUS(weft_mesh_new_ex(grid, 6, sizes, 2, faces, 9, WEFT_MESH_ALLOW_REPEATED_VERTICES, &mesh),
+               WEFT_STATUS_OK);
+  CHECK(weft_mesh_face_count(mesh) == 2 && weft_mesh_index_count(mesh) == 9);
+  /* 6 vertices, 8 edges (the degenerate [1, 1] one of them), 2 faces. */
+  CHECK_STATUS(weft_subdivision_counts(mesh, WEFT_SCHEME_CATMULL_CLARK, 1, &vertices, &refined_faces, &indices),
+               WEFT_STATUS_OK);
+  CHECK(vertices == 16 && refined_faces == 9 && indices == 36);
+  CHECK_STATUS(weft_catmull_clark(mesh, 1, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(out) == 16);
+  /* Edge points follow the vertices in edge order; [1, 1] is the third edge. */
+  CHECK(memcmp(weft_mesh_positions(out) + 3 * 8, grid + 3, 3 * sizeof(double)) == 0);
+  CHECK(memcmp(weft_mesh_positions(out) + 3 * 1, grid + 3, 3 * sizeof(double)) == 0);
+  weft_mesh_free(out);
+  weft_mesh_free(mesh);
+}
+
 static void test_version(void) {
   char expected[32];
   snprintf(expected, sizeof expected, "%d.%d.%d", WEFT_VERSION_MAJOR, WEFT_VERSION_MINOR, WEFT_VERSION_PATCH);
@@ -134,6 +162,7 @@ int main(void) {
   test_empty_mesh();
   test_info();
   test_construction_errors();
+  test_repeated_vertices();
   test_version();
   return check_summary("test_mesh");
 }

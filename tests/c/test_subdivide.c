@@ -31,7 +31,6 @@ static const uint32_t tri_grid_indices[] = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4,
 /* Its border, counter-clockwise: the original boundary polyline. */
 static const uint32_t tri_grid_border[] = {0, 1, 2, 5, 8, 7, 6, 3};
 
-static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
 static WeftMesh *grid(void) { return make_mesh(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
 static WeftMesh *octahedron(void) {
   return make_mesh(octahedron_positions, 6, octahedron_sizes, 8, octahedron_indices, 24);
@@ -121,7 +120,7 @@ static int same_point(const double *a, const double *b) {
 }
 
 static void test_cube(void) {
-  WeftMesh *mesh = cube(), *out = NULL;
+  WeftMesh *mesh = unit_cube(), *out = NULL;
   const double *p;
   size_t f;
   CHECK_STATUS(weft_catmull_clark(mesh, 2, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_OK);
@@ -341,7 +340,7 @@ static void test_level_zero_is_a_copy(void) {
 }
 
 static void test_refiner(void) {
-  WeftMesh *mesh = cube(), *one_shot = NULL, *moved_cube = NULL, *from_refiner = NULL;
+  WeftMesh *mesh = unit_cube(), *one_shot = NULL, *moved_cube = NULL, *from_refiner = NULL;
   WeftRefiner *refiner = NULL;
   double moved[24], *out;
   size_t n, i;
@@ -373,7 +372,7 @@ static void test_refiner(void) {
 }
 
 static void test_bad_arguments(void) {
-  WeftMesh *mesh = cube(), *out = NULL;
+  WeftMesh *mesh = unit_cube(), *out = NULL;
   WeftRefiner *refiner = NULL;
   CHECK_STATUS(weft_catmull_clark(mesh, 16, WEFT_NAKED_EDGES_SMOOTH, &out), WEFT_STATUS_RESULT_TOO_LARGE);
   CHECK_MESSAGE("16 levels of subdivision: level 14 would make 1610612736 faces");

@@ -14,7 +14,6 @@ static const double grid_positions[] = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1
 static const uint32_t grid_sizes[] = {4, 4, 4, 4};
 static const uint32_t grid_indices[] = {0, 1, 4, 3, 1, 2, 5, 4, 3, 4, 7, 6, 4, 5, 8, 7};
 
-static WeftMesh *cube(void) { return make_mesh(cube_positions, 8, cube_sizes, 6, cube_indices, 24); }
 static WeftMesh *tetra(void) { return make_mesh(tetra_positions, 4, tetra_sizes, 4, tetra_indices, 12); }
 static WeftMesh *grid(void) { return make_mesh(grid_positions, 9, grid_sizes, 4, grid_indices, 16); }
 
@@ -27,7 +26,7 @@ static void expect(WeftMesh *mesh, size_t vertices, size_t faces) {
 }
 
 static void test_subdivisions(void) {
-  WeftMesh *c = cube(), *t = tetra(), *out = NULL, *untouched = (WeftMesh *)&out;
+  WeftMesh *c = unit_cube(), *t = tetra(), *out = NULL, *untouched = (WeftMesh *)&out;
   CHECK_STATUS(weft_split_polygons(c, 1, &out), WEFT_STATUS_OK);
   expect(out, 26, 24);
   CHECK_STATUS(weft_split_polygons(c, 21, &out), WEFT_STATUS_INVALID_ARGUMENT);
@@ -115,7 +114,7 @@ static void test_smoothing(void) {
 }
 
 static void test_transforms(void) {
-  WeftMesh *c = cube(), *g = grid(), *out = NULL;
+  WeftMesh *c = unit_cube(), *g = grid(), *out = NULL;
   WeftMeshInfo info;
   double two[2] = {0.1, 0.2}, one = 0.1;
   CHECK_STATUS(weft_offset_mesh(c, 0.5, WEFT_OFFSET_PLANES_INTERSECTION, &out), WEFT_STATUS_OK);
@@ -155,7 +154,7 @@ static void test_transforms(void) {
 }
 
 static void test_extract(void) {
-  WeftMesh *c = cube(), *out = NULL;
+  WeftMesh *c = unit_cube(), *out = NULL;
   size_t count = 0;
   uint32_t pairs[24];
   double segments[72];
@@ -198,7 +197,7 @@ static void test_extract(void) {
 }
 
 static void test_tile(void) {
-  WeftMesh *c = cube(), *g = grid(), *out = NULL, *untouched = (WeftMesh *)&out;
+  WeftMesh *c = unit_cube(), *g = grid(), *out = NULL, *untouched = (WeftMesh *)&out;
   WeftMeshInfo info;
   uint32_t corners[4];
   CHECK_STATUS(weft_tile(c, WEFT_TILE_FILL_TRIANGLE_FAN, WEFT_TILE_FACES_ALL, &out), WEFT_STATUS_OK);

@@ -73,6 +73,13 @@ static void test_mesh_and_views() {
                "a face naming vertex 3 of 3");
   expect_error(WEFT_STATUS_COUNT_MISMATCH, [] { weft::Mesh({0, 0, 0, 1}, {}, {}); },
                "positions not a multiple of 3");
+
+  // A face naming a vertex twice: refused unless the flag allows it.
+  const std::vector<double> grid = {0, 0, 0, 1, 0, 0, 2, 0, 0, 0, 1, 0, 1, 1, 0, 2, 1, 0};
+  expect_error(WEFT_STATUS_REPEATED_INDEX, [&] { weft::Mesh(grid, {5, 4}, {0, 1, 1, 4, 3, 1, 2, 5, 4}); },
+               "a face naming vertex 1 twice");
+  weft::Mesh repeating(grid, {5, 4}, {0, 1, 1, 4, 3, 1, 2, 5, 4}, WEFT_MESH_ALLOW_REPEATED_VERTICES);
+  CHECK(repeating.face_count() == 2 && weft::catmull_clark(repeating, 1).vertex_count() == 16);
 }
 
 static void test_subdivision() {
@@ -101,6 +108,14 @@ static void test_subdivision() {
   not_an_edge.crease(0, 7);
   expect_error(WEFT_STATUS_INVALID_ARGUMENT, [&] { weft::subdivide(cage, not_an_edge, 1); },
                "a crease on the cube's diagonal");
+
+  // The limit surface as patches: 96 at isolation 2, all exact but the 3 at each corner.
+  weft::SubdivisionOptions smooth_cc;
+  smooth_cc.naked_edges = WEFT_NAKED_EDGES_SMOOTH;
+  weft::LimitPatches patches = weft::limit_patches(cage, smooth_cc, 2);
+  CHECK(patches.size() == 96 && patches.exact_count == 72 && patches.max_error > 1e-4);
+  CHECK(patches.control_points.size() == 48 * 96 && patches.cage_faces[95] == 5);
+  expect_error(WEFT_STATUS_INVALID_ARGUMENT, [&] { weft::limit_patches(cage, smooth_cc, 9); }, "isolation 9");
 
   std::vector<uint32_t> parents = weft::parent_faces(cage, WEFT_SCHEME_CATMULL_CLARK, 1);
   CHECK(parents.size() == 24 && parents[0] == 0 && parents[3] == 0 && parents[4] == 1 && parents[23] == 5);

@@ -3,10 +3,14 @@
 
 #![allow(dead_code)]
 
-use weft::subdivide::{Creasing, NakedEdges, Scheme, SubdivisionOptions, TriangleRule};
+use weft::subdivide::{
+    parent_faces_with, refined_counts_with, subdivide_with, Creasing, FaceVaryingLinear,
+    NakedEdges, Scheme, Subdivider, SubdivisionOptions, TriangleRule,
+};
 use weft::{DVec3, Mesh};
 use weft_reference::{
-    boundary_vertices, BoundaryInterpolation, CreasingMethod, OsdOptions, RefMesh,
+    boundary_vertices, opensubdiv_refine_face_varying, BoundaryInterpolation, CreasingMethod,
+    FVarLinear, Limit, OsdOptions, OsdRefiner, RefMesh,
 };
 
 pub fn to_ref(mesh: &Mesh) -> RefMesh {
@@ -159,4 +163,82 @@ pub fn assert_rows_close(
             );
         }
     }
+}
+
+/// The one-shot driver, the counts and the parent faces with `options`
+/// agree with `subdivider` and its mesh `ours`.
+pub fn assert_drivers_agree(
+    cage: &Mesh,
+    (scheme, levels, options): (Scheme, u32, &SubdivisionOptions),
+    subdivider: &Subdivider,
+    ours: &Mesh,
+    what: &str,
+) {
+    assert_eq!(
+        &subdivide_with(cage, scheme, levels, options).unwrap(),
+        ours,
+        "{what}: one-shot"
+    );
+    let counts = refined_counts_with(cage, scheme, levels, options).unwrap();
+    assert_eq!(
+        (counts.vertex_count, counts.face_count, counts.index_count),
+        (ours.vertex_count(), ours.face_count(), ours.index_count()),
+        "{what}: counts"
+    );
+    assert_eq!(
+        parent_faces_with(cage, scheme, levels, options).unwrap(),
+        subdivider.parent_faces(),
+        "{what}: parent faces"
+    );
+}
+
+/// OpenSubdiv's limit at every refined vertex (its refiner built with the
+/// full topology the limit needs).
+pub fn opensubdiv_limit_at_vertices(cage: &RefMesh, osd: &OsdOptions, levels: u32) -> Limit {
+    let full = OsdOptions {
+        full_topology: true,
+        ..osd.clone()
+    };
+    let refiner = OsdRefiner::new(cage, &full, levels).unwrap();
+    refiner.limit(&cage.positions).unwrap()
+}
+
+/// Face-varying values refined by both with one linear rule: `(rule, ours
+/// per refined corner, their values, their value of each refined corner)`.
+pub type RefinedValues = (FaceVaryingLinear, Vec<f64>, Vec<f64>, Vec<u32>);
+
+/// A face-varying value per cage vertex (two numbers), refined by Weft and
+/// by OpenSubdiv with each linear rule.
+pub fn face_varying_both(
+    cage: &Mesh,
+    osd: &OsdOptions,
+    levels: u32,
+    subdivider: &Subdivider,
+) -> Vec<RefinedValues> {
+    let values: Vec<f64> = cage
+        .positions()
+        .iter()
+        .flat_map(|p| [p.x + 0.3 * p.z, p.y - 0.2 * p.z])
+        .collect();
+    let indices = cage.face_indices().to_vec();
+    let reference_cage = to_ref(cage);
+    [
+        (FaceVaryingLinear::Smooth, FVarLinear::None),
+        (FaceVaryingLinear::All, FVarLinear::All),
+    ]
+    .into_iter()
+    .map(|(linear, their_linear)| {
+        let ours = subdivider
+            .face_varying(&values, 2, &indices, linear)
+            .unwrap();
+        let with_fvar = OsdOptions {
+            fvar_linear: their_linear,
+            ..osd.clone()
+        };
+        let (theirs, their_indices) =
+            opensubdiv_refine_face_varying(&reference_cage, &with_fvar, levels, &values, &indices)
+                .unwrap();
+        (linear, ours, theirs, their_indices)
+    })
+    .collect()
 }

@@ -27,6 +27,16 @@ namespace Weft.Grasshopper
         {
             AddSubdivisionInputs(pManager, "The mesh to subdivide; its vertex colours, when it has one per vertex, are carried through.",
                                  "Subdivision levels (0 returns the input, or its limit surface with X).");
+            AddCreaseInputs(pManager);
+            pManager.AddBooleanParameter("Limit", "X", "Project the vertices onto the limit surface and use its normals (smooth shading, offsets).", GH_ParamAccess.item, false);
+            AddHoleAndTriangleInputs(pManager);
+            pManager[9].Optional = true;
+            pManager[10].Optional = true;
+        }
+
+        /// <summary>Registers C, CS, P, PS, R and T (inputs 3 to 8), all optional.</summary>
+        protected static void AddCreaseInputs(GH_InputParamManager pManager)
+        {
             pManager.AddGenericParameter("Creases", "C",
                 "Creased edges: lines whose end points are the edge's vertices (within T), or edge indices as Mesh Edges (wbEdges) lists them.",
                 GH_ParamAccess.list);
@@ -39,15 +49,18 @@ namespace Weft.Grasshopper
                 GH_ParamAccess.list);
             pManager.AddIntegerParameter("Rule", "R", "How semi-sharp creases soften: 0 uniform, 1 Chaikin (averaged along the crease).", GH_ParamAccess.item, 0);
             AddToleranceInput(pManager, "How far a crease line's ends or a corner point may be from a vertex");
-            pManager.AddBooleanParameter("Limit", "X", "Project the vertices onto the limit surface and use its normals (smooth shading, offsets).", GH_ParamAccess.item, false);
+            for (int i = 3; i <= 8; i++) pManager[i].Optional = true;
+        }
+
+        /// <summary>Registers H (hole faces) and TR (the triangle rule), the two inputs after Weaverbird's order.</summary>
+        protected static void AddHoleAndTriangleInputs(GH_InputParamManager pManager)
+        {
             pManager.AddIntegerParameter("Holes", "H",
                 "Faces of M (indices) to leave out of the result, as OpenSubdiv's hole tags: they leave no faces, but their vertices and edges still shape their neighbours.",
                 GH_ParamAccess.list);
             pManager.AddIntegerParameter("Triangle Rule", "TR",
                 "Catmull-Clark's weights at triangles: 0 its own, 1 OpenSubdiv's smooth triangles, which round triangle regions of mixed meshes. Loop ignores it.",
                 GH_ParamAccess.item, 0);
-            for (int i = 3; i <= 8; i++) pManager[i].Optional = true;
-            pManager[10].Optional = true;
         }
 
         protected override void RegisterOutputParams(GH_OutputParamManager pManager)
@@ -59,43 +72,13 @@ namespace Weft.Grasshopper
         protected override void Solve(IGH_DataAccess DA)
         {
             int levels = Get(DA, 1, 1);
-            NakedEdges nakedEdges = ToNakedEdges(Get(DA, 2, 1));
-            var creaseItems = new List<object>();
-            DA.GetDataList(3, creaseItems);
-            double[] creaseSharpness = GetList<double>(DA, 4);
-            Point3d[] cornerPoints = GetList<Point3d>(DA, 5);
-            double[] cornerSharpness = GetList<double>(DA, 6);
-            var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
-            double tolerance = GetTolerance(DA, 8);
             bool limit = Get(DA, 9, false);
             int[] holes = GetList<int>(DA, 10);
-            var triangles = (TriangleRule)ToMode(Get(DA, 11, 0), 2, "TR", "0 (Catmull-Clark's weights) or 1 (smooth triangles)");
 
             int[] colours;
             PolygonArrays cage = GetPolygons(DA, 0, out colours);
             if (cage == null) return;
-
-            var options = new SubdivisionOptions(nakedEdges) { Creasing = rule, Triangles = triangles };
-            CreaseItem[] items = ToCreaseItems(creaseItems);
-            using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
-            {
-                if (items.Length > 0)
-                {
-                    uint[] pairs = CreaseInputs.VertexPairs(mesh, items, tolerance);
-                    double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
-                    for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
-                }
-                else if (creaseSharpness.Length > 1)
-                {
-                    Warn("CS has values but C names no crease.");
-                }
-                if (cornerPoints.Length > 0)
-                {
-                    uint[] corners = CreaseInputs.CornerVertices(mesh, RhinoMeshes.FromPoints(cornerPoints), tolerance);
-                    double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
-                    for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
-                }
-            }
+            SubdivisionOptions options = ReadCreasedOptions(DA, cage, 11);
 
             uint[] triangleParents;
             int inputFaces = cage.FaceSizes.Length;
@@ -130,10 +113,50 @@ namespace Weft.Grasshopper
         }
 
         /// <summary>
+        /// The options of inputs S, C, CS, P, PS, R, T (2 to 8) and TR (at <paramref name="trianglesIndex"/>)
+        /// for <paramref name="cage"/>: crease lines and corner points matched to its vertices.
+        /// </summary>
+        protected SubdivisionOptions ReadCreasedOptions(IGH_DataAccess DA, PolygonArrays cage, int trianglesIndex)
+        {
+            NakedEdges nakedEdges = ToNakedEdges(Get(DA, 2, 1));
+            var creaseItems = new List<object>();
+            DA.GetDataList(3, creaseItems);
+            double[] creaseSharpness = GetList<double>(DA, 4);
+            Point3d[] cornerPoints = GetList<Point3d>(DA, 5);
+            double[] cornerSharpness = GetList<double>(DA, 6);
+            var rule = (Creasing)ToMode(Get(DA, 7, 0), 2, "R", "0 (uniform) or 1 (Chaikin)");
+            double tolerance = GetTolerance(DA, 8);
+            var triangles = (TriangleRule)ToMode(Get(DA, trianglesIndex, 0), 2, "TR", "0 (Catmull-Clark's weights) or 1 (smooth triangles)");
+
+            var options = new SubdivisionOptions(nakedEdges) { Creasing = rule, Triangles = triangles };
+            CreaseItem[] items = ToCreaseItems(creaseItems);
+            using (WeftMesh mesh = WeftMesh.Create(cage.Positions, cage.FaceSizes, cage.FaceIndices))
+            {
+                if (items.Length > 0)
+                {
+                    uint[] pairs = CreaseInputs.VertexPairs(mesh, items, tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(creaseSharpness, items.Length, "CS", "creases");
+                    for (int i = 0; i < items.Length; i++) options.AddCrease((int)pairs[2 * i], (int)pairs[2 * i + 1], sharpness[i]);
+                }
+                else if (creaseSharpness.Length > 1)
+                {
+                    Warn("CS has values but C names no crease.");
+                }
+                if (cornerPoints.Length > 0)
+                {
+                    uint[] corners = CreaseInputs.CornerVertices(mesh, RhinoMeshes.FromPoints(cornerPoints), tolerance);
+                    double[] sharpness = CreaseInputs.Sharpness(cornerSharpness, corners.Length, "PS", "corners");
+                    for (int i = 0; i < corners.Length; i++) options.AddCorner((int)corners[i], sharpness[i]);
+                }
+            }
+            return options;
+        }
+
+        /// <summary>
         /// Adds the hole faces of H; when Loop triangulated the cage (<paramref name="triangleParents"/>
         /// not null), the triangles cut from a hole are the holes. An index past M's faces is refused.
         /// </summary>
-        private static void AddHoles(SubdivisionOptions options, int[] holes, int inputFaces, int cageFaces, uint[] triangleParents)
+        protected static void AddHoles(SubdivisionOptions options, int[] holes, int inputFaces, int cageFaces, uint[] triangleParents)
         {
             var isHole = new bool[inputFaces];
             for (int i = 0; i < holes.Length; i++)

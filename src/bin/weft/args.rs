@@ -82,6 +82,14 @@ pub fn mesh_path(text: &str) -> Result<PathBuf, String> {
         .map_err(|_| "expected a mesh file ending in .obj, .ply, .stl or .off".to_string())
 }
 
+pub fn step_path(text: &str) -> Result<PathBuf, String> {
+    let path = PathBuf::from(text);
+    match path.extension().and_then(|e| e.to_str()) {
+        Some(e) if e.eq_ignore_ascii_case("step") || e.eq_ignore_ascii_case("stp") => Ok(path),
+        _ => Err("expected a STEP file ending in .step or .stp".to_string()),
+    }
+}
+
 pub fn tolerance(text: &str) -> Result<f64, String> {
     text.parse::<f64>()
         .ok()

@@ -11,9 +11,11 @@ use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 mod args;
 mod carry;
 mod demo;
+mod evaluate;
 mod files;
 mod info;
 mod mend;
+mod nurbs;
 mod progress;
 mod subdivide;
 mod toolbar;
@@ -109,6 +111,30 @@ weft subdivide block.ply block3.obj --levels 3 --creases block-creases.txt --lim
 weft subdivide scan.obj smooth.obj --levels 2 --crease-angle 60 --creasing chaikin"
     )]
     Subdivide(subdivide::Subdivide),
+    /// Writes the Catmull-Clark limit surface of a cage as bicubic B-spline
+    /// patches in a STEP file (AP214), one per face of the cage refined
+    /// --isolation levels, with the options of `subdivide`; prints how many
+    /// patches are exact and the largest error of the others.
+    #[command(
+        after_help = "Patches away from extraordinary vertices and crease ends are the limit surface \
+exactly (bicubic B-splines); the few touching one are fitted to exact limit points, watertight \
+with their neighbours, and their largest distance from the limit is reported.\n\n\
+Examples:\n  weft nurbs cage.obj part.step --isolation 2 --naked-edges smooth\n  \
+weft nurbs block.obj block.step --isolation 3 --creases block-creases.txt"
+    )]
+    Nurbs(nurbs::Nurbs),
+    /// Points of a cage's limit surface at given face parameters, with its
+    /// unit normals, one line per sample (`x y z nx ny nz`), with the
+    /// options of `subdivide`: exact, at any parameter of any face.
+    #[command(
+        after_help = "Samples file (--samples): one sample per line, `face u v`, the face 0-based. A quad's \
+(u, v) runs from its first corner, u towards the second corner and v towards the last; a Loop \
+triangle's is barycentric (corner 0 at (0, 0), 1 at (1, 0), 2 at (0, 1)); other faces are laid out \
+as OpenSubdiv's Bfr quad sub-faces (see weft.h, weft_limit_surface_evaluate).\n\n\
+Examples:\n  weft evaluate cage.obj --samples uv.txt -o points.txt --naked-edges smooth\n  \
+weft evaluate tri.obj --samples uv.txt --scheme loop"
+    )]
+    Evaluate(evaluate::Evaluate),
     /// Joins meshes into one and merges vertices closer than the tolerance;
     /// faces that collapse are removed and counted.
     #[command(
@@ -275,6 +301,10 @@ impl Command {
             | Command::Flip { files, .. }
             | Command::Triangulate { files }
             | Command::Convert { files, .. } => vec![files.output.as_path()],
+            Command::Nurbs(nurbs::Nurbs { output, .. }) => vec![output.as_path()],
+            Command::Evaluate(evaluate::Evaluate { output, .. }) => {
+                output.iter().map(PathBuf::as_path).collect()
+            }
             Command::TNodes { repair, .. } => repair.iter().map(PathBuf::as_path).collect(),
             // The demo creates its folder, and says so when it cannot.
             Command::Info { .. } | Command::Demo { .. } => Vec::new(),
@@ -360,6 +390,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             Ok(())
         }
         Command::Subdivide(args) => subdivide::run(cli, args),
+        Command::Nurbs(args) => nurbs::run(cli, args),
+        Command::Evaluate(args) => evaluate::run(cli, args),
         Command::Weld {
             inputs,
             output,

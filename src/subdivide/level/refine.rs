@@ -82,7 +82,7 @@ impl Connectivity {
                     let corners = self.edge_corners(self.vertex_edges[s] as usize);
                     for (out, &c) in out.iter_mut().zip(corners) {
                         let c = c as usize;
-                        *out = if idx[c] == v {
+                        *out = if self.slot_leaves_at(s, v, c, idx) {
                             4 * c as u32
                         } else {
                             4 * next(c) as u32 + 3
@@ -150,7 +150,7 @@ impl Connectivity {
                     let e = u - v_count;
                     let [a, b] = self.edges[e];
                     out[0] = self.vertex_edge_slot(a, e as u32);
-                    out[1] = self.vertex_edge_slot(b, e as u32);
+                    out[1] = self.vertex_edge_slot_arriving(b, e as u32);
                     let slots = self.edge_offsets[e]..self.edge_offsets[e + 1];
                     for (out, slot) in out[2..].iter_mut().zip(slots) {
                         *out = two_e as u32 + slot;
@@ -266,7 +266,7 @@ impl Connectivity {
                     corner_edges.extend_from_slice(&[
                         self.vertex_edge_slot(v, e[i]),
                         inner(f, e[i], e_previous),
-                        self.vertex_edge_slot(v, e_previous),
+                        self.vertex_edge_slot_arriving(v, e_previous),
                     ]);
                 }
                 corner_edges.extend_from_slice(&[
@@ -283,11 +283,14 @@ impl Connectivity {
             let mut edge_corners = try_vec(12 * f_count, "edge corners")?;
             edge_offsets.push(0);
             for v in 0..v_count {
-                for &e in self.vertex_edges(v) {
+                let slots =
+                    self.vertex_edge_offsets[v] as usize..self.vertex_edge_offsets[v + 1] as usize;
+                for s in slots {
+                    let e = self.vertex_edges[s];
                     let start = edge_corners.len();
                     edge_corners.extend(self.edge_corners(e as usize).iter().map(|&c| {
                         let (f, i) = (c / 3, c % 3);
-                        if idx[c as usize] == v as u32 {
+                        if self.slot_leaves_at(s, v as u32, c as usize, idx) {
                             12 * f + 3 * i
                         } else {
                             12 * f + 3 * ((i + 1) % 3) + 2
@@ -368,7 +371,7 @@ impl Connectivity {
                     let e32 = e as u32;
                     vertex_edges.extend_from_slice(&[
                         self.vertex_edge_slot(a, e32),
-                        self.vertex_edge_slot(b, e32),
+                        self.vertex_edge_slot_arriving(b, e32),
                     ]);
                     let start = vertex_edges.len();
                     for &c in self.edge_corners(e) {

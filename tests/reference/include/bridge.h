@@ -33,6 +33,12 @@ public:
                                 rust::Slice<uint32_t> out_indices) const;
   void limit(rust::Slice<const double> cage_positions, rust::Slice<double> positions,
              rust::Slice<double> du, rust::Slice<double> dv) const;
+  // Bfr's limit surface of the base level at (face, u, v) samples:
+  // Bfr::RefinerSurfaceFactory with the given approximation levels.
+  void bfr_evaluate(rust::Slice<const double> cage_positions, int32_t approx_smooth,
+                    int32_t approx_sharp, rust::Slice<const uint32_t> faces,
+                    rust::Slice<const double> uvs, rust::Slice<double> positions,
+                    rust::Slice<double> du, rust::Slice<double> dv) const;
 
   const OpenSubdiv::Far::TopologyRefiner &refiner() const { return *refiner_; }
 

@@ -5,6 +5,8 @@
 #include "weft-reference/include/bridge.h"
 #include "weft-reference/src/bridge.rs.h"
 
+#include <opensubdiv/bfr/refinerSurfaceFactory.h>
+#include <opensubdiv/bfr/surface.h>
 #include <opensubdiv/far/error.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/stencilTableFactory.h>
@@ -271,6 +273,35 @@ void OsdRefiner::limit(rust::Slice<const double> cage_positions, rust::Slice<dou
   auto tan2 = rows<3>(dv.data(), 3);
   primvar.Limit(src, pos, tan1, tan2);
   throw_if_failed("OpenSubdiv could not evaluate the limit");
+}
+
+void OsdRefiner::bfr_evaluate(rust::Slice<const double> cage_positions, int32_t approx_smooth,
+                              int32_t approx_sharp, rust::Slice<const uint32_t> faces,
+                              rust::Slice<const double> uvs, rust::Slice<double> positions,
+                              rust::Slice<double> du, rust::Slice<double> dv) const {
+  namespace Bfr = OpenSubdiv::Bfr;
+  install_callbacks();
+  Bfr::SurfaceFactory::Options options;
+  options.SetApproxLevelSmooth(approx_smooth);
+  options.SetApproxLevelSharp(approx_sharp);
+  Bfr::RefinerSurfaceFactory<> factory(*refiner_, options);
+  Bfr::Surface<double> surface;
+  std::vector<double> patch_points;
+  // As Bfr's users do: one surface per face, kept for the samples that follow on it.
+  std::size_t prepared = faces.size();
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    if (prepared == faces.size() || faces[prepared] != faces[i]) {
+      if (!factory.InitVertexSurface<double>(int(faces[i]), &surface) || !surface.IsValid()) {
+        throw std::runtime_error("Bfr has no limit surface for face " + std::to_string(faces[i]));
+      }
+      patch_points.resize(std::size_t(surface.GetNumPatchPoints()) * 3);
+      surface.PreparePatchPoints(cage_positions.data(), 3, patch_points.data(), 3);
+      prepared = i;
+    }
+    const double uv[2] = {uvs[2 * i], uvs[2 * i + 1]};
+    surface.Evaluate(uv, patch_points.data(), 3, &positions[3 * i], &du[3 * i], &dv[3 * i]);
+  }
+  throw_if_failed("OpenSubdiv reported an error evaluating the limit surface");
 }
 
 OsdStencils::OsdStencils(std::unique_ptr<const Far::StencilTableReal<double>> table)

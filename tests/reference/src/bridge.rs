@@ -76,6 +76,18 @@ pub(crate) mod ffi {
             du: &mut [f64],
             dv: &mut [f64],
         ) -> Result<()>;
+        #[allow(clippy::too_many_arguments)]
+        fn bfr_evaluate(
+            self: &OsdRefiner,
+            cage_positions: &[f64],
+            approx_smooth: i32,
+            approx_sharp: i32,
+            faces: &[u32],
+            uvs: &[f64],
+            positions: &mut [f64],
+            du: &mut [f64],
+            dv: &mut [f64],
+        ) -> Result<()>;
 
         /// A `Far::StencilTableReal<double>` for the last level.
         type OsdStencils;

@@ -350,6 +350,7 @@ pub struct OsdRefiner {
     inner: cxx::UniquePtr<ffi::OsdRefiner>,
     cage_vertex_count: usize,
     cage_corner_count: usize,
+    cage_face_count: usize,
     cage_value_count: usize,
 }
 
@@ -481,6 +482,7 @@ impl OsdRefiner {
             cage_vertex_count: vertex_count,
             cage_corner_count: value_indices.len(),
             cage_value_count: value_count,
+            cage_face_count: cage.face_count(),
         })
     }
 
@@ -625,6 +627,49 @@ impl OsdRefiner {
             dv,
             normals,
         })
+    }
+}
+
+impl OsdRefiner {
+    /// The limit surface of the cage (the refiner's base level) at
+    /// `faces[i]`, `(uvs[2 i], uvs[2 i + 1])`, by OpenSubdiv's Bfr
+    /// (`Bfr::RefinerSurfaceFactory`, `Surface<double>::Evaluate`), with
+    /// `approx_smooth` and `approx_sharp` levels of its approximation of
+    /// irregular faces (`SetApproxLevelSmooth`, `SetApproxLevelSharp`;
+    /// regular faces are exact at any level). Parameters as Bfr's
+    /// `Parameterization`. Returns positions, du and dv, 3 numbers each.
+    ///
+    /// # Errors
+    /// A face out of range or one Bfr cannot evaluate (a hole).
+    ///
+    /// # Panics
+    /// When `cage_positions` does not hold 3 numbers per cage vertex or
+    /// `uvs` not 2 per face.
+    pub fn bfr_evaluate(
+        &self,
+        cage_positions: &[f64],
+        approx: (i32, i32),
+        faces: &[u32],
+        uvs: &[f64],
+    ) -> Result<[Vec<f64>; 3], ReferenceError> {
+        assert_eq!(cage_positions.len(), 3 * self.cage_vertex_count);
+        assert_eq!(uvs.len(), 2 * faces.len());
+        if let Some(&f) = faces.iter().find(|&&f| f as usize >= self.cage_face_count) {
+            return Err(ReferenceError(format!("face {f} is out of range")));
+        }
+        let n = 3 * faces.len();
+        let (mut p, mut du, mut dv) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        self.inner.bfr_evaluate(
+            cage_positions,
+            approx.0.clamp(0, 10),
+            approx.1.clamp(0, 10),
+            faces,
+            uvs,
+            &mut p,
+            &mut du,
+            &mut dv,
+        )?;
+        Ok([p, du, dv])
     }
 }
 

@@ -1,0 +1,125 @@
+//! The Catmull-Clark limit surface as bicubic Bézier patches, for NURBS
+//! export (`weft nurbs` writes them as STEP).
+
+use crate::ffi::boundary::{check_room, guard, output_slice, Failure, WeftStatus};
+use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
+use crate::subdivide::{limit_patches, Scheme};
+
+/// Doubles per patch in `weft_limit_patches`'s control points: 4 × 4 points of 3.
+pub const WEFT_PATCH_DOUBLES: usize = 48;
+
+/// The limit surface of the Catmull-Clark subdivision `options` describes
+/// (its scheme must be WEFT_SCHEME_CATMULL_CLARK) as one bicubic Bézier
+/// patch per face of `cage` refined `isolation` levels (1 to 8), in the
+/// refined faces' order, `weft_subdivision_counts_ex(cage, options,
+/// isolation, ...)` of them.
+///
+/// Patch p's control point i along u and j along v (u from the refined
+/// face's first corner towards its second, v towards its last, so du × dv
+/// points out of a counter-clockwise face) is `out_control_points[48 p +
+/// 12 i + 3 j + k]`, k = x, y, z: a B-spline surface of degree 3 × 3 with
+/// knots 0, 0, 0, 0, 1, 1, 1, 1 in each direction. Patches that meet at an
+/// edge share its boundary control points bit for bit. Where the limit
+/// surface is a bicubic B-spline (away from extraordinary vertices, crease
+/// ends and corners) a patch is exact; the others are fitted to exact limit
+/// points. `out_errors[p]` is patch p's largest distance from the limit
+/// points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
+/// lies on; both may be NULL. `*out_patch_count` receives the number of
+/// patches, `*out_max_error` (may be NULL) the largest error and
+/// `*out_exact_count` (may be NULL) how many patches are exact (an error
+/// within 1e-12 of the cage's bounding-box diagonal).
+///
+/// `capacity` is the room in patches: `out_control_points` holds 48 ×
+/// `capacity` doubles (it may be NULL when `capacity` is 0), `out_cage_faces` and `out_errors` `capacity` elements
+/// each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
+/// outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
+/// options fail as `weft_subdivide_ex`'s. Nothing is written on failure.
+///
+/// # Safety
+/// `cage` and `options` are NULL or valid; each non-NULL output holds what
+/// `capacity` says; `out_patch_count` is writable.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn weft_limit_patches(
+    cage: *const WeftMesh,
+    options: *const WeftSubdivisionOptions,
+    isolation: u32,
+    out_control_points: *mut f64,
+    out_cage_faces: *mut u32,
+    out_errors: *mut f64,
+    capacity: usize,
+    out_patch_count: *mut usize,
+    out_max_error: *mut f64,
+    out_exact_count: *mut usize,
+) -> WeftStatus {
+    // SAFETY: the pointers are as the `# Safety` section above requires;
+    // each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            if out_patch_count.is_null() {
+                return Err(Failure::new(
+                    WeftStatus::NullPointer,
+                    "out_patch_count is NULL",
+                ));
+            }
+            if out_control_points.is_null() && capacity > 0 {
+                return Err(Failure::new(
+                    WeftStatus::NullPointer,
+                    "out_control_points is NULL",
+                ));
+            }
+            let mesh = mesh_ref(cage, "cage")?;
+            let (scheme, options) = options_arg(options)?;
+            if scheme != Scheme::CatmullClark {
+                return Err(Failure::invalid_argument(
+                    "the scheme is Loop; patches need WEFT_SCHEME_CATMULL_CLARK (Loop's limit surface is a quartic box spline, which no bicubic patch holds exactly)",
+                ));
+            }
+            let patches = limit_patches(mesh, &options, isolation)?;
+            let count = patches.patches.len();
+            check_room("capacity (in patches)", capacity, count)?;
+            let doubles = capacity.checked_mul(WEFT_PATCH_DOUBLES).ok_or_else(|| {
+                Failure::invalid_argument(format!(
+                    "capacity {capacity} is larger than memory can hold"
+                ))
+            })?;
+            let points = output_slice(out_control_points, doubles, "out_control_points")?;
+            let faces = (!out_cage_faces.is_null())
+                .then(|| output_slice(out_cage_faces, capacity, "out_cage_faces"))
+                .transpose()?;
+            let errors = (!out_errors.is_null())
+                .then(|| output_slice(out_errors, capacity, "out_errors"))
+                .transpose()?;
+            for (patch, out) in patches
+                .patches
+                .iter()
+                .zip(points.chunks_exact_mut(WEFT_PATCH_DOUBLES))
+            {
+                for (row, out) in patch.control.iter().zip(out.chunks_exact_mut(12)) {
+                    for (point, xyz) in row.iter().zip(out.chunks_exact_mut(3)) {
+                        xyz.copy_from_slice(&point.to_array());
+                    }
+                }
+            }
+            if let Some(faces) = faces {
+                for (patch, out) in patches.patches.iter().zip(faces) {
+                    *out = patch.cage_face;
+                }
+            }
+            if let Some(errors) = errors {
+                for (patch, out) in patches.patches.iter().zip(errors) {
+                    *out = patch.error;
+                }
+            }
+            *out_patch_count = count;
+            if !out_max_error.is_null() {
+                *out_max_error = patches.max_error;
+            }
+            if !out_exact_count.is_null() {
+                *out_exact_count = patches.exact_count;
+            }
+            Ok(())
+        })
+    }
+}
