@@ -2,6 +2,9 @@
 //! with OpenSubdiv building its topology of the same mesh beside Weft's
 //! (`Far::TopologyRefinerFactory::Create`, no refinement).
 //!
+//! The group `files` reads and writes an OBJ file of a million quads in
+//! memory (the parallel reader and writer, no disk).
+//!
 //! Run with `cargo bench --bench mending`.
 
 use std::hint::black_box;
@@ -54,5 +57,25 @@ fn mending(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, mending);
+fn files(c: &mut Criterion) {
+    let mut group = c.benchmark_group("files");
+    group.sample_size(10);
+    let grid = shapes::quad_grid(1000, 1000);
+    let mut text = Vec::new();
+    weft::io::obj::write(&mut text, &grid).unwrap();
+    assert_eq!(weft::io::obj::parse(&text).unwrap(), grid);
+    group.bench_function("read OBJ of 1M quads", |b| {
+        b.iter(|| weft::io::obj::parse(black_box(&text)).unwrap())
+    });
+    group.bench_function("write OBJ of 1M quads", |b| {
+        b.iter(|| {
+            let mut out = Vec::with_capacity(text.len());
+            weft::io::obj::write(&mut out, black_box(&grid)).unwrap();
+            out
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, mending, files);
 criterion_main!(benches);

@@ -737,3 +737,45 @@ fn render_coloured_paints_faces_in_their_vertices_colours() {
     assert!(b > r && b > g, "{:?}", [r, g, b]);
     assert!(render_coloured(&cube, &options, &red[..7]).is_err());
 }
+
+/// A large mesh is drawn on two threads, half the faces each; the picture
+/// must be exactly the one drawn on one thread, also where faces of the two
+/// halves lie at the same depth (the earlier face stays) and where a later
+/// face hides an earlier one.
+#[test]
+fn render_on_two_threads_equals_one_thread() {
+    use weft::io::render::{render, RenderOptions, View};
+    use weft::mesh::shapes;
+    let grid = shapes::quad_grid(300, 200);
+    let n = grid.vertex_count() as u32;
+    // The same grid again, reversed (back faces, another colour) and
+    // lifted a little on one side so that it crosses the first.
+    let mut positions = grid.positions().to_vec();
+    positions.extend(grid.positions().iter().map(|p| {
+        let lift = if p.x > 150.0 { 0.5 } else { 0.0 };
+        glam::DVec3::new(p.x, p.y, p.z + lift)
+    }));
+    let mut faces: Vec<Vec<u32>> = grid.faces().map(|f| f.to_vec()).collect();
+    faces.extend(
+        grid.faces()
+            .map(|f| f.iter().rev().map(|&v| v + n).collect::<Vec<u32>>()),
+    );
+    let mesh = weft::Mesh::from_polygons(positions, faces).unwrap();
+    assert!(mesh.face_count() >= 100_000);
+    for view in [View::Iso, View::Top, View::Bottom] {
+        let options = RenderOptions {
+            width: 320,
+            height: 240,
+            view,
+            ..RenderOptions::default()
+        };
+        let draw = |threads: usize| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+                .install(|| render(&mesh, &options).unwrap())
+        };
+        assert_eq!(draw(1), draw(2), "{view:?}");
+    }
+}

@@ -221,9 +221,10 @@ pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
 /// As [`read_mesh`].
 pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
     let path = path.as_ref();
-    let format = Format::from_path(path)?;
-    let bytes = read_bytes(path)?;
-    let mesh = parse_mesh(format, &bytes).map_err(|e| e.in_file(path))?;
+    let mesh = match Format::from_path(path)? {
+        Format::Obj => obj::read_mesh_at(path)?,
+        format => parse_mesh(format, &read_bytes(path)?).map_err(|e| e.in_file(path))?,
+    };
     if options.weld {
         weld_identical(path, &mesh)
     } else {
@@ -239,9 +240,10 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
 /// As [`read_mesh`], and malformed colours, UVs or creases with their line.
 pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
     let path = path.as_ref();
-    let format = Format::from_path(path)?;
-    let bytes = read_bytes(path)?;
-    let file = parse_mesh_file(format, &bytes).map_err(|e| e.in_file(path))?;
+    let file = match Format::from_path(path)? {
+        Format::Obj => obj::read_file_at(path)?,
+        format => parse_mesh_file(format, &read_bytes(path)?).map_err(|e| e.in_file(path))?,
+    };
     if options.weld {
         Ok(MeshFile::new(weld_identical(path, &file.mesh)?))
     } else {

@@ -29,16 +29,20 @@
 
 use std::collections::HashMap;
 use std::io::Write;
+use std::path::Path;
+
+use rayon::prelude::*;
 
 use glam::DVec3;
 
-use super::mesh_file::{Colours, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
+use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh, IoError, Location};
 use crate::mesh::Mesh;
 use crate::subdivide::SHARPNESS_INFINITE;
 use tags::tag;
 
+mod fast;
 mod tags;
 
 /// Parses an OBJ file into its mesh alone.
@@ -60,15 +64,62 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
 /// [`IoError::InvalidMesh`] for a face the mesh rejects (an index past the
 /// last vertex, fewer than 3 corners, a repeated vertex), each with its line.
 pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
-    match read(data)? {
+    with_attribute_error(read(data))
+}
+
+fn with_attribute_error(
+    read: Result<(MeshFile, Option<IoError>), IoError>,
+) -> Result<MeshFile, IoError> {
+    match read? {
         (_, Some(attribute_error)) => Err(attribute_error),
         (file, None) => Ok(file),
     }
 }
 
-/// Reads the mesh and its attributes; returns the first problem with an
-/// attribute beside the file instead of failing on it.
+/// Reads the mesh and its attributes: on all threads when every line is
+/// well formed (the common case), else line by line, which finds the first
+/// problem and its line. The two give the same result.
 fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
+    match fast::read_bytes(data, fast::BLOCK, fast::PIECE) {
+        Some(file) => Ok((file, None)),
+        None => read_sequential(data),
+    }
+}
+
+/// Reads an OBJ file from disk a block at a time, never holding all its
+/// bytes (see [`read`]); returns the first problem with an attribute
+/// beside the file. Errors name the file.
+pub(crate) fn read_path(path: &Path) -> Result<(MeshFile, Option<IoError>), IoError> {
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(failed)?;
+    match fast::read_source(file, fast::BLOCK, fast::PIECE).map_err(failed)? {
+        Some(file) => Ok((file, None)),
+        None => {
+            let data = super::read_bytes(path)?;
+            read_sequential(&data)
+                .map(|(file, problem)| (file, problem.map(|e| e.in_file(path))))
+                .map_err(|e| e.in_file(path))
+        }
+    }
+}
+
+/// As [`parse_file`], for a file on disk.
+pub(crate) fn read_file_at(path: &Path) -> Result<MeshFile, IoError> {
+    with_attribute_error(read_path(path))
+}
+
+/// As [`parse`], for a file on disk.
+pub(crate) fn read_mesh_at(path: &Path) -> Result<Mesh, IoError> {
+    read_path(path).map(|(file, _)| file.mesh)
+}
+
+/// Reads the mesh and its attributes line by line; returns the first
+/// problem with an attribute beside the file instead of failing on it.
+fn read_sequential(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut attribute_error: Option<IoError> = None;
     let mut note = |e: IoError| {
         if attribute_error.is_none() {
@@ -87,14 +138,7 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut face_sizes = Vec::new();
     let mut face_indices = Vec::new();
     let mut face_lines = Vec::new();
-    let mut creases = Vec::new();
-    let mut corners = Vec::new();
-    let mut holes: Vec<(u32, usize)> = Vec::new();
-    // Polyline vertices to check against the vertex count at the end.
-    let mut line_vertices: Vec<(u32, usize)> = Vec::new();
-    let mut materials = Materials::default();
-    let mut material = NO_MATERIAL;
-    let mut material_index: HashMap<Vec<u8>, u32> = HashMap::new();
+    let mut statements = Statements::new();
     for (line, text) in lines(data) {
         let mut w = words(text);
         match w.next() {
@@ -230,167 +274,326 @@ fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
                 }
                 face_sizes.push(size);
                 face_lines.push(line);
-                materials.face_materials.push(material);
+                statements.face();
             }
-            Some(b"mtllib") => {
-                materials
-                    .libraries
-                    .extend(w.map(|name| String::from_utf8_lossy(name).into_owned()));
-            }
-            Some(b"usemtl") => {
-                // The name is the rest of the line: names may hold spaces.
-                let name = rest_of_line(text, b"usemtl");
-                let next = materials.names.len() as u32;
-                material = *material_index.entry(name.to_vec()).or_insert_with(|| {
-                    materials
-                        .names
-                        .push(String::from_utf8_lossy(name).into_owned());
-                    next
-                });
-            }
+            Some(b"mtllib") => statements.mtllib(w),
+            Some(b"usemtl") => statements.usemtl(text),
             Some(b"l") => {
-                let mut previous = None;
-                let mut count = 0;
-                for corner in w {
-                    let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
-                    let v = match parse_i64(index, line, "a vertex index")
-                        .and_then(|value| resolve(value, positions.len(), line, corner, "vertex"))
-                    {
-                        Ok(v) => v,
-                        Err(e) => {
-                            note(e);
-                            break;
-                        }
-                    };
-                    line_vertices.push((v, line));
-                    if let Some(p) = previous.filter(|&p| p != v) {
-                        creases.push(FileCrease {
-                            edge: [p, v],
-                            sharpness: SHARPNESS_INFINITE,
-                            line,
-                        });
-                    }
-                    previous = Some(v);
-                    count += 1;
-                }
-                if count < 2 {
-                    note(IoError::parse(
-                        Location::Line(line),
-                        "expected \"l\" and at least 2 vertex indices",
-                    ));
+                if let Some(e) = statements.polyline(w, line, positions.len()) {
+                    note(e);
                 }
             }
             Some(b"t") => {
-                if let Err(e) = tag(w.collect(), line, &mut creases, &mut corners, &mut holes) {
+                if let Err(e) = statements.tag(w, line) {
                     note(e);
                 }
             }
             _ => {}
         }
     }
-    let tagged = creases
-        .iter()
-        .flat_map(|c| c.edge.map(|v| (v, c.line)))
-        .chain(corners.iter().map(|c| (c.vertex, c.line)));
-    if let Some((v, line)) = tagged
-        .filter(|(v, _)| *v as usize >= positions.len())
-        .min_by_key(|&(_, line)| line)
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
-                positions.len(),
-                positions.len().max(1) - 1
-            ),
-        ));
-    }
-    if let Some(&(f, line)) = holes
-        .iter()
-        .filter(|(f, _)| *f as usize >= face_sizes.len())
-        .min_by_key(|&&(_, line)| line)
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "hole face {f} is past the last face: the file has {} (0 to {} in tags)",
-                face_sizes.len(),
-                face_sizes.len().max(1) - 1
-            ),
-        ));
-    }
-    let mut holes: Vec<u32> = holes
-        .into_iter()
-        .map(|(f, _)| f)
-        .filter(|&f| (f as usize) < face_sizes.len())
-        .collect();
-    holes.sort_unstable();
-    holes.dedup();
-    if let Some(&(v, line)) = line_vertices
-        .iter()
-        .find(|(v, _)| *v as usize >= positions.len())
-    {
-        note(IoError::parse(
-            Location::Line(line),
-            format!(
-                "polyline vertex {} is past the last vertex ({})",
-                v as u64 + 1,
-                positions.len()
-            ),
-        ));
-    }
-    if let Some(i) = uv_indices
-        .iter()
-        .position(|&i| i as usize >= uv_values.len())
-    {
-        // Find the face of corner i for its line.
-        let face = face_sizes
-            .iter()
-            .scan(0usize, |end, &s| {
-                *end += s as usize;
-                Some(*end)
-            })
-            .position(|end| end > i)
-            .unwrap_or(0);
-        note(IoError::parse(
-            Location::Line(face_lines[face]),
-            format!(
-                "texture coordinate index {} is past the last \"vt\" ({})",
-                uv_indices[i] as u64 + 1,
-                uv_values.len()
-            ),
-        ));
-    }
-    let has_uvs = faces_have_uvs.is_some_and(|(uvs, _)| uvs);
-    let mesh = build_mesh(
-        positions,
-        face_sizes,
-        face_indices,
-        |v| Location::Line(vertex_lines[v]),
-        |f| Location::Line(face_lines[f]),
-    )?;
     let colours = match colours.first() {
-        Some(Some(_)) => Some(Colours {
-            rgba: colours.into_iter().flatten().collect(),
-            alpha,
-        }),
+        Some(Some(_)) => Some(colours.into_iter().flatten().collect()),
         _ => None,
     };
-    let file = MeshFile {
-        mesh,
+    let collected = Collected {
+        positions,
+        vertex_lines,
         colours,
-        uvs: has_uvs.then_some(Uvs {
-            values: uv_values,
-            indices: uv_indices,
-        }),
-        normals: None,
-        creases,
-        corners,
-        materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
-            .then_some(materials),
-        holes,
+        alpha,
+        uv_values,
+        uv_indices,
+        has_uvs: faces_have_uvs.is_some_and(|(uvs, _)| uvs),
+        face_sizes,
+        face_indices,
+        face_lines,
+        statements,
     };
-    Ok((file, attribute_error))
+    collected.finish(attribute_error)
+}
+
+/// What a pass over the lines gathers, before the checks that need the
+/// whole file. The line-by-line reader and the parallel one both make it.
+pub(super) struct Collected {
+    pub(super) positions: Vec<DVec3>,
+    /// The line of each vertex; empty when the reader did not keep them
+    /// (a problem is then found again line by line).
+    pub(super) vertex_lines: Vec<usize>,
+    /// One colour per vertex, when the first vertex has one.
+    pub(super) colours: Option<Vec<[f64; 4]>>,
+    pub(super) alpha: bool,
+    pub(super) uv_values: Vec<[f64; 2]>,
+    pub(super) uv_indices: Vec<u32>,
+    /// Whether the faces name UVs.
+    pub(super) has_uvs: bool,
+    pub(super) face_sizes: Vec<u32>,
+    pub(super) face_indices: Vec<u32>,
+    /// The line of each face; empty as `vertex_lines`.
+    pub(super) face_lines: Vec<usize>,
+    pub(super) statements: Statements,
+}
+
+/// The statements besides vertices and faces: polylines, tags and
+/// materials, read in file order by both readers.
+#[derive(Default)]
+pub(super) struct Statements {
+    pub(super) creases: Vec<FileCrease>,
+    pub(super) corners: Vec<FileCorner>,
+    pub(super) holes: Vec<(u32, usize)>,
+    /// Polyline vertices to check against the vertex count at the end.
+    pub(super) line_vertices: Vec<(u32, usize)>,
+    pub(super) materials: Materials,
+    /// The material in force.
+    material: u32,
+    /// Faces read before any material, not yet in `materials` (most files
+    /// have no materials, and then none are stored).
+    unwritten: usize,
+    material_index: HashMap<Vec<u8>, u32>,
+}
+
+impl Statements {
+    pub(super) fn new() -> Statements {
+        Statements {
+            material: NO_MATERIAL,
+            ..Statements::default()
+        }
+    }
+
+    /// A face was read: it takes the material in force.
+    pub(super) fn face(&mut self) {
+        self.faces(1);
+    }
+
+    /// `count` faces were read without a material statement among them.
+    pub(super) fn faces(&mut self, count: usize) {
+        if self.material == NO_MATERIAL && self.materials.face_materials.is_empty() {
+            self.unwritten += count;
+        } else {
+            self.write_materials();
+            let materials = &mut self.materials.face_materials;
+            materials.resize(materials.len() + count, self.material);
+        }
+    }
+
+    /// Stores the materials of the faces read before any.
+    fn write_materials(&mut self) {
+        if self.unwritten > 0 {
+            self.materials
+                .face_materials
+                .resize(self.unwritten, NO_MATERIAL);
+            self.unwritten = 0;
+        }
+    }
+
+    /// `mtllib` and its file names.
+    pub(super) fn mtllib<'a>(&mut self, words: impl Iterator<Item = &'a [u8]>) {
+        self.materials
+            .libraries
+            .extend(words.map(|name| String::from_utf8_lossy(name).into_owned()));
+    }
+
+    /// `usemtl` on the line `text`.
+    pub(super) fn usemtl(&mut self, text: &[u8]) {
+        // The name is the rest of the line: names may hold spaces.
+        let name = rest_of_line(text, b"usemtl");
+        let next = self.materials.names.len() as u32;
+        let names = &mut self.materials.names;
+        self.material = *self.material_index.entry(name.to_vec()).or_insert_with(|| {
+            names.push(String::from_utf8_lossy(name).into_owned());
+            next
+        });
+    }
+
+    /// `l` and its vertex indices, `vertex_count` vertices having been read:
+    /// every segment an infinitely sharp crease. Returns the first problem.
+    pub(super) fn polyline<'a>(
+        &mut self,
+        words: impl Iterator<Item = &'a [u8]>,
+        line: usize,
+        vertex_count: usize,
+    ) -> Option<IoError> {
+        let mut previous = None;
+        let mut count = 0;
+        for corner in words {
+            let index = corner.split(|&b| b == b'/').next().unwrap_or(corner);
+            let v = match parse_i64(index, line, "a vertex index")
+                .and_then(|value| resolve(value, vertex_count, line, corner, "vertex"))
+            {
+                Ok(v) => v,
+                Err(e) => return Some(e),
+            };
+            self.line_vertices.push((v, line));
+            if let Some(p) = previous.filter(|&p| p != v) {
+                self.creases.push(FileCrease {
+                    edge: [p, v],
+                    sharpness: SHARPNESS_INFINITE,
+                    line,
+                });
+            }
+            previous = Some(v);
+            count += 1;
+        }
+        (count < 2).then(|| {
+            IoError::parse(
+                Location::Line(line),
+                "expected \"l\" and at least 2 vertex indices",
+            )
+        })
+    }
+
+    /// `t` and its words: an OpenSubdiv tag.
+    pub(super) fn tag<'a>(
+        &mut self,
+        words: impl Iterator<Item = &'a [u8]>,
+        line: usize,
+    ) -> Result<(), IoError> {
+        tag(
+            words.collect(),
+            line,
+            &mut self.creases,
+            &mut self.corners,
+            &mut self.holes,
+        )
+    }
+}
+
+impl Collected {
+    /// The checks that need the whole file, and the mesh; `attribute_error`
+    /// is the first problem with an attribute found while reading.
+    pub(super) fn finish(
+        self,
+        attribute_error: Option<IoError>,
+    ) -> Result<(MeshFile, Option<IoError>), IoError> {
+        let mut attribute_error = attribute_error;
+        let mut note = |e: IoError| {
+            if attribute_error.is_none() {
+                attribute_error = Some(e);
+            }
+        };
+        let Collected {
+            positions,
+            vertex_lines,
+            colours,
+            alpha,
+            uv_values,
+            uv_indices,
+            has_uvs,
+            face_sizes,
+            face_indices,
+            face_lines,
+            statements,
+        } = self;
+        let mut statements = statements;
+        let kept = &statements.materials;
+        if !kept.libraries.is_empty() || !kept.names.is_empty() {
+            statements.write_materials();
+        }
+        let Statements {
+            creases,
+            corners,
+            holes,
+            line_vertices,
+            materials,
+            ..
+        } = statements;
+        let line_of =
+            |lines: &[usize], k: usize| Location::Line(lines.get(k).copied().unwrap_or(0));
+        let tagged = creases
+            .iter()
+            .flat_map(|c| c.edge.map(|v| (v, c.line)))
+            .chain(corners.iter().map(|c| (c.vertex, c.line)));
+        if let Some((v, line)) = tagged
+            .filter(|(v, _)| *v as usize >= positions.len())
+            .min_by_key(|&(_, line)| line)
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "vertex {v} is past the last vertex: the file has {} (0 to {} in tags)",
+                    positions.len(),
+                    positions.len().max(1) - 1
+                ),
+            ));
+        }
+        if let Some(&(f, line)) = holes
+            .iter()
+            .filter(|(f, _)| *f as usize >= face_sizes.len())
+            .min_by_key(|&&(_, line)| line)
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "hole face {f} is past the last face: the file has {} (0 to {} in tags)",
+                    face_sizes.len(),
+                    face_sizes.len().max(1) - 1
+                ),
+            ));
+        }
+        let mut holes: Vec<u32> = holes
+            .into_iter()
+            .map(|(f, _)| f)
+            .filter(|&f| (f as usize) < face_sizes.len())
+            .collect();
+        holes.sort_unstable();
+        holes.dedup();
+        if let Some(&(v, line)) = line_vertices
+            .iter()
+            .find(|(v, _)| *v as usize >= positions.len())
+        {
+            note(IoError::parse(
+                Location::Line(line),
+                format!(
+                    "polyline vertex {} is past the last vertex ({})",
+                    v as u64 + 1,
+                    positions.len()
+                ),
+            ));
+        }
+        if let Some(i) = uv_indices
+            .iter()
+            .position(|&i| i as usize >= uv_values.len())
+        {
+            // Find the face of corner i for its line.
+            let face = face_sizes
+                .iter()
+                .scan(0usize, |end, &s| {
+                    *end += s as usize;
+                    Some(*end)
+                })
+                .position(|end| end > i)
+                .unwrap_or(0);
+            note(IoError::parse(
+                line_of(&face_lines, face),
+                format!(
+                    "texture coordinate index {} is past the last \"vt\" ({})",
+                    uv_indices[i] as u64 + 1,
+                    uv_values.len()
+                ),
+            ));
+        }
+        let mesh = build_mesh(
+            positions,
+            face_sizes,
+            face_indices,
+            |v| line_of(&vertex_lines, v),
+            |f| line_of(&face_lines, f),
+        )?;
+        let colours = colours.map(|rgba| Colours { rgba, alpha });
+        let file = MeshFile {
+            mesh,
+            colours,
+            uvs: has_uvs.then_some(Uvs {
+                values: uv_values,
+                indices: uv_indices,
+            }),
+            normals: None,
+            creases,
+            corners,
+            materials: (!materials.libraries.is_empty() || !materials.names.is_empty())
+                .then_some(materials),
+            holes,
+        };
+        Ok((file, attribute_error))
+    }
 }
 
 /// The text of a line after its keyword, without surrounding white space.
@@ -420,6 +623,54 @@ fn resolve(value: i64, count: usize, line: usize, word: &[u8], what: &str) -> Re
     })
 }
 
+/// Appends `value` in decimal, as `write!(w, "{value}")` does.
+#[inline]
+fn push_decimal(w: &mut Vec<u8>, mut value: u64) {
+    let mut digits = [0u8; 20];
+    let mut at = digits.len();
+    loop {
+        at -= 1;
+        digits[at] = b'0' + (value % 10) as u8;
+        value /= 10;
+        if value == 0 {
+            break;
+        }
+    }
+    w.extend_from_slice(&digits[at..]);
+}
+
+/// Writes `count` items (vertices, faces) through `format`, which appends
+/// the text of a range of them to a buffer: blocks of items are formatted
+/// on all threads, a round at a time into buffers used again for the next
+/// round, and written in order, so the text is the same as one thread's.
+fn write_in_blocks(
+    w: &mut dyn Write,
+    count: usize,
+    format: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> std::io::Result<()> + Sync,
+) -> std::io::Result<()> {
+    const ITEMS: usize = 1 << 14;
+    let mut buffers = vec![Vec::new(); 4 * rayon::current_num_threads().max(1)];
+    let round = ITEMS * buffers.len();
+    for start in (0..count).step_by(round) {
+        let end = (start + round).min(count);
+        buffers
+            .par_iter_mut()
+            .enumerate()
+            .try_for_each(|(k, buffer)| {
+                buffer.clear();
+                let first = start + k * ITEMS;
+                if first < end {
+                    format(first..(first + ITEMS).min(end), buffer)?;
+                }
+                Ok::<(), std::io::Error>(())
+            })?;
+        for buffer in &buffers {
+            w.write_all(buffer)?;
+        }
+    }
+    Ok(())
+}
+
 /// Writes a mesh as OBJ.
 ///
 /// # Errors
@@ -443,17 +694,22 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
         mesh.vertex_count(),
         mesh.face_count()
     )?;
-    for (i, p) in mesh.positions().iter().enumerate() {
-        write!(w, "v {} {} {}", p.x, p.y, p.z)?;
-        if let Some(colours) = &file.colours {
-            let [r, g, b, a] = colours.rgba[i];
-            write!(w, " {r} {g} {b}")?;
-            if colours.alpha {
-                write!(w, " {a}")?;
+    let positions = mesh.positions();
+    write_in_blocks(w, positions.len(), |vertices, w| {
+        for i in vertices {
+            let p = positions[i];
+            write!(w, "v {} {} {}", p.x, p.y, p.z)?;
+            if let Some(colours) = &file.colours {
+                let [r, g, b, a] = colours.rgba[i];
+                write!(w, " {r} {g} {b}")?;
+                if colours.alpha {
+                    write!(w, " {a}")?;
+                }
             }
+            w.push(b'\n');
         }
-        w.write_all(b"\n")?;
-    }
+        Ok(())
+    })?;
     if let Some(normals) = &file.normals {
         for n in normals {
             writeln!(w, "vn {} {} {}", n.x, n.y, n.z)?;
@@ -468,29 +724,41 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
     if let Some(libraries) = materials.map(|m| &m.libraries).filter(|l| !l.is_empty()) {
         writeln!(w, "mtllib {}", libraries.join(" "))?;
     }
-    let mut current = NO_MATERIAL;
-    let mut corner = 0;
-    for (f, face) in mesh.faces().enumerate() {
-        if let Some(m) = materials {
-            let material = m.face_materials[f];
-            if material != current && material != NO_MATERIAL {
-                writeln!(w, "usemtl {}", m.names[material as usize])?;
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        // The material in force after the face before the block.
+        let mut current = match (materials, faces.start) {
+            (Some(m), f) if f > 0 => m.face_materials[f - 1],
+            _ => NO_MATERIAL,
+        };
+        let mut corner = mesh.face_offsets()[faces.start] as usize;
+        for f in faces {
+            if let Some(m) = materials {
+                let material = m.face_materials[f];
+                if material != current && material != NO_MATERIAL {
+                    writeln!(w, "usemtl {}", m.names[material as usize])?;
+                }
+                current = material;
             }
-            current = material;
-        }
-        w.write_all(b"f")?;
-        for &v in face {
-            let v = v as u64 + 1;
-            match (&file.uvs, &file.normals) {
-                (None, None) => write!(w, " {v}")?,
-                (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
-                (None, Some(_)) => write!(w, " {v}//{v}")?,
-                (Some(uvs), Some(_)) => write!(w, " {v}/{}/{v}", uvs.indices[corner] as u64 + 1)?,
+            w.push(b'f');
+            for &v in mesh.face(f) {
+                let v = v as u64 + 1;
+                match (&file.uvs, &file.normals) {
+                    (None, None) => {
+                        w.push(b' ');
+                        push_decimal(w, v);
+                    }
+                    (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
+                    (None, Some(_)) => write!(w, " {v}//{v}")?,
+                    (Some(uvs), Some(_)) => {
+                        write!(w, " {v}/{}/{v}", uvs.indices[corner] as u64 + 1)?
+                    }
+                }
+                corner += 1;
             }
-            corner += 1;
+            w.push(b'\n');
         }
-        w.write_all(b"\n")?;
-    }
+        Ok(())
+    })?;
     for c in &file.creases {
         let [a, b] = c.edge;
         if c.sharpness >= SHARPNESS_INFINITE {

@@ -18,7 +18,7 @@ use glam::DVec3;
 use super::{write_atomically, IoError};
 use crate::buffers::try_vec;
 use crate::error::Error;
-use crate::mesh::topology::Topology;
+use crate::mesh::topology::Edges;
 use crate::mesh::Mesh;
 
 /// Largest picture side, in pixels.
@@ -173,6 +173,9 @@ enum Side {
 }
 const SAMPLES: usize = 2;
 
+/// Meshes with at least this many faces are drawn on two threads.
+const PARALLEL_FACES: usize = 100_000;
+
 /// The camera: an eye, its axes, and the map from view directions to pixels.
 struct Camera {
     eye: DVec3,
@@ -313,7 +316,7 @@ fn render_with(
         mesh.face_count() < EDGE_FACE_LIMIT && mesh.face_count() * EDGE_PIXELS_PER_FACE <= pixels,
     );
 
-    let topology = Topology::try_new(mesh)?;
+    let topology = Edges::try_new(mesh)?;
     let mut marked = vec![false; topology.edge_count()];
     for &[a, b] in &options.marked_edges {
         if let Some(e) = topology.find_edge(a, b) {
@@ -333,62 +336,99 @@ fn render_with(
         }
     };
 
-    let mut corners = Vec::new();
-    let mut screen = Vec::new();
-    for f in 0..mesh.face_count() {
-        let first = mesh.face_offsets()[f] as usize;
-        corners.clear();
-        corners.extend(mesh.face_positions(f));
-        let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();
-        let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
-        if let Some(cut) = &options.section {
-            if (centroid - cut.point).dot(cut.normal) > 0.0 {
-                continue;
-            }
-        }
-        let front = normal.dot(camera.eye - centroid) >= 0.0;
-        let face_colour = colours.map(|colours| {
-            let face = mesh.face(f);
-            let mut sum = [0.0f64; 3];
-            for &v in face {
-                for (k, total) in sum.iter_mut().enumerate() {
-                    *total += colours[v as usize][k].clamp(0.0, 1.0);
+    // Draws a run of faces into a picture and depth buffer of its own.
+    let draw = |faces: std::ops::Range<usize>, color: &mut [[f32; 3]], depth: &mut [f32]| {
+        let mut corners = Vec::new();
+        let mut screen = Vec::new();
+        for f in faces {
+            let first = mesh.face_offsets()[f] as usize;
+            corners.clear();
+            corners.extend(mesh.face_positions(f));
+            let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();
+            let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+            if let Some(cut) = &options.section {
+                if (centroid - cut.point).dot(cut.normal) > 0.0 {
+                    continue;
                 }
             }
-            sum.map(|c| (c / face.len() as f64) as f32)
-        });
-        let (base, facing) = if front {
-            (face_colour.unwrap_or(FRONT), normal)
-        } else {
-            (BACK, -normal)
-        };
-        let lambert = if facing == DVec3::ZERO {
-            0.5
-        } else {
-            0.7 * facing.dot(light).max(0.0) + 0.22 * facing.dot(fill).max(0.0)
-        };
-        let shade = (0.34 + lambert) as f32;
-        let shaded = base.map(|c| (c * shade).min(1.0));
+            let front = normal.dot(camera.eye - centroid) >= 0.0;
+            let face_colour = colours.map(|colours| {
+                let face = mesh.face(f);
+                let mut sum = [0.0f64; 3];
+                for &v in face {
+                    for (k, total) in sum.iter_mut().enumerate() {
+                        *total += colours[v as usize][k].clamp(0.0, 1.0);
+                    }
+                }
+                sum.map(|c| (c / face.len() as f64) as f32)
+            });
+            let (base, facing) = if front {
+                (face_colour.unwrap_or(FRONT), normal)
+            } else {
+                (BACK, -normal)
+            };
+            let lambert = if facing == DVec3::ZERO {
+                0.5
+            } else {
+                0.7 * facing.dot(light).max(0.0) + 0.22 * facing.dot(fill).max(0.0)
+            };
+            let shade = (0.34 + lambert) as f32;
+            let shaded = base.map(|c| (c * shade).min(1.0));
 
-        screen.clear();
-        screen.extend(corners.iter().map(|&p| camera.project(p)));
-        let n = screen.len();
-        for i in 1..n - 1 {
-            // Side k of the fan triangle (0, i, i + 1) is opposite its corner k:
-            // the polygon's edges from corner i, from corner n − 1 (when
-            // i + 1 is the last corner) and from corner 0 (when i is 1).
-            let sides = [
-                side(first + i),
-                if i + 1 == n - 1 {
-                    side(first + n - 1)
-                } else {
-                    Side::Hidden
-                },
-                if i == 1 { side(first) } else { Side::Hidden },
-            ];
-            let triangle = [screen[0], screen[i], screen[i + 1]];
-            fill_triangle(&mut color, &mut depth, (w, h), triangle, shaded, sides);
+            screen.clear();
+            screen.extend(corners.iter().map(|&p| camera.project(p)));
+            let n = screen.len();
+            for i in 1..n - 1 {
+                // Side k of the fan triangle (0, i, i + 1) is opposite its corner k:
+                // the polygon's edges from corner i, from corner n − 1 (when
+                // i + 1 is the last corner) and from corner 0 (when i is 1).
+                let sides = [
+                    side(first + i),
+                    if i + 1 == n - 1 {
+                        side(first + n - 1)
+                    } else {
+                        Side::Hidden
+                    },
+                    if i == 1 { side(first) } else { Side::Hidden },
+                ];
+                let triangle = [screen[0], screen[i], screen[i + 1]];
+                fill_triangle(color, depth, (w, h), triangle, shaded, sides);
+            }
         }
+    };
+    // Large meshes: the first half of the faces into the picture, the
+    // second into a picture of its own, side by side; then each sample
+    // takes the second's only where it is strictly nearer. A face drawn
+    // over an equally near one does not replace it, so this is exactly
+    // the picture of drawing all faces in order (unless a depth came out
+    // NaN, whose comparisons order nothing: then the faces are drawn
+    // again in order).
+    let faces = mesh.face_count();
+    let mut drawn_apart = false;
+    if faces >= PARALLEL_FACES && rayon::current_num_threads() > 1 {
+        let mut second_color: Vec<[f32; 3]> = try_vec(w * h, "the picture")?;
+        second_color.resize(w * h, BACKGROUND);
+        let mut second_depth: Vec<f32> = try_vec(w * h, "the depth buffer")?;
+        second_depth.resize(w * h, f32::INFINITY);
+        let half = faces / 2;
+        rayon::join(
+            || draw(0..half, &mut color, &mut depth),
+            || draw(half..faces, &mut second_color, &mut second_depth),
+        );
+        if !depth.iter().chain(&second_depth).any(|d| d.is_nan()) {
+            for (i, &d) in second_depth.iter().enumerate() {
+                if d < depth[i] {
+                    color[i] = second_color[i];
+                }
+            }
+            drawn_apart = true;
+        } else {
+            color.fill(BACKGROUND);
+            depth.fill(f32::INFINITY);
+        }
+    }
+    if !drawn_apart {
+        draw(0..faces, &mut color, &mut depth);
     }
 
     // Average each 2 × 2 block of samples.

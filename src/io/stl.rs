@@ -10,6 +10,7 @@
 use std::io::Write;
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::text::{show, Tokens};
 use super::{build_mesh, IoError, Location};
@@ -65,23 +66,24 @@ fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
             ),
         ));
     }
+    // Every corner on its own, written on all threads.
     let mut positions = Vec::with_capacity(count * 3);
-    for t in 0..count {
-        let record = &data[84 + t * RECORD..84 + (t + 1) * RECORD];
-        for corner in 0..3 {
-            let mut xyz = [0.0; 3];
-            for (axis, value) in xyz.iter_mut().enumerate() {
-                let at = 12 + corner * 12 + axis * 4;
-                let b = &record[at..at + 4];
-                *value = f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64;
-            }
-            positions.push(DVec3::from_array(xyz));
-        }
-    }
-    let indices = (0..count as u32 * 3).collect();
+    positions.par_extend((0..count * 3).into_par_iter().with_min_len(4096).map(|v| {
+        let (t, corner) = (v / 3, v % 3);
+        let at = 84 + t * RECORD + 12 + corner * 12;
+        let xyz: [f64; 3] = std::array::from_fn(|axis| {
+            let b = &data[at + axis * 4..at + axis * 4 + 4];
+            f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64
+        });
+        DVec3::from_array(xyz)
+    }));
+    let mut indices = Vec::with_capacity(count * 3);
+    indices.par_extend((0..count as u32 * 3).into_par_iter().with_min_len(4096));
+    let mut sizes = Vec::with_capacity(count);
+    sizes.par_extend(rayon::iter::repeat_n(3u32, count).with_min_len(4096));
     build_mesh(
         positions,
-        vec![3; count],
+        sizes,
         indices,
         |v| Location::Byte(84 + v / 3 * RECORD + 12 + v % 3 * 12),
         |f| Location::Byte(84 + f * RECORD),

@@ -5,16 +5,19 @@
 //! the aggregate; removing every copy leaves its outer skin, which is what
 //! subdivision should see.
 
+use rayon::prelude::*;
+
+use crate::buffers::{split_by_offsets, CHUNK};
 use crate::mesh::Mesh;
 
 /// Removes every face that has a twin with the same set of vertices, in
 /// either orientation and from any starting corner; all copies go, not all
 /// but one. Returns the culled mesh and the number of faces removed.
 ///
-/// Twins are found by sorting the faces by their sorted vertex lists, so the
-/// cost is O(n log n) comparisons of short lists, never a comparison of all
-/// pairs. Faces are compared by vertex index: weld first so that coincident
-/// corners share an index.
+/// Twins are found by sorting the faces by their sorted vertex lists (on
+/// all threads), so the cost is O(n log n) comparisons of short lists,
+/// never a comparison of all pairs. Faces are compared by vertex index:
+/// weld first so that coincident corners share an index.
 ///
 /// The vertices are kept as they are, even those no remaining face uses, so
 /// that the indices stay those of the input; [`crate::mend::weld::remove_unused_vertices`]
@@ -22,16 +25,23 @@ use crate::mesh::Mesh;
 pub fn cull_adjacent(mesh: &Mesh) -> (Mesh, usize) {
     let face_count = mesh.face_count();
     let offsets = mesh.face_offsets();
+    // Each face's corners sorted, and the faces sorted by them, on all
+    // threads: only which faces share a key matters, not their order.
     let mut sorted_corners = mesh.face_indices().to_vec();
-    for w in offsets.windows(2) {
-        sorted_corners[w[0] as usize..w[1] as usize].sort_unstable();
-    }
+    split_by_offsets(&mut sorted_corners, offsets, CHUNK)
+        .into_par_iter()
+        .for_each(|(faces, corners)| {
+            let base = offsets[faces.start] as usize;
+            for f in faces {
+                corners[offsets[f] as usize - base..offsets[f + 1] as usize - base].sort_unstable();
+            }
+        });
     let key = |f: u32| {
         let f = f as usize;
         &sorted_corners[offsets[f] as usize..offsets[f + 1] as usize]
     };
-    let mut order: Vec<u32> = (0..face_count as u32).collect();
-    order.sort_unstable_by(|&a, &b| key(a).cmp(key(b)));
+    let mut order: Vec<u32> = (0..face_count as u32).into_par_iter().collect();
+    order.par_sort_unstable_by(|&a, &b| key(a).cmp(key(b)));
 
     let mut remove = vec![false; face_count];
     let mut start = 0;

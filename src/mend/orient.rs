@@ -8,6 +8,9 @@
 
 use glam::DVec3;
 
+use rayon::prelude::*;
+
+use crate::buffers::fill_by_offsets;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
@@ -109,15 +112,11 @@ pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
         }
     }
 
-    let mut face_indices = Vec::with_capacity(mesh.index_count());
-    for (f, face) in mesh.faces().enumerate() {
-        if reversed_face(f, &invert) {
-            push_reversed(&mut face_indices, face);
-            report.flipped_faces += 1;
-        } else {
-            face_indices.extend_from_slice(face);
-        }
-    }
+    report.flipped_faces = (0..mesh.face_count())
+        .into_par_iter()
+        .filter(|&f| reversed_face(f, &invert))
+        .count();
+    let face_indices = faces_written(mesh, |f| reversed_face(f, &invert));
     (
         Mesh::from_valid_parts(
             mesh.positions().to_vec(),
@@ -133,10 +132,7 @@ pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
 /// first corner is where its subdivided children start, so this keeps that
 /// anchor where it was and flipping twice gives the input back.
 pub fn flip(mesh: &Mesh) -> Mesh {
-    let mut face_indices = Vec::with_capacity(mesh.index_count());
-    for face in mesh.faces() {
-        push_reversed(&mut face_indices, face);
-    }
+    let face_indices = faces_written(mesh, |_| true);
     Mesh::from_valid_parts(
         mesh.positions().to_vec(),
         mesh.face_sizes().to_vec(),
@@ -169,9 +165,21 @@ fn signed_volume_of_face(mesh: &Mesh, f: usize, origin: DVec3) -> f64 {
         / 6.0
 }
 
-fn push_reversed(out: &mut Vec<u32>, face: &[u32]) {
-    out.push(face[0]);
-    out.extend(face[1..].iter().rev());
+/// The mesh's face indices with the faces `reversed` says reversed (first
+/// corner first, the others backwards), written face by face in parallel.
+fn faces_written(mesh: &Mesh, reversed: impl Fn(usize) -> bool + Sync + Send) -> Vec<u32> {
+    fill_by_offsets(mesh.face_offsets(), "the flipped face indices", |f, out| {
+        let face = mesh.face(f);
+        if reversed(f) {
+            out[0] = face[0];
+            for (slot, &v) in out[1..].iter_mut().zip(face[1..].iter().rev()) {
+                *slot = v;
+            }
+        } else {
+            out.copy_from_slice(face);
+        }
+    })
+    .unwrap_or_else(|error| panic!("{error}"))
 }
 
 #[cfg(test)]

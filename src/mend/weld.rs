@@ -14,7 +14,7 @@ use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
 
 use glam::DVec3;
-use rayon::slice::ParallelSliceMut;
+use rayon::prelude::*;
 
 use crate::buffers::try_vec;
 use crate::error::{Error, Result, MAX_ELEMENTS};
@@ -127,19 +127,26 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     let clusters = vertex_clusters(positions, tolerance)?;
 
     // The cluster of each vertex, numbered in order of its first vertex.
+    // Each vertex's root, found on all threads, then numbered in order.
     let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
+    cluster_of.par_extend(
+        (0..vertex_count as u32)
+            .into_par_iter()
+            .with_min_len(4096)
+            .map(|v| clusters.root(v)),
+    );
+    drop(clusters);
     let mut first_vertex: Vec<u32> = Vec::new();
     {
         let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
         label.resize(vertex_count, u32::MAX);
-        let mut clusters = clusters;
-        for v in 0..vertex_count as u32 {
-            let root = clusters.find(v) as usize;
+        for (v, cluster) in cluster_of.iter_mut().enumerate() {
+            let root = *cluster as usize;
             if label[root] == u32::MAX {
                 label[root] = first_vertex.len() as u32;
-                first_vertex.push(v);
+                first_vertex.push(v as u32);
             }
-            cluster_of.push(label[root]);
+            *cluster = label[root];
         }
     }
     let cluster_count = first_vertex.len();
@@ -243,9 +250,30 @@ pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    let entries = grid.sorted_cells(positions, "the weld cells")?;
+    // By cell, then within the cell by exact position, then index (one
+    // parallel sort): duplicates become neighbours with their lowest index
+    // first.
+    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
+    entries.par_extend(
+        positions
+            .par_iter()
+            .enumerate()
+            .with_min_len(4096)
+            .map(|(v, &p)| (grid.cell(p), v as u32)),
+    );
+    entries.par_sort_unstable_by(|&(cell_a, a), &(cell_b, b)| {
+        cell_a.cmp(&cell_b).then_with(|| {
+            let (pa, pb) = (positions[a as usize], positions[b as usize]);
+            // Adding 0 makes -0 and +0 one key: they are one position.
+            let (pa, pb) = (pa + 0.0, pb + 0.0);
+            pa.x.total_cmp(&pb.x)
+                .then(pa.y.total_cmp(&pb.y))
+                .then(pa.z.total_cmp(&pb.z))
+                .then(a.cmp(&b))
+        })
+    });
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
-    order.extend(entries.iter().map(|&(_, v)| v));
+    order.par_extend(entries.par_iter().with_min_len(4096).map(|&(_, v)| v));
 
     let mut clusters = UnionFind::new(positions.len());
     // Distinct positions ("sites"), each standing for its exact duplicates.
@@ -257,20 +285,7 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     while start < entries.len() {
         let key = entries[start].0;
         let end = start + entries[start..].partition_point(|e| e.0 == key);
-        // Within the cell by exact position, then index: duplicates become
-        // neighbours with their lowest index first.
-        let group = &mut order[start..end];
-        if group.len() > 1 {
-            group.sort_unstable_by(|&a, &b| {
-                let (pa, pb) = (positions[a as usize], positions[b as usize]);
-                // Adding 0 makes -0 and +0 one key: they are one position.
-                let (pa, pb) = (pa + 0.0, pb + 0.0);
-                pa.x.total_cmp(&pb.x)
-                    .then(pa.y.total_cmp(&pb.y))
-                    .then(pa.z.total_cmp(&pb.z))
-                    .then(a.cmp(&b))
-            });
-        }
+        let group = &order[start..end];
         cell_keys.push(key);
         cell_starts.push(sites.len() as u32);
         let first_site = sites.len();
@@ -285,15 +300,11 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         start = end;
     }
     cell_starts.push(sites.len() as u32);
+    drop((entries, order));
     if tolerance == 0.0 {
         return Ok(clusters);
     }
 
-    let mut cell_lookup: CellMap<u32> = CellMap::default();
-    cell_lookup.reserve(cell_keys.len());
-    for (k, &key) in cell_keys.iter().enumerate() {
-        cell_lookup.insert(key, k as u32);
-    }
     let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
     // A cell whose sites all lie within the tolerance of each other (its
     // box's diagonal is short enough) is one cluster without comparing its
@@ -301,6 +312,8 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     // This keeps crowded cells, down to a tolerance larger than the whole
     // mesh, linear.
     let tight: Vec<bool> = (0..cell_keys.len())
+        .into_par_iter()
+        .with_min_len(1024)
         .map(|k| {
             let here = cell_sites(k);
             let first = positions[here[0] as usize];
@@ -311,44 +324,68 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
             within(lo, hi, tolerance)
         })
         .collect();
-    for (k, &key) in cell_keys.iter().enumerate() {
-        let here = cell_sites(k);
-        if tight[k] {
-            for &b in &here[1..] {
-                clusters.union(here[0], b);
-            }
-        } else {
-            for (i, &a) in here.iter().enumerate() {
-                let pa = positions[a as usize];
-                for &b in &here[i + 1..] {
-                    if within(pa, positions[b as usize], tolerance) {
-                        clusters.union(a, b);
-                    }
-                }
-            }
-        }
-        // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
-        for offset in FORWARD_NEIGHBOURS {
-            let Some(&other) = cell_lookup.get(&key.offset(offset)) else {
-                continue;
-            };
-            let there = cell_sites(other as usize);
-            let both_tight = tight[k] && tight[other as usize];
-            if both_tight && clusters.find(here[0]) == clusters.find(there[0]) {
-                continue;
-            }
-            'pairs: for &a in here {
-                let pa = positions[a as usize];
-                for &b in there {
-                    if within(pa, positions[b as usize], tolerance) {
-                        clusters.union(a, b);
-                        if both_tight {
-                            break 'pairs;
+    // The pairs to join, blocks of cells on all threads (the clusters do not
+    // depend on the order the pairs are joined in), then joined on one.
+    // The cells are sorted, and so are the cells one offset away from
+    // them: each block finds its neighbours across an offset by walking
+    // both sorted lists side by side, without hashing.
+    const CELLS: usize = 4096;
+    let pairs: Vec<Vec<(u32, u32)>> = (0..cell_keys.len().div_ceil(CELLS))
+        .into_par_iter()
+        .map(|block| {
+            let cells = block * CELLS..((block + 1) * CELLS).min(cell_keys.len());
+            let mut pairs = Vec::new();
+            for k in cells.clone() {
+                let here = cell_sites(k);
+                if tight[k] {
+                    pairs.extend(here[1..].iter().map(|&b| (here[0], b)));
+                } else {
+                    for (i, &a) in here.iter().enumerate() {
+                        let pa = positions[a as usize];
+                        for &b in &here[i + 1..] {
+                            if within(pa, positions[b as usize], tolerance) {
+                                pairs.push((a, b));
+                            }
                         }
                     }
                 }
             }
-        }
+            // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
+            for offset in FORWARD_NEIGHBOURS {
+                let first = cell_keys[cells.start].offset(offset);
+                let mut other = cell_keys.partition_point(|&c| c < first);
+                for k in cells.clone() {
+                    let wanted = cell_keys[k].offset(offset);
+                    while other < cell_keys.len() && cell_keys[other] < wanted {
+                        other += 1;
+                    }
+                    if other == cell_keys.len() {
+                        break;
+                    }
+                    if cell_keys[other] != wanted {
+                        continue;
+                    }
+                    let (here, there) = (cell_sites(k), cell_sites(other));
+                    // Two tight cells are each one cluster: one close pair joins them.
+                    let both_tight = tight[k] && tight[other];
+                    'pairs: for &a in here {
+                        let pa = positions[a as usize];
+                        for &b in there {
+                            if within(pa, positions[b as usize], tolerance) {
+                                pairs.push((a, b));
+                                if both_tight {
+                                    break 'pairs;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            pairs
+        })
+        .collect();
+    for (a, b) in pairs.into_iter().flatten() {
+        clusters.union(a, b);
     }
     Ok(clusters)
 }

@@ -9,7 +9,9 @@
 //! the *edge of a corner* runs from that corner's vertex to the next corner's
 //! vertex in the same face.
 
-use crate::buffers::{try_copy, try_vec};
+use rayon::prelude::*;
+
+use crate::buffers::{fill_by_offsets, try_vec, zeroed, CHUNK};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 use crate::mesh::Mesh;
@@ -26,6 +28,99 @@ pub struct Topology {
     /// For each corner, the next corner of its face.
     corner_next: Vec<u32>,
     face_vertices: Vec<u32>,
+}
+
+/// The edges of a mesh and each corner's edge, without the rest of a
+/// [`Topology`] (the corners' faces, next corners and vertices): what a
+/// pass that only asks which edges are naked needs, at a little over half
+/// the memory. Built by the same edge builder.
+#[derive(Debug, Clone)]
+pub(crate) struct Edges {
+    adjacency: Adjacency,
+}
+
+impl Edges {
+    /// The edges of `mesh`.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
+    pub(crate) fn try_new(mesh: &Mesh) -> Result<Edges> {
+        let indices = mesh.face_indices();
+        let sizes = mesh.face_sizes();
+        let adjacency = match sizes.first() {
+            // Faces of one size: the next corner is arithmetic.
+            Some(&size) if sizes.par_iter().all(|&s| s == size) => {
+                let size = size as usize;
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| {
+                        if c % size == size - 1 {
+                            c + 1 - size
+                        } else {
+                            c + 1
+                        }
+                    },
+                    |c| c / size,
+                )?
+            }
+            _ => {
+                let offsets = mesh.face_offsets();
+                let next = corner_next(offsets)?;
+                let faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
+                    faces.fill(f as u32);
+                })?;
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| next[c] as usize,
+                    |c| faces[c] as usize,
+                )?
+            }
+        };
+        Ok(Edges { adjacency })
+    }
+
+    /// For each corner, the edge from it to the next corner of its face.
+    #[inline]
+    pub(crate) fn corner_edges(&self) -> &[u32] {
+        &self.adjacency.corner_edges
+    }
+
+    /// Number of unique edges.
+    #[inline]
+    pub(crate) fn edge_count(&self) -> usize {
+        self.adjacency.edges.len()
+    }
+
+    /// Whether edge `e` has exactly one face.
+    #[inline]
+    pub(crate) fn is_naked_edge(&self, e: usize) -> bool {
+        self.adjacency.edge_offsets[e + 1] - self.adjacency.edge_offsets[e] == 1
+    }
+
+    /// The edge between vertices `a` and `b`, if there is one (the first,
+    /// where a face repeating a vertex gives the pair more than one), as
+    /// [`Topology::find_edge`].
+    pub(crate) fn find_edge(&self, a: u32, b: u32) -> Option<usize> {
+        let pair = [a.min(b), a.max(b)];
+        let edges = &self.adjacency.edges;
+        let first = edges.partition_point(|&e| e < pair);
+        (edges.get(first) == Some(&pair)).then_some(first)
+    }
+}
+
+/// For each corner, the next corner of its face, written in parallel.
+fn corner_next(offsets: &[u32]) -> Result<Vec<u32>> {
+    fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
+        let start = offsets[f];
+        for (k, slot) in next.iter_mut().enumerate() {
+            *slot = start + k as u32 + 1;
+        }
+        if let Some(last) = next.last_mut() {
+            *last = start;
+        }
+    })
 }
 
 /// What [`Topology::info`] counts.
@@ -77,27 +172,40 @@ impl Topology {
     /// # Errors
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub fn try_new(mesh: &Mesh) -> Result<Topology> {
-        let corner_count = mesh.index_count();
         let indices = mesh.face_indices();
-        let mut corner_faces = try_vec(corner_count, "corner faces")?;
-        let mut corner_next = try_vec(corner_count, "next corners")?;
-        for (f, w) in mesh.face_offsets().windows(2).enumerate() {
-            let (start, end) = (w[0], w[1]);
-            corner_faces.extend(std::iter::repeat_n(f as u32, (end - start) as usize));
-            corner_next.extend(start + 1..end);
-            corner_next.push(start);
-        }
-        let adjacency = Adjacency::build(
-            mesh.vertex_count(),
-            indices,
-            |c| corner_next[c] as usize,
-            |c| corner_faces[c] as usize,
-        )?;
+        let offsets = mesh.face_offsets();
+        // Each face's corners in parallel (their next corners and faces,
+        // which the edge builder reads); then the edges on one thread beside
+        // the corners' vertices on the other.
+        let (corner_next, corner_faces) = rayon::join(
+            || corner_next(offsets),
+            || fill_by_offsets(offsets, "corner faces", |f, faces| faces.fill(f as u32)),
+        );
+        let (corner_next, corner_faces) = (corner_next?, corner_faces?);
+        let (adjacency, face_vertices) = rayon::join(
+            || {
+                Adjacency::build(
+                    mesh.vertex_count(),
+                    indices,
+                    |c| corner_next[c] as usize,
+                    |c| corner_faces[c] as usize,
+                )
+            },
+            || -> Result<Vec<u32>> {
+                let mut face_vertices = zeroed(indices.len(), "corner vertices")?;
+                face_vertices
+                    .par_chunks_mut(CHUNK)
+                    .zip(indices.par_chunks(CHUNK))
+                    .for_each(|(to, from)| to.copy_from_slice(from));
+                Ok(face_vertices)
+            },
+        );
+        let face_vertices = face_vertices?;
         Ok(Topology {
-            adjacency,
+            adjacency: adjacency?,
             corner_faces,
             corner_next,
-            face_vertices: try_copy(indices, "corner vertices")?,
+            face_vertices,
         })
     }
 
@@ -277,6 +385,72 @@ impl Topology {
             .collect()
     }
 
+    /// How many vertices [`Topology::non_manifold_vertices`] lists, worked
+    /// out vertex by vertex in parallel: the corners at a vertex are joined
+    /// across each manifold edge there (the edge's two faces' corners at
+    /// the vertex), which are exactly the joins of that method's fans, so
+    /// the count is the same without a union-find over all corners.
+    /// `face_offsets` are the mesh's.
+    fn non_manifold_vertex_count(&self, face_offsets: &[u32]) -> usize {
+        let vertex_count = self.adjacency.vertex_offsets.len() - 1;
+        let corner_edges = &self.adjacency.corner_edges;
+        let previous = |c: u32| {
+            let f = self.corner_faces[c as usize] as usize;
+            if c == face_offsets[f] {
+                face_offsets[f + 1] - 1
+            } else {
+                c - 1
+            }
+        };
+        (0..vertex_count)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .fold(
+                || (0usize, Vec::new()),
+                |(count, mut parent): (usize, Vec<u32>), v| {
+                    let corners = self.vertex_corners(v);
+                    parent.clear();
+                    parent.extend(0..corners.len() as u32);
+                    let mut non_manifold = false;
+                    for (i, &c) in corners.iter().enumerate() {
+                        // The edge out of v and the edge into v in c's face,
+                        // each with the corner whose edge it is.
+                        let before = previous(c);
+                        for (own, edge) in [
+                            (c, corner_edges[c as usize]),
+                            (before, corner_edges[before as usize]),
+                        ] {
+                            match self.edge_corners(edge as usize) {
+                                &[c1, c2] => {
+                                    let other = if c1 == own { c2 } else { c1 };
+                                    let at_v = if self.face_vertices[other as usize] as usize == v {
+                                        other
+                                    } else {
+                                        self.corner_next[other as usize]
+                                    };
+                                    if let Ok(j) = corners.binary_search(&at_v) {
+                                        let (a, b) = (
+                                            root(&mut parent, i as u32),
+                                            root(&mut parent, j as u32),
+                                        );
+                                        parent[a.max(b) as usize] = a.min(b);
+                                    }
+                                }
+                                [_] => {}
+                                _ => non_manifold = true,
+                            }
+                        }
+                    }
+                    if !non_manifold {
+                        non_manifold = (1..corners.len() as u32).any(|i| root(&mut parent, i) != 0);
+                    }
+                    (count + non_manifold as usize, parent)
+                },
+            )
+            .map(|(count, _)| count)
+            .sum()
+    }
+
     /// The connected component of each face (faces sharing any edge are
     /// connected), numbered from 0 in order of their first face, and the count.
     pub fn face_components(&self) -> (Vec<u32>, usize) {
@@ -328,15 +502,39 @@ impl Topology {
     /// Gives every face a winding relative to the first face of its component,
     /// walking across manifold edges; non-manifold edges do not constrain.
     pub fn orientation(&self) -> Orientation {
-        let face_count = self.face_count();
-        let (face_component, component_count) = self.face_components();
-        let mut face_flip = vec![false; face_count];
+        // The components on one thread, the walk on the other; the walk's
+        // disagreements are charged to their components afterwards.
+        let ((face_component, component_count), (face_flip, disagreeing)) =
+            rayon::join(|| self.face_components(), || self.walk_windings());
         let mut component_orientable = vec![true; component_count];
-        let mut visited = vec![false; face_count];
-        let mut face_first_corner = vec![0u32; face_count];
-        for (c, &f) in self.corner_faces.iter().enumerate().rev() {
-            face_first_corner[f as usize] = c as u32;
+        for g in disagreeing {
+            component_orientable[face_component[g as usize] as usize] = false;
         }
+        Orientation {
+            face_component,
+            face_flip,
+            component_orientable,
+        }
+    }
+
+    /// The walk of [`Topology::orientation`] across manifold edges: each
+    /// face's flip relative to the first face of its walk, and the faces
+    /// where an edge disagrees with a flip already given.
+    fn walk_windings(&self) -> (Vec<bool>, Vec<u32>) {
+        let face_count = self.face_count();
+        let mut face_flip = vec![false; face_count];
+        let mut disagreeing = Vec::new();
+        let mut visited = vec![false; face_count];
+        // The faces' first corners: where the (ascending) corner faces step.
+        let corner_faces = &self.corner_faces;
+        let mut face_first_corner =
+            try_vec::<u32>(face_count, "first corners").unwrap_or_else(|error| panic!("{error}"));
+        face_first_corner.par_extend(
+            (0..face_count as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|f| corner_faces.partition_point(|&g| g < f) as u32),
+        );
         let mut stack = Vec::new();
         for seed in 0..face_count {
             if visited[seed] {
@@ -362,7 +560,7 @@ impl Topology {
                                 face_flip[g] = wanted;
                                 stack.push(g as u32);
                             } else if face_flip[g] != wanted {
-                                component_orientable[face_component[g] as usize] = false;
+                                disagreeing.push(g as u32);
                             }
                         }
                     }
@@ -373,33 +571,53 @@ impl Topology {
                 }
             }
         }
-        Orientation {
-            face_component,
-            face_flip,
-            component_orientable,
-        }
+        (face_flip, disagreeing)
     }
 
     /// The counts and flags that `weft info` and `weft_mesh_info` report.
     pub fn info(&self, mesh: &Mesh) -> MeshInfo {
-        let naked_edge_count = (0..self.edge_count())
-            .filter(|&e| self.is_naked_edge(e))
-            .count();
-        let non_manifold_edge_count = (0..self.edge_count())
-            .filter(|&e| self.is_non_manifold_edge(e))
-            .count();
-        let orientation = self.orientation();
-        let is_oriented = (0..self.edge_count()).all(|e| match self.edge_corners(e) {
-            &[c1, c2] => self.face_vertices[c1 as usize] != self.face_vertices[c2 as usize],
-            _ => true,
-        });
+        // Edges by how many corners they have, and whether the manifold
+        // ones already run opposite ways in their two faces: one parallel
+        // pass; the orientation walk and the fans beside it.
+        let offsets = &self.adjacency.edge_offsets;
+        let ((naked_edge_count, non_manifold_edge_count, is_oriented), (orientation, fans)) =
+            rayon::join(
+                || {
+                    (0..self.edge_count())
+                        .into_par_iter()
+                        .with_min_len(CHUNK)
+                        .fold(
+                            || (0usize, 0usize, true),
+                            |(naked, non_manifold, oriented), e| {
+                                let corners = offsets[e + 1] - offsets[e];
+                                let opposite = corners != 2 || {
+                                    let c = &self.adjacency.edge_corners[offsets[e] as usize..];
+                                    self.face_vertices[c[0] as usize]
+                                        != self.face_vertices[c[1] as usize]
+                                };
+                                (
+                                    naked + (corners == 1) as usize,
+                                    non_manifold + (corners > 2) as usize,
+                                    oriented && opposite,
+                                )
+                            },
+                        )
+                        .reduce(|| (0, 0, true), |a, b| (a.0 + b.0, a.1 + b.1, a.2 && b.2))
+                },
+                || {
+                    rayon::join(
+                        || self.orientation(),
+                        || self.non_manifold_vertex_count(mesh.face_offsets()),
+                    )
+                },
+            );
         MeshInfo {
             vertex_count: mesh.vertex_count(),
             edge_count: self.edge_count(),
             face_count: mesh.face_count(),
             naked_edge_count,
             non_manifold_edge_count,
-            non_manifold_vertex_count: self.non_manifold_vertices().len(),
+            non_manifold_vertex_count: fans,
             component_count: orientation.component_orientable.len(),
             is_closed: mesh.face_count() > 0
                 && naked_edge_count == 0
@@ -408,6 +626,16 @@ impl Topology {
             is_oriented,
         }
     }
+}
+
+/// The root of `x` in a small forest of parent links, halving the path.
+fn root(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let grandparent = parent[parent[x as usize] as usize];
+        parent[x as usize] = grandparent;
+        x = grandparent;
+    }
+    x
 }
 
 /// Disjoint sets over `0..n` with path halving and union by size.
@@ -429,6 +657,15 @@ impl UnionFind {
             let grandparent = self.parent[self.parent[x as usize] as usize];
             self.parent[x as usize] = grandparent;
             x = grandparent;
+        }
+        x
+    }
+
+    /// The root of `x`, without shortening the path (so it can be asked
+    /// from many threads at once).
+    pub(crate) fn root(&self, mut x: u32) -> u32 {
+        while self.parent[x as usize] != x {
+            x = self.parent[x as usize];
         }
         x
     }
@@ -512,6 +749,59 @@ mod tests {
         let info = Topology::new(&strip).info(&strip);
         assert!(!info.is_orientable);
         assert_eq!(info.naked_edge_count, 16);
+    }
+
+    #[test]
+    fn fan_count_equals_the_listed_non_manifold_vertices() {
+        // Shapes with bow-ties, fins, flipped faces (edges run the same
+        // way in both faces), n-gons, holes and a Möbius strip.
+        let cube = shapes::cube();
+        let mut flipped: Vec<Vec<u32>> = cube.faces().map(|f| f.to_vec()).collect();
+        flipped[1].reverse();
+        flipped[4].reverse();
+        let flipped = Mesh::from_polygons(cube.positions().to_vec(), flipped).unwrap();
+        let grid = shapes::quad_grid(4, 3);
+        let mut pinched: Vec<Vec<u32>> = grid.faces().map(|f| f.to_vec()).collect();
+        pinched.retain(|f| !f.contains(&6) || f.contains(&0));
+        let pinched = Mesh::from_polygons(grid.positions().to_vec(), pinched).unwrap();
+        let fin = shapes::fin();
+        let mut fin_flipped: Vec<Vec<u32>> = fin.faces().map(|f| f.to_vec()).collect();
+        fin_flipped[0].reverse();
+        let fin_flipped = Mesh::from_polygons(fin.positions().to_vec(), fin_flipped).unwrap();
+        // Faces that repeat a vertex (a pinched quad, a face meeting a pair
+        // twice), as meshes built to allow them may hold.
+        let repeats = Mesh::new_with(
+            (0..7)
+                .map(|i| glam::DVec3::new(i as f64, (i * i % 5) as f64, 0.0))
+                .collect(),
+            vec![4, 3, 5, 3],
+            vec![0, 1, 0, 2, 0, 1, 3, 1, 2, 3, 4, 5, 3, 5, 6],
+            crate::mesh::MeshOptions {
+                allow_repeated_vertices: true,
+            },
+        )
+        .unwrap();
+        for mesh in [
+            repeats,
+            cube,
+            flipped,
+            pinched,
+            fin,
+            fin_flipped,
+            shapes::bow_tie(),
+            shapes::mobius_strip(7),
+            shapes::mixed_polygons(),
+            shapes::quad_grid_with_hole(),
+            shapes::triangle_grid_with_hole(),
+            shapes::l_shaped_hexagon(0.0),
+            shapes::torus(5, 4),
+        ] {
+            let topology = Topology::new(&mesh);
+            assert_eq!(
+                topology.non_manifold_vertex_count(mesh.face_offsets()),
+                topology.non_manifold_vertices().len()
+            );
+        }
     }
 
     #[test]

@@ -24,9 +24,16 @@ pub fn weld(
         .iter()
         .map(|path| read(cli, path))
         .collect::<Result<Vec<_>, _>>()?;
-    let parts: Vec<&Mesh> = meshes.iter().collect();
-    let joined = weft::mend::weld::join(&parts)
-        .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?;
+    // One input is its own join: no copy of it.
+    let mut meshes = meshes;
+    let joined = if meshes.len() == 1 {
+        meshes.pop().unwrap_or_default()
+    } else {
+        let parts: Vec<&Mesh> = meshes.iter().collect();
+        weft::mend::weld::join(&parts)
+            .map_err(|e| Failure::Failed(format!("cannot join the inputs: {e}")))?
+    };
+    let input_count = inputs.len();
     let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&joined));
     let (welded, report) = with_progress("welding", || weft::mend::weld::weld(&joined, tolerance))
         .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
@@ -42,7 +49,7 @@ pub fn weld(
     }
     eprintln!(
         "joined {} meshes ({} vertices, {} faces); welded at tolerance {tolerance}: merged {} vertices, removed {} collapsed faces and {} unused vertices",
-        meshes.len(),
+        input_count,
         joined.vertex_count(),
         joined.face_count(),
         report.merged_vertex_count,
