@@ -877,6 +877,75 @@ fn nurbs_writes_the_limit_surface_as_step_and_reports_its_error() {
 }
 
 #[test]
+fn faces_repeating_a_vertex_are_read_on_request_and_subdivided() {
+    let dir = folder("repeated");
+    // A pentagon with the degenerate edge 2-2 beside a quad.
+    let obj = "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nf 1 2 2 5 4\nf 2 3 6 5\n";
+    std::fs::write(dir.join("cage.obj"), obj).unwrap();
+    let off = "OFF\n6 2 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n5 0 1 1 4 3\n4 1 2 5 4\n";
+    std::fs::write(dir.join("cage.off"), off).unwrap();
+    for input in ["cage.obj", "cage.off"] {
+        let o = weft(&dir, &["subdivide", input, "out.obj"]);
+        assert_exit(&o, 1);
+        assert_mentions(
+            &stderr(&o),
+            &[
+                "face 0 uses vertex 1 twice",
+                "--allow-repeated-vertices accepts such faces",
+            ],
+        );
+        assert!(!dir.join("out.obj").exists());
+        succeeds(
+            &dir,
+            &[
+                "subdivide",
+                input,
+                "out.obj",
+                "--levels",
+                "2",
+                "--naked-edges",
+                "smooth",
+                "--allow-repeated-vertices",
+            ],
+        );
+        // 6 vertices, 8 edges (the degenerate one too), 2 faces; then 36 quads.
+        let refined = io::read_mesh(dir.join("out.obj")).unwrap();
+        assert_eq!(
+            (refined.vertex_count(), refined.face_count()),
+            (50, 36),
+            "{input}"
+        );
+        let allowing = io::ReadOptions {
+            allow_repeated_vertices: true,
+            ..Default::default()
+        };
+        let cage = io::read_mesh_with(dir.join(input), &allowing).unwrap();
+        assert_eq!(cage.face(0), &[0, 1, 1, 4, 3], "{input}");
+        let expected = weft::subdivide::subdivide(
+            &cage,
+            weft::subdivide::Scheme::CatmullClark,
+            2,
+            weft::subdivide::NakedEdges::Smooth,
+        )
+        .unwrap();
+        assert_eq!(refined.face_indices(), expected.face_indices(), "{input}");
+        std::fs::remove_file(dir.join("out.obj")).unwrap();
+    }
+    // Written back, a file with such faces reads again with the flag.
+    succeeds(
+        &dir,
+        &[
+            "convert",
+            "cage.obj",
+            "again.ply",
+            "--allow-repeated-vertices",
+        ],
+    );
+    let text = succeeds(&dir, &["info", "again.ply", "--allow-repeated-vertices"]);
+    assert_mentions(&text, &["faces                 2"]);
+}
+
+#[test]
 fn evaluate_gives_limit_points_and_normals_and_refuses_bad_samples() {
     let dir = folder("evaluate");
     let cube = shapes::cube();

@@ -365,7 +365,14 @@ fn files_are_chosen_by_extension_and_written_whole() {
     for name in ["a.obj", "b.PLY", "c.Off", "d.stl"] {
         let path = dir.join(name);
         io::write_mesh(&path, &mesh).unwrap();
-        let back = io::read_mesh_with(&path, &io::ReadOptions { weld: true }).unwrap();
+        let back = io::read_mesh_with(
+            &path,
+            &io::ReadOptions {
+                weld: true,
+                ..Default::default()
+            },
+        )
+        .unwrap();
         assert_eq!(back.vertex_count(), mesh.vertex_count(), "{name}");
         // STL splits each quad into two triangles.
         let factor = if name.ends_with("stl") { 2 } else { 1 };

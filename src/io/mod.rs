@@ -31,7 +31,7 @@ use thiserror::Error;
 
 use crate::error::MeshError;
 use crate::mend::weld::weld;
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, MeshOptions};
 
 pub use mesh_file::{
     check_creases, Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL,
@@ -196,6 +196,18 @@ pub struct ReadOptions {
     /// corners separately), as [`weld`] at tolerance 0 does: faces that
     /// collapse are dropped, the vertices no face uses are left out.
     pub weld: bool,
+    /// Accept faces that name a vertex more than once, as
+    /// [`MeshOptions::allow_repeated_vertices`] (OBJ, PLY and OFF; STL's
+    /// corners are always distinct).
+    pub allow_repeated_vertices: bool,
+}
+
+impl ReadOptions {
+    fn mesh_options(&self) -> MeshOptions {
+        MeshOptions {
+            allow_repeated_vertices: self.allow_repeated_vertices,
+        }
+    }
 }
 
 /// Options for writing.
@@ -222,8 +234,10 @@ pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
 pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
     let path = path.as_ref();
     let mesh = match Format::from_path(path)? {
-        Format::Obj => obj::read_mesh_at(path)?,
-        format => parse_mesh(format, &read_bytes(path)?).map_err(|e| e.in_file(path))?,
+        Format::Obj => obj::read_mesh_at(path, options.mesh_options())?,
+        format => parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), false)
+            .map(|file| file.mesh)
+            .map_err(|e| e.in_file(path))?,
     };
     if options.weld {
         weld_identical(path, &mesh)
@@ -241,8 +255,9 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
 pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
     let path = path.as_ref();
     let file = match Format::from_path(path)? {
-        Format::Obj => obj::read_file_at(path)?,
-        format => parse_mesh_file(format, &read_bytes(path)?).map_err(|e| e.in_file(path))?,
+        Format::Obj => obj::read_file_at(path, options.mesh_options())?,
+        format => parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), true)
+            .map_err(|e| e.in_file(path))?,
     };
     if options.weld {
         Ok(MeshFile::new(weld_identical(path, &file.mesh)?))
@@ -278,11 +293,24 @@ fn weld_identical(path: &Path, mesh: &Mesh) -> Result<Mesh, IoError> {
 /// # Errors
 /// As [`parse_mesh`].
 pub fn parse_mesh_file(format: Format, bytes: &[u8]) -> Result<MeshFile, IoError> {
+    parse_mesh_file_with(format, bytes, MeshOptions::default(), true)
+}
+
+/// As [`parse_mesh_file`], accepting what `options` allows; with
+/// `attributes` false, malformed colours or UVs do not matter (the mesh
+/// alone is wanted).
+fn parse_mesh_file_with(
+    format: Format,
+    bytes: &[u8],
+    options: MeshOptions,
+    attributes: bool,
+) -> Result<MeshFile, IoError> {
     match format {
-        Format::Obj => obj::parse_file(bytes),
-        Format::Ply => ply::parse_file(bytes),
+        Format::Obj if attributes => obj::parse_file_with(bytes, options),
+        Format::Obj => obj::parse_with(bytes, options).map(MeshFile::new),
+        Format::Ply => ply::read(bytes, attributes, options),
         Format::Stl => stl::parse(bytes).map(MeshFile::new),
-        Format::Off => off::parse(bytes).map(MeshFile::new),
+        Format::Off => off::parse_with(bytes, options).map(MeshFile::new),
     }
 }
 
@@ -501,7 +529,23 @@ pub(crate) fn build_mesh(
     vertex_location: impl Fn(usize) -> Location,
     face_location: impl Fn(usize) -> Location,
 ) -> Result<Mesh, IoError> {
-    Mesh::new(positions, face_sizes, face_indices).map_err(|source| {
+    let parts = (positions, face_sizes, face_indices);
+    build_mesh_with(
+        parts,
+        MeshOptions::default(),
+        vertex_location,
+        face_location,
+    )
+}
+
+/// As [`build_mesh`], accepting what `options` allows.
+pub(crate) fn build_mesh_with(
+    (positions, face_sizes, face_indices): (Vec<DVec3>, Vec<u32>, Vec<u32>),
+    options: MeshOptions,
+    vertex_location: impl Fn(usize) -> Location,
+    face_location: impl Fn(usize) -> Location,
+) -> Result<Mesh, IoError> {
+    Mesh::new_with(positions, face_sizes, face_indices, options).map_err(|source| {
         let location = match &source {
             MeshError::IndexOutOfRange { face, .. }
             | MeshError::FaceTooSmall { face, .. }

@@ -37,8 +37,8 @@ use glam::DVec3;
 
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
-use super::{build_mesh, IoError, Location};
-use crate::mesh::Mesh;
+use super::{build_mesh_with, IoError, Location};
+use crate::mesh::{Mesh, MeshOptions};
 use crate::subdivide::SHARPNESS_INFINITE;
 use tags::tag;
 
@@ -50,8 +50,13 @@ mod tags;
 /// # Errors
 /// As [`parse_file`].
 pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    parse_with(data, MeshOptions::default())
+}
+
+/// As [`parse`], accepting what `options` allows.
+pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
     // The mesh alone: problems with colours, UVs or creases do not matter.
-    read(data).map(|(file, _)| file.mesh)
+    read(data, options).map(|(file, _)| file.mesh)
 }
 
 /// Parses an OBJ file with its colours, UVs and creases.
@@ -64,7 +69,12 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
 /// [`IoError::InvalidMesh`] for a face the mesh rejects (an index past the
 /// last vertex, fewer than 3 corners, a repeated vertex), each with its line.
 pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
-    with_attribute_error(read(data))
+    parse_file_with(data, MeshOptions::default())
+}
+
+/// As [`parse_file`], accepting what `options` allows.
+pub(crate) fn parse_file_with(data: &[u8], options: MeshOptions) -> Result<MeshFile, IoError> {
+    with_attribute_error(read(data, options))
 }
 
 fn with_attribute_error(
@@ -78,18 +88,23 @@ fn with_attribute_error(
 
 /// Reads the mesh and its attributes: on all threads when every line is
 /// well formed (the common case), else line by line, which finds the first
-/// problem and its line. The two give the same result.
-fn read(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
+/// problem and its line. The two give the same result. (The fast reader
+/// builds its meshes with the default checks: a face `options` lets
+/// through sends the file to the line-by-line reader.)
+fn read(data: &[u8], options: MeshOptions) -> Result<(MeshFile, Option<IoError>), IoError> {
     match fast::read_bytes(data, fast::BLOCK, fast::PIECE) {
         Some(file) => Ok((file, None)),
-        None => read_sequential(data),
+        None => read_sequential(data, options),
     }
 }
 
 /// Reads an OBJ file from disk a block at a time, never holding all its
 /// bytes (see [`read`]); returns the first problem with an attribute
 /// beside the file. Errors name the file.
-pub(crate) fn read_path(path: &Path) -> Result<(MeshFile, Option<IoError>), IoError> {
+pub(crate) fn read_path(
+    path: &Path,
+    options: MeshOptions,
+) -> Result<(MeshFile, Option<IoError>), IoError> {
     let failed = |source| IoError::File {
         path: path.to_path_buf(),
         action: "read",
@@ -100,7 +115,7 @@ pub(crate) fn read_path(path: &Path) -> Result<(MeshFile, Option<IoError>), IoEr
         Some(file) => Ok((file, None)),
         None => {
             let data = super::read_bytes(path)?;
-            read_sequential(&data)
+            read_sequential(&data, options)
                 .map(|(file, problem)| (file, problem.map(|e| e.in_file(path))))
                 .map_err(|e| e.in_file(path))
         }
@@ -108,18 +123,21 @@ pub(crate) fn read_path(path: &Path) -> Result<(MeshFile, Option<IoError>), IoEr
 }
 
 /// As [`parse_file`], for a file on disk.
-pub(crate) fn read_file_at(path: &Path) -> Result<MeshFile, IoError> {
-    with_attribute_error(read_path(path))
+pub(crate) fn read_file_at(path: &Path, options: MeshOptions) -> Result<MeshFile, IoError> {
+    with_attribute_error(read_path(path, options))
 }
 
 /// As [`parse`], for a file on disk.
-pub(crate) fn read_mesh_at(path: &Path) -> Result<Mesh, IoError> {
-    read_path(path).map(|(file, _)| file.mesh)
+pub(crate) fn read_mesh_at(path: &Path, options: MeshOptions) -> Result<Mesh, IoError> {
+    read_path(path, options).map(|(file, _)| file.mesh)
 }
 
 /// Reads the mesh and its attributes line by line; returns the first
 /// problem with an attribute beside the file instead of failing on it.
-fn read_sequential(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> {
+fn read_sequential(
+    data: &[u8],
+    options: MeshOptions,
+) -> Result<(MeshFile, Option<IoError>), IoError> {
     let mut attribute_error: Option<IoError> = None;
     let mut note = |e: IoError| {
         if attribute_error.is_none() {
@@ -308,7 +326,7 @@ fn read_sequential(data: &[u8]) -> Result<(MeshFile, Option<IoError>), IoError> 
         face_lines,
         statements,
     };
-    collected.finish(attribute_error)
+    collected.finish(attribute_error, options)
 }
 
 /// What a pass over the lines gathers, before the checks that need the
@@ -462,6 +480,7 @@ impl Collected {
     pub(super) fn finish(
         self,
         attribute_error: Option<IoError>,
+        options: MeshOptions,
     ) -> Result<(MeshFile, Option<IoError>), IoError> {
         let mut attribute_error = attribute_error;
         let mut note = |e: IoError| {
@@ -570,10 +589,9 @@ impl Collected {
                 ),
             ));
         }
-        let mesh = build_mesh(
-            positions,
-            face_sizes,
-            face_indices,
+        let mesh = build_mesh_with(
+            (positions, face_sizes, face_indices),
+            options,
             |v| line_of(&vertex_lines, v),
             |f| line_of(&face_lines, f),
         )?;

@@ -11,8 +11,8 @@ use std::io::Write;
 use glam::DVec3;
 
 use super::text::{lines, parse_count, parse_f64, show, words};
-use super::{build_mesh, IoError, Location};
-use crate::mesh::Mesh;
+use super::{build_mesh_with, IoError, Location};
+use crate::mesh::{Mesh, MeshOptions};
 
 /// Parses an OFF file.
 ///
@@ -21,6 +21,11 @@ use crate::mesh::Mesh;
 /// count, coordinate or index, or the line where the file ends too early;
 /// [`IoError::InvalidMesh`] with the line of a face the mesh rejects.
 pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    parse_with(data, MeshOptions::default())
+}
+
+/// As [`parse`], accepting what `options` allows.
+pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
     let mut rows = lines(data).filter(|(_, text)| words(text).next().is_some());
     let mut last_line = 1;
     let mut next_row = |what: &str| {
@@ -103,10 +108,9 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
         face_sizes.push(size as u32);
         face_lines.push(line);
     }
-    build_mesh(
-        positions,
-        face_sizes,
-        face_indices,
+    build_mesh_with(
+        (positions, face_sizes, face_indices),
+        options,
         |v| Location::Line(vertex_lines[v]),
         |f| Location::Line(face_lines[f]),
     )

@@ -48,8 +48,11 @@ pub fn read_file_or_mesh(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
     match read_file(cli, path) {
         Ok(file) => Ok(file),
         Err(Failure::Failed(attribute_problem)) => {
-            let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
-            let mesh = io::read_mesh_with(path, &ReadOptions { weld })
+            let options = ReadOptions {
+                weld: cli.weld && Format::from_path(path).ok() == Some(Format::Stl),
+                allow_repeated_vertices: cli.allow_repeated_vertices,
+            };
+            let mesh = io::read_mesh_with(path, &options)
                 .map_err(|_| Failure::Failed(attribute_problem.clone()))?;
             eprintln!("weft: {attribute_problem}; reading on with the mesh alone");
             Ok(MeshFile::new(mesh))
@@ -61,14 +64,18 @@ pub fn read_file_or_mesh(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
 /// when `--weld` was given.
 pub fn read_file(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
     let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
-    read_file_welded(path, weld)
+    read_file_welded(cli, path, weld)
 }
 
 /// Reads a mesh with its colours, UVs and creases, merging corners at
 /// identical positions when `weld` (what `--weld` does for STL).
-pub fn read_file_welded(path: &Path, weld: bool) -> Result<MeshFile, Failure> {
+pub fn read_file_welded(cli: &Cli, path: &Path, weld: bool) -> Result<MeshFile, Failure> {
     let label = format!("reading {}", path.display());
-    let file = with_progress(&label, || io::read_mesh_file(path, &ReadOptions { weld }))?;
+    let options = ReadOptions {
+        weld,
+        allow_repeated_vertices: cli.allow_repeated_vertices,
+    };
+    let file = with_progress(&label, || io::read_mesh_file(path, &options))?;
     Ok(file)
 }
 

@@ -38,6 +38,11 @@ struct Cli {
     /// when reading (STL stores every triangle's corners separately).
     #[arg(long, global = true)]
     weld: bool,
+    /// Accept faces that name a vertex more than once (`f 1 2 2 3`), which
+    /// are refused as broken input otherwise; subdivision treats them as
+    /// OpenSubdiv does, as non-manifold topology.
+    #[arg(long, global = true)]
+    allow_repeated_vertices: bool,
     #[command(subcommand)]
     command: Command,
 }
@@ -258,7 +263,15 @@ enum Failure {
 
 impl From<IoError> for Failure {
     fn from(e: IoError) -> Failure {
-        Failure::Failed(e.to_string())
+        match &e {
+            IoError::InvalidMesh {
+                source: weft::MeshError::RepeatedIndex { .. },
+                ..
+            } => Failure::Failed(format!(
+                "{e}; --allow-repeated-vertices accepts such faces (OpenSubdiv's non-manifold cages)"
+            )),
+            _ => Failure::Failed(e.to_string()),
+        }
     }
 }
 

@@ -135,7 +135,7 @@ pub fn read_cage(
         // Every corner its own vertex (STL, an unwelded OBJ): every edge
         // would be a seam, and so a crease. Joined first, as --weld does.
         let before = file.mesh.vertex_count();
-        file = read_file_welded(input, true)?;
+        file = read_file_welded(cli, input, true)?;
         eprintln!(
             "{}: no two faces share a vertex, as the format stores them: welded {} corners at identical positions first (as --weld), so that only folds crease",
             input.display(),

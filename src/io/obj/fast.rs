@@ -25,6 +25,7 @@ use rayon::prelude::*;
 use super::{Collected, Statements};
 use crate::io::mesh_file::MeshFile;
 use crate::io::text::{f64_of, i64_of, words};
+use crate::mesh::MeshOptions;
 
 /// Bytes read from a file at a time.
 pub(crate) const BLOCK: usize = 16 << 20;
@@ -378,7 +379,7 @@ impl Reader {
             face_lines: Vec::new(),
             statements: self.statements,
         };
-        match collected.finish(None) {
+        match collected.finish(None, MeshOptions::default()) {
             Ok((file, None)) => Some(file),
             _ => None,
         }
@@ -481,7 +482,7 @@ mod tests {
     /// Returns whether the parallel reader read it without help.
     fn check(data: &str) -> bool {
         let data = data.as_bytes();
-        let expected = outcome(read_sequential(data));
+        let expected = outcome(read_sequential(data, MeshOptions::default()));
         let mut read_alone = None;
         for block in [1, 2, 3, 5, 7, 11, 16, 64, 1000, BLOCK] {
             for piece in [1, 2, 3, 4, 9, 17, 100, PIECE] {

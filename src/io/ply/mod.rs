@@ -22,8 +22,8 @@ pub use write::{write, write_file};
 
 use super::mesh_file::{Colours, MeshFile, Uvs};
 use super::text::{show, words, Tokens};
-use super::{build_mesh, IoError, Location};
-use crate::mesh::Mesh;
+use super::{build_mesh_with, IoError, Location};
+use crate::mesh::{Mesh, MeshOptions};
 
 /// A PLY scalar type.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -201,7 +201,7 @@ impl Values for Binary<'_> {
 /// [`IoError::InvalidMesh`] with the place of a face the mesh rejects.
 pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
     // The mesh alone: incomplete colours or UVs do not matter.
-    read(data, false).map(|file| file.mesh)
+    read(data, false, MeshOptions::default()).map(|file| file.mesh)
 }
 
 /// Parses a PLY file, ASCII or binary, with its vertex colours and texture
@@ -211,15 +211,20 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
 /// As [`parse`]; also a vertex element with some colour channels but not
 /// red, green and blue, or one texture coordinate without the other.
 pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
-    read(data, true)
+    read(data, true, MeshOptions::default())
 }
 
 /// Reads a PLY file; `strict` refuses incomplete colours or UVs instead of
-/// ignoring them.
-fn read(data: &[u8], strict: bool) -> Result<MeshFile, IoError> {
+/// ignoring them; the mesh accepts what `options` allows.
+pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<MeshFile, IoError> {
     let (encoding, elements, body, body_line) = parse_header(data)?;
     match encoding {
-        Encoding::Ascii => read_body(&mut Text(Tokens::new(body, body_line)), &elements, strict),
+        Encoding::Ascii => read_body(
+            &mut Text(Tokens::new(body, body_line)),
+            &elements,
+            strict,
+            options,
+        ),
         Encoding::Binary { big_endian } => {
             let offset = data.len() - body.len();
             let mut source = Binary {
@@ -227,7 +232,7 @@ fn read(data: &[u8], strict: bool) -> Result<MeshFile, IoError> {
                 pos: offset,
                 big_endian,
             };
-            read_body(&mut source, &elements, strict)
+            read_body(&mut source, &elements, strict, options)
         }
     }
 }
@@ -339,6 +344,7 @@ fn read_body(
     source: &mut dyn Values,
     elements: &[Element],
     strict: bool,
+    options: MeshOptions,
 ) -> Result<MeshFile, IoError> {
     let mut positions = Vec::new();
     let mut vertex_locations = Vec::new();
@@ -519,10 +525,9 @@ fn read_body(
             }
         }
     }
-    let mesh = build_mesh(
-        positions,
-        face_sizes,
-        face_indices,
+    let mesh = build_mesh_with(
+        (positions, face_sizes, face_indices),
+        options,
         |v| vertex_locations[v],
         |f| face_locations[f],
     )?;
