@@ -185,6 +185,33 @@ fn patch_corners_are_limit_points_and_errors_are_measured_against_the_limit() {
 }
 
 #[test]
+fn cages_near_the_ends_of_the_double_range_give_the_same_patches_scaled() {
+    let cube = shapes::cube();
+    let plain = limit_patches(&cube, &smooth(), 2).unwrap();
+    for scale in [1e300, 1e-300, 2f64.powi(1000)] {
+        let scaled = cube
+            .with_positions(cube.positions().iter().map(|&p| p * scale).collect())
+            .unwrap();
+        let patches = limit_patches(&scaled, &smooth(), 2).unwrap();
+        assert_eq!(patches.exact_count, plain.exact_count, "{scale:e}");
+        assert!(
+            (patches.max_error / scale - plain.max_error).abs() < 1e-10 * plain.max_error,
+            "{scale:e}"
+        );
+        for (a, b) in patches.patches.iter().zip(&plain.patches) {
+            for (ra, rb) in a.control.iter().zip(&b.control) {
+                for (pa, pb) in ra.iter().zip(rb) {
+                    assert!(
+                        pa.is_finite() && (*pa / scale - *pb).length() < 1e-13,
+                        "{scale:e}: {pa} vs {pb}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
 fn holes_leave_no_patch_and_bad_isolation_is_refused() {
     let grid = shapes::quad_grid(3, 3);
     let holed = SubdivisionOptions {

@@ -662,3 +662,38 @@ fn closest_points_lie_on_the_surface_and_nothing_sampled_is_nearer() {
         println!("{name}: {n} queries, found distance minus nearest sample at most {worst:e}");
     }
 }
+
+#[test]
+fn far_query_points_project_onto_the_surface() {
+    // Points far outside the cage, up to where squared distances would
+    // overflow: on the surface all the same.
+    let cage = shapes::cube();
+    let surface = LimitSurface::new(
+        &cage,
+        Scheme::CatmullClark,
+        &SubdivisionOptions::new(NakedEdges::Smooth),
+    )
+    .unwrap();
+    let far = [
+        DVec3::new(1e6, 0.5, 0.5),
+        DVec3::new(-1e300, 2.0, -3.0),
+        DVec3::new(1e300, 1e300, 1e300),
+    ];
+    let (mut faces, mut uvs, mut positions) = (vec![0u32; 3], vec![0.0; 6], vec![DVec3::ZERO; 3]);
+    let started = std::time::Instant::now();
+    surface
+        .closest_points(&far, &mut faces, &mut uvs, &mut positions)
+        .unwrap();
+    assert!(
+        started.elapsed().as_secs_f64() < 5.0,
+        "took {:?}",
+        started.elapsed()
+    );
+    for (k, p) in positions.iter().enumerate() {
+        assert!(p.is_finite(), "point {k}: {p}");
+        let [at, _, _] = evaluate(&surface, &faces[k..k + 1], &uvs[2 * k..2 * k + 2]);
+        assert!((at[0] - *p).length() < 1e-12, "point {k} is its evaluation");
+    }
+    // The point far along +x lands on the cube's +x side.
+    assert!(positions[0].x > 0.7, "{}", positions[0]);
+}

@@ -17,6 +17,8 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use libfuzzer_sys::fuzz_target;
 use weft::ffi::crease_edges::*;
+use weft::ffi::limit_patches::*;
+use weft::ffi::limit_surface::*;
 use weft::ffi::creases::*;
 use weft::ffi::make::*;
 use weft::ffi::mend::*;
@@ -274,7 +276,7 @@ unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (We
 }
 
 /// Number of operations [`extended_operation`] chooses from.
-const EXTENDED_OPERATIONS: u32 = 10;
+const EXTENDED_OPERATIONS: u32 = 12;
 
 /// A capacity for a buffer that needs `needed` elements: mostly exact,
 /// sometimes one short (the call must then fail and write nothing), or 0.
@@ -454,8 +456,9 @@ fn levels(bytes: &mut Bytes) -> u32 {
     }
 }
 
-/// The exports added with creases, carried data, the limit, the toolbar's
-/// Tile and LaplacianHC inputs, and the read-only accessors. Returns the
+/// The exports added with creases, carried data, the limit, the limit
+/// surface and its patches, the toolbar's Tile and LaplacianHC inputs, and
+/// the read-only accessors. Returns the
 /// status; a mesh made goes to `out`.
 unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, out: &mut *mut WeftMesh) -> WeftStatus {
     let count = weft_mesh_vertex_count(mesh);
@@ -661,6 +664,77 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
                 assert!(out_sizes.iter().all(|&s| s == u32::MAX));
             }
             weft_cells_free(cells);
+            status
+        }
+        9 => {
+            // The limit surface as patches: isolation 0 to 3 (deeper ones need
+            // gigabytes on these cages), or past the cap; buffers of any room.
+            let options = options(mesh, bytes);
+            let isolation = match bytes.byte() % 8 {
+                0 => 9 + bytes.small(3),
+                _ => bytes.small(4),
+            };
+            let (mut vertices, mut faces, mut indices) = (0, 0, 0);
+            let counted = weft_subdivision_counts_ex(mesh, &options.raw, isolation, &mut vertices, &mut faces, &mut indices);
+            let room = capacity(bytes, if counted == WeftStatus::Ok { faces } else { 4 });
+            let mut control = marked(48 * room);
+            let mut errors = marked(room);
+            let (mut written, mut max_error, mut exact) = (0usize, -7.5, 0usize);
+            let status = weft_limit_patches(
+                mesh,
+                &options.raw,
+                isolation,
+                control.as_mut_ptr(),
+                null_mut(),
+                errors.as_mut_ptr(),
+                room,
+                &mut written,
+                &mut max_error,
+                &mut exact,
+            );
+            check_written(status, &control, 48 * written, "weft_limit_patches control points");
+            check_written(status, &errors, written, "weft_limit_patches errors");
+            if status == WeftStatus::Ok {
+                assert_eq!(written, faces);
+                assert!(exact <= written && max_error >= 0.0);
+            }
+            status
+        }
+        10 => {
+            // The limit surface anywhere: samples on any face (or past them),
+            // at any parameter (NaN, outside the face); closest points to
+            // hostile points.
+            let options = options(mesh, bytes);
+            let mut surface = null_mut();
+            let status = weft_limit_surface_new(mesh, &options.raw, &mut surface);
+            if status != WeftStatus::Ok {
+                assert!(surface.is_null());
+                return status;
+            }
+            let n = bytes.small(6) as usize;
+            let faces: Vec<u32> = (0..n).map(|_| bytes.small(weft_mesh_face_count(mesh) as u32 + 2)).collect();
+            let uvs: Vec<f64> = (0..2 * n)
+                .map(|_| match bytes.byte() % 8 {
+                    0 => bytes.number(),
+                    _ => bytes.small(9) as f64 / 8.0,
+                })
+                .collect();
+            let (mut positions, mut du) = (marked(3 * n), marked(3 * n));
+            let status = weft_limit_surface_evaluate(surface, n, faces.as_ptr(), uvs.as_ptr(), positions.as_mut_ptr(), du.as_mut_ptr(), null_mut());
+            check_written(status, &positions, 3 * n, "weft_limit_surface_evaluate positions");
+            check_written(status, &du, 3 * n, "weft_limit_surface_evaluate du");
+            let points: Vec<f64> = (0..3 * n).map(|_| bytes.number()).collect();
+            let (mut closest_faces, mut closest_uvs, mut closest) = (vec![u32::MAX; n], marked(2 * n), marked(3 * n));
+            let status = weft_limit_surface_closest_point(
+                surface,
+                n,
+                points.as_ptr(),
+                closest_faces.as_mut_ptr(),
+                closest_uvs.as_mut_ptr(),
+                closest.as_mut_ptr(),
+            );
+            check_written(status, &closest, 3 * n, "weft_limit_surface_closest_point positions");
+            weft_limit_surface_free(surface);
             status
         }
         _ => {

@@ -108,6 +108,28 @@ pub fn limit_patches(
             "isolation is {isolation}; it must be 1 to {MAX_ISOLATION} (every face becomes a quad after one level)"
         )));
     }
+    // Squared distances of coordinates far from 1 over- or underflow: such a
+    // cage is fitted at an exact power-of-two scale and the result scaled back.
+    let largest = cage
+        .positions()
+        .iter()
+        .map(|p| p.abs().max_element())
+        .fold(0.0, f64::max);
+    if largest > 0.0 && !(1e-100..=1e100).contains(&largest) {
+        let k = largest.log2().round().clamp(-1000.0, 1000.0) as i32;
+        let (down, up) = (2f64.powi(-k), 2f64.powi(k));
+        let scaled = cage
+            .with_positions(cage.positions().iter().map(|&p| p * down).collect())
+            .map_err(Error::from)?;
+        let mut patches = limit_patches(&scaled, options, isolation)?;
+        for patch in &mut patches.patches {
+            patch.control = patch.control.map(|row| row.map(|p| p * up));
+            patch.error *= up;
+        }
+        patches.max_error *= up;
+        patches.size *= up;
+        return Ok(patches);
+    }
     let coarse = Subdivider::new(cage, Scheme::CatmullClark, isolation, options)?;
     let fine = Subdivider::new(cage, Scheme::CatmullClark, isolation + 3, options)?;
     let limit = fine.limit()?.positions;

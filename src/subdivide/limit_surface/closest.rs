@@ -36,6 +36,29 @@ pub(super) struct Index {
     cell_faces: Vec<u32>,
 }
 
+impl Index {
+    /// `q`, or where it is far beyond the cage (more than 10^100 times the
+    /// cage's size from it, where squared distances would overflow), the
+    /// point at that distance in its direction: so far away, every point of
+    /// the surface is equally near to the precision of a double.
+    fn within_reach(&self, q: DVec3) -> DVec3 {
+        let extent = DVec3::new(
+            self.dims[0] as f64,
+            self.dims[1] as f64,
+            self.dims[2] as f64,
+        ) * self.cell;
+        let centre = self.origin + 0.5 * extent;
+        let reach = 1e100 * extent.max_element().max(f64::MIN_POSITIVE);
+        let offset = q - centre;
+        let far = offset.abs().max_element();
+        if far > reach && far.is_finite() {
+            centre + offset * (reach / far)
+        } else {
+            q
+        }
+    }
+}
+
 /// The (u, v) domain Newton stays in: a whole quad or triangle, or one tile
 /// of a face of sub-faces.
 #[derive(Clone, Copy)]
@@ -339,8 +362,8 @@ impl LimitSurface {
                 let mut seen = vec![u32::MAX; self.face_count()];
                 for k in 0..faces.len() {
                     let i = chunk * CHUNK + k;
-                    let (f, uv, p) =
-                        self.nearest(index, points[i], i as u32, &mut seen, &mut scratch);
+                    let q = index.within_reach(points[i]);
+                    let (f, uv, p) = self.nearest(index, q, i as u32, &mut seen, &mut scratch);
                     faces[k] = f;
                     uvs[2 * k..2 * k + 2].copy_from_slice(&uv);
                     positions[k] = p;
@@ -368,7 +391,12 @@ impl LimitSurface {
             .map(|k| (centre[k]).abs().max((dims[k] - 1 - centre[k]).abs()))
             .max()
             .unwrap_or(0);
-        for r in 0..=reach {
+        // The nearest shell that meets the grid (q may lie outside it).
+        let start = (0..3)
+            .map(|k| (-centre[k]).max(centre[k] - (dims[k] - 1)).max(0))
+            .max()
+            .unwrap_or(0);
+        for r in start..=reach {
             // Every point of shell r is at least (r - 1) cells from q.
             if r >= 1 && ((r - 1) as f64 * index.cell).powi(2) > best.0 {
                 break;
