@@ -1476,6 +1476,17 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
 WeftStatus weft_limit_patches(const struct WeftMesh *cage, const struct WeftSubdivisionOptions *options, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error, size_t *out_exact_count);
 
 /**
+ * The limit surface's patches, as `weft_limit_patches` gives them for the
+ * cage and options `surface` was made from (its scheme must be
+ * WEFT_SCHEME_CATMULL_CLARK): the same buffers, the same rules, the same
+ * errors, and WEFT_STATUS_NULL_POINTER for a NULL `surface`.
+ *
+ * # Safety
+ * `surface` is NULL or a live handle; the outputs as `weft_limit_patches`.
+ */
+WeftStatus weft_limit_surface_patches(const struct WeftLimitSurface *surface, uint32_t isolation, double *out_control_points, uint32_t *out_cage_faces, double *out_errors, size_t capacity, size_t *out_patch_count, double *out_max_error, size_t *out_exact_count);
+
+/**
  * Joins meshes into one: the vertices of each follow those of the meshes
  * before it and its face indices are offset to match; faces keep their order.
  *

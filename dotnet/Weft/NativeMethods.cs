@@ -275,6 +275,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_limit_patches(WeftMeshHandle cage, ref NativeSubdivisionOptions options, uint isolation, [Out] double[] outControlPoints, [Out] uint[] outCageFaces, [Out] double[] outErrors, UIntPtr capacity, out UIntPtr outPatchCount, [Out] double[] outMaxError, out UIntPtr outExactCount);
 
+        /// <summary>The limit surface's patches, as <c>weft_limit_patches</c> gives them for the cage and options <c>surface</c> was made from (its scheme must be WEFT_SCHEME_CATMULL_CLARK): the same buffers, the same rules, the same errors, and WEFT_STATUS_NULL_POINTER for a NULL <c>surface</c>.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_limit_surface_patches(WeftLimitSurfaceHandle surface, uint isolation, [Out] double[] outControlPoints, [Out] uint[] outCageFaces, [Out] double[] outErrors, UIntPtr capacity, out UIntPtr outPatchCount, [Out] double[] outMaxError, out UIntPtr outExactCount);
+
         /// <summary>Joins meshes into one: the vertices of each follow those of the meshes before it and its face indices are offset to match; faces keep their order.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_join(IntPtr[] meshes, UIntPtr count, out WeftMeshHandle outMesh);

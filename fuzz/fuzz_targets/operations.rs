@@ -734,6 +734,12 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
                 closest.as_mut_ptr(),
             );
             check_written(status, &closest, 3 * n, "weft_limit_surface_closest_point positions");
+            // Its patches, at an isolation shallow enough for the fuzzer's memory.
+            let room = capacity(bytes, 4 * weft_mesh_index_count(mesh));
+            let mut control = marked(48 * room);
+            let mut written = 0usize;
+            let status = weft_limit_surface_patches(surface, 1, control.as_mut_ptr(), null_mut(), null_mut(), room, &mut written, null_mut(), null_mut());
+            check_written(status, &control, 48 * written, "weft_limit_surface_patches");
             weft_limit_surface_free(surface);
             status
         }

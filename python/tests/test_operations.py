@@ -314,3 +314,8 @@ def test_limit_patches_are_the_c_abis_and_exact_away_from_corners():
     assert np.abs(control[:, 0, 0] - points[first]).max() < 1e-14
     with pytest.raises(weft.WeftError, match="isolation is 0"):
         weft.limit_patches(cube, isolation=0)
+    # The same patches from the surface object.
+    again = weft.LimitSurface(cube, naked_edges="smooth").patches(2)
+    assert all(np.array_equal(a, b) for a, b in zip(again, (control, faces, errors)))
+    with pytest.raises(weft.WeftError, match="CATMULL_CLARK"):
+        weft.LimitSurface(weft.triangulate(cube), scheme="loop").patches(1)

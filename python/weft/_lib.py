@@ -152,6 +152,7 @@ _SIGNATURES = {
     "weft_crease_edges_from_mesh": (S, [P, D, OUT, P, Z, ZP]),
     "weft_crease_edges_from_mesh_ex": (S, [P, D, OUT, P, Z, ZP, P, Z]),
     "weft_limit_patches": (S, [P, OPTIONS, U, P, P, P, Z, ZP, POINTER(D), ZP]),
+    "weft_limit_surface_patches": (S, [P, U, P, P, P, Z, ZP, POINTER(D), ZP]),
     "weft_read_mesh_file": (S, [c_char_p, OUT]),
     "weft_write_mesh_file": (S, [P, c_char_p]),
     "weft_delaunay": (S, [P, Z, PLANE, OUT, ZP]),

@@ -337,14 +337,18 @@ def limit_patches(mesh, isolation=2, naked_edges="fixed", creases=None, corners=
     options = _Options("catmull-clark", naked_edges, creases, corners, creasing, holes, triangles)
     isolation = _count(isolation, "isolation")
     _, count, _ = subdivision_counts(mesh, "catmull-clark", isolation, naked_edges, holes)
+    return _patches(count, lambda *buffers: lib.weft_limit_patches(check_mesh(mesh), options.ref, isolation, *buffers))
+
+
+def _patches(count, call):
+    """Runs a patch export into new arrays for ``count`` patches:
+    ``(control_points, cage_faces, errors)``."""
     control = np.empty((count, 4, 4, 3), dtype=np.float64)
     faces = np.empty(count, dtype=np.uint32)
     errors = np.empty(count, dtype=np.float64)
     written = ctypes.c_size_t()
-    lib.weft_limit_patches(
-        check_mesh(mesh), options.ref, isolation, _arrays.address(control), _arrays.address(faces),
-        _arrays.address(errors), count, ctypes.byref(written), None, None
-    )
+    call(_arrays.address(control), _arrays.address(faces), _arrays.address(errors), count, ctypes.byref(written),
+         None, None)
     return control, faces, errors
 
 
@@ -463,6 +467,8 @@ class LimitSurface:
         options = _Options(scheme, naked_edges, creases, corners, creasing, holes, triangles)
         out = _out()
         lib.weft_limit_surface_new(handle, options.ref, ctypes.byref(out))
+        # What the count of patches needs (see patches).
+        self._cage, self._naked_edges, self._holes = cage, naked_edges, holes
         self._handle = out.value
         self._finalizer = weakref.finalize(self, lib.weft_limit_surface_free, self._handle)
 
@@ -492,6 +498,19 @@ class LimitSurface:
         lib.weft_limit_surface_closest_point(self._handle, n, _arrays.address(queries), _arrays.address(faces),
                                              _arrays.address(uvs), _arrays.address(positions))
         return faces, uvs, positions
+
+    def patches(self, isolation=2):
+        """The surface as bicubic Bézier patches, one per face of the cage
+        refined ``isolation`` levels, as :func:`limit_patches` gives them
+        (Catmull-Clark surfaces only)::
+
+            >>> control, faces, errors = weft.LimitSurface(weft.box(), naked_edges="smooth").patches(1)
+            >>> control.shape
+            (24, 4, 4, 3)
+        """
+        isolation = _count(isolation, "isolation")
+        _, count, _ = subdivision_counts(self._cage, "catmull-clark", isolation, self._naked_edges, self._holes)
+        return _patches(count, lambda *buffers: lib.weft_limit_surface_patches(self._handle, isolation, *buffers))
 
     def __repr__(self):
         return "weft.LimitSurface()"

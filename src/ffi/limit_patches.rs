@@ -1,10 +1,12 @@
 //! The Catmull-Clark limit surface as bicubic Bézier patches, for NURBS
 //! export (`weft nurbs` writes them as STEP).
 
-use crate::ffi::boundary::{check_room, guard, output_slice, Failure, WeftStatus};
+use crate::ffi::boundary::{check_room, guard, output_slice, required, Failure, WeftStatus};
 use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
+use crate::ffi::limit_surface::WeftLimitSurface;
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::subdivide::{limit_patches, Scheme};
+use crate::mesh::Mesh;
+use crate::subdivide::{limit_patches, Scheme, SubdivisionOptions};
 
 /// Doubles per patch in `weft_limit_patches`'s control points: 4 × 4 points of 3.
 pub const WEFT_PATCH_DOUBLES: usize = 48;
@@ -57,69 +59,151 @@ pub unsafe extern "C" fn weft_limit_patches(
     // each is checked for NULL before it is used.
     unsafe {
         guard(|| {
-            if out_patch_count.is_null() {
-                return Err(Failure::new(
-                    WeftStatus::NullPointer,
-                    "out_patch_count is NULL",
-                ));
-            }
-            if out_control_points.is_null() && capacity > 0 {
-                return Err(Failure::new(
-                    WeftStatus::NullPointer,
-                    "out_control_points is NULL",
-                ));
-            }
             let mesh = mesh_ref(cage, "cage")?;
             let (scheme, options) = options_arg(options)?;
-            if scheme != Scheme::CatmullClark {
-                return Err(Failure::invalid_argument(
-                    "the scheme is Loop; patches need WEFT_SCHEME_CATMULL_CLARK (Loop's limit surface is a quartic box spline, which no bicubic patch holds exactly)",
-                ));
-            }
-            let patches = limit_patches(mesh, &options, isolation)?;
-            let count = patches.patches.len();
-            check_room("capacity (in patches)", capacity, count)?;
-            let doubles = capacity.checked_mul(WEFT_PATCH_DOUBLES).ok_or_else(|| {
-                Failure::invalid_argument(format!(
-                    "capacity {capacity} is larger than memory can hold"
-                ))
-            })?;
-            let points = output_slice(out_control_points, doubles, "out_control_points")?;
-            let faces = (!out_cage_faces.is_null())
-                .then(|| output_slice(out_cage_faces, capacity, "out_cage_faces"))
-                .transpose()?;
-            let errors = (!out_errors.is_null())
-                .then(|| output_slice(out_errors, capacity, "out_errors"))
-                .transpose()?;
-            for (patch, out) in patches
-                .patches
-                .iter()
-                .zip(points.chunks_exact_mut(WEFT_PATCH_DOUBLES))
-            {
-                for (row, out) in patch.control.iter().zip(out.chunks_exact_mut(12)) {
-                    for (point, xyz) in row.iter().zip(out.chunks_exact_mut(3)) {
-                        xyz.copy_from_slice(&point.to_array());
-                    }
-                }
-            }
-            if let Some(faces) = faces {
-                for (patch, out) in patches.patches.iter().zip(faces) {
-                    *out = patch.cage_face;
-                }
-            }
-            if let Some(errors) = errors {
-                for (patch, out) in patches.patches.iter().zip(errors) {
-                    *out = patch.error;
-                }
-            }
-            *out_patch_count = count;
-            if !out_max_error.is_null() {
-                *out_max_error = patches.max_error;
-            }
-            if !out_exact_count.is_null() {
-                *out_exact_count = patches.exact_count;
-            }
-            Ok(())
+            let out = PatchBuffers {
+                control_points: out_control_points,
+                cage_faces: out_cage_faces,
+                errors: out_errors,
+                capacity,
+                patch_count: out_patch_count,
+                max_error: out_max_error,
+                exact_count: out_exact_count,
+            };
+            fill_patches(mesh, scheme, &options, isolation, &out)
         })
     }
+}
+
+/// The limit surface's patches, as `weft_limit_patches` gives them for the
+/// cage and options `surface` was made from (its scheme must be
+/// WEFT_SCHEME_CATMULL_CLARK): the same buffers, the same rules, the same
+/// errors, and WEFT_STATUS_NULL_POINTER for a NULL `surface`.
+///
+/// # Safety
+/// `surface` is NULL or a live handle; the outputs as `weft_limit_patches`.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn weft_limit_surface_patches(
+    surface: *const WeftLimitSurface,
+    isolation: u32,
+    out_control_points: *mut f64,
+    out_cage_faces: *mut u32,
+    out_errors: *mut f64,
+    capacity: usize,
+    out_patch_count: *mut usize,
+    out_max_error: *mut f64,
+    out_exact_count: *mut usize,
+) -> WeftStatus {
+    // SAFETY: `surface` and the outputs are as the `# Safety` section above
+    // requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let surface = required(surface, "surface")?;
+            let out = PatchBuffers {
+                control_points: out_control_points,
+                cage_faces: out_cage_faces,
+                errors: out_errors,
+                capacity,
+                patch_count: out_patch_count,
+                max_error: out_max_error,
+                exact_count: out_exact_count,
+            };
+            let scheme = surface.surface.scheme();
+            fill_patches(&surface.cage, scheme, &surface.options, isolation, &out)
+        })
+    }
+}
+
+/// The caller buffers of the two patch exports.
+struct PatchBuffers {
+    control_points: *mut f64,
+    cage_faces: *mut u32,
+    errors: *mut f64,
+    capacity: usize,
+    patch_count: *mut usize,
+    max_error: *mut f64,
+    exact_count: *mut usize,
+}
+
+/// Makes the patches and writes them, or writes nothing and fails.
+///
+/// # Safety
+/// The buffers are as `weft_limit_patches` requires.
+unsafe fn fill_patches(
+    mesh: &Mesh,
+    scheme: Scheme,
+    options: &SubdivisionOptions,
+    isolation: u32,
+    out: &PatchBuffers,
+) -> Result<(), Failure> {
+    if out.patch_count.is_null() {
+        return Err(Failure::new(
+            WeftStatus::NullPointer,
+            "out_patch_count is NULL",
+        ));
+    }
+    if out.control_points.is_null() && out.capacity > 0 {
+        return Err(Failure::new(
+            WeftStatus::NullPointer,
+            "out_control_points is NULL",
+        ));
+    }
+    if scheme != Scheme::CatmullClark {
+        return Err(Failure::invalid_argument(
+            "the scheme is Loop; patches need WEFT_SCHEME_CATMULL_CLARK (Loop's limit surface is a quartic box spline, which no bicubic patch holds exactly)",
+        ));
+    }
+    let patches = limit_patches(mesh, options, isolation)?;
+    let count = patches.patches.len();
+    check_room("capacity (in patches)", out.capacity, count)?;
+    let doubles = out
+        .capacity
+        .checked_mul(WEFT_PATCH_DOUBLES)
+        .ok_or_else(|| {
+            Failure::invalid_argument(format!(
+                "capacity {} is larger than memory can hold",
+                out.capacity
+            ))
+        })?;
+    // SAFETY: each buffer holds what `capacity` says, as this function's
+    // `# Safety` section requires; NULL ones are skipped.
+    unsafe {
+        let points = output_slice(out.control_points, doubles, "out_control_points")?;
+        let faces = (!out.cage_faces.is_null())
+            .then(|| output_slice(out.cage_faces, out.capacity, "out_cage_faces"))
+            .transpose()?;
+        let errors = (!out.errors.is_null())
+            .then(|| output_slice(out.errors, out.capacity, "out_errors"))
+            .transpose()?;
+        for (patch, out) in patches
+            .patches
+            .iter()
+            .zip(points.chunks_exact_mut(WEFT_PATCH_DOUBLES))
+        {
+            for (row, out) in patch.control.iter().zip(out.chunks_exact_mut(12)) {
+                for (point, xyz) in row.iter().zip(out.chunks_exact_mut(3)) {
+                    xyz.copy_from_slice(&point.to_array());
+                }
+            }
+        }
+        if let Some(faces) = faces {
+            for (patch, out) in patches.patches.iter().zip(faces) {
+                *out = patch.cage_face;
+            }
+        }
+        if let Some(errors) = errors {
+            for (patch, out) in patches.patches.iter().zip(errors) {
+                *out = patch.error;
+            }
+        }
+        *out.patch_count = count;
+        if !out.max_error.is_null() {
+            *out.max_error = patches.max_error;
+        }
+        if !out.exact_count.is_null() {
+            *out.exact_count = patches.exact_count;
+        }
+    }
+    Ok(())
 }

@@ -9,13 +9,18 @@ use crate::ffi::boundary::{
 };
 use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
-use crate::subdivide::LimitSurface;
+use crate::mesh::Mesh;
+use crate::subdivide::{LimitSurface, SubdivisionOptions};
 
 /// The limit surface of one cage, prepared for evaluation anywhere. Create
 /// it with `weft_limit_surface_new`, free it with `weft_limit_surface_free`.
 /// Evaluating is thread-safe.
 pub struct WeftLimitSurface {
-    surface: LimitSurface,
+    pub(crate) surface: LimitSurface,
+    /// The cage and options it was made from, for its patches
+    /// (`weft_limit_surface_patches`).
+    pub(crate) cage: Mesh,
+    pub(crate) options: SubdivisionOptions,
 }
 
 /// Prepares the limit surface of `cage` subdivided as `options` say
@@ -63,7 +68,11 @@ pub unsafe extern "C" fn weft_limit_surface_new(
                 ));
             }
             let surface = LimitSurface::new(cage, scheme, &options)?;
-            *out = Box::into_raw(Box::new(WeftLimitSurface { surface }));
+            *out = Box::into_raw(Box::new(WeftLimitSurface {
+                surface,
+                cage: cage.clone(),
+                options,
+            }));
             Ok(())
         })
     }

@@ -68,6 +68,20 @@ static void test_patches_of_a_cube(void) {
   CHECK_FAILS_WITH(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, NULL, NULL, NULL),
                    WEFT_STATUS_NULL_POINTER, "out_patch_count");
   CHECK(points[0] == 42 && count == 7);
+
+  /* The same patches from a limit surface handle; a Loop surface has none. */
+  {
+    WeftLimitSurface *surface = NULL;
+    static double again[WEFT_PATCH_DOUBLES * 24];
+    size_t again_count = 0;
+    CHECK_STATUS(weft_limit_surface_new(cube, &options, &surface), WEFT_STATUS_OK);
+    CHECK_STATUS(weft_limit_surface_patches(surface, 1, again, NULL, NULL, 24, &again_count, NULL, NULL), WEFT_STATUS_OK);
+    CHECK_STATUS(weft_limit_patches(cube, &options, 1, points, NULL, NULL, 24, &count, NULL, NULL), WEFT_STATUS_OK);
+    CHECK(again_count == 24 && memcmp(again, points, sizeof again) == 0);
+    CHECK_FAILS_WITH(weft_limit_surface_patches(NULL, 1, again, NULL, NULL, 24, &again_count, NULL, NULL),
+                     WEFT_STATUS_NULL_POINTER, "surface");
+    weft_limit_surface_free(surface);
+  }
   weft_mesh_free(cube);
 }
 
