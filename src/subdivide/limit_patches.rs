@@ -130,18 +130,18 @@ pub fn limit_patches(
         patches.size *= up;
         return Ok(patches);
     }
-    let coarse = Subdivider::new(cage, Scheme::CatmullClark, isolation, options)?;
     let fine = Subdivider::new(cage, Scheme::CatmullClark, isolation + 3, options)?;
     let limit = fine.limit()?.positions;
-    let parents = coarse.parent_faces();
     let size = cage
         .bounding_box()
         .map_or(0.0, |(low, high)| (high - low).length());
 
     // Every refined level is quads; the children of face f of level
-    // `isolation` are the 64 faces from 64 f three levels down.
+    // `isolation` are the 64 faces from 64 f three levels down, and share
+    // its cage face.
     let fine_faces = fine.face_indices();
-    let face_count = coarse.face_count();
+    let face_count = fine.face_count() / 64;
+    let parents: Vec<u32> = fine.parent_faces().into_iter().step_by(64).collect();
     let grids: Vec<Grid> = (0..face_count)
         .into_par_iter()
         .map(|f| Grid::of(&fine_faces[256 * f..256 * (f + 1)]))

@@ -125,10 +125,7 @@ pub struct Carry {
 /// colours as per-vertex data and its UVs face-varying; with `carry.limit`
 /// the vertices go to the limit surface and get its normals.
 pub fn subdivide(file: &MeshFile, carry: &Carry) -> weft::Result<MeshFile> {
-    let mut options = carry.options.clone();
-    options.creases.extend(file.subdivision_creases());
-    options.corners.extend(file.subdivision_corners());
-    options.holes.extend(&file.holes);
+    let options = with_file_tags(carry.options.clone(), file);
     let subdivider = Subdivider::new(&file.mesh, carry.scheme, carry.levels, &options)?;
     let mut out = MeshFile::new(subdivider.mesh()?);
     if let Some(colours) = &file.colours {
@@ -185,4 +182,12 @@ pub fn is_plain(file: &MeshFile, carry: &Carry) -> bool {
         && carry.options.holes.is_empty()
         && carry.options.triangles == weft::subdivide::TriangleRule::Catmark
         && !carry.limit
+}
+
+/// `options` with the creases, corners and holes `file` carries added.
+pub fn with_file_tags(mut options: SubdivisionOptions, file: &MeshFile) -> SubdivisionOptions {
+    options.creases.extend(file.subdivision_creases());
+    options.corners.extend(file.subdivision_corners());
+    options.holes.extend(&file.holes);
+    options
 }

@@ -8,6 +8,7 @@ use weft::subdivide::{LimitSurface, Scheme};
 use weft::DVec3;
 
 use crate::args::mesh_path;
+use crate::carry::with_file_tags;
 use crate::files::with_progress;
 use crate::subdivide::{read_cage, Cage};
 use crate::{Cli, Failure};
@@ -39,10 +40,8 @@ pub fn run(cli: &Cli, args: &Evaluate) -> Result<(), Failure> {
         cage,
     } = args;
     let (faces, uvs) = read_samples(samples)?;
-    let (file, mut options) = read_cage(cli, input, cage)?;
-    options.creases.extend(file.subdivision_creases());
-    options.corners.extend(file.subdivision_corners());
-    options.holes.extend(&file.holes);
+    let (file, options) = read_cage(cli, input, cage)?;
+    let options = with_file_tags(options, &file);
     let scheme = Scheme::from(cage.scheme);
     let count = faces.len();
     let (mut positions, mut du, mut dv) = (

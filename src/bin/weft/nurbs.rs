@@ -7,6 +7,7 @@ use weft::io::{self, step};
 use weft::subdivide::{limit_patches, Scheme, MAX_ISOLATION};
 
 use crate::args::{mesh_path, step_path};
+use crate::carry::with_file_tags;
 use crate::files::{operation_failed, with_progress};
 use crate::subdivide::{read_cage, Cage};
 use crate::{Cli, Failure};
@@ -43,10 +44,8 @@ pub fn run(cli: &Cli, args: &Nurbs) -> Result<(), Failure> {
             input.display()
         )));
     }
-    let (file, mut options) = read_cage(cli, input, cage)?;
-    options.creases.extend(file.subdivision_creases());
-    options.corners.extend(file.subdivision_corners());
-    options.holes.extend(&file.holes);
+    let (file, options) = read_cage(cli, input, cage)?;
+    let options = with_file_tags(options, &file);
     let patches = with_progress("fitting patches", || {
         limit_patches(&file.mesh, &options, *isolation)
     })
