@@ -33,12 +33,16 @@ pub(crate) fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
 /// A copy of `values` in memory advised for huge pages when large (a host's
 /// buffers handed in: the copy is all page faults and memory traffic).
 /// Aborts, as `to_vec` does, when memory runs out.
-pub(crate) fn advised_copy<T: Copy>(values: &[T]) -> Vec<T> {
+pub(crate) fn advised_copy<T: Copy + Send + Sync>(values: &[T]) -> Vec<T> {
     let mut copy = Vec::with_capacity(values.len());
     if std::mem::size_of_val(values) >= HUGE_PAGE_ADVICE_BYTES {
         weft_pages::advise_huge_pages(copy.spare_capacity_mut());
+        // Fresh pages fault in on the thread that first writes them: copy
+        // on all threads.
+        copy.par_extend(values.par_iter().copied().with_min_len(16 * CHUNK));
+    } else {
+        copy.extend_from_slice(values);
     }
-    copy.extend_from_slice(values);
     copy
 }
 

@@ -15,9 +15,16 @@ pub mod topology;
 pub mod triangulate;
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 use crate::buffers::advised_copy;
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
+
+/// Inputs from this many items up are checked on all threads: a host's
+/// mesh of a million faces crosses in a few milliseconds.
+const PARALLEL_CHECK_ITEMS: usize = 1 << 16;
+/// Items per task of those checks.
+const CHECK_CHUNK: usize = 16384;
 
 /// What a constructor accepts beyond the faces every mesh may have.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
@@ -190,7 +197,6 @@ impl Mesh {
         size: u32,
         face_indices: Vec<u32>,
     ) -> Result<Mesh, crate::Error> {
-        use rayon::prelude::*;
         const CHUNK: usize = 16384;
         let face_count = face_indices.len() / size as usize;
         let mut face_sizes = crate::buffers::try_vec(face_count, "face sizes")?;
@@ -334,34 +340,60 @@ impl Mesh {
         )
     }
 
-    /// Checks every face; the error names the first bad one. (One thread:
-    /// the check is as fast as the memory it reads.) Repeated vertices are
+    /// Checks every face; the error names the first bad one. Blocks of
+    /// faces are checked on all threads and the first failing face is the
+    /// one reported, as a pass in order would. Repeated vertices are
     /// refused unless `allow_repeats`.
     fn check_faces(&self, allow_repeats: bool) -> Result<(), MeshError> {
         let vertex_count = self.positions.len();
-        for (face, corners) in self.faces().enumerate() {
-            // One pass over the common small faces; the error's details
-            // only when one fails.
-            let fine = match *corners {
-                [a, b, c] => {
-                    (a.max(b).max(c) as usize) < vertex_count && a != b && b != c && a != c
+        let face_count = self.face_count();
+        // The first face of `faces` that fails, read in order.
+        let first_failing = |faces: std::ops::Range<usize>| {
+            let mut start = self.face_offsets[faces.start] as usize;
+            for (face, &size) in faces.clone().zip(&self.face_sizes[faces]) {
+                let corners = &self.face_indices[start..start + size as usize];
+                start += size as usize;
+                if !quick_face_check(corners, vertex_count)
+                    && face_error(face, corners, vertex_count, allow_repeats).is_err()
+                {
+                    return Some(face);
                 }
-                [a, b, c, d] => {
-                    (a.max(b).max(c).max(d) as usize) < vertex_count
-                        && a != b
-                        && a != c
-                        && a != d
-                        && b != c
-                        && b != d
-                        && c != d
-                }
-                _ => false,
-            };
-            if !fine {
-                face_error(face, corners, vertex_count, allow_repeats)?;
             }
+            None
+        };
+        let first_bad = if face_count < PARALLEL_CHECK_ITEMS {
+            first_failing(0..face_count)
+        } else {
+            (0..face_count.div_ceil(CHECK_CHUNK))
+                .into_par_iter()
+                .find_map_first(|block| {
+                    first_failing(block * CHECK_CHUNK..((block + 1) * CHECK_CHUNK).min(face_count))
+                })
+        };
+        match first_bad {
+            Some(face) => face_error(face, self.face(face), vertex_count, allow_repeats),
+            None => Ok(()),
         }
-        Ok(())
+    }
+}
+
+/// One pass over the common small faces: indices in range and no vertex
+/// named twice. False for anything else, which [`face_error`] then reads
+/// in detail.
+#[inline]
+fn quick_face_check(corners: &[u32], vertex_count: usize) -> bool {
+    match *corners {
+        [a, b, c] => (a.max(b).max(c) as usize) < vertex_count && a != b && b != c && a != c,
+        [a, b, c, d] => {
+            (a.max(b).max(c).max(d) as usize) < vertex_count
+                && a != b
+                && a != c
+                && a != d
+                && b != c
+                && b != d
+                && c != d
+        }
+        _ => false,
     }
 }
 
@@ -451,7 +483,14 @@ fn check_counts(
     index_count: usize,
 ) -> Result<(), MeshError> {
     check_element_counts(vertex_count, face_sizes.len(), index_count)?;
-    let sum: u64 = face_sizes.iter().map(|&s| s as u64).sum();
+    let sum: u64 = if face_sizes.len() < PARALLEL_CHECK_ITEMS {
+        face_sizes.iter().map(|&s| s as u64).sum()
+    } else {
+        face_sizes
+            .par_chunks(CHECK_CHUNK)
+            .map(|block| block.iter().map(|&s| s as u64).sum::<u64>())
+            .sum()
+    };
     if sum != index_count as u64 {
         return Err(MeshError::CountMismatch { sum, index_count });
     }
@@ -461,7 +500,15 @@ fn check_counts(
 fn check_positions(positions: &[DVec3]) -> Result<(), MeshError> {
     // A flat scan the compiler vectorises; the vertex only on failure.
     let coordinates: &[f64] = bytemuck::cast_slice(positions);
-    if coordinates.iter().all(|x| x.is_finite()) {
+    let finite = if coordinates.len() < PARALLEL_CHECK_ITEMS {
+        coordinates.iter().all(|x| x.is_finite())
+    } else {
+        // A fold without early exit, so that it vectorises.
+        coordinates
+            .par_chunks(CHECK_CHUNK)
+            .all(|block| block.iter().fold(true, |all, x| all & x.is_finite()))
+    };
+    if finite {
         return Ok(());
     }
     let vertex = positions.iter().position(|p| !p.is_finite()).unwrap_or(0);
@@ -475,6 +522,24 @@ fn check_positions(positions: &[DVec3]) -> Result<(), MeshError> {
 }
 
 fn offsets(face_sizes: &[u32]) -> Vec<u32> {
+    // Faces of one size (every refined level, most scanned meshes) have
+    // arithmetic offsets, written on all threads.
+    if face_sizes.len() >= PARALLEL_CHECK_ITEMS {
+        let size = face_sizes[0];
+        if face_sizes
+            .par_chunks(CHECK_CHUNK)
+            .all(|block| block.iter().fold(true, |all, &s| all & (s == size)))
+        {
+            let mut offsets = Vec::with_capacity(face_sizes.len() + 1);
+            offsets.par_extend(
+                (0..face_sizes.len() as u32 + 1)
+                    .into_par_iter()
+                    .with_min_len(CHECK_CHUNK)
+                    .map(|f| f * size),
+            );
+            return offsets;
+        }
+    }
     let mut offsets = Vec::with_capacity(face_sizes.len() + 1);
     let mut total = 0u32;
     offsets.push(0);
@@ -500,6 +565,100 @@ pub(crate) fn check_tolerance(tolerance: f64) -> Result<()> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::shapes;
+
+    /// A torus large enough for the parallel checks, as flat buffers.
+    fn large_torus() -> (Vec<f64>, Vec<u32>, Vec<u32>) {
+        let torus = shapes::torus(300, 300);
+        assert!(torus.face_count() >= 4 * PARALLEL_CHECK_ITEMS / 3);
+        let coordinates = bytemuck::cast_slice(torus.positions()).to_vec();
+        let (_, sizes, indices) = torus.into_parts();
+        (coordinates, sizes, indices)
+    }
+
+    #[test]
+    fn parallel_checks_report_the_first_bad_face() {
+        let (coordinates, sizes, mut indices) = large_torus();
+        let vertex_count = coordinates.len() / 3;
+        // A late face in another block, then an earlier one: the earlier is named.
+        indices[4 * 80_000 + 2] = vertex_count as u32 + 7;
+        assert_eq!(
+            Mesh::from_flat(&coordinates, &sizes, &indices),
+            Err(MeshError::IndexOutOfRange {
+                face: 80_000,
+                corner: 2,
+                index: vertex_count as u32 + 7,
+                vertex_count,
+            })
+        );
+        indices[4 * 20_001 + 3] = indices[4 * 20_001];
+        assert!(matches!(
+            Mesh::from_flat(&coordinates, &sizes, &indices),
+            Err(MeshError::RepeatedIndex {
+                face: 20_001,
+                first: 0,
+                second: 3,
+                ..
+            })
+        ));
+        // Accepted repeats are passed over, the index past the end is not.
+        assert!(matches!(
+            Mesh::from_flat_with(
+                &coordinates,
+                &sizes,
+                &indices,
+                MeshOptions {
+                    allow_repeated_vertices: true
+                }
+            ),
+            Err(MeshError::IndexOutOfRange { face: 80_000, .. })
+        ));
+    }
+
+    #[test]
+    fn parallel_checks_find_non_finite_coordinates_and_count_mismatches() {
+        let (mut coordinates, mut sizes, indices) = large_torus();
+        coordinates[3 * 70_000 + 1] = f64::NAN;
+        assert!(matches!(
+            Mesh::from_flat(&coordinates, &sizes, &indices),
+            Err(MeshError::NonFiniteCoordinate { vertex: 70_000, .. })
+        ));
+        coordinates[3 * 70_000 + 1] = 0.0;
+        sizes[50_000] = 5;
+        assert!(matches!(
+            Mesh::from_flat(&coordinates, &sizes, &indices),
+            Err(MeshError::CountMismatch { .. })
+        ));
+    }
+
+    #[test]
+    fn large_meshes_keep_their_offsets() {
+        let (coordinates, _, indices) = large_torus();
+        let uniform = Mesh::from_flat(&coordinates, &vec![4; indices.len() / 4], &indices).unwrap();
+        assert_eq!(
+            uniform.face_offsets(),
+            offsets_in_order(uniform.face_sizes())
+        );
+        // Mixed sizes: the quads' corners regrouped as triangles and a hexagon.
+        let mut sizes = vec![4u32; indices.len() / 4];
+        sizes.truncate(sizes.len() - 3);
+        sizes.extend([3, 3, 6]);
+        let triangles: Vec<u32> = indices[..indices.len() - 12].to_vec();
+        let mut mixed = triangles.clone();
+        mixed.extend([0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11]);
+        let mesh = Mesh::from_flat(&coordinates, &sizes, &mixed).unwrap();
+        assert_eq!(mesh.face_offsets(), offsets_in_order(&sizes));
+        assert_eq!(mesh.face(mesh.face_count() - 1), &[6, 7, 8, 9, 10, 11]);
+    }
+
+    fn offsets_in_order(sizes: &[u32]) -> Vec<u32> {
+        std::iter::once(0)
+            .chain(sizes.iter().scan(0, |total, &s| {
+                *total += s;
+                Some(*total)
+            }))
+            .collect()
+    }
 
     fn square() -> Vec<DVec3> {
         vec![
