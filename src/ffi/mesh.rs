@@ -45,7 +45,7 @@ impl WeftMesh {
 /// A last check at the boundary for operations that do not check their own
 /// output, so a host never receives an invalid mesh.
 pub(crate) fn finite_result(mesh: Mesh, what: &str) -> Result<Mesh, Failure> {
-    match mesh.positions().iter().position(|p| !p.is_finite()) {
+    match mesh.first_non_finite_vertex() {
         None => Ok(mesh),
         Some(v) => {
             let p = mesh.positions()[v];

@@ -14,6 +14,8 @@ pub mod shapes;
 pub mod topology;
 pub mod triangulate;
 
+use std::sync::OnceLock;
+
 use glam::DVec3;
 use rayon::prelude::*;
 
@@ -36,22 +38,124 @@ pub struct MeshOptions {
 }
 
 /// A validated polygon mesh.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, Default)]
 pub struct Mesh {
     positions: Vec<DVec3>,
-    face_sizes: Vec<u32>,
     face_indices: Vec<u32>,
-    /// `face_offsets[f]..face_offsets[f + 1]` are face f's corners; one longer than `face_sizes`.
-    face_offsets: Vec<u32>,
+    faces: FaceLayout,
+}
+
+/// How the flat indices split into faces. When every face has the same
+/// size (every refined level, most scanned meshes), a face's corners are
+/// arithmetic, and the sizes and offsets arrays are written only if asked
+/// for: a subdivided mesh does not pay for them.
+#[derive(Debug, Clone, Default)]
+struct FaceLayout {
+    count: usize,
+    /// `Some(k)` when there are faces and each has k corners.
+    uniform: Option<u32>,
+    sizes: OnceLock<Vec<u32>>,
+    /// `offsets[f]..offsets[f + 1]` are face f's corners; one longer than `sizes`.
+    offsets: OnceLock<Vec<u32>>,
+}
+
+impl FaceLayout {
+    /// The layout of `sizes`: uniform when they are all equal, else with
+    /// the offsets written.
+    fn of_sizes(sizes: Vec<u32>) -> FaceLayout {
+        let count = sizes.len();
+        match uniform_size(&sizes) {
+            Some(size) => FaceLayout {
+                count,
+                uniform: Some(size),
+                sizes: OnceLock::from(sizes),
+                offsets: OnceLock::new(),
+            },
+            None => FaceLayout {
+                count,
+                uniform: None,
+                offsets: OnceLock::from(offsets(&sizes)),
+                sizes: OnceLock::from(sizes),
+            },
+        }
+    }
+
+    fn uniform(count: usize, size: u32) -> FaceLayout {
+        FaceLayout {
+            count,
+            uniform: (count > 0).then_some(size),
+            ..FaceLayout::default()
+        }
+    }
+
+    fn sizes(&self) -> &[u32] {
+        self.sizes.get_or_init(|| match self.uniform {
+            Some(size) => {
+                let mut sizes = Vec::with_capacity(self.count);
+                sizes.par_extend(rayon::iter::repeat_n(size, self.count).with_min_len(CHECK_CHUNK));
+                sizes
+            }
+            None => Vec::new(),
+        })
+    }
+
+    fn offsets(&self) -> &[u32] {
+        self.offsets.get_or_init(|| match self.uniform {
+            Some(size) => {
+                let mut offsets = Vec::with_capacity(self.count + 1);
+                offsets.par_extend(
+                    (0..self.count as u32 + 1)
+                        .into_par_iter()
+                        .with_min_len(CHECK_CHUNK)
+                        .map(|f| f * size),
+                );
+                offsets
+            }
+            None => offsets(self.sizes()),
+        })
+    }
+
+    #[inline]
+    fn range(&self, f: usize) -> std::ops::Range<usize> {
+        match self.uniform {
+            Some(size) => {
+                let start = f * size as usize;
+                start..start + size as usize
+            }
+            None => {
+                let offsets = self.offsets();
+                offsets[f] as usize..offsets[f + 1] as usize
+            }
+        }
+    }
+
+    fn into_sizes(self) -> Vec<u32> {
+        self.sizes();
+        self.sizes.into_inner().unwrap_or_default()
+    }
+}
+
+impl PartialEq for FaceLayout {
+    fn eq(&self, other: &FaceLayout) -> bool {
+        // Equal sizes have the same uniformity: compare arrays only when mixed.
+        self.count == other.count
+            && self.uniform == other.uniform
+            && (self.uniform.is_some() || self.sizes() == other.sizes())
+    }
+}
+
+impl PartialEq for Mesh {
+    fn eq(&self, other: &Mesh) -> bool {
+        self.positions == other.positions
+            && self.face_indices == other.face_indices
+            && self.faces == other.faces
+    }
 }
 
 impl Mesh {
     /// The empty mesh: no vertices, no faces.
     pub fn empty() -> Mesh {
-        Mesh {
-            face_offsets: vec![0],
-            ..Default::default()
-        }
+        Mesh::default()
     }
 
     /// Builds a mesh from positions, one size per face and the faces' vertex
@@ -170,7 +274,7 @@ impl Mesh {
         let mesh = Mesh::with_offsets(positions, face_sizes, face_indices);
         debug_assert!(check_counts(
             mesh.positions.len(),
-            &mesh.face_sizes,
+            mesh.face_sizes(),
             mesh.face_indices.len()
         )
         .is_ok());
@@ -180,41 +284,27 @@ impl Mesh {
 
     /// The parts with each face's offset into `face_indices`, unchecked.
     fn with_offsets(positions: Vec<DVec3>, face_sizes: Vec<u32>, face_indices: Vec<u32>) -> Mesh {
-        let face_offsets = offsets(&face_sizes);
         Mesh {
             positions,
-            face_sizes,
             face_indices,
-            face_offsets,
+            faces: FaceLayout::of_sizes(face_sizes),
         }
     }
 
     /// As [`Mesh::from_valid_parts`], for faces all of `size` corners (a
-    /// refined level): sizes and offsets written in parallel, reserved
-    /// fallibly.
+    /// refined level): no sizes or offsets are written unless asked for.
     pub(crate) fn from_valid_uniform_parts(
         positions: Vec<DVec3>,
         size: u32,
         face_indices: Vec<u32>,
     ) -> Result<Mesh, crate::Error> {
-        const CHUNK: usize = 16384;
         let face_count = face_indices.len() / size as usize;
-        let mut face_sizes = crate::buffers::try_vec(face_count, "face sizes")?;
-        face_sizes.par_extend(rayon::iter::repeat_n(size, face_count).with_min_len(CHUNK));
-        let mut face_offsets = crate::buffers::try_vec(face_count + 1, "face offsets")?;
-        face_offsets.par_extend(
-            (0..face_count as u32 + 1)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|f| f * size),
-        );
         let mesh = Mesh {
             positions,
-            face_sizes,
             face_indices,
-            face_offsets,
+            faces: FaceLayout::uniform(face_count, size),
         };
-        debug_assert_eq!(mesh.face_offsets, offsets(&mesh.face_sizes));
+        debug_assert_eq!(mesh.face_offsets(), offsets(mesh.face_sizes()));
         debug_assert_eq!(mesh.check_faces(true), Ok(()));
         Ok(mesh)
     }
@@ -228,7 +318,7 @@ impl Mesh {
     /// Number of faces.
     #[inline]
     pub fn face_count(&self) -> usize {
-        self.face_sizes.len()
+        self.faces.count
     }
 
     /// Number of face corners (the length of [`Mesh::face_indices`]).
@@ -246,7 +336,7 @@ impl Mesh {
     /// The number of corners of each face.
     #[inline]
     pub fn face_sizes(&self) -> &[u32] {
-        &self.face_sizes
+        self.faces.sizes()
     }
 
     /// Every face's vertex indices, one face after another.
@@ -258,7 +348,7 @@ impl Mesh {
     /// Where each face starts in [`Mesh::face_indices`], plus the total at the end.
     #[inline]
     pub fn face_offsets(&self) -> &[u32] {
-        &self.face_offsets
+        self.faces.offsets()
     }
 
     /// The vertex indices of face `f`.
@@ -267,14 +357,12 @@ impl Mesh {
     /// When `f` is not below [`Mesh::face_count`].
     #[inline]
     pub fn face(&self, f: usize) -> &[u32] {
-        &self.face_indices[self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize]
+        &self.face_indices[self.faces.range(f)]
     }
 
     /// The faces in order, each as its vertex indices.
     pub fn faces(&self) -> impl ExactSizeIterator<Item = &[u32]> + '_ {
-        self.face_offsets
-            .windows(2)
-            .map(move |w| &self.face_indices[w[0] as usize..w[1] as usize])
+        (0..self.faces.count).map(move |f| self.face(f))
     }
 
     /// The positions of face `f`'s corners.
@@ -286,20 +374,36 @@ impl Mesh {
 
     /// Whether every face is a triangle (true for the empty mesh).
     pub fn is_triangle_mesh(&self) -> bool {
-        self.face_sizes.iter().all(|&s| s == 3)
+        self.face_count() == 0 || self.faces.uniform == Some(3)
     }
 
     /// Whether every face is a quad (true for the empty mesh).
     pub fn is_quad_mesh(&self) -> bool {
-        self.face_sizes.iter().all(|&s| s == 4)
+        self.face_count() == 0 || self.faces.uniform == Some(4)
     }
 
     /// The first face that is not a triangle, with its size.
     pub fn first_non_triangle(&self) -> Option<(usize, usize)> {
-        self.face_sizes
-            .iter()
-            .position(|&s| s != 3)
-            .map(|f| (f, self.face_sizes[f] as usize))
+        match self.faces.uniform {
+            Some(3) => None,
+            Some(size) => Some((0, size as usize)),
+            None => {
+                let sizes = self.face_sizes();
+                sizes
+                    .iter()
+                    .position(|&s| s != 3)
+                    .map(|f| (f, sizes[f] as usize))
+            }
+        }
+    }
+
+    /// The first vertex with a NaN or infinite coordinate (only a result
+    /// of arithmetic that overflowed can have one), scanned on all threads.
+    pub fn first_non_finite_vertex(&self) -> Option<usize> {
+        match check_positions(&self.positions) {
+            Err(MeshError::NonFiniteCoordinate { vertex, .. }) => Some(vertex),
+            _ => None,
+        }
     }
 
     /// Replaces the positions, keeping the faces.
@@ -327,7 +431,7 @@ impl Mesh {
 
     /// Takes the mesh apart into positions, face sizes and face indices.
     pub fn into_parts(self) -> (Vec<DVec3>, Vec<u32>, Vec<u32>) {
-        (self.positions, self.face_sizes, self.face_indices)
+        (self.positions, self.faces.into_sizes(), self.face_indices)
     }
 
     /// The axis-aligned bounding box `(min, max)`, or `None` without vertices.
@@ -349,10 +453,8 @@ impl Mesh {
         let face_count = self.face_count();
         // The first face of `faces` that fails, read in order.
         let first_failing = |faces: std::ops::Range<usize>| {
-            let mut start = self.face_offsets[faces.start] as usize;
-            for (face, &size) in faces.clone().zip(&self.face_sizes[faces]) {
-                let corners = &self.face_indices[start..start + size as usize];
-                start += size as usize;
+            for face in faces {
+                let corners = self.face(face);
                 if !quick_face_check(corners, vertex_count)
                     && face_error(face, corners, vertex_count, allow_repeats).is_err()
                 {
@@ -521,25 +623,21 @@ fn check_positions(positions: &[DVec3]) -> Result<(), MeshError> {
     })
 }
 
-fn offsets(face_sizes: &[u32]) -> Vec<u32> {
-    // Faces of one size (every refined level, most scanned meshes) have
-    // arithmetic offsets, written on all threads.
-    if face_sizes.len() >= PARALLEL_CHECK_ITEMS {
-        let size = face_sizes[0];
-        if face_sizes
+/// The size every face has, when there are faces and they all have one.
+fn uniform_size(face_sizes: &[u32]) -> Option<u32> {
+    let size = *face_sizes.first()?;
+    let same = if face_sizes.len() < PARALLEL_CHECK_ITEMS {
+        face_sizes.iter().all(|&s| s == size)
+    } else {
+        // A fold without early exit, so that it vectorises.
+        face_sizes
             .par_chunks(CHECK_CHUNK)
             .all(|block| block.iter().fold(true, |all, &s| all & (s == size)))
-        {
-            let mut offsets = Vec::with_capacity(face_sizes.len() + 1);
-            offsets.par_extend(
-                (0..face_sizes.len() as u32 + 1)
-                    .into_par_iter()
-                    .with_min_len(CHECK_CHUNK)
-                    .map(|f| f * size),
-            );
-            return offsets;
-        }
-    }
+    };
+    same.then_some(size)
+}
+
+fn offsets(face_sizes: &[u32]) -> Vec<u32> {
     let mut offsets = Vec::with_capacity(face_sizes.len() + 1);
     let mut total = 0u32;
     offsets.push(0);
