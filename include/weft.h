@@ -931,6 +931,36 @@ WeftStatus weft_catmull_clark(const struct WeftMesh *mesh, uint32_t levels, uint
 WeftStatus weft_loop(const struct WeftMesh *mesh, uint32_t levels, uint32_t naked_edges, struct WeftMesh **out_mesh);
 
 /**
+ * Subdivides into the caller's buffers: the result of `weft_catmull_clark`
+ * or `weft_loop` (by `scheme`, a WEFT_SCHEME_* value), bit for bit, written
+ * into memory the caller keeps instead of a new mesh. A host that
+ * subdivides again and again allocates once, from the counts of
+ * `weft_subdivision_counts` (`weft_subdivision_counts_ex` for
+ * WEFT_NAKED_EDGES_NONE, whose holes leave faces out), so no fresh memory
+ * is faulted in for the output on each call, and the last level's points
+ * are written where they belong, each once.
+ *
+ * `mesh` is the input; it must not be NULL. `levels` and `naked_edges` as
+ * for `weft_catmull_clark`.
+ * `out_positions` receives x, y, z per vertex; `position_capacity` counts
+ * its doubles (3 per vertex).
+ * `out_face_indices` receives the faces' vertex indices, face after face;
+ * `index_capacity` counts them. From level 1 on every face is a quad
+ * (Catmull-Clark) or a triangle (Loop); at level 0 the faces are the
+ * input's (`weft_mesh_face_sizes`).
+ *
+ * Fails as `weft_catmull_clark` and `weft_loop`, and with
+ * WEFT_STATUS_BUFFER_TOO_SMALL naming the buffer when one is shorter than
+ * the result: found before anything is written. After any other failure
+ * the buffers' contents are unspecified.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle; each buffer is NULL or holds as many
+ * writable values as its capacity says, and the two do not overlap.
+ */
+WeftStatus weft_subdivide_into(const struct WeftMesh *mesh, uint32_t scheme, uint32_t levels, uint32_t naked_edges, double *out_positions, size_t position_capacity, uint32_t *out_face_indices, size_t index_capacity);
+
+/**
  * Gives the number of faces `levels` steps of `scheme` make from `cage`,
  * without subdividing: the length `weft_subdivision_parent_faces` needs.
  *

@@ -244,6 +244,16 @@ inline SubdivisionCounts subdivision_counts(const Mesh& mesh, uint32_t scheme, u
   return counts;
 }
 
+/** weft_subdivide_into: `levels` steps of `scheme` written into the host's own buffers, kept from call to call.
+ * Size them once from subdivision_counts (3 doubles per vertex, index_count indices); a buffer too small throws
+ * WEFT_STATUS_BUFFER_TOO_SMALL and is left as it was. Faces are quads (Catmull-Clark) or triangles (Loop) from
+ * level 1 on. */
+inline void subdivide_into(const Mesh& mesh, uint32_t scheme, uint32_t levels, uint32_t naked_edges,
+                           std::vector<double>& positions, std::vector<uint32_t>& face_indices) {
+  detail::check(weft_subdivide_into(mesh.get(), scheme, levels, naked_edges, positions.data(), positions.size(),
+                                    face_indices.data(), face_indices.size()));
+}
+
 /** weft_subdivision_counts_ex: what `levels` steps with `options` make (holes leave no faces). */
 inline SubdivisionCounts subdivision_counts(const Mesh& mesh, const SubdivisionOptions& options, uint32_t levels) {
   const WeftSubdivisionOptions c = options.c_options();

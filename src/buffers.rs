@@ -70,6 +70,29 @@ pub(crate) fn flatten<const N: usize>(groups: Vec<[u32; N]>) -> Vec<u32> {
     bytemuck::cast_vec(groups)
 }
 
+/// The groups `group(0), …, group(n - 1)` of N indices each as one flat
+/// list, written in parallel: into a new buffer, returned, or into the
+/// first `n * N` values of `into` (a caller's), and then an empty list is
+/// returned. `into` must have room.
+pub(crate) fn par_groups<const N: usize>(
+    n: usize,
+    into: Option<&mut [u32]>,
+    what: &str,
+    group: impl Fn(usize) -> [u32; N] + Sync + Send,
+) -> Result<Vec<u32>> {
+    match into {
+        None => Ok(flatten(par_map(n, what, group)?)),
+        Some(out) => {
+            out[..n * N]
+                .par_chunks_exact_mut(N)
+                .with_min_len(CHUNK.div_ceil(N))
+                .enumerate()
+                .for_each(|(i, slot)| slot.copy_from_slice(&group(i)));
+            Ok(Vec::new())
+        }
+    }
+}
+
 /// `f(0), …, f(n - 1)`, reserved fallibly and written in parallel, each
 /// element once.
 pub(crate) fn par_map<T: Send>(

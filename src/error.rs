@@ -64,6 +64,10 @@ pub enum Error {
     /// Memory for the result could not be reserved.
     #[error("out of memory: {0}")]
     OutOfMemory(String),
+    /// A caller's output buffer is shorter than the result; the text names
+    /// it, with its length and the length needed.
+    #[error("buffer too small: {0}")]
+    BufferTooSmall(String),
     /// The input is geometrically degenerate for this operation (collinear points, too few points, a zero-length axis).
     #[error("degenerate input: {0}")]
     DegenerateInput(String),

@@ -4,10 +4,14 @@
 
 use std::ptr;
 
+use weft::ffi::creases::weft_subdivision_counts;
 use weft::ffi::mesh::{
     weft_mesh_free, weft_mesh_index_count, weft_mesh_new, weft_mesh_vertex_count,
 };
-use weft::ffi::subdivide::{weft_catmull_clark, weft_loop, WEFT_NAKED_EDGES_SMOOTH};
+use weft::ffi::subdivide::{
+    weft_catmull_clark, weft_loop, weft_subdivide_into, WEFT_NAKED_EDGES_SMOOTH,
+    WEFT_SCHEME_CATMULL_CLARK, WEFT_SCHEME_LOOP,
+};
 use weft::ffi::{WeftMesh, WeftStatus};
 use weft::Mesh;
 
@@ -54,6 +58,66 @@ impl Drop for Handle {
         // SAFETY: the handle came from the library and is freed once.
         unsafe { weft_mesh_free(self.0) }
     }
+}
+
+/// A host's own output buffers for `weft_subdivide_into`, sized once by
+/// `weft_subdivision_counts` and kept from call to call.
+pub struct Buffers {
+    positions: Vec<f64>,
+    indices: Vec<u32>,
+}
+
+fn scheme_value(loop_scheme: bool) -> u32 {
+    if loop_scheme {
+        WEFT_SCHEME_LOOP
+    } else {
+        WEFT_SCHEME_CATMULL_CLARK
+    }
+}
+
+impl Buffers {
+    pub fn new(cage: &Handle, loop_scheme: bool, levels: u32) -> Buffers {
+        let (mut n, mut f, mut k) = (0, 0, 0);
+        // SAFETY: `cage` is live; the counts are valid places.
+        let status = unsafe {
+            weft_subdivision_counts(
+                cage.0,
+                scheme_value(loop_scheme),
+                levels,
+                &mut n,
+                &mut f,
+                &mut k,
+            )
+        };
+        assert_eq!(status, WeftStatus::Ok, "weft_subdivision_counts");
+        // Written once here, as a host's buffers are once it has used them.
+        Buffers {
+            positions: vec![0.0; 3 * n],
+            indices: vec![0; k],
+        }
+    }
+}
+
+/// `weft_subdivide_into` the host's `buffers`, smooth naked edges.
+pub fn subdivide_into(cage: &Handle, loop_scheme: bool, levels: u32, buffers: &mut Buffers) {
+    // SAFETY: `cage` is live; each buffer holds the capacity passed beside it.
+    let status = unsafe {
+        weft_subdivide_into(
+            cage.0,
+            scheme_value(loop_scheme),
+            levels,
+            WEFT_NAKED_EDGES_SMOOTH,
+            buffers.positions.as_mut_ptr(),
+            buffers.positions.len(),
+            buffers.indices.as_mut_ptr(),
+            buffers.indices.len(),
+        )
+    };
+    assert_eq!(
+        status,
+        WeftStatus::Ok,
+        "weft subdivides into a host's buffers"
+    );
 }
 
 /// `weft_catmull_clark` (or `weft_loop` when `loop_scheme`) with smooth

@@ -148,6 +148,18 @@ fn run_benchmarks(
             group.bench_function(id(&format!("weft-{threads}t")), |b| {
                 b.iter(|| all.install(|| black_box(weft_one_shot(case, levels))))
             });
+            // A host's own buffers, kept from call to call.
+            let into = |b: &mut criterion::Bencher<'_>, pool: &ThreadPool| {
+                let is_loop = case.scheme == Scheme::Loop;
+                let mut buffers = abi::Buffers::new(&case.handle, is_loop, levels);
+                b.iter(|| {
+                    pool.install(|| {
+                        abi::subdivide_into(&case.handle, is_loop, levels, &mut buffers)
+                    })
+                })
+            };
+            group.bench_function(id("into-1t"), |b| into(b, one));
+            group.bench_function(id(&format!("into-{threads}t")), |b| into(b, all));
             group.bench_function(id("osd"), |b| {
                 b.iter(|| black_box(osd_one_shot(case, levels)))
             });
@@ -247,6 +259,7 @@ fn main() {
     }
     drop(cases);
     report::one_shot(threads);
+    report::into_buffers(threads);
     report::reevaluation(threads);
     let cold = memory::cold_calls(filter.as_deref());
     report::cold(&cold, threads);

@@ -84,6 +84,41 @@ pub fn one_shot(threads: usize) {
     }
 }
 
+/// One-shot subdivision into a host's own buffers (`weft_subdivide_into`),
+/// beside the calls that allocate and the warm floor.
+pub fn into_buffers(threads: usize) {
+    let all = format!("weft-{threads}t");
+    let into_all = format!("into-{threads}t");
+    println!("\n## One-shot into the host's buffers (`weft_subdivide_into`, median ms)\n");
+    println!(
+        "| case | into 1t | into {threads}t | Weft {threads}t (allocating) | OSD | OSD/into 1t \
+         | OSD/into {threads}t | floor warm | into {threads}t/floor warm |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for name in CASE_NAMES {
+        for levels in LEVELS {
+            let label = format!("{name}-L{levels}");
+            let get = |what: &str| median(&label, what);
+            let (i1, i_all) = (get("into-1t"), get(&into_all));
+            if i1.is_none() && i_all.is_none() {
+                continue;
+            }
+            let (osd, warm) = (get("osd"), get("floor-warm"));
+            println!(
+                "| {label} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                ms(i1),
+                ms(i_all),
+                ms(get(&all)),
+                ms(osd),
+                ratio(osd, i1),
+                ratio(osd, i_all),
+                ms(warm),
+                ratio(i_all, warm),
+            );
+        }
+    }
+}
+
 /// Re-evaluation at level 3 beside OpenSubdiv's stencils.
 pub fn reevaluation(threads: usize) {
     println!("\n## Re-evaluation at level 3 (median ms)\n");

@@ -171,6 +171,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_loop(WeftMeshHandle mesh, uint levels, uint nakedEdges, out WeftMeshHandle outMesh);
 
+        /// <summary>Subdivides into the caller's buffers: the result of <c>weft_catmull_clark</c> or <c>weft_loop</c> (by <c>scheme</c>, a WEFT_SCHEME_* value), bit for bit, written into memory the caller keeps instead of a new mesh. A host that subdivides again and again allocates once, from the counts of <c>weft_subdivision_counts</c> (<c>weft_subdivision_counts_ex</c> for WEFT_NAKED_EDGES_NONE, whose holes leave faces out), so no fresh memory is faulted in for the output on each call, and the last level's points are written where they belong, each once.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_subdivide_into(WeftMeshHandle mesh, uint scheme, uint levels, uint nakedEdges, [Out] double[] outPositions, UIntPtr positionCapacity, [Out] uint[] outFaceIndices, UIntPtr indexCapacity);
+
         /// <summary>Gives the number of faces <c>levels</c> steps of <c>scheme</c> make from <c>cage</c>, without subdividing: the length <c>weft_subdivision_parent_faces</c> needs.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_subdivision_face_count(WeftMeshHandle cage, uint scheme, uint levels, out UIntPtr outFaceCount);

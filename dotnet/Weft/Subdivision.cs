@@ -65,6 +65,29 @@ namespace Weft
             return WeftMesh.FromCountingCall(NativeMethods.weft_as_triangles, mesh, out splitFaces);
         }
 
+        /// <summary>
+        /// Subdivides into arrays the caller keeps from call to call: the result of
+        /// <see cref="CatmullClark"/> or <see cref="Loop"/> (by <paramref name="scheme"/>), bit for
+        /// bit, its positions (x, y, z per vertex) written to the start of <paramref name="positions"/>
+        /// and its face indices to the start of <paramref name="faceIndices"/>. Size them once from
+        /// <see cref="Counts(WeftMesh, Scheme, int)"/>; from level 1 on every face is a quad
+        /// (Catmull-Clark) or a triangle (Loop).
+        /// </summary>
+        /// <exception cref="WeftException">
+        /// As <see cref="CatmullClark"/> and <see cref="Loop"/>; <see cref="WeftStatus.BufferTooSmall"/>
+        /// when an array is shorter than the result, and then nothing is written.
+        /// </exception>
+        public static void SubdivideInto(WeftMesh mesh, Scheme scheme, int levels, NakedEdges nakedEdges, double[] positions, uint[] faceIndices)
+        {
+            WeftMeshHandle handle = Arguments.Mesh(mesh, "mesh");
+            uint steps = Arguments.Unsigned(levels, "levels");
+            Arguments.NotNull(positions, "positions");
+            Arguments.NotNull(faceIndices, "faceIndices");
+            WeftException.Check(NativeMethods.weft_subdivide_into(
+                handle, (uint)scheme, steps, (uint)nakedEdges, positions, (UIntPtr)positions.Length,
+                faceIndices, (UIntPtr)faceIndices.Length));
+        }
+
         /// <summary>The number of faces <paramref name="levels"/> steps of <paramref name="scheme"/> make from <paramref name="cage"/>, without subdividing.</summary>
         public static int FaceCount(WeftMesh cage, Scheme scheme, int levels)
         {

@@ -1,4 +1,5 @@
 using System;
+using System.Linq;
 
 namespace Weft.Tests
 {
@@ -19,6 +20,7 @@ namespace Weft.Tests
             t.Run("as triangles: a copy of a triangle mesh, the triangulation of others, with the split count", AsTriangles);
             t.Run("triangulate a disposed mesh is refused", TriangulateDisposed);
             t.Run("subdivision face count and parent faces", FaceCountAndParents);
+            t.Run("subdivision into the caller's arrays", SubdivideIntoCallerArrays);
             t.Run("face count refuses an unknown scheme", FaceCountUnknownScheme);
             t.Run("refiner re-evaluated with moved positions equals a fresh subdivision", RefinerMatchesFresh);
             t.Run("refiner mesh equals Catmull-Clark", RefinerMesh);
@@ -147,6 +149,39 @@ namespace Weft.Tests
             {
                 t.Equal(128, Subdivision.FaceCount(octa, Scheme.Loop, 2), "8 × 16 triangles");
             }
+        }
+
+        private static void SubdivideIntoCallerArrays()
+        {
+            using (var cube = Shapes.Cube())
+            using (var octa = Shapes.Octahedron())
+            {
+                SubdivideInto(cube, Scheme.CatmullClark);
+                SubdivideInto(octa, Scheme.Loop);
+                t.Throws<ArgumentNullException>(() => Subdivision.SubdivideInto(cube, Scheme.CatmullClark, 1, NakedEdges.Fixed, null, new uint[96]), "null positions");
+            }
+        }
+
+        private static void SubdivideInto(WeftMesh cage, Scheme scheme)
+        {
+            SubdivisionCounts counts = Subdivision.Counts(cage, scheme, 2);
+            var positions = new double[3 * counts.VertexCount];
+            var indices = new uint[counts.IndexCount];
+            using (WeftMesh expected = scheme == Scheme.Loop
+                ? Subdivision.Loop(cage, 2, NakedEdges.Smooth)
+                : Subdivision.CatmullClark(cage, 2, NakedEdges.Smooth))
+            {
+                for (int round = 0; round < 2; round++)
+                {
+                    Subdivision.SubdivideInto(cage, scheme, 2, NakedEdges.Smooth, positions, indices);
+                    t.True(positions.SequenceEqual(expected.GetPositions()), scheme + ": the positions, bit for bit");
+                    t.True(indices.SequenceEqual(expected.GetFaceIndices()), scheme + ": the faces");
+                }
+            }
+            var shortIndices = new uint[counts.IndexCount - 1];
+            Shapes.Fails(() => Subdivision.SubdivideInto(cage, scheme, 2, NakedEdges.Smooth, positions, shortIndices),
+                WeftStatus.BufferTooSmall, "face_indices has room for");
+            t.True(shortIndices.All(i => i == 0), scheme + ": a short array is left as it was");
         }
 
         private static void FaceCountUnknownScheme()

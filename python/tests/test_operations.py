@@ -319,3 +319,43 @@ def test_limit_patches_are_the_c_abis_and_exact_away_from_corners():
     assert all(np.array_equal(a, b) for a, b in zip(again, (control, faces, errors)))
     with pytest.raises(weft.WeftError, match="CATMULL_CLARK"):
         weft.LimitSurface(weft.triangulate(cube), scheme="loop").patches(1)
+
+
+@pytest.mark.parametrize("scheme, naked_edges", [("catmull-clark", "smooth"), ("catmull-clark", "none"), ("loop", "fixed")])
+def test_subdivide_into_equals_the_new_mesh(mixed, scheme, naked_edges):
+    cage = mixed if scheme == "catmull-clark" else weft.triangulate(mixed)
+    for levels in range(3):
+        subdivide = weft.catmull_clark if scheme == "catmull-clark" else weft.loop
+        expected = subdivide(cage, levels=levels, naked_edges=naked_edges)
+        n, f, k = weft.subdivision_counts(cage, scheme, levels, naked_edges)
+        positions = np.full((n + 2, 3), -7.0)
+        indices = np.full(k + 3, 99, dtype=np.uint32)
+        assert weft.subdivide_into(cage, positions, indices, scheme, levels, naked_edges) is None
+        assert same_bits(positions[: expected.vertex_count], expected.vertices)
+        assert (indices[: expected.index_count] == expected.face_indices).all()
+        assert (positions[expected.vertex_count :] == -7.0).all() and (indices[expected.index_count :] == 99).all()
+
+
+def test_subdivide_into_refuses_what_it_cannot_write(mixed):
+    n, f, k = weft.subdivision_counts(mixed, levels=2)
+    positions, quads = np.zeros((n, 3)), np.zeros((f, 4), dtype=np.uint32)
+    short = np.zeros((n - 1, 3))
+    with pytest.raises(weft.WeftError) as caught:
+        weft.subdivide_into(mixed, short, quads, levels=2)
+    assert caught.value.status == weft.Status.BUFFER_TOO_SMALL and f"room for {n - 1} vertices" in caught.value.message
+    assert (short == 0).all() and (quads == 0).all()
+    with pytest.raises(TypeError, match="positions must hold float64, not float32"):
+        weft.subdivide_into(mixed, positions.astype(np.float32), quads, levels=2)
+    with pytest.raises(TypeError, match="face_indices must hold uint32, not int64"):
+        weft.subdivide_into(mixed, positions, quads.astype(np.int64), levels=2)
+    with pytest.raises(TypeError, match="positions must be a numpy array"):
+        weft.subdivide_into(mixed, [[0.0, 0.0, 0.0]] * n, quads, levels=2)
+    with pytest.raises(ValueError, match=r"positions must have shape \(n, 3\)"):
+        weft.subdivide_into(mixed, positions.reshape(-1), quads, levels=2)
+    with pytest.raises(ValueError, match="C-contiguous and writable"):
+        weft.subdivide_into(mixed, np.zeros((n, 6))[:, :3], quads, levels=2)
+    positions.flags.writeable = False
+    with pytest.raises(ValueError, match="C-contiguous and writable"):
+        weft.subdivide_into(mixed, positions, quads, levels=2)
+    with pytest.raises(ValueError, match="naked_edges"):
+        weft.subdivide_into(mixed, np.zeros((n, 3)), quads, levels=2, naked_edges="round")

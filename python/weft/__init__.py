@@ -76,6 +76,7 @@ from ._ops import (
     stellate,
     subdivide,
     subdivide_face_varying,
+    subdivide_into,
     subdivide_limit,
     subdivide_vertex_data,
     subdivision_counts,

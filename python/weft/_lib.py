@@ -210,6 +210,7 @@ _SIGNATURES = {
     "weft_refiner_free": (None, [P]),
     "weft_catmull_clark": (S, [P, U, U, OUT]),
     "weft_loop": (S, [P, U, U, OUT]),
+    "weft_subdivide_into": (S, [P, U, U, U, P, Z, P, Z]),
     "weft_subdivision_face_count": (S, [P, U, U, ZP]),
     "weft_subdivision_parent_faces": (S, [P, U, U, P, Z]),
     "weft_triangulate": (S, [P, OUT]),

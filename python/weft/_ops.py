@@ -252,6 +252,47 @@ def subdivision_counts(mesh, scheme="catmull-clark", levels=1, naked_edges="fixe
     return tuple(c.value for c in counts)
 
 
+def subdivide_into(mesh, positions, face_indices, scheme="catmull-clark", levels=1, naked_edges="fixed"):
+    """Subdivides into arrays of your own, for a script that subdivides again
+    and again: the result of :func:`catmull_clark` or :func:`loop` (by
+    ``scheme``), bit for bit, written into ``positions`` (a writable
+    C-contiguous float64 array of shape (n, 3)) and ``face_indices`` (a
+    writable C-contiguous uint32 array, flat or (f, k)) from their start.
+    Size them with :func:`subdivision_counts`; from level 1 on every face
+    is a quad (Catmull-Clark) or a triangle (Loop). Arrays too small are a
+    :class:`WeftError` (BUFFER_TOO_SMALL) and are left as they were::
+
+        >>> cube = weft.box(1, 1, 1)
+        >>> n, f, k = weft.subdivision_counts(cube, levels=2)
+        >>> positions, quads = np.empty((n, 3)), np.empty((f, 4), dtype=np.uint32)
+        >>> weft.subdivide_into(cube, positions, quads, levels=2)
+        >>> bool((positions == weft.catmull_clark(cube, levels=2).vertices).all())
+        True
+    """
+    handle = check_mesh(mesh)
+    _writable(positions, "positions", np.float64, "(n, 3)", lambda a: a.ndim == 2 and a.shape[1] == 3)
+    _writable(face_indices, "face_indices", np.uint32, "(k,) or (f, k)", lambda a: a.ndim in (1, 2))
+    scheme_value = _choice(scheme, "scheme", SCHEMES)
+    levels = _count(levels, "levels")
+    naked = _choice(naked_edges, "naked_edges", NAKED_EDGES)
+    lib.weft_subdivide_into(
+        handle, scheme_value, levels, naked, _arrays.address(positions), positions.size,
+        _arrays.address(face_indices), face_indices.size,
+    )
+
+
+def _writable(array, name, dtype, shape_text, shape_ok):
+    """Checks an output array: numpy, of `dtype`, C-contiguous, writable, of the shape."""
+    if not isinstance(array, np.ndarray):
+        raise TypeError(f"{name} must be a numpy array of {np.dtype(dtype).name}, not {type(array).__name__}")
+    if array.dtype != dtype:
+        raise TypeError(f"{name} must hold {np.dtype(dtype).name}, not {array.dtype}")
+    if not shape_ok(array):
+        raise ValueError(f"{name} must have shape {shape_text}, not {array.shape}")
+    if not array.flags.c_contiguous or not array.flags.writeable:
+        raise ValueError(f"{name} must be C-contiguous and writable")
+
+
 def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,
                           creasing="uniform", holes=None, triangles="catmark"):
     """Carries per-vertex data (colours, weights: an (n,) or (n, width)

@@ -102,6 +102,7 @@ impl From<Error> for Failure {
             Error::ResultTooLarge(_) => WeftStatus::ResultTooLarge,
             Error::OutOfMemory(_) => WeftStatus::OutOfMemory,
             Error::DegenerateInput(_) => WeftStatus::DegenerateInput,
+            Error::BufferTooSmall(_) => WeftStatus::BufferTooSmall,
         };
         Failure::new(status, error.to_string())
     }

@@ -47,17 +47,19 @@ impl WeftMesh {
 pub(crate) fn finite_result(mesh: Mesh, what: &str) -> Result<Mesh, Failure> {
     match mesh.first_non_finite_vertex() {
         None => Ok(mesh),
-        Some(v) => {
-            let p = mesh.positions()[v];
-            Err(Failure::new(
-                WeftStatus::DegenerateInput,
-                format!(
-                    "degenerate input: {what} moves vertex {v} to ({}, {}, {}); the coordinates are too large for f64 arithmetic",
-                    p.x, p.y, p.z
-                ),
-            ))
-        }
+        Some(v) => Err(degenerate_result(&mesh.positions()[v], v, what)),
     }
+}
+
+/// The failure of a result whose vertex `v` left the f64 range at `p`.
+pub(crate) fn degenerate_result(p: &glam::DVec3, v: usize, what: &str) -> Failure {
+    Failure::new(
+        WeftStatus::DegenerateInput,
+        format!(
+            "degenerate input: {what} moves vertex {v} to ({}, {}, {}); the coordinates are too large for f64 arithmetic",
+            p.x, p.y, p.z
+        ),
+    )
 }
 
 /// Borrows the mesh behind a handle that may be NULL.

@@ -5,7 +5,9 @@ use crate::ffi::boundary::{
     check_room, copy_out, counted_mesh_op, enum_arg, guard, mesh_op, out_param, output_slice,
     Failure, WeftStatus,
 };
-use crate::ffi::mesh::{finite_result, mesh_ref, WeftMesh};
+use glam::DVec3;
+
+use crate::ffi::mesh::{degenerate_result, finite_result, mesh_ref, WeftMesh};
 use crate::mesh::triangulate::{as_triangles, triangulate};
 use crate::mesh::Mesh;
 use crate::subdivide::{self, NakedEdges, Scheme};
@@ -132,6 +134,66 @@ unsafe fn run_scheme(
             let naked_edges = naked_edges_arg(naked_edges)?;
             let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
             finite_result(result, "subdivision")
+        })
+    }
+}
+
+/// Subdivides into the caller's buffers: the result of `weft_catmull_clark`
+/// or `weft_loop` (by `scheme`, a WEFT_SCHEME_* value), bit for bit, written
+/// into memory the caller keeps instead of a new mesh. A host that
+/// subdivides again and again allocates once, from the counts of
+/// `weft_subdivision_counts` (`weft_subdivision_counts_ex` for
+/// WEFT_NAKED_EDGES_NONE, whose holes leave faces out), so no fresh memory
+/// is faulted in for the output on each call, and the last level's points
+/// are written where they belong, each once.
+///
+/// `mesh` is the input; it must not be NULL. `levels` and `naked_edges` as
+/// for `weft_catmull_clark`.
+/// `out_positions` receives x, y, z per vertex; `position_capacity` counts
+/// its doubles (3 per vertex).
+/// `out_face_indices` receives the faces' vertex indices, face after face;
+/// `index_capacity` counts them. From level 1 on every face is a quad
+/// (Catmull-Clark) or a triangle (Loop); at level 0 the faces are the
+/// input's (`weft_mesh_face_sizes`).
+///
+/// Fails as `weft_catmull_clark` and `weft_loop`, and with
+/// WEFT_STATUS_BUFFER_TOO_SMALL naming the buffer when one is shorter than
+/// the result: found before anything is written. After any other failure
+/// the buffers' contents are unspecified.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle; each buffer is NULL or holds as many
+/// writable values as its capacity says, and the two do not overlap.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn weft_subdivide_into(
+    mesh: *const WeftMesh,
+    scheme: u32,
+    levels: u32,
+    naked_edges: u32,
+    out_positions: *mut f64,
+    position_capacity: usize,
+    out_face_indices: *mut u32,
+    index_capacity: usize,
+) -> WeftStatus {
+    // SAFETY: `mesh` and the buffers are as the `# Safety` section above
+    // requires; each is checked for NULL before it is used.
+    unsafe {
+        guard(|| {
+            let mesh = mesh_ref(mesh, "mesh")?;
+            let scheme = scheme_arg(scheme)?;
+            let naked_edges = naked_edges_arg(naked_edges)?;
+            let coordinates = output_slice(out_positions, position_capacity, "out_positions")?;
+            let whole_vertices = position_capacity / 3 * 3;
+            let positions: &mut [DVec3] =
+                bytemuck::cast_slice_mut(&mut coordinates[..whole_vertices]);
+            let indices = output_slice(out_face_indices, index_capacity, "out_face_indices")?;
+            let counts =
+                subdivide::subdivide_into(mesh, scheme, levels, naked_edges, positions, indices)?;
+            if let Some(v) = crate::mesh::first_non_finite(&positions[..counts.vertex_count]) {
+                return Err(degenerate_result(&positions[v], v, "subdivision"));
+            }
+            Ok(())
         })
     }
 }

@@ -400,10 +400,7 @@ impl Mesh {
     /// The first vertex with a NaN or infinite coordinate (only a result
     /// of arithmetic that overflowed can have one), scanned on all threads.
     pub fn first_non_finite_vertex(&self) -> Option<usize> {
-        match check_positions(&self.positions) {
-            Err(MeshError::NonFiniteCoordinate { vertex, .. }) => Some(vertex),
-            _ => None,
-        }
+        first_non_finite(&self.positions)
     }
 
     /// Replaces the positions, keeping the faces.
@@ -597,6 +594,15 @@ fn check_counts(
         return Err(MeshError::CountMismatch { sum, index_count });
     }
     Ok(())
+}
+
+/// The first of `positions` with a NaN or infinite coordinate, scanned on
+/// all threads.
+pub(crate) fn first_non_finite(positions: &[DVec3]) -> Option<usize> {
+    match check_positions(positions) {
+        Err(MeshError::NonFiniteCoordinate { vertex, .. }) => Some(vertex),
+        _ => None,
+    }
 }
 
 fn check_positions(positions: &[DVec3]) -> Result<(), MeshError> {

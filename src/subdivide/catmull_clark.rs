@@ -18,20 +18,25 @@ use rayon::prelude::*;
 
 use super::gathers::{sharp_vertex_point, Gathers, RefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
-use crate::buffers::{flatten, par_map, try_vec};
+use crate::buffers::{par_groups, par_map, try_vec};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
 const CHUNK: usize = 2048;
 
 /// The corners of the next level's quads, quad after quad (see the module
-/// doc for their order).
-pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Result<Vec<u32>> {
+/// doc for their order), in a new buffer or `into` a caller's (see
+/// [`par_groups`]).
+pub(crate) fn child_indices(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    into: Option<&mut [u32]>,
+) -> Result<Vec<u32>> {
     let edge_base = faces.vertex_count as u32;
     let face_base = (faces.vertex_count + connectivity.edge_count()) as u32;
     let corner_edges = &connectivity.corner_edges;
     // Quad c = [v_c, e_c, f, e_prev(c)]: each written once, in place.
-    let quads = par_map(faces.corner_count(), "child faces", |c| {
+    par_groups(faces.corner_count(), into, "child faces", |c| {
         let f = connectivity.face_of(c);
         [
             faces.indices[c],
@@ -39,20 +44,20 @@ pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Resul
             face_base + f as u32,
             edge_base + corner_edges[faces.prev(c, f)],
         ]
-    })?;
-    Ok(flatten(quads))
+    })
 }
 
 /// The quads two levels down from `parent`, written from the parent level
 /// alone (see [`RefinedGathers`]): the level between is never built. Their
-/// order is that of [`child_indices`] applied twice; without offsets.
-pub(crate) fn grandchild_faces(parent: &RefinedGathers) -> Result<Faces> {
+/// order is that of [`child_indices`] applied twice; without offsets. The
+/// indices go `into` a caller's buffer when given (see [`par_groups`]).
+pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>) -> Result<Faces> {
     let corner_count = parent.face_count();
     let vertex_base = parent.vertex_count() as u32;
     let face_base = vertex_base + parent.edge_count() as u32;
     // The child quad c has corners 4c..4c + 4; each makes a quad
     // [v_k, e_k, c, e_prev(k)] of the grandchild level.
-    let quads = par_map(corner_count, "child faces", |c| {
+    let indices = par_groups(corner_count, into, "child faces", |c| {
         let (quad, edges) = (parent.quad(c), parent.quad_edges(c));
         let mut out = [0u32; 16];
         for j in 0..4 {
@@ -69,7 +74,7 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers) -> Result<Faces> {
         vertex_count: parent.vertex_count() + parent.edge_count() + corner_count,
         size: 4,
         offsets: Vec::new(),
-        indices: flatten(quads),
+        indices,
     })
 }
 

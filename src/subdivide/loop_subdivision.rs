@@ -18,20 +18,25 @@ use rayon::prelude::*;
 use super::gathers::{sharp_vertex_point, Gathers};
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::loop_smooth_weights;
-use crate::buffers::{flatten, par_map, try_vec};
+use crate::buffers::{par_groups, try_vec};
 use crate::error::Result;
 
 const CHUNK: usize = 2048;
 
 /// The corners of the next level's triangles, triangle after triangle (see
 /// the module doc for their order). Every face of `faces` is a triangle.
-pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Result<Vec<u32>> {
+/// In a new buffer or `into` a caller's (see [`par_groups`]).
+pub(crate) fn child_indices(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    into: Option<&mut [u32]>,
+) -> Result<Vec<u32>> {
     let base = faces.vertex_count as u32;
     let corner_edges = &connectivity.corner_edges;
     // Where each of the 12 indices of a triangle's children comes from: a
     // corner (0..3) or an edge (3..6) of the parent.
     const SOURCE: [usize; 12] = [0, 3, 5, 1, 4, 3, 2, 5, 4, 3, 4, 5];
-    let children = par_map(faces.face_count(), "child faces", |f| {
+    par_groups(faces.face_count(), into, "child faces", |f| {
         SOURCE.map(|source| {
             if source < 3 {
                 faces.indices[3 * f + source]
@@ -39,8 +44,7 @@ pub(crate) fn child_indices(faces: &Faces, connectivity: &Connectivity) -> Resul
                 base + corner_edges[3 * f + source - 3]
             }
         })
-    })?;
-    Ok(flatten(children))
+    })
 }
 
 #[inline]

@@ -133,37 +133,14 @@ pub fn subdivide(
         // Holes at the boundary: the creased path filters the faces.
         return subdivide_with(mesh, scheme, levels, &SubdivisionOptions::new(naked_edges));
     }
-    // The first level reads the cage's positions in place, unless they are
-    // near the top of the f64 range (see `scale.rs`).
-    let scale = match levels == 0 || mesh.face_count() == 0 {
-        true => None,
-        false => scale::for_points(mesh.positions()),
-    };
-    let mut positions: Option<Vec<DVec3>> =
-        scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
     let request = refiner::Levels {
         cage: mesh,
         scheme,
         levels,
         naked_edges,
     };
-    let faces = refiner::gather_levels(request, |step| {
-        let source = positions.as_deref().unwrap_or(mesh.positions());
-        let next = match &step {
-            Step::Level(level) => point_rules::points(scheme, level, source)?,
-            Step::Refined(level) => point_rules::points(scheme, level, source)?,
-        };
-        positions = Some(next);
-        Ok(())
-    })?;
-    let positions = match (positions, scale) {
-        (Some(mut positions), Some(scale)) => {
-            scale::restore_points(&mut positions, scale, "the position")?;
-            positions
-        }
-        (Some(positions), None) => positions,
-        (None, _) => mesh.positions().to_vec(),
-    };
+    let (faces, positions) = refine_points(request, None, |_| Ok(()))?;
+    let positions = positions.unwrap_or_else(|| mesh.positions().to_vec());
     if !faces.offsets.is_empty() {
         // Level 0, or no faces: the cage's own sizes.
         let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
@@ -171,6 +148,137 @@ pub fn subdivide(
     }
     // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
     Mesh::from_valid_uniform_parts(positions, scheme.refined_face_size(), faces.indices)
+}
+
+/// As [`subdivide`], into a caller's buffers instead of a new mesh: the
+/// result's positions go to the start of `positions` and its face indices
+/// to the start of `face_indices` (its faces are all quads for
+/// Catmull-Clark and all triangles for Loop from level 1 on, the cage's
+/// at level 0). A host that subdivides again and again keeps its buffers,
+/// so the output's memory is not faulted in afresh on every call, and the
+/// last level's points are written where they belong, each once. The
+/// values are those of [`subdivide`], bit for bit. Returns the counts
+/// written.
+///
+/// # Errors
+/// As [`subdivide`]; [`Error::BufferTooSmall`](crate::Error::BufferTooSmall)
+/// naming the buffer when one is shorter than the result (the counts of
+/// [`refined_counts`]), found before anything is written. On any other
+/// error the buffers' contents are unspecified.
+pub fn subdivide_into(
+    mesh: &Mesh,
+    scheme: Scheme,
+    levels: u32,
+    naked_edges: NakedEdges,
+    positions: &mut [DVec3],
+    face_indices: &mut [u32],
+) -> Result<RefinedCounts> {
+    let room = (positions.len(), face_indices.len());
+    if naked_edges == NakedEdges::None || levels == 0 || mesh.face_count() == 0 {
+        // Holes filter the faces after refining, and level 0 is a copy.
+        let result = subdivide(mesh, scheme, levels, naked_edges)?;
+        let counts = RefinedCounts {
+            vertex_count: result.vertex_count(),
+            face_count: result.face_count(),
+            index_count: result.index_count(),
+        };
+        check_room(counts, room)?;
+        positions[..counts.vertex_count].copy_from_slice(result.positions());
+        face_indices[..counts.index_count].copy_from_slice(result.face_indices());
+        return Ok(counts);
+    }
+    let request = refiner::Levels {
+        cage: mesh,
+        scheme,
+        levels,
+        naked_edges,
+    };
+    let mut counts = None;
+    refine_points(request, Some((positions, face_indices)), |found| {
+        counts = Some(found);
+        check_room(found, room)
+    })?;
+    Ok(counts.expect("a refined level reports its counts"))
+}
+
+/// The one-shot levels of `request` with their points, each level's
+/// positions freed once the next is made. Returns the last level's faces
+/// (see [`refiner::gather_levels`]) and its positions, or none at level 0.
+/// With `into`, a caller's buffers, the last level's positions and face
+/// indices are written there instead, once `room` has accepted the counts.
+fn refine_points(
+    request: refiner::Levels<'_>,
+    mut into: Option<(&mut [DVec3], &mut [u32])>,
+    room: impl FnOnce(RefinedCounts) -> Result<()>,
+) -> Result<(level::Faces, Option<Vec<DVec3>>)> {
+    let (mesh, scheme) = (request.cage, request.scheme);
+    // The first level reads the cage's positions in place, unless they are
+    // near the top of the f64 range (see `scale.rs`).
+    let scale = match request.levels == 0 || mesh.face_count() == 0 {
+        true => None,
+        false => scale::for_points(mesh.positions()),
+    };
+    let mut positions: Option<Vec<DVec3>> =
+        scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
+    let (mut into_points, into_indices) = match into.take() {
+        Some((points, indices)) => (Some(points), Some(indices)),
+        None => (None, None),
+    };
+    let mut written = 0;
+    let faces = refiner::gather_levels(request, into_indices, room, |step, last| {
+        let source = positions.as_deref().unwrap_or(mesh.positions());
+        match (last, into_points.as_deref_mut()) {
+            (true, Some(out)) => {
+                written = match &step {
+                    Step::Level(level) => write_points(scheme, level, source, out),
+                    Step::Refined(level) => write_points(scheme, level, source, out),
+                };
+            }
+            _ => {
+                let next = match &step {
+                    Step::Level(level) => point_rules::points(scheme, level, source)?,
+                    Step::Refined(level) => point_rules::points(scheme, level, source)?,
+                };
+                positions = Some(next);
+            }
+        }
+        Ok(())
+    })?;
+    if let (Some(out), Some(scale)) = (into_points, scale) {
+        scale::restore_points(&mut out[..written], scale, "the position")?;
+        return Ok((faces, None));
+    }
+    if let (Some(positions), Some(scale)) = (positions.as_mut(), scale) {
+        scale::restore_points(positions, scale, "the position")?;
+    }
+    Ok((faces, positions))
+}
+
+/// Writes one level's points into the start of `out`; returns how many.
+fn write_points(
+    scheme: Scheme,
+    level: &impl gathers::Gathers,
+    source: &[DVec3],
+    out: &mut [DVec3],
+) -> usize {
+    let count = point_rules::point_count(scheme, level);
+    point_rules::apply(scheme, level, source, &mut out[..count]);
+    count
+}
+
+/// Refuses buffers of `(positions, face indices)` lengths too short for `counts`.
+fn check_room(counts: RefinedCounts, (positions, indices): (usize, usize)) -> Result<()> {
+    for (name, length, needed, what) in [
+        ("positions", positions, counts.vertex_count, "vertices"),
+        ("face_indices", indices, counts.index_count, "face indices"),
+    ] {
+        if length < needed {
+            return Err(crate::Error::BufferTooSmall(format!(
+                "{name} has room for {length} {what} but the result has {needed}"
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The cage face each face of the refined mesh comes from, in the refined

@@ -5,7 +5,7 @@
 
 use glam::DVec3;
 
-use super::gathers::{Gathers, Plan};
+use super::gathers::Gathers;
 use super::level::{uniform_offsets, Connectivity, Faces};
 use super::scheme::Scheme;
 use super::{catmull_clark, loop_subdivision};
@@ -19,18 +19,33 @@ pub(crate) fn child_faces(
     connectivity: &Connectivity,
     with_offsets: bool,
 ) -> Result<Faces> {
+    child_faces_into(scheme, faces, connectivity, with_offsets, None)
+}
+
+/// As [`child_faces`], the indices written `into` a caller's buffer when
+/// given (which must have room), the returned faces then without them.
+pub(crate) fn child_faces_into(
+    scheme: Scheme,
+    faces: &Faces,
+    connectivity: &Connectivity,
+    with_offsets: bool,
+    into: Option<&mut [u32]>,
+) -> Result<Faces> {
     let indices = match scheme {
-        Scheme::CatmullClark => catmull_clark::child_indices(faces, connectivity)?,
-        Scheme::Loop => loop_subdivision::child_indices(faces, connectivity)?,
+        Scheme::CatmullClark => catmull_clark::child_indices(faces, connectivity, into)?,
+        Scheme::Loop => loop_subdivision::child_indices(faces, connectivity, into)?,
     };
     let size = scheme.refined_face_size();
+    let [_, _, face_count, _] =
+        scheme.next_counts([0, 0, faces.face_count() as u64, faces.corner_count() as u64]);
+    let face_count = face_count as usize;
     let vertex_count = faces.vertex_count
         + connectivity.edge_count()
         + scheme.face_point_count(faces.face_count());
     Ok(Faces {
         vertex_count,
         size,
-        offsets: uniform_offsets(indices.len() / size as usize, size, with_offsets)?,
+        offsets: uniform_offsets(face_count, size, with_offsets)?,
         indices,
     })
 }
@@ -44,10 +59,17 @@ pub(crate) fn points(scheme: Scheme, level: &impl Gathers, points: &[DVec3]) -> 
     }
 }
 
-/// Applies one plan of `scheme`.
-pub(crate) fn apply(scheme: Scheme, plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
+/// Applies one level's gathers (a plan, or gathers read where they lie)
+/// of `scheme`: `out` receives the next level's points, as many as
+/// [`point_count`] says.
+pub(crate) fn apply(scheme: Scheme, level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     match scheme {
-        Scheme::CatmullClark => catmull_clark::apply(plan, points, out),
-        Scheme::Loop => loop_subdivision::apply(plan, points, out),
+        Scheme::CatmullClark => catmull_clark::apply(level, points, out),
+        Scheme::Loop => loop_subdivision::apply(level, points, out),
     }
+}
+
+/// The number of points one level's gathers make.
+pub(crate) fn point_count(scheme: Scheme, level: &impl Gathers) -> usize {
+    level.vertex_count() + level.edge_count() + scheme.face_point_count(level.face_count())
 }

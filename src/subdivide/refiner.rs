@@ -10,9 +10,9 @@ use glam::DVec3;
 use super::creases::SubdivisionOptions;
 use super::gathers::{plan, LevelGathers, Plan, RefinedGathers};
 use super::level::{Connectivity, Faces};
-use super::point_rules::{apply, child_faces};
+use super::point_rules::{apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
-use super::scheme::{NakedEdges, Scheme};
+use super::scheme::{check_counts, NakedEdges, RefinedCounts, Scheme};
 use super::subdivider::Subdivider;
 use super::{catmull_clark, scale};
 use crate::buffers::try_vec;
@@ -333,20 +333,41 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
     Ok(faces)
 }
 
-/// One-shot subdivision's levels: hands each level's gathers to `each`,
-/// read where they lie instead of planned (each applies once), and returns
-/// the faces of the last level, without offsets (all the same size).
-/// Catmull-Clark's last two levels both come from the connectivity of the
-/// level before them, so the largest connectivity is never built.
+/// One-shot subdivision's levels: hands each level's gathers to `each`
+/// with whether it is the last, read where they lie instead of planned
+/// (each applies once), and returns the faces of the last level, without
+/// offsets (all the same size). Catmull-Clark's last two levels both come
+/// from the connectivity of the level before them, so the largest
+/// connectivity is never built.
+///
+/// With `last_indices`, a caller's buffer, the last level's face indices
+/// are written there instead (the returned faces then have none); `room`
+/// first sees the result's counts, before anything is written, and
+/// refuses buffers too small for them.
 pub(crate) fn gather_levels(
     request: Levels<'_>,
-    mut each: impl FnMut(Step<'_>) -> Result<()>,
+    mut last_indices: Option<&mut [u32]>,
+    room: impl FnOnce(RefinedCounts) -> Result<()>,
+    mut each: impl FnMut(Step<'_>, bool) -> Result<()>,
 ) -> Result<Faces> {
     let scheme = request.scheme;
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
     };
+    let (vertex_count, face_count, index_count) = check_counts(
+        scheme,
+        faces.vertex_count as u64,
+        connectivity.edge_count() as u64,
+        faces.face_count() as u64,
+        faces.corner_count() as u64,
+        request.levels,
+    )?;
+    room(RefinedCounts {
+        vertex_count: vertex_count as usize,
+        face_count: face_count as usize,
+        index_count: index_count as usize,
+    })?;
     for (last, next_last) in request.steps() {
         let gathers = LevelGathers {
             scheme,
@@ -355,14 +376,15 @@ pub(crate) fn gather_levels(
             tags: &tags,
         };
         if scheme == Scheme::CatmullClark && next_last {
-            each(Step::Level(gathers))?;
+            each(Step::Level(gathers), false)?;
             let refined = RefinedGathers { parent: gathers };
-            let last_faces = catmull_clark::grandchild_faces(&refined)?;
-            each(Step::Refined(refined))?;
+            let last_faces = catmull_clark::grandchild_faces(&refined, last_indices.take())?;
+            each(Step::Refined(refined), true)?;
             return Ok(last_faces);
         }
-        let next_faces = child_faces(scheme, &faces, &connectivity, !last)?;
-        each(Step::Level(gathers))?;
+        let into = if last { last_indices.take() } else { None };
+        let next_faces = child_faces_into(scheme, &faces, &connectivity, !last, into)?;
+        each(Step::Level(gathers), last)?;
         if last {
             return Ok(next_faces);
         }

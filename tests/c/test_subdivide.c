@@ -456,6 +456,71 @@ static void test_triangulate_with_parents_and_as_triangles(void) {
   weft_mesh_free(mesh);
 }
 
+/* weft_subdivide_into writes what weft_catmull_clark and weft_loop make,
+ * bit for bit, into the caller's buffers, again and again into the same
+ * ones; a buffer one value short is refused and left untouched. */
+static void check_into(const WeftMesh *cage, uint32_t scheme, uint32_t levels, uint32_t naked_edges) {
+  size_t n = 0, f = 0, k = 0, round;
+  WeftMesh *expected = NULL;
+  WeftStatus made = scheme == WEFT_SCHEME_LOOP ? weft_loop(cage, levels, naked_edges, &expected)
+                                                : weft_catmull_clark(cage, levels, naked_edges, &expected);
+  CHECK_STATUS(made, WEFT_STATUS_OK);
+  CHECK_STATUS(weft_subdivision_counts(cage, scheme, levels, &n, &f, &k), WEFT_STATUS_OK);
+  CHECK(n == weft_mesh_vertex_count(expected) && k == weft_mesh_index_count(expected));
+  double *positions = malloc(sizeof(double) * (3 * n + 1));
+  uint32_t *indices = malloc(sizeof(uint32_t) * (k + 1));
+  for (round = 0; round < 2; ++round) {
+    positions[3 * n] = -5.0;
+    indices[k] = 77;
+    CHECK_STATUS(weft_subdivide_into(cage, scheme, levels, naked_edges, positions, 3 * n + 1, indices, k + 1),
+                 WEFT_STATUS_OK);
+    CHECK(memcmp(positions, weft_mesh_positions(expected), sizeof(double) * 3 * n) == 0);
+    CHECK(memcmp(indices, weft_mesh_face_indices(expected), sizeof(uint32_t) * k) == 0);
+    CHECK(positions[3 * n] == -5.0 && indices[k] == 77);
+  }
+  memset(positions, 0, sizeof(double) * 3 * n);
+  CHECK_STATUS(weft_subdivide_into(cage, scheme, levels, naked_edges, positions, 3 * n - 1, indices, k),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("positions has room for");
+  CHECK(positions[0] == 0.0 && positions[3 * n - 2] == 0.0);
+  CHECK_STATUS(weft_subdivide_into(cage, scheme, levels, naked_edges, positions, 3 * n, indices, k - 1),
+               WEFT_STATUS_BUFFER_TOO_SMALL);
+  CHECK_MESSAGE("face_indices has room for");
+  CHECK(positions[0] == 0.0);
+  free(positions);
+  free(indices);
+  weft_mesh_free(expected);
+}
+
+static void test_subdivide_into_caller_buffers(void) {
+  WeftMesh *open_grid = grid(), *closed = octahedron(), *triangles = tri_grid();
+  uint32_t levels, mode;
+  for (levels = 0; levels <= 3; ++levels) {
+    for (mode = WEFT_NAKED_EDGES_FIXED; mode <= WEFT_NAKED_EDGES_CORNER_FIXED; ++mode) {
+      check_into(open_grid, WEFT_SCHEME_CATMULL_CLARK, levels, mode);
+      check_into(closed, WEFT_SCHEME_CATMULL_CLARK, levels, mode);
+      check_into(closed, WEFT_SCHEME_LOOP, levels, mode);
+      check_into(triangles, WEFT_SCHEME_LOOP, levels, mode);
+    }
+  }
+  double positions[3 * 100];
+  uint32_t indices[400];
+  CHECK_STATUS(weft_subdivide_into(open_grid, WEFT_SCHEME_LOOP, 1, WEFT_NAKED_EDGES_FIXED, positions, 300, indices,
+                                   400),
+               WEFT_STATUS_NOT_TRIANGLES);
+  CHECK_STATUS(weft_subdivide_into(open_grid, 7, 1, WEFT_NAKED_EDGES_FIXED, positions, 300, indices, 400),
+               WEFT_STATUS_INVALID_ARGUMENT);
+  CHECK_STATUS(weft_subdivide_into(open_grid, WEFT_SCHEME_CATMULL_CLARK, 1, WEFT_NAKED_EDGES_FIXED, NULL, 300,
+                                   indices, 400),
+               WEFT_STATUS_NULL_POINTER);
+  CHECK_STATUS(weft_subdivide_into(NULL, WEFT_SCHEME_CATMULL_CLARK, 1, WEFT_NAKED_EDGES_FIXED, positions, 300,
+                                   indices, 400),
+               WEFT_STATUS_NULL_POINTER);
+  weft_mesh_free(open_grid);
+  weft_mesh_free(closed);
+  weft_mesh_free(triangles);
+}
+
 int main(void) {
   test_cube();
   test_grid_modes();
@@ -466,5 +531,6 @@ int main(void) {
   test_level_zero_is_a_copy();
   test_refiner();
   test_bad_arguments();
+  test_subdivide_into_caller_buffers();
   return check_summary("test_subdivide");
 }

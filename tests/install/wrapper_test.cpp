@@ -88,6 +88,19 @@ static void test_subdivision() {
   weft::SubdivisionCounts counts = weft::subdivision_counts(cage, WEFT_SCHEME_CATMULL_CLARK, 2);
   CHECK(counts.vertex_count == 98 && counts.face_count == 96 && counts.index_count == 384);
   CHECK(smooth.vertex_count() == counts.vertex_count && smooth.face_count() == counts.face_count);
+  // Into the host's own buffers, twice into the same ones: the same values.
+  std::vector<double> positions(3 * counts.vertex_count);
+  std::vector<uint32_t> quads(counts.index_count);
+  for (int round = 0; round < 2; ++round) {
+    weft::subdivide_into(cage, WEFT_SCHEME_CATMULL_CLARK, 2, WEFT_NAKED_EDGES_FIXED, positions, quads);
+    CHECK(positions == smooth.positions().to_vector() && quads == smooth.face_indices().to_vector());
+  }
+  std::vector<uint32_t> short_quads(counts.index_count - 1, 7u);
+  expect_error(WEFT_STATUS_BUFFER_TOO_SMALL,
+               [&] { weft::subdivide_into(cage, WEFT_SCHEME_CATMULL_CLARK, 2, WEFT_NAKED_EDGES_FIXED, positions,
+                                          short_quads); },
+               "subdividing into a buffer one index short");
+  CHECK(short_quads == std::vector<uint32_t>(counts.index_count - 1, 7u));
 
   // The options struct at its defaults is plain Catmull-Clark (to round-off).
   weft::Mesh same = weft::subdivide(cage, weft::SubdivisionOptions{}, 2);
