@@ -697,3 +697,51 @@ fn far_query_points_project_onto_the_surface() {
     // The point far along +x lands on the cube's +x side.
     assert!(positions[0].x > 0.7, "{}", positions[0]);
 }
+
+#[test]
+fn closest_points_of_huge_and_tiny_cages_are_the_unit_cage_scaled() {
+    // Squared distances of a cage near 1e154 overflow and of one near 1e-154
+    // underflow: the search measures in units of the cage's size, so a cage
+    // scaled by a power of two gives the same faces and parameters, and the
+    // points scaled exactly.
+    for (scheme, cage, options) in [
+        (
+            Scheme::CatmullClark,
+            bumped(shapes::torus(6, 5)),
+            NakedEdges::Smooth,
+        ),
+        (Scheme::Loop, shapes::icosahedron(), NakedEdges::Fixed),
+        (Scheme::CatmullClark, open_quads(), NakedEdges::CornerFixed),
+    ] {
+        let options = SubdivisionOptions::new(options);
+        let surface = LimitSurface::new(&cage, scheme, &options).unwrap();
+        let queries = queries(&surface, &cage, scheme);
+        let n = queries.len();
+        let closest = |surface: &LimitSurface, points: &[DVec3]| {
+            let (mut faces, mut uvs, mut positions) =
+                (vec![0u32; n], vec![0.0; 2 * n], vec![DVec3::ZERO; n]);
+            surface
+                .closest_points(points, &mut faces, &mut uvs, &mut positions)
+                .unwrap();
+            (faces, uvs, positions)
+        };
+        let (faces, uvs, positions) = closest(&surface, &queries);
+        for scale in [2f64.powi(512), 2f64.powi(-512)] {
+            let moved: Vec<DVec3> = cage.positions().iter().map(|&p| p * scale).collect();
+            let scaled_cage = cage.with_positions(moved).unwrap();
+            let scaled_surface = LimitSurface::new(&scaled_cage, scheme, &options).unwrap();
+            let scaled_queries: Vec<DVec3> = queries.iter().map(|&q| q * scale).collect();
+            let (scaled_faces, scaled_uvs, scaled_positions) =
+                closest(&scaled_surface, &scaled_queries);
+            assert_eq!(scaled_faces, faces, "{scheme:?} scaled by {scale:e}");
+            assert_eq!(scaled_uvs, uvs, "{scheme:?} scaled by {scale:e}");
+            for (k, (&p, &s)) in positions.iter().zip(&scaled_positions).enumerate() {
+                assert!(
+                    s.is_finite(),
+                    "{scheme:?} scaled by {scale:e}: query {k} at {s}"
+                );
+                assert_eq!(p * scale, s, "{scheme:?} scaled by {scale:e}: query {k}");
+            }
+        }
+    }
+}

@@ -276,7 +276,7 @@ unsafe fn other_operation(op: u8, mesh: *mut WeftMesh, bytes: &mut Bytes) -> (We
 }
 
 /// Number of operations [`extended_operation`] chooses from.
-const EXTENDED_OPERATIONS: u32 = 12;
+const EXTENDED_OPERATIONS: u32 = 13;
 
 /// A capacity for a buffer that needs `needed` elements: mostly exact,
 /// sometimes one short (the call must then fail and write nothing), or 0.
@@ -741,6 +741,45 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
             let status = weft_limit_surface_patches(surface, 1, control.as_mut_ptr(), null_mut(), null_mut(), room, &mut written, null_mut(), null_mut());
             check_written(status, &control, 48 * written, "weft_limit_surface_patches");
             weft_limit_surface_free(surface);
+            status
+        }
+        11 => {
+            // Into caller buffers: the allocating call's result, bit for bit,
+            // and nothing written when a buffer is short.
+            let (scheme, levels, naked_edges) = (bytes.small(3), bytes.small(4), bytes.small(5));
+            let (mut vertices, mut faces, mut indices) = (0, 0, 0);
+            let options = WeftSubdivisionOptions { scheme, naked_edges, ..std::mem::zeroed() };
+            let counted = weft_subdivision_counts_ex(mesh, &options, levels, &mut vertices, &mut faces, &mut indices);
+            if counted != WeftStatus::Ok || indices > 1 << 20 {
+                return counted;
+            }
+            let mut positions = marked(capacity(bytes, 3 * vertices));
+            let mut face_indices = vec![u32::MAX; capacity(bytes, indices)];
+            let status = weft_subdivide_into(mesh, scheme, levels, naked_edges, positions.as_mut_ptr(), positions.len(), face_indices.as_mut_ptr(), face_indices.len());
+            let mut expected = null_mut();
+            let made = match scheme {
+                0 => weft_catmull_clark(mesh, levels, naked_edges, &mut expected),
+                _ => weft_loop(mesh, levels, naked_edges, &mut expected),
+            };
+            if status == WeftStatus::Ok {
+                assert_eq!(made, WeftStatus::Ok, "weft_subdivide_into succeeded where the allocating call did not");
+                let n = 3 * weft_mesh_vertex_count(expected);
+                let k = weft_mesh_index_count(expected);
+                // An empty mesh's accessors give NULL.
+                if n > 0 {
+                    let want = std::slice::from_raw_parts(weft_mesh_positions(expected), n);
+                    assert!(positions[..n].iter().zip(want).all(|(a, b)| a.to_bits() == b.to_bits()), "weft_subdivide_into positions");
+                }
+                if k > 0 {
+                    assert_eq!(&face_indices[..k], std::slice::from_raw_parts(weft_mesh_face_indices(expected), k));
+                }
+            } else if status == WeftStatus::BufferTooSmall {
+                assert!(positions.len() < 3 * vertices || face_indices.len() < indices);
+                assert!(positions.iter().all(|&x| x == -7.5) && face_indices.iter().all(|&i| i == u32::MAX), "weft_subdivide_into wrote into a short buffer");
+            } else if status != WeftStatus::DegenerateInput {
+                assert_eq!(status, made, "weft_subdivide_into and the allocating call disagree: {}", message());
+            }
+            weft_mesh_free(expected);
             status
         }
         _ => {

@@ -31,6 +31,11 @@ pub(super) struct Index {
     boxes: Vec<[DVec3; 2]>,
     origin: DVec3,
     cell: f64,
+    /// A power of two near 1 / the cage's size: distances are squared in
+    /// these units, so that they neither overflow for a cage near the top
+    /// of the double range nor underflow for a tiny one (exactly: scaling
+    /// by a power of two changes no comparison).
+    unit: f64,
     dims: [usize; 3],
     cells: Vec<u32>,
     cell_faces: Vec<u32>,
@@ -57,6 +62,17 @@ impl Index {
             q
         }
     }
+}
+
+/// The power of two nearest `x` (a positive number), within 2^±1000.
+fn power_of_two_near(x: f64) -> f64 {
+    let exponent = x.log2().round();
+    let exponent = if exponent.is_finite() {
+        exponent.clamp(-1000.0, 1000.0)
+    } else {
+        0.0
+    };
+    2f64.powi(exponent as i32)
 }
 
 /// The (u, v) domain Newton stays in: a whole quad or triangle, or one tile
@@ -254,7 +270,9 @@ impl LimitSurface {
         }
         // About one face per cell, at most 2^21 cells.
         let extent = (hi - lo).max(DVec3::splat(f64::MIN_POSITIVE));
-        let volume_cell = (extent.x * extent.y * extent.z / (1 << 21) as f64).cbrt();
+        let unit = power_of_two_near(1.0 / extent.max_element());
+        let scaled = extent * unit;
+        let volume_cell = (scaled.x * scaled.y * scaled.z / (1 << 21) as f64).cbrt() / unit;
         let cell = mean
             .max(volume_cell)
             .max(extent.max_element() / 128.0)
@@ -304,6 +322,7 @@ impl LimitSurface {
             boxes,
             origin: lo,
             cell,
+            unit,
             dims,
             cells: counts,
             cell_faces,
@@ -398,7 +417,7 @@ impl LimitSurface {
             .unwrap_or(0);
         for r in start..=reach {
             // Every point of shell r is at least (r - 1) cells from q.
-            if r >= 1 && ((r - 1) as f64 * index.cell).powi(2) > best.0 {
+            if r >= 1 && ((r - 1) as f64 * index.cell * index.unit).powi(2) > best.0 {
                 break;
             }
             let range = |k: usize| (centre[k] - r).max(0)..=(centre[k] + r).min(dims[k] - 1);
@@ -419,7 +438,7 @@ impl LimitSurface {
                             }
                             seen[f as usize] = stamp;
                             let [lo, hi] = index.boxes[f as usize];
-                            if (q.clamp(lo, hi) - q).length_squared() > best.0 {
+                            if ((q.clamp(lo, hi) - q) * index.unit).length_squared() > best.0 {
                                 continue;
                             }
                             self.project_on(index, f as usize, q, &mut best, scratch);
@@ -450,8 +469,9 @@ impl LimitSurface {
             // The two nearest samples: one alone may sit on a line of
             // symmetry that leads Newton to a saddle of the distance.
             let mut nearest = [(f64::INFINITY, [0.0; 2]); 2];
+            let gap = |p: DVec3| ((p - q) * index.unit).length_squared();
             for &(uv, p) in domain_starts {
-                let d = (p - q).length_squared();
+                let d = gap(p);
                 if let Some(k) = nearest.iter().position(|&(e, _)| d < e) {
                     nearest[k..].rotate_right(1);
                     nearest[k] = (d, uv);
@@ -465,8 +485,8 @@ impl LimitSurface {
                 if !d.is_finite() {
                     continue;
                 }
-                let (uv, p) = self.newton(f, domain, uv, q, scratch);
-                let d = (p - q).length_squared();
+                let (uv, p) = self.newton(f, domain, uv, q, index.unit, scratch);
+                let d = gap(p);
                 if d < best.0 {
                     *best = (d, f as u32, uv, p);
                 }
@@ -475,7 +495,7 @@ impl LimitSurface {
             // extraordinary vertex (the parameterisation is singular there).
             for corner in domain.corners() {
                 let p = self.point(f, corner, scratch)[0];
-                let d = (p - q).length_squared();
+                let d = gap(p);
                 if d < best.0 {
                     *best = (d, f as u32, corner, p);
                 }
@@ -483,20 +503,24 @@ impl LimitSurface {
         }
     }
 
-    /// Damped Gauss-Newton on `|P(u, v) − q|²` within `domain`.
+    /// Damped Gauss-Newton on `|P(u, v) − q|²` within `domain`, lengths
+    /// measured in `unit`s (see [`Index::unit`]).
     fn newton(
         &self,
         f: usize,
         domain: Domain,
         start: [f64; 2],
         q: DVec3,
+        unit: f64,
         scratch: &mut Scratch,
     ) -> ([f64; 2], DVec3) {
+        let scaled = |[p, pu, pv]: [DVec3; 3]| [p, pu * unit, pv * unit];
+        let gap = |p: DVec3| ((p - q) * unit).length_squared();
         let mut uv = domain.clamp(start);
-        let [mut p, mut pu, mut pv] = self.point(f, uv, scratch);
-        let mut d = (p - q).length_squared();
+        let [mut p, mut pu, mut pv] = scaled(self.point(f, uv, scratch));
+        let mut d = gap(p);
         for _ in 0..ITERATIONS {
-            let r = p - q;
+            let r = (p - q) * unit;
             let (a, b, c) = (pu.dot(pu), pu.dot(pv), pv.dot(pv));
             let (g0, g1) = (pu.dot(r), pv.dot(r));
             let damping = 1e-12 * (a + c);
@@ -537,8 +561,8 @@ impl LimitSurface {
                     if next == uv {
                         break;
                     }
-                    let [np, npu, npv] = self.point(f, next, scratch);
-                    let nd = (np - q).length_squared();
+                    let [np, npu, npv] = scaled(self.point(f, next, scratch));
+                    let nd = gap(np);
                     if nd < d {
                         (uv, p, pu, pv, d, moved) = (next, np, npu, npv, nd, true);
                         last = (step[0].abs() + step[1].abs()) * scale;
