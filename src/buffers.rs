@@ -30,6 +30,23 @@ pub(crate) fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
     Ok(v)
 }
 
+/// `n` zeros from the allocator's zeroed memory, advised for huge pages
+/// when large: a large block comes straight from the kernel, already zero
+/// and not yet touched, so it is faulted in only as it is written, once,
+/// in any order (where `zeroed` writes every value twice).
+pub(crate) fn fresh_zeroed<T: bytemuck::Zeroable>(n: usize, what: &str) -> Result<Vec<T>> {
+    let mut values = bytemuck::allocation::try_zeroed_vec(n).map_err(|_| {
+        Error::OutOfMemory(format!(
+            "could not reserve {n} elements of {} bytes for {what}",
+            std::mem::size_of::<T>()
+        ))
+    })?;
+    if std::mem::size_of_val(values.as_slice()) >= HUGE_PAGE_ADVICE_BYTES {
+        weft_pages::advise_huge_pages(values.as_mut_slice());
+    }
+    Ok(values)
+}
+
 /// A copy of `values` in memory advised for huge pages when large (a host's
 /// buffers handed in: the copy is all page faults and memory traffic).
 /// Aborts, as `to_vec` does, when memory runs out.

@@ -18,7 +18,7 @@ use rayon::prelude::*;
 
 use super::gathers::{sharp_vertex_point, Gathers, RefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
-use crate::buffers::{par_groups, par_map, try_vec};
+use crate::buffers::{fresh_zeroed, par_groups};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -134,27 +134,15 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
 }
 
-/// As [`apply`], into a new vector written once (no zero-filling): the face
-/// points go first to a buffer of their own, as the others read them.
+/// As [`apply`], into a new vector of the allocator's untouched zeroed
+/// memory: the face points are written into its tail first, where the edge
+/// and vertex points read them, and every point is written once.
 ///
 /// # Errors
 /// [`crate::Error::OutOfMemory`].
 pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
     let (v, e, f) = (level.vertex_count(), level.edge_count(), level.face_count());
-    let face_points = par_map(f, "face points", |f| face_point(level, points, f))?;
-    let mut out = try_vec(v + e + f, "refined positions")?;
-    out.par_extend(
-        (0..v)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|v| vertex_point(level, points, &face_points, v)),
-    );
-    out.par_extend(
-        (0..e)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|e| edge_point(level, points, &face_points, e)),
-    );
-    out.par_extend(face_points.par_iter().with_min_len(CHUNK).copied());
+    let mut out = fresh_zeroed(v + e + f, "refined positions")?;
+    apply(level, points, &mut out);
     Ok(out)
 }

@@ -65,7 +65,9 @@ fn refined_gathers_equal_the_built_level() {
             let grandchild =
                 child_faces(Scheme::CatmullClark, &child, &child_connectivity, false).unwrap();
             assert_eq!(
-                catmull_clark::grandchild_faces(&refined, None).unwrap().indices,
+                catmull_clark::grandchild_faces(&refined, None)
+                    .unwrap()
+                    .indices,
                 grandchild.indices,
                 "{what}: grandchild faces"
             );
