@@ -5,8 +5,11 @@ against the same call made from C.
 
 1. A mesh of about 1 M vertices and 1 M quads crosses each way: numpy
    arrays into weft.Mesh (weft_mesh_new copies and checks them), against
-   weft_mesh_new on the same buffers from C and through bare ctypes; and
-   back out, as views (m.vertices, m.face_indices) and as copies.
+   weft_mesh_new on the same buffers from C (the second call of a fresh
+   process, as the Python rows are, and the steady state of many calls,
+   whose memory the allocator has already faulted in) and through bare
+   ctypes; and back out, as views (m.vertices, m.face_indices) and as
+   copies.
 2. weft.catmull_clark on a 100k-quad cage, two levels, against a C program
    making the same call.
 
@@ -139,6 +142,7 @@ def crossing(program):
     mesh = weft.Mesh(vertices, faces32)
     rows = [
         ("into Weft: weft_mesh_new from C", lambda: run_c(program, "new", side, 1)),
+        ("into Weft: weft_mesh_new from C, steady (21 calls, one process)", lambda: run_c(program, "new", side, 21)),
         ("into Weft: weft_mesh_new through ctypes", lambda: timed(bare)),
         ("into Weft: weft.Mesh(vertices, faces uint32 (f, 4))", lambda: timed(lambda: weft.Mesh(vertices, faces32))),
         ("into Weft: weft.Mesh(vertices, faces int64 (f, 4))", lambda: timed(lambda: weft.Mesh(vertices, faces64))),

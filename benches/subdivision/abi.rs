@@ -90,11 +90,18 @@ impl Buffers {
             )
         };
         assert_eq!(status, WeftStatus::Ok, "weft_subdivision_counts");
-        // Written once here, as a host's buffers are once it has used them.
-        Buffers {
+        let mut buffers = Buffers {
             positions: vec![0.0; 3 * n],
             indices: vec![0; k],
+        };
+        if std::env::var_os("WEFT_BENCH_HUGE").is_some() {
+            weft_pages::advise_huge_pages(&mut buffers.positions);
+            weft_pages::advise_huge_pages(&mut buffers.indices);
         }
+        // Written once here, as a host's buffers are once it has used them.
+        buffers.positions.fill(1.0);
+        buffers.indices.fill(1);
+        buffers
     }
 }
 
