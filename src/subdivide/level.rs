@@ -35,14 +35,22 @@ pub(crate) struct Faces {
 impl Faces {
     /// The faces of a mesh (a cage).
     pub(crate) fn of_mesh(mesh: &crate::Mesh) -> Faces {
-        let size = match mesh.face_sizes().first() {
-            Some(&first @ (3 | 4)) if mesh.face_sizes().iter().all(|&s| s == first) => first,
+        let size = match mesh.face_count() {
+            0 => 0,
+            _ if mesh.is_quad_mesh() => 4,
+            _ if mesh.is_triangle_mesh() => 3,
             _ => 0,
+        };
+        // Faces of one size have arithmetic offsets: the mesh need not
+        // write its own.
+        let offsets = match size {
+            0 => mesh.face_offsets().to_vec(),
+            size => (0..=mesh.face_count() as u32).map(|f| f * size).collect(),
         };
         Faces {
             vertex_count: mesh.vertex_count(),
             size,
-            offsets: mesh.face_offsets().to_vec(),
+            offsets,
             indices: mesh.face_indices().to_vec(),
         }
     }
@@ -204,6 +212,22 @@ impl Connectivity {
             0 => self.corner_faces[c] as usize,
             4 => c / 4,
             size => c / size as usize,
+        }
+    }
+
+    /// Frees all but what the next level's faces are written from (the
+    /// edges' count, each corner's edge and face): once a level's points
+    /// are made, its faces are all that is left to write.
+    pub(crate) fn keep_only_corner_edges(&mut self) {
+        for list in [
+            &mut self.adjacency.edge_offsets,
+            &mut self.adjacency.edge_corners,
+            &mut self.adjacency.vertex_offsets,
+            &mut self.adjacency.vertex_corners,
+            &mut self.vertex_edge_offsets,
+            &mut self.vertex_edges,
+        ] {
+            *list = Vec::new();
         }
     }
 

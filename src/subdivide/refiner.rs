@@ -382,12 +382,17 @@ pub(crate) fn gather_levels(
             each(Step::Refined(refined), true)?;
             return Ok(last_faces);
         }
-        let into = if last { last_indices.take() } else { None };
-        let next_faces = child_faces_into(scheme, &faces, &connectivity, !last, into)?;
-        each(Step::Level(gathers), last)?;
         if last {
-            return Ok(next_faces);
+            // The points first: then the last faces, the largest array, are
+            // written once most of this level's connectivity is freed.
+            each(Step::Level(gathers), true)?;
+            connectivity.keep_only_corner_edges();
+            drop(tags);
+            let into = last_indices.take();
+            return child_faces_into(scheme, &faces, &connectivity, false, into);
         }
+        let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
+        each(Step::Level(gathers), false)?;
         // The vertices' edges are read by the next refinement, and by
         // Catmull-Clark's refined gathers.
         let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
