@@ -22,8 +22,8 @@ use rayon::prelude::*;
 use crate::buffers::advised_copy;
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
 
-/// Inputs from this many items up are checked on all threads: a host's
-/// mesh of a million faces crosses in a few milliseconds.
+/// Inputs from this many items up are copied and checked on all threads
+/// (a host's buffers cross at the speed of memory, not of one core).
 const PARALLEL_CHECK_ITEMS: usize = 1 << 16;
 /// Items per task of those checks.
 const CHECK_CHUNK: usize = 16384;

@@ -208,7 +208,7 @@ pub fn subdivide_into(
 /// indices are written there instead, once `room` has accepted the counts.
 fn refine_points(
     request: refiner::Levels<'_>,
-    mut into: Option<(&mut [DVec3], &mut [u32])>,
+    into: Option<(&mut [DVec3], &mut [u32])>,
     room: impl FnOnce(RefinedCounts) -> Result<()>,
 ) -> Result<(level::Faces, Option<Vec<DVec3>>)> {
     let (mesh, scheme) = (request.cage, request.scheme);
@@ -220,7 +220,7 @@ fn refine_points(
     };
     let mut positions: Option<Vec<DVec3>> =
         scale.map(|scale| scale::scaled_points(mesh.positions(), scale));
-    let (mut into_points, into_indices) = match into.take() {
+    let (mut into_points, into_indices) = match into {
         Some((points, indices)) => (Some(points), Some(indices)),
         None => (None, None),
     };
