@@ -49,6 +49,19 @@ def index_array(value, name, shape_text="one-dimensional"):
     return np.ascontiguousarray(array, dtype=np.uint32)
 
 
+def output_array(array, name, dtype, shape_text, shape_ok):
+    """Checks a caller's output array: numpy, of `dtype`, of a shape
+    `shape_ok` accepts (`shape_text` says which), C-contiguous and writable."""
+    if not isinstance(array, np.ndarray):
+        raise TypeError(f"{name} must be a numpy array of {np.dtype(dtype).name}, not {type(array).__name__}")
+    if array.dtype != dtype:
+        raise TypeError(f"{name} must hold {np.dtype(dtype).name}, not {array.dtype}")
+    if not shape_ok(array):
+        raise ValueError(f"{name} must have shape {shape_text}, not {array.shape}")
+    if not array.flags.c_contiguous or not array.flags.writeable:
+        raise ValueError(f"{name} must be C-contiguous and writable")
+
+
 def _where(array, value):
     position = np.argwhere(array == value)[0]
     return "position " + ", ".join(str(int(p)) for p in position)

@@ -270,8 +270,8 @@ def subdivide_into(mesh, positions, face_indices, scheme="catmull-clark", levels
         True
     """
     handle = check_mesh(mesh)
-    _writable(positions, "positions", np.float64, "(n, 3)", lambda a: a.ndim == 2 and a.shape[1] == 3)
-    _writable(face_indices, "face_indices", np.uint32, "(k,) or (f, k)", lambda a: a.ndim in (1, 2))
+    _arrays.output_array(positions, "positions", np.float64, "(n, 3)", lambda a: a.ndim == 2 and a.shape[1] == 3)
+    _arrays.output_array(face_indices, "face_indices", np.uint32, "(k,) or (f, k)", lambda a: a.ndim in (1, 2))
     scheme_value = _choice(scheme, "scheme", SCHEMES)
     levels = _count(levels, "levels")
     naked = _choice(naked_edges, "naked_edges", NAKED_EDGES)
@@ -279,18 +279,6 @@ def subdivide_into(mesh, positions, face_indices, scheme="catmull-clark", levels
         handle, scheme_value, levels, naked, _arrays.address(positions), positions.size,
         _arrays.address(face_indices), face_indices.size,
     )
-
-
-def _writable(array, name, dtype, shape_text, shape_ok):
-    """Checks an output array: numpy, of `dtype`, C-contiguous, writable, of the shape."""
-    if not isinstance(array, np.ndarray):
-        raise TypeError(f"{name} must be a numpy array of {np.dtype(dtype).name}, not {type(array).__name__}")
-    if array.dtype != dtype:
-        raise TypeError(f"{name} must hold {np.dtype(dtype).name}, not {array.dtype}")
-    if not shape_ok(array):
-        raise ValueError(f"{name} must have shape {shape_text}, not {array.shape}")
-    if not array.flags.c_contiguous or not array.flags.writeable:
-        raise ValueError(f"{name} must be C-contiguous and writable")
 
 
 def subdivide_vertex_data(mesh, data, levels=1, scheme="catmull-clark", naked_edges="fixed", creases=None, corners=None,

@@ -186,7 +186,7 @@ impl Refiner {
                 out.len()
             )));
         }
-        if let Some(v) = cage.iter().position(|p| !p.is_finite()) {
+        if let Some(v) = crate::mesh::first_non_finite(cage) {
             return Err(Error::InvalidArgument(format!(
                 "cage vertex {v} has a non-finite coordinate"
             )));
