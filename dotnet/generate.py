@@ -38,6 +38,10 @@ PUBLIC_STRUCTS = {"WeftPlane", "WeftWeldReport", "WeftOrientReport", "WeftTNode"
 OPTIONAL_STRUCTS = {"WeftPlane"}
 # A non-const pointer to one of these is a caller buffer of many elements, not one result.
 ELEMENT_STRUCTS = {"WeftTNode"}
+# Const pointers the library keeps after the call (a lent array): IntPtr, for
+# memory the caller pins or allocates natively, never an array pinned only
+# for the call.
+LENT_POINTERS = {("weft_mesh_new_borrowed", "positions"), ("weft_mesh_new_borrowed", "face_indices")}
 # size_t * parameters that are caller buffers rather than one count.
 SIZE_ARRAYS = {("weft_naked_boundaries", "out_point_counts")}
 SCALARS = {"uint32_t": "uint", "int32_t": "int", "int64_t": "long", "uint64_t": "ulong", "size_t": "UIntPtr",
@@ -167,6 +171,8 @@ def cs_param(function, ctype, name):
         raise HeaderError(f"{function}: no C# type for {ctype!r} ({name})")
     const, base, pointer = bool(m.group(1)), m.group(2), bool(m.group(3))
     cs = SCALARS[base]
+    if pointer and (function, name) in LENT_POINTERS:
+        return f"IntPtr {cs_name}"
     if not pointer:
         return f"{BOOL} {cs_name}" if base == "bool" else f"{cs} {cs_name}"
     element = "byte" if base == "bool" else cs

@@ -680,6 +680,27 @@ WeftStatus weft_mesh_new(const double *positions, size_t vertex_count, const uin
 WeftStatus weft_mesh_new_ex(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, uint32_t flags, struct WeftMesh **out_mesh);
 
 /**
+ * As `weft_mesh_new_ex`, but the mesh reads `positions` and `face_indices`
+ * where they are instead of copying them: a million vertices and faces
+ * cross in the time it takes to check them. The arrays are checked as
+ * `weft_mesh_new_ex` checks them, with the same errors. `face_sizes` may be
+ * freed after the call (Weft keeps a copy only when the faces differ in
+ * size).
+ *
+ * The caller lends the two arrays: they must stay valid, and must not
+ * change, until `weft_mesh_free(*out_mesh)`. Weft never writes to them.
+ * Every mesh an operation returns, including a copy, has buffers of its
+ * own, so only this one mesh holds the caller's arrays. `positions` must
+ * be aligned for doubles and `face_indices` for uint32_t (any array of
+ * those types is).
+ *
+ * # Safety
+ * As `weft_mesh_new`, and `positions` and `face_indices` stay valid and
+ * unchanged until the mesh is freed.
+ */
+WeftStatus weft_mesh_new_borrowed(const double *positions, size_t vertex_count, const uint32_t *face_sizes, size_t face_count, const uint32_t *face_indices, size_t index_count, uint32_t flags, struct WeftMesh **out_mesh);
+
+/**
  * Frees a mesh made by Weft. NULL is ignored.
  *
  * # Safety
@@ -695,6 +716,16 @@ void weft_mesh_free(struct WeftMesh *mesh);
  * `mesh` is NULL or a live handle.
  */
 size_t weft_mesh_vertex_count(const struct WeftMesh *mesh);
+
+/**
+ * Returns whether the mesh reads arrays a caller lent it
+ * (`weft_mesh_new_borrowed`); false when `mesh` is NULL, and for every
+ * mesh an operation returns.
+ *
+ * # Safety
+ * `mesh` is NULL or a live handle.
+ */
+bool weft_mesh_is_borrowed(const struct WeftMesh *mesh);
 
 /**
  * Returns the number of faces, or 0 when `mesh` is NULL.

@@ -94,6 +94,24 @@ class Mesh {
       : Mesh(positions.data(), detail::triples(positions, "positions"), face_sizes.data(), face_sizes.size(),
              face_indices.data(), face_indices.size(), flags) {}
 
+  /** weft_mesh_new_borrowed: a mesh that reads `positions` and `face_indices` where they are, checked
+   *  but not copied. They must stay valid and unchanged until this Mesh (or the one it moves to) is
+   *  destroyed; face_sizes is read during the call only. */
+  static Mesh borrow(const double* positions, std::size_t vertex_count, const uint32_t* face_sizes,
+                     std::size_t face_count, const uint32_t* face_indices, std::size_t index_count,
+                     uint32_t flags = 0) {
+    WeftMesh* handle = nullptr;
+    detail::check(weft_mesh_new_borrowed(positions, vertex_count, face_sizes, face_count, face_indices, index_count,
+                                         flags, &handle));
+    return Mesh(handle);
+  }
+  /** The same from vectors, which must outlive the Mesh unchanged. */
+  static Mesh borrow(const std::vector<double>& positions, const std::vector<uint32_t>& face_sizes,
+                     const std::vector<uint32_t>& face_indices, uint32_t flags = 0) {
+    return borrow(positions.data(), detail::triples(positions, "positions"), face_sizes.data(), face_sizes.size(),
+                  face_indices.data(), face_indices.size(), flags);
+  }
+
   /** Takes ownership of a handle from the C API (NULL makes an empty, moved-from-like Mesh). */
   static Mesh adopt(WeftMesh* handle) noexcept { return Mesh(handle); }
 
@@ -115,6 +133,8 @@ class Mesh {
   WeftMesh* release() noexcept { return std::exchange(handle_, nullptr); }
   explicit operator bool() const noexcept { return handle_ != nullptr; }
 
+  /** Whether the mesh reads arrays it was lent (Mesh::borrow). */
+  bool is_borrowed() const noexcept { return weft_mesh_is_borrowed(handle_); }
   std::size_t vertex_count() const noexcept { return weft_mesh_vertex_count(handle_); }
   std::size_t face_count() const noexcept { return weft_mesh_face_count(handle_); }
   std::size_t index_count() const noexcept { return weft_mesh_index_count(handle_); }

@@ -4,7 +4,8 @@ against the same call made from C.
     python python/bench.py            # after pip install ./python
 
 1. A mesh of about 1 M vertices and 1 M quads crosses each way: numpy
-   arrays into weft.Mesh (weft_mesh_new copies and checks them), against
+   arrays into weft.Mesh (weft_mesh_new copies and checks them; with
+   copy=False, weft_mesh_new_borrowed only checks them), against
    weft_mesh_new on the same buffers from C (the second call of a fresh
    process, as the Python rows are, and the steady state of many calls,
    whose memory the allocator has already faulted in) and through bare
@@ -55,11 +56,13 @@ static int compare(const void *a, const void *b) {
 }
 
 /* bench new SIDE RUNS: weft_mesh_new on the buffers of a SIDE x SIDE grid.
+   bench borrowed SIDE RUNS: weft_mesh_new_borrowed on the same buffers.
    bench catmull-clark SIDE LEVELS RUNS: weft_catmull_clark on that grid.
    Prints the median time in seconds. */
 int main(int argc, char **argv) {
     if (argc < 4) return 2;
-    int making = strcmp(argv[1], "new") == 0;
+    int borrowing = strcmp(argv[1], "borrowed") == 0;
+    int making = borrowing || strcmp(argv[1], "new") == 0;
     size_t side = (size_t)atol(argv[2]);
     unsigned levels = making ? 0 : (unsigned)atoi(argv[3]);
     int runs = atoi(argv[making ? 3 : 4]);
@@ -74,8 +77,9 @@ int main(int argc, char **argv) {
     for (int r = -1; r < runs; r++) {
         WeftMesh *out = NULL;
         double start = now();
-        WeftStatus status = making ? weft_mesh_new(positions, n, sizes, f, indices, k, &out)
-                                   : weft_catmull_clark(cage, levels, WEFT_NAKED_EDGES_SMOOTH, &out);
+        WeftStatus status = borrowing ? weft_mesh_new_borrowed(positions, n, sizes, f, indices, k, 0, &out)
+                            : making  ? weft_mesh_new(positions, n, sizes, f, indices, k, &out)
+                                      : weft_catmull_clark(cage, levels, WEFT_NAKED_EDGES_SMOOTH, &out);
         if (r >= 0) times[r] = now() - start;
         if (status != WEFT_STATUS_OK) return 1;
         weft_mesh_free(out);
@@ -146,6 +150,9 @@ def crossing(program):
         ("into Weft: weft_mesh_new through ctypes", lambda: timed(bare)),
         ("into Weft: weft.Mesh(vertices, faces uint32 (f, 4))", lambda: timed(lambda: weft.Mesh(vertices, faces32))),
         ("into Weft: weft.Mesh(vertices, faces int64 (f, 4))", lambda: timed(lambda: weft.Mesh(vertices, faces64))),
+        ("into Weft, borrowed: weft_mesh_new_borrowed from C", lambda: run_c(program, "borrowed", side, 1)),
+        ("into Weft, borrowed: the same, steady (21 calls)", lambda: run_c(program, "borrowed", side, 21)),
+        ("into Weft, borrowed: weft.Mesh(vertices, faces uint32, copy=False)", lambda: timed(lambda: weft.Mesh(vertices, faces32, copy=False))),
         ("out of Weft: views m.vertices, m.face_sizes, m.face_indices", lambda: timed(lambda: (mesh.vertices, mesh.face_sizes, mesh.face_indices))),
         ("out of Weft: m.face_array() ((f, 4) view)", lambda: timed(mesh.face_array)),
         ("out of Weft: copies np.array(m.vertices), np.array(m.face_indices)", lambda: timed(lambda: (np.array(mesh.vertices), np.array(mesh.face_indices)))),

@@ -107,6 +107,10 @@ namespace Weft
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern uint weft_mesh_new_ex(double[] positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, uint[] faceIndices, UIntPtr indexCount, uint flags, out WeftMeshHandle outMesh);
 
+        /// <summary>As <c>weft_mesh_new_ex</c>, but the mesh reads <c>positions</c> and <c>face_indices</c> where they are instead of copying them: a million vertices and faces cross in the time it takes to check them. The arrays are checked as <c>weft_mesh_new_ex</c> checks them, with the same errors. <c>face_sizes</c> may be freed after the call (Weft keeps a copy only when the faces differ in size).</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        internal static extern uint weft_mesh_new_borrowed(IntPtr positions, UIntPtr vertexCount, uint[] faceSizes, UIntPtr faceCount, IntPtr faceIndices, UIntPtr indexCount, uint flags, out WeftMeshHandle outMesh);
+
         /// <summary>Frees a mesh made by Weft. NULL is ignored.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern void weft_mesh_free(IntPtr mesh);
@@ -114,6 +118,11 @@ namespace Weft
         /// <summary>Returns the number of vertices, or 0 when <c>mesh</c> is NULL.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
         internal static extern UIntPtr weft_mesh_vertex_count(WeftMeshHandle mesh);
+
+        /// <summary>Returns whether the mesh reads arrays a caller lent it (<c>weft_mesh_new_borrowed</c>); false when <c>mesh</c> is NULL, and for every mesh an operation returns.</summary>
+        [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]
+        [return: MarshalAs(UnmanagedType.U1)]
+        internal static extern bool weft_mesh_is_borrowed(WeftMeshHandle mesh);
 
         /// <summary>Returns the number of faces, or 0 when <c>mesh</c> is NULL.</summary>
         [DllImport(Library, CallingConvention = CallingConvention.Cdecl)]

@@ -136,3 +136,23 @@ def view(pointer, count, ctype, dtype, owner, shape=None):
         array = np.frombuffer(buffer, dtype=dtype)
     array.flags.writeable = False
     return array.reshape(shape) if shape is not None else array
+
+
+def lent_array(value, name, dtype, ndim, width=None):
+    """`value` itself, checked to be an array a mesh can read in place: a
+    C-contiguous numpy array of `dtype` with `ndim` dimensions (the last of
+    `width` when given). ValueError otherwise, as numpy's ``copy=False``."""
+    wanted = f"a C-contiguous {np.dtype(dtype).name} numpy array of shape {_shape_text(ndim, width)}"
+    if not isinstance(value, np.ndarray):
+        raise ValueError(f"copy=False needs {name} as {wanted}, not {type(value).__name__}; a copy would be needed")
+    if value.dtype != dtype or value.ndim != ndim or (width is not None and value.shape[-1] != width):
+        raise ValueError(f"copy=False needs {name} as {wanted}, not {value.dtype} of shape {value.shape}; a copy would be needed")
+    if not value.flags.c_contiguous or not value.flags.aligned:
+        raise ValueError(f"copy=False needs {name} as {wanted}; this one is strided or unaligned, and a copy would be needed")
+    return value
+
+
+def _shape_text(ndim, width):
+    if ndim == 1:
+        return "(k,)"
+    return f"(n, {width})" if width is not None else "(f, k)"

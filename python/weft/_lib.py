@@ -192,6 +192,8 @@ _SIGNATURES = {
     "weft_last_error_message": (c_char_p, []),
     "weft_mesh_new": (S, [P, Z, P, Z, P, Z, OUT]),
     "weft_mesh_new_ex": (S, [P, Z, P, Z, P, Z, U, OUT]),
+    "weft_mesh_new_borrowed": (S, [P, Z, P, Z, P, Z, U, OUT]),
+    "weft_mesh_is_borrowed": (B, [P]),
     "weft_mesh_free": (None, [P]),
     "weft_mesh_vertex_count": (Z, [P]),
     "weft_mesh_face_count": (Z, [P]),

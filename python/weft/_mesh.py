@@ -46,19 +46,43 @@ class Mesh:
         >>> len(weft.catmull_clark(m, levels=1).vertices)
         16
 
+    With ``copy=False`` the mesh reads the caller's arrays where they are
+    (the C ABI's ``weft_mesh_new_borrowed``): a million vertices and faces
+    cross in the few milliseconds their checks take, with no copy.
+    ``vertices`` must then be a C-contiguous float64 (n, 3) numpy array and
+    ``faces`` a C-contiguous uint32 (f, k) array, else :class:`ValueError`
+    (as numpy's ``copy=False``). The mesh borrows both: they are made
+    read-only while it lives (their writeable flag comes back when it is
+    freed), and must not be changed through any other view::
+
+        >>> vertices = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
+        >>> m = weft.Mesh(vertices, np.array([[0, 1, 2, 3]], dtype=np.uint32), copy=False)
+        >>> np.shares_memory(m.vertices, vertices), vertices.flags.writeable
+        (True, False)
+        >>> del m
+        >>> vertices.flags.writeable
+        True
+
     Meshes pickle, and ``copy.copy`` / ``copy.deepcopy`` give an equal mesh
     with buffers of its own; ``==`` compares vertices and faces bit for bit.
     """
 
     __slots__ = ("_handle", "_finalizer", "__weakref__")
 
-    def __init__(self, vertices, faces, allow_repeated_vertices=False):
+    def __init__(self, vertices, faces, allow_repeated_vertices=False, copy=True):
+        _check_copy(copy)
+        if not copy:
+            positions = _arrays.lent_array(vertices, "vertices", np.float64, 2, 3)
+            faces = _arrays.lent_array(faces, "faces", np.uint32, 2)
+            sizes = np.full(faces.shape[0], faces.shape[1], dtype=np.uint32)
+            self._adopt(*_borrowed_handle(positions, sizes, faces, allow_repeated_vertices))
+            return
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes, indices = _arrays.faces_arrays(faces)
         self._adopt(_new_handle(positions, sizes, indices, allow_repeated_vertices))
 
     @classmethod
-    def from_arrays(cls, vertices, face_sizes, face_indices, allow_repeated_vertices=False):
+    def from_arrays(cls, vertices, face_sizes, face_indices, allow_repeated_vertices=False, copy=True):
         """A mesh from flat buffers, as the C ABI takes them: ``face_sizes``
         holds the corner count of each face and ``face_indices`` their
         concatenation (integers of any dtype)::
@@ -67,8 +91,21 @@ class Mesh:
             >>> weft.Mesh.from_arrays(vertices, [3, 4], [0, 1, 2, 0, 2, 3, 4]).faces
             [[0, 1, 2], [0, 2, 3, 4]]
 
-        ``allow_repeated_vertices`` as for :class:`Mesh`.
+        ``allow_repeated_vertices`` as for :class:`Mesh`. With
+        ``copy=False`` the mesh borrows ``vertices`` and ``face_indices``
+        (a C-contiguous float64 (n, 3) and a one-dimensional uint32 array)
+        as :class:`Mesh` does; ``face_sizes`` is read once.
         """
+        _check_copy(copy)
+        if not copy:
+            positions = _arrays.lent_array(vertices, "vertices", np.float64, 2, 3)
+            indices = _arrays.lent_array(face_indices, "face_indices", np.uint32, 1)
+            sizes = _arrays.index_array(face_sizes, "face_sizes")
+            if sizes.ndim != 1:
+                raise ValueError(f"face_sizes must be one-dimensional, not of shape {sizes.shape}")
+            mesh = cls.__new__(cls)
+            mesh._adopt(*_borrowed_handle(positions, sizes, indices, allow_repeated_vertices))
+            return mesh
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes = _arrays.index_array(face_sizes, "face_sizes")
         indices = _arrays.index_array(face_indices, "face_indices")
@@ -85,9 +122,17 @@ class Mesh:
         mesh._adopt(handle)
         return mesh
 
-    def _adopt(self, handle):
+    def _adopt(self, handle, lent=()):
         self._handle = handle
-        self._finalizer = weakref.finalize(self, lib.weft_mesh_free, handle)
+        if lent:
+            self._finalizer = weakref.finalize(self, _free_borrowed, handle, lent)
+        else:
+            self._finalizer = weakref.finalize(self, lib.weft_mesh_free, handle)
+
+    @property
+    def is_borrowed(self):
+        """Whether the mesh reads arrays it was lent (``copy=False``)."""
+        return bool(lib.weft_mesh_is_borrowed(self._handle))
 
     @property
     def handle(self):
@@ -192,9 +237,56 @@ class Mesh:
         return f"weft.Mesh({self.vertex_count} vertices, {self.face_count} faces)"
 
 
-def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
+def _check_copy(copy):
+    if not isinstance(copy, bool):
+        raise TypeError(f"copy must be True or False, not {copy!r}")
+
+
+# Arrays lent to meshes, by id: [array, meshes borrowing it, writeable before].
+_lent = {}
+
+
+def _borrowed_handle(positions, sizes, indices, allow_repeated_vertices):
+    """A handle reading `positions` and `indices` in place, and the arrays
+    it borrows, made read-only until the last mesh borrowing them is freed."""
+    _check_repeats_flag(allow_repeated_vertices)
+    handle = ctypes.c_void_p()
+    lib.weft_mesh_new_borrowed(
+        _arrays.address(positions),
+        positions.shape[0],
+        _arrays.address(sizes),
+        sizes.size,
+        _arrays.address(indices),
+        indices.size,
+        1 if allow_repeated_vertices else 0,  # WEFT_MESH_ALLOW_REPEATED_VERTICES
+        ctypes.byref(handle),
+    )
+    lent = (positions, indices)
+    for array in lent:
+        entry = _lent.setdefault(id(array), [array, 0, array.flags.writeable])
+        entry[1] += 1
+        array.flags.writeable = False
+    return handle.value, lent
+
+
+def _free_borrowed(handle, lent):
+    lib.weft_mesh_free(handle)
+    for array in lent:
+        entry = _lent[id(array)]
+        entry[1] -= 1
+        if entry[1] == 0:
+            del _lent[id(array)]
+            if entry[2]:
+                array.flags.writeable = True
+
+
+def _check_repeats_flag(allow_repeated_vertices):
     if not isinstance(allow_repeated_vertices, bool):
         raise TypeError(f"allow_repeated_vertices must be True or False, not {allow_repeated_vertices!r}")
+
+
+def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
+    _check_repeats_flag(allow_repeated_vertices)
     handle = ctypes.c_void_p()
     buffers = (
         _arrays.address(positions),

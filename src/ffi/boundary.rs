@@ -260,12 +260,18 @@ pub(crate) fn out_param<T>(pointer: *mut T, name: &str) -> Result<*mut T, Failur
 }
 
 /// Checks a caller buffer's pointer and length before it is viewed as a slice.
-fn check_buffer<T>(is_null: bool, len: usize, name: &str) -> Result<(), Failure> {
-    if is_null {
+fn check_buffer<T>(pointer: *const T, len: usize, name: &str) -> Result<(), Failure> {
+    if pointer.is_null() {
         return Err(Failure::new(
             WeftStatus::NullPointer,
             format!("{name} is NULL but its length is {len}"),
         ));
+    }
+    if !pointer.is_aligned() {
+        return Err(Failure::invalid_argument(format!(
+            "{name} at {pointer:p} is not aligned to {} bytes, as its element type requires",
+            std::mem::align_of::<T>()
+        )));
     }
     if len
         .checked_mul(std::mem::size_of::<T>())
@@ -291,7 +297,7 @@ pub(crate) unsafe fn input_slice<'a, T>(
     if len == 0 {
         return Ok(&[]);
     }
-    check_buffer::<T>(pointer.is_null(), len, name)?;
+    check_buffer(pointer, len, name)?;
     // SAFETY: `pointer` is not NULL, holds `len` readable elements for `'a`
     // (the caller's promise) and `len` elements fit in `isize::MAX` bytes.
     Ok(unsafe { std::slice::from_raw_parts(pointer, len) })
@@ -309,7 +315,7 @@ pub(crate) unsafe fn output_slice<'a, T>(
     if len == 0 {
         return Ok(&mut []);
     }
-    check_buffer::<T>(pointer.is_null(), len, name)?;
+    check_buffer(pointer.cast_const(), len, name)?;
     // SAFETY: `pointer` is not NULL, holds `len` writable elements for `'a`
     // (the caller's promise) and `len` elements fit in `isize::MAX` bytes.
     Ok(unsafe { std::slice::from_raw_parts_mut(pointer, len) })

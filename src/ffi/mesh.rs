@@ -193,31 +193,116 @@ pub unsafe extern "C" fn weft_mesh_new_ex(
     // section above requires; each is checked for NULL before it is used.
     unsafe {
         make_mesh(out_mesh, || {
-            let unknown = flags & !WEFT_MESH_ALLOW_REPEATED_VERTICES;
-            if unknown != 0 {
-                return Err(Failure::invalid_argument(format!(
-                    "flags has unknown bits {unknown:#x}; the known flag is WEFT_MESH_ALLOW_REPEATED_VERTICES (1)"
-                )));
-            }
-            let options = MeshOptions {
-                allow_repeated_vertices: flags & WEFT_MESH_ALLOW_REPEATED_VERTICES != 0,
-            };
-            // Every count is checked before any buffer is viewed: a slice longer
-            // than the caller's buffer is undefined behaviour even if never read.
-            check_element_counts(vertex_count, face_count, index_count)?;
-            let coordinate_count = vertex_count.checked_mul(3).ok_or_else(|| {
-                Failure::new(
-                    WeftStatus::InputTooLarge,
-                    format!("vertex_count {vertex_count} is larger than memory can hold"),
-                )
-            })?;
-            let positions = input_slice(positions, coordinate_count, "positions")?;
-            let face_sizes = input_slice(face_sizes, face_count, "face_sizes")?;
-            let face_indices = input_slice(face_indices, index_count, "face_indices")?;
-            let mesh = Mesh::from_flat_with(positions, face_sizes, face_indices, options)?;
-            Ok(mesh)
+            let (options, (positions, face_sizes, face_indices)) = mesh_buffers(
+                flags,
+                (positions, vertex_count),
+                (face_sizes, face_count),
+                (face_indices, index_count),
+            )?;
+            let coordinates: &[f64] = bytemuck::cast_slice(positions);
+            Ok(Mesh::from_flat_with(
+                coordinates,
+                face_sizes,
+                face_indices,
+                options,
+            )?)
         })
     }
+}
+
+/// As `weft_mesh_new_ex`, but the mesh reads `positions` and `face_indices`
+/// where they are instead of copying them: a million vertices and faces
+/// cross in the time it takes to check them. The arrays are checked as
+/// `weft_mesh_new_ex` checks them, with the same errors. `face_sizes` may be
+/// freed after the call (Weft keeps a copy only when the faces differ in
+/// size).
+///
+/// The caller lends the two arrays: they must stay valid, and must not
+/// change, until `weft_mesh_free(*out_mesh)`. Weft never writes to them.
+/// Every mesh an operation returns, including a copy, has buffers of its
+/// own, so only this one mesh holds the caller's arrays. `positions` must
+/// be aligned for doubles and `face_indices` for uint32_t (any array of
+/// those types is).
+///
+/// # Safety
+/// As `weft_mesh_new`, and `positions` and `face_indices` stay valid and
+/// unchanged until the mesh is freed.
+#[no_mangle]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn weft_mesh_new_borrowed(
+    positions: *const f64,
+    vertex_count: usize,
+    face_sizes: *const u32,
+    face_count: usize,
+    face_indices: *const u32,
+    index_count: usize,
+    flags: u32,
+    out_mesh: *mut *mut WeftMesh,
+) -> WeftStatus {
+    // SAFETY: as `weft_mesh_new_ex`; the lent arrays outlive the mesh, as
+    // the caller promises, which is what their `'static` stands for.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let (options, (positions, face_sizes, face_indices)) = mesh_buffers(
+                flags,
+                (positions, vertex_count),
+                (face_sizes, face_count),
+                (face_indices, index_count),
+            )?;
+            Ok(Mesh::borrowing(
+                positions,
+                face_sizes,
+                face_indices,
+                options,
+            )?)
+        })
+    }
+}
+
+/// A mesh's positions, face sizes and face indices, as a caller passed them.
+type MeshBuffers<'a> = (&'a [glam::DVec3], &'a [u32], &'a [u32]);
+
+/// The options of `flags` and the three buffers of a mesh to be made, each
+/// count checked before its buffer is viewed (a slice longer than the
+/// caller's buffer is undefined behaviour even if never read).
+///
+/// # Safety
+/// Each non-NULL buffer holds the stated number of elements for `'a`.
+unsafe fn mesh_buffers<'a>(
+    flags: u32,
+    (positions, vertex_count): (*const f64, usize),
+    (face_sizes, face_count): (*const u32, usize),
+    (face_indices, index_count): (*const u32, usize),
+) -> Result<(MeshOptions, MeshBuffers<'a>), Failure> {
+    let unknown = flags & !WEFT_MESH_ALLOW_REPEATED_VERTICES;
+    if unknown != 0 {
+        return Err(Failure::invalid_argument(format!(
+            "flags has unknown bits {unknown:#x}; the known flag is WEFT_MESH_ALLOW_REPEATED_VERTICES (1)"
+        )));
+    }
+    let options = MeshOptions {
+        allow_repeated_vertices: flags & WEFT_MESH_ALLOW_REPEATED_VERTICES != 0,
+    };
+    check_element_counts(vertex_count, face_count, index_count)?;
+    let coordinate_count = vertex_count.checked_mul(3).ok_or_else(|| {
+        Failure::new(
+            WeftStatus::InputTooLarge,
+            format!("vertex_count {vertex_count} is larger than memory can hold"),
+        )
+    })?;
+    // SAFETY: each buffer holds its count of elements for 'a, as the caller promises.
+    let (positions, face_sizes, face_indices) = unsafe {
+        (
+            input_slice(positions, coordinate_count, "positions")?,
+            input_slice(face_sizes, face_count, "face_sizes")?,
+            input_slice(face_indices, index_count, "face_indices")?,
+        )
+    };
+    // Three doubles are a DVec3 (same alignment, no padding): no copy.
+    Ok((
+        options,
+        (bytemuck::cast_slice(positions), face_sizes, face_indices),
+    ))
 }
 
 /// Frees a mesh made by Weft. NULL is ignored.
@@ -246,6 +331,19 @@ pub unsafe extern "C" fn weft_mesh_vertex_count(mesh: *const WeftMesh) -> usize 
     // SAFETY: `mesh` is as the `# Safety` section above requires;
     // it is checked for NULL before it is used.
     unsafe { mesh.as_ref().map_or(0, |m| m.mesh.vertex_count()) }
+}
+
+/// Returns whether the mesh reads arrays a caller lent it
+/// (`weft_mesh_new_borrowed`); false when `mesh` is NULL, and for every
+/// mesh an operation returns.
+///
+/// # Safety
+/// `mesh` is NULL or a live handle.
+#[no_mangle]
+pub unsafe extern "C" fn weft_mesh_is_borrowed(mesh: *const WeftMesh) -> bool {
+    // SAFETY: `mesh` is as the `# Safety` section above requires;
+    // it is checked for NULL before it is used.
+    unsafe { mesh.as_ref().is_some_and(|m| m.mesh.is_borrowed()) }
 }
 
 /// Returns the number of faces, or 0 when `mesh` is NULL.

@@ -9,6 +9,7 @@
 
 pub(crate) mod adjacency;
 pub mod analysis;
+mod buffer;
 pub(crate) mod linalg;
 pub mod shapes;
 pub mod topology;
@@ -19,6 +20,7 @@ use std::sync::OnceLock;
 use glam::DVec3;
 use rayon::prelude::*;
 
+use self::buffer::Buffer;
 use crate::buffers::advised_copy;
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
 
@@ -40,8 +42,8 @@ pub struct MeshOptions {
 /// A validated polygon mesh.
 #[derive(Debug, Clone, Default)]
 pub struct Mesh {
-    positions: Vec<DVec3>,
-    face_indices: Vec<u32>,
+    positions: Buffer<DVec3>,
+    face_indices: Buffer<u32>,
     faces: FaceLayout,
 }
 
@@ -77,6 +79,14 @@ impl FaceLayout {
                 offsets: OnceLock::from(offsets(&sizes)),
                 sizes: OnceLock::from(sizes),
             },
+        }
+    }
+
+    /// The layout of sizes a host lends: none kept when uniform, else copied.
+    fn of_lent_sizes(sizes: &[u32]) -> FaceLayout {
+        match uniform_size(sizes) {
+            Some(size) => FaceLayout::uniform(sizes.len(), size),
+            None => FaceLayout::of_sizes(advised_copy(sizes)),
         }
     }
 
@@ -146,8 +156,8 @@ impl PartialEq for FaceLayout {
 
 impl PartialEq for Mesh {
     fn eq(&self, other: &Mesh) -> bool {
-        self.positions == other.positions
-            && self.face_indices == other.face_indices
+        *self.positions == *other.positions
+            && *self.face_indices == *other.face_indices
             && self.faces == other.faces
     }
 }
@@ -234,6 +244,31 @@ impl Mesh {
         )
     }
 
+    /// A mesh that reads a host's arrays in place, checked as
+    /// [`Mesh::new_with`] checks them; the sizes are copied only when they
+    /// differ. Whatever writes to the mesh, or clones it, copies first.
+    /// For the C ABI, whose caller promises that the arrays outlive the mesh
+    /// unchanged (the `'static`).
+    ///
+    /// # Errors
+    /// As [`Mesh::new`].
+    pub(crate) fn borrowing(
+        positions: &'static [DVec3],
+        face_sizes: &[u32],
+        face_indices: &'static [u32],
+        options: MeshOptions,
+    ) -> Result<Mesh, MeshError> {
+        check_counts(positions.len(), face_sizes, face_indices.len())?;
+        check_positions(positions)?;
+        let mesh = Mesh {
+            positions: Buffer::Lent(positions),
+            face_indices: Buffer::Lent(face_indices),
+            faces: FaceLayout::of_lent_sizes(face_sizes),
+        };
+        mesh.check_faces(options.allow_repeated_vertices)?;
+        Ok(mesh)
+    }
+
     /// Builds a mesh from a list of polygons, each a list of vertex indices.
     ///
     /// # Errors
@@ -285,8 +320,8 @@ impl Mesh {
     /// The parts with each face's offset into `face_indices`, unchecked.
     fn with_offsets(positions: Vec<DVec3>, face_sizes: Vec<u32>, face_indices: Vec<u32>) -> Mesh {
         Mesh {
-            positions,
-            face_indices,
+            positions: positions.into(),
+            face_indices: face_indices.into(),
             faces: FaceLayout::of_sizes(face_sizes),
         }
     }
@@ -300,8 +335,8 @@ impl Mesh {
     ) -> Result<Mesh, crate::Error> {
         let face_count = face_indices.len() / size as usize;
         let mesh = Mesh {
-            positions,
-            face_indices,
+            positions: positions.into(),
+            face_indices: face_indices.into(),
             faces: FaceLayout::uniform(face_count, size),
         };
         debug_assert_eq!(mesh.face_offsets(), offsets(mesh.face_sizes()));
@@ -331,6 +366,11 @@ impl Mesh {
     #[inline]
     pub fn positions(&self) -> &[DVec3] {
         &self.positions
+    }
+
+    /// Whether the mesh reads a host's arrays in place (`weft_mesh_new_borrowed`).
+    pub fn is_borrowed(&self) -> bool {
+        self.positions.is_lent() || self.face_indices.is_lent()
     }
 
     /// The number of corners of each face.
@@ -416,19 +456,23 @@ impl Mesh {
         }
         check_positions(&positions)?;
         Ok(Mesh {
-            positions,
+            positions: positions.into(),
             ..self.clone()
         })
     }
 
     /// Mutable positions: faces stay as they are. The caller keeps them finite.
     pub fn positions_mut(&mut self) -> &mut [DVec3] {
-        &mut self.positions
+        self.positions.to_mut()
     }
 
     /// Takes the mesh apart into positions, face sizes and face indices.
     pub fn into_parts(self) -> (Vec<DVec3>, Vec<u32>, Vec<u32>) {
-        (self.positions, self.faces.into_sizes(), self.face_indices)
+        (
+            self.positions.into_vec(),
+            self.faces.into_sizes(),
+            self.face_indices.into_vec(),
+        )
     }
 
     /// The axis-aligned bounding box `(min, max)`, or `None` without vertices.
@@ -448,8 +492,22 @@ impl Mesh {
     fn check_faces(&self, allow_repeats: bool) -> Result<(), MeshError> {
         let vertex_count = self.positions.len();
         let face_count = self.face_count();
-        // The first face of `faces` that fails, read in order.
+        // The first face of `faces` that fails, read in order; triangles and
+        // quads first in one pass without early exit, which vectorises.
         let first_failing = |faces: std::ops::Range<usize>| {
+            let corners = |size: usize| &self.face_indices[faces.start * size..faces.end * size];
+            let all_pass = match self.faces.uniform {
+                Some(3) => bytemuck::cast_slice::<u32, [u32; 3]>(corners(3))
+                    .iter()
+                    .fold(true, |all, t| all & quick_face_check(t, vertex_count)),
+                Some(4) => bytemuck::cast_slice::<u32, [u32; 4]>(corners(4))
+                    .iter()
+                    .fold(true, |all, q| all & quick_face_check(q, vertex_count)),
+                _ => false,
+            };
+            if all_pass {
+                return None;
+            }
             for face in faces {
                 let corners = self.face(face);
                 if !quick_face_check(corners, vertex_count)

@@ -151,6 +151,67 @@ static void test_repeated_vertices(void) {
   weft_mesh_free(mesh);
 }
 
+/* A mesh that reads the caller's arrays in place: the same mesh and results
+ * as a copied one, the same errors, the caller's arrays never written, and
+ * every mesh made from it, the cage returned at level 0 too, with buffers of
+ * its own. */
+static void test_borrowed_mesh(void) {
+  double positions[24];
+  uint32_t indices[24];
+  static const uint32_t mixed_sizes[] = {3, 4}, mixed[] = {0, 1, 3, 1, 2, 6, 3}, tri[] = {3};
+  static const uint32_t out_of_range[] = {0, 1, 9};
+  WeftMesh *borrowed = NULL, *copied = unit_cube(), *clone = NULL, *smooth = NULL, *expected = NULL;
+  memcpy(positions, cube_positions, sizeof positions);
+  memcpy(indices, cube_indices, sizeof indices);
+  CHECK_STATUS(weft_mesh_new_borrowed(positions, 8, cube_sizes, 6, indices, 24, 0, &borrowed), WEFT_STATUS_OK);
+  CHECK(weft_mesh_is_borrowed(borrowed) && !weft_mesh_is_borrowed(copied) && !weft_mesh_is_borrowed(NULL));
+  CHECK(weft_mesh_positions(borrowed) == positions && weft_mesh_face_indices(borrowed) == indices);
+  CHECK(memcmp(weft_mesh_face_sizes(borrowed), cube_sizes, sizeof cube_sizes) == 0);
+  CHECK_STATUS(weft_catmull_clark(borrowed, 2, WEFT_NAKED_EDGES_SMOOTH, &smooth), WEFT_STATUS_OK);
+  CHECK_STATUS(weft_catmull_clark(copied, 2, WEFT_NAKED_EDGES_SMOOTH, &expected), WEFT_STATUS_OK);
+  CHECK(weft_mesh_vertex_count(smooth) == weft_mesh_vertex_count(expected) && !weft_mesh_is_borrowed(smooth));
+  CHECK(memcmp(weft_mesh_positions(smooth), weft_mesh_positions(expected),
+               3 * sizeof(double) * weft_mesh_vertex_count(expected)) == 0);
+  /* Level 0 gives the cage back, as a mesh of its own. */
+  CHECK_STATUS(weft_catmull_clark(borrowed, 0, WEFT_NAKED_EDGES_SMOOTH, &clone), WEFT_STATUS_OK);
+  CHECK(!weft_mesh_is_borrowed(clone) && weft_mesh_positions(clone) != positions);
+  CHECK(memcmp(positions, cube_positions, sizeof positions) == 0 && memcmp(indices, cube_indices, sizeof indices) == 0);
+  weft_mesh_free(borrowed);
+  /* The clone outlives the borrowed mesh and the caller's arrays. */
+  memset(positions, 0, sizeof positions);
+  CHECK(weft_mesh_positions(clone)[3] == 1.0);
+  weft_mesh_free(clone);
+  weft_mesh_free(smooth);
+  weft_mesh_free(expected);
+  weft_mesh_free(copied);
+
+  /* Mixed sizes: the sizes are copied and may be freed after the call. */
+  {
+    uint32_t sizes[2] = {3, 4};
+    CHECK_STATUS(weft_mesh_new_borrowed(cube_positions, 8, sizes, 2, mixed, 7, 0, &borrowed), WEFT_STATUS_OK);
+    sizes[0] = sizes[1] = 0;
+    CHECK(memcmp(weft_mesh_face_sizes(borrowed), mixed_sizes, sizeof mixed_sizes) == 0);
+    CHECK(weft_mesh_face_indices(borrowed) == mixed);
+    weft_mesh_free(borrowed);
+  }
+
+  borrowed = NULL;
+  CHECK_FAILS_WITH(weft_mesh_new_borrowed(cube_positions, 4, tri, 1, out_of_range, 3, 0, &borrowed),
+                   WEFT_STATUS_INDEX_OUT_OF_RANGE, "face 0, corner 2: vertex index 9 is out of range");
+  CHECK_FAILS_WITH(weft_mesh_new_borrowed(cube_positions, 8, cube_sizes, 6, cube_indices, 23, 0, &borrowed),
+                   WEFT_STATUS_COUNT_MISMATCH, "add up to 24 indices but 23");
+  CHECK_FAILS_WITH(weft_mesh_new_borrowed(cube_positions, 8, cube_sizes, 6, cube_indices, 24, 2, &borrowed),
+                   WEFT_STATUS_INVALID_ARGUMENT, "unknown bits 0x2");
+  CHECK_FAILS_WITH(weft_mesh_new_borrowed(NULL, 8, cube_sizes, 6, cube_indices, 24, 0, &borrowed),
+                   WEFT_STATUS_NULL_POINTER, "positions is NULL");
+  /* A pointer that is not aligned for doubles is refused, not read. */
+  CHECK_FAILS_WITH(weft_mesh_new_borrowed((const double *)((const char *)positions + 1), 2, tri, 1, mixed, 3, 0,
+                                          &borrowed),
+                   WEFT_STATUS_INVALID_ARGUMENT, "positions at");
+  CHECK_MESSAGE("is not aligned to 8 bytes");
+  CHECK(borrowed == NULL);
+}
+
 static void test_version(void) {
   char expected[32];
   snprintf(expected, sizeof expected, "%d.%d.%d", WEFT_VERSION_MAJOR, WEFT_VERSION_MINOR, WEFT_VERSION_PATCH);
@@ -163,6 +224,7 @@ int main(void) {
   test_info();
   test_construction_errors();
   test_repeated_vertices();
+  test_borrowed_mesh();
   test_version();
   return check_summary("test_mesh");
 }

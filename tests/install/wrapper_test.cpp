@@ -82,6 +82,23 @@ static void test_mesh_and_views() {
   CHECK(repeating.face_count() == 2 && weft::catmull_clark(repeating, 1).vertex_count() == 16);
 }
 
+// A borrowed mesh reads the caller's vectors in place and subdivides as a copied one.
+static void test_borrowed_mesh() {
+  const weft::Mesh copied = cube();
+  const std::vector<double> positions = copied.positions().to_vector();
+  const std::vector<uint32_t> sizes = copied.face_sizes().to_vector(), indices = copied.face_indices().to_vector();
+  weft::Mesh borrowed = weft::Mesh::borrow(positions, sizes, indices);
+  CHECK(borrowed.is_borrowed() && !copied.is_borrowed());
+  CHECK(borrowed.positions().data() == positions.data() && borrowed.face_indices().data() == indices.data());
+  const weft::Mesh smooth = weft::catmull_clark(borrowed, 2), expected = weft::catmull_clark(copied, 2);
+  CHECK(!smooth.is_borrowed() && max_difference(smooth.positions(), expected.positions()) == 0.0);
+  weft::Mesh moved = std::move(borrowed);
+  CHECK(moved.is_borrowed() && !borrowed.is_borrowed());
+  const std::vector<uint32_t> out_of_range = {0, 1, 8};
+  expect_error(WEFT_STATUS_INDEX_OUT_OF_RANGE, [&] { weft::Mesh::borrow(positions, {3}, out_of_range); },
+               "a borrowed face naming vertex 8 of 8");
+}
+
 static void test_subdivision() {
   weft::Mesh cage = cube();
   weft::Mesh smooth = weft::catmull_clark(cage, 2);
@@ -269,6 +286,7 @@ static void test_analysis_and_making() {
 
 int main() {
   test_mesh_and_views();
+  test_borrowed_mesh();
   test_subdivision();
   test_refiner();
   test_mending();
