@@ -97,6 +97,11 @@ def timed(call):
     return time.perf_counter() - start
 
 
+def steady(call, count):
+    """The median time of `count` calls in a row, as the C program's steady rows."""
+    return statistics.median(timed(call) for _ in range(count))
+
+
 def compile_c(folder):
     root = Path(__file__).resolve().parent.parent
     library = Path(weft.__file__).with_name("libweft.so")
@@ -153,6 +158,7 @@ def crossing(program):
         ("into Weft, borrowed: weft_mesh_new_borrowed from C", lambda: run_c(program, "borrowed", side, 1)),
         ("into Weft, borrowed: the same, steady (21 calls)", lambda: run_c(program, "borrowed", side, 21)),
         ("into Weft, borrowed: weft.Mesh(vertices, faces uint32, copy=False)", lambda: timed(lambda: weft.Mesh(vertices, faces32, copy=False))),
+        ("into Weft, borrowed: the same, steady (median of 21 calls in a row)", lambda: steady(lambda: weft.Mesh(vertices, faces32, copy=False), 21)),
         ("out of Weft: views m.vertices, m.face_sizes, m.face_indices", lambda: timed(lambda: (mesh.vertices, mesh.face_sizes, mesh.face_indices))),
         ("out of Weft: m.face_array() ((f, 4) view)", lambda: timed(mesh.face_array)),
         ("out of Weft: copies np.array(m.vertices), np.array(m.face_indices)", lambda: timed(lambda: (np.array(mesh.vertices), np.array(mesh.face_indices)))),
