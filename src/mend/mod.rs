@@ -7,5 +7,6 @@
 pub mod cull;
 pub mod matching;
 pub mod orient;
+mod renumber;
 pub mod t_nodes;
 pub mod weld;
