@@ -170,13 +170,10 @@ mod tests {
     use super::*;
     use crate::mesh::shapes;
 
-    /// The renumbering one pass in order gives: (cluster of each vertex,
-    /// first vertices, sizes, indices, removed faces, positions, unused).
-    #[allow(clippy::type_complexity)]
-    fn in_order(
-        mesh: &Mesh,
-        roots: &[u32],
-    ) -> (
+    /// What a renumbering gives: the cluster of each vertex, the first
+    /// vertices, the sizes and indices, the faces removed, the positions and
+    /// the clusters unused.
+    type Renumbered = (
         Vec<u32>,
         Vec<u32>,
         Vec<u32>,
@@ -184,7 +181,10 @@ mod tests {
         usize,
         Vec<DVec3>,
         usize,
-    ) {
+    );
+
+    /// The renumbering one pass in order gives.
+    fn in_order(mesh: &Mesh, roots: &[u32]) -> Renumbered {
         let mut label = vec![u32::MAX; roots.len()];
         let mut first_vertex = Vec::new();
         let cluster_of: Vec<u32> = (0..roots.len())
@@ -235,18 +235,7 @@ mod tests {
         )
     }
 
-    fn renumbered(
-        mesh: &Mesh,
-        roots: &[u32],
-    ) -> (
-        Vec<u32>,
-        Vec<u32>,
-        Vec<u32>,
-        Vec<u32>,
-        usize,
-        Vec<DVec3>,
-        usize,
-    ) {
+    fn renumbered(mesh: &Mesh, roots: &[u32]) -> Renumbered {
         let mut cluster_of = roots.to_vec();
         let first_vertex = number_clusters(&mut cluster_of).unwrap();
         let (sizes, mut indices, removed) = faces_over_clusters(mesh, &cluster_of).unwrap();
