@@ -748,7 +748,7 @@ pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
             (Some(m), f) if f > 0 => m.face_materials[f - 1],
             _ => NO_MATERIAL,
         };
-        let mut corner = mesh.face_offsets()[faces.start] as usize;
+        let mut corner = mesh.face_start(faces.start);
         for f in faces {
             if let Some(m) = materials {
                 let material = m.face_materials[f];

@@ -341,7 +341,7 @@ fn render_with(
         let mut corners = Vec::new();
         let mut screen = Vec::new();
         for f in faces {
-            let first = mesh.face_offsets()[f] as usize;
+            let first = mesh.face_start(f);
             corners.clear();
             corners.extend(mesh.face_positions(f));
             let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();

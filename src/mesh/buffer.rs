@@ -135,6 +135,9 @@ mod tests {
             let mesh = borrowing(&host).unwrap();
             assert_eq!(mesh, shape);
             assert_eq!(mesh.face_offsets(), shape.face_offsets());
+            for f in 0..=shape.face_count() {
+                assert_eq!(mesh.face_start(f), shape.face_offsets()[f] as usize);
+            }
             assert_eq!(mesh.face_sizes(), shape.face_sizes());
             assert!(mesh.is_borrowed());
             if shape.vertex_count() > 0 {

@@ -10,6 +10,7 @@
 pub(crate) mod adjacency;
 pub mod analysis;
 mod buffer;
+pub(crate) mod corners;
 pub(crate) mod linalg;
 pub mod shapes;
 pub mod topology;
@@ -391,6 +392,16 @@ impl Mesh {
         self.faces.offsets()
     }
 
+    /// Where face `f`'s corners start in [`Mesh::face_indices`] (arithmetic
+    /// when the faces have one size: no offsets are written).
+    #[inline]
+    pub fn face_start(&self, f: usize) -> usize {
+        match self.faces.uniform {
+            Some(size) => f * size as usize,
+            None => self.faces.offsets()[f] as usize,
+        }
+    }
+
     /// The vertex indices of face `f`.
     ///
     /// # Panics
@@ -410,6 +421,12 @@ impl Mesh {
         self.face(f)
             .iter()
             .map(move |&v| self.positions[v as usize])
+    }
+
+    /// The number of corners every face has, when there are faces and they
+    /// all have the same number.
+    pub fn uniform_face_size(&self) -> Option<usize> {
+        self.faces.uniform.map(|size| size as usize)
     }
 
     /// Whether every face is a triangle (true for the empty mesh).

@@ -11,9 +11,10 @@
 
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, try_vec, zeroed, CHUNK};
+use crate::buffers::{fill_by_offsets, try_vec, CHUNK};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
+use crate::mesh::corners::{corner_next, CornerFaces};
 use crate::mesh::Mesh;
 
 /// Edges and adjacency of one mesh. Build it with [`Topology::new`]; it does
@@ -23,10 +24,8 @@ pub struct Topology {
     /// Unique edges (`[low, high]`, sorted), each corner's edge, the corners
     /// on each edge and at each vertex.
     adjacency: Adjacency,
-    /// For each corner, its face.
-    corner_faces: Vec<u32>,
-    /// For each corner, the next corner of its face.
-    corner_next: Vec<u32>,
+    /// Each corner's face and next corner.
+    corners: CornerFaces,
     face_vertices: Vec<u32>,
 }
 
@@ -46,24 +45,20 @@ impl Edges {
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub(crate) fn try_new(mesh: &Mesh) -> Result<Edges> {
         let indices = mesh.face_indices();
-        let sizes = mesh.face_sizes();
-        let adjacency = match sizes.first() {
+        let adjacency = match mesh.uniform_face_size() {
             // Faces of one size: the next corner is arithmetic.
-            Some(&size) if sizes.par_iter().all(|&s| s == size) => {
-                let size = size as usize;
-                Adjacency::build(
-                    mesh.vertex_count(),
-                    indices,
-                    |c| {
-                        if c % size == size - 1 {
-                            c + 1 - size
-                        } else {
-                            c + 1
-                        }
-                    },
-                    |c| c / size,
-                )?
-            }
+            Some(size) => Adjacency::build(
+                mesh.vertex_count(),
+                indices,
+                |c| {
+                    if c % size == size - 1 {
+                        c + 1 - size
+                    } else {
+                        c + 1
+                    }
+                },
+                |c| c / size,
+            )?,
             _ => {
                 let offsets = mesh.face_offsets();
                 let next = corner_next(offsets)?;
@@ -108,19 +103,6 @@ impl Edges {
         let first = edges.partition_point(|&e| e < pair);
         (edges.get(first) == Some(&pair)).then_some(first)
     }
-}
-
-/// For each corner, the next corner of its face, written in parallel.
-fn corner_next(offsets: &[u32]) -> Result<Vec<u32>> {
-    fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
-        let start = offsets[f];
-        for (k, slot) in next.iter_mut().enumerate() {
-            *slot = start + k as u32 + 1;
-        }
-        if let Some(last) = next.last_mut() {
-            *last = start;
-        }
-    })
 }
 
 /// What [`Topology::info`] counts.
@@ -173,39 +155,29 @@ impl Topology {
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub fn try_new(mesh: &Mesh) -> Result<Topology> {
         let indices = mesh.face_indices();
-        let offsets = mesh.face_offsets();
-        // Each face's corners in parallel (their next corners and faces,
-        // which the edge builder reads); then the edges on one thread beside
-        // the corners' vertices on the other.
-        let (corner_next, corner_faces) = rayon::join(
-            || corner_next(offsets),
-            || fill_by_offsets(offsets, "corner faces", |f, faces| faces.fill(f as u32)),
-        );
-        let (corner_next, corner_faces) = (corner_next?, corner_faces?);
+        // Each corner's face and next corner (arithmetic for faces of one
+        // size); then the edges on one thread beside the corners' vertices
+        // on the other.
+        let corners = CornerFaces::of_mesh(mesh)?;
         let (adjacency, face_vertices) = rayon::join(
             || {
                 Adjacency::build(
                     mesh.vertex_count(),
                     indices,
-                    |c| corner_next[c] as usize,
-                    |c| corner_faces[c] as usize,
+                    |c| corners.next(c),
+                    |c| corners.face(c),
                 )
             },
             || -> Result<Vec<u32>> {
-                let mut face_vertices = zeroed(indices.len(), "corner vertices")?;
-                face_vertices
-                    .par_chunks_mut(CHUNK)
-                    .zip(indices.par_chunks(CHUNK))
-                    .for_each(|(to, from)| to.copy_from_slice(from));
+                let mut face_vertices = try_vec(indices.len(), "corner vertices")?;
+                face_vertices.par_extend(indices.par_iter().copied().with_min_len(CHUNK));
                 Ok(face_vertices)
             },
         );
-        let face_vertices = face_vertices?;
         Ok(Topology {
             adjacency: adjacency?,
-            corner_faces,
-            corner_next,
-            face_vertices,
+            corners,
+            face_vertices: face_vertices?,
         })
     }
 
@@ -230,13 +202,13 @@ impl Topology {
     /// For each corner, its face.
     #[inline]
     pub fn corner_faces(&self) -> &[u32] {
-        &self.corner_faces
+        self.corners.faces()
     }
 
     /// For each corner, the next corner (counter-clockwise) of the same face.
     #[inline]
     pub fn corner_next(&self) -> &[u32] {
-        &self.corner_next
+        self.corners.next_corners()
     }
 
     /// The vertex at each corner (the mesh's face indices).
@@ -261,7 +233,7 @@ impl Topology {
     pub fn edge_faces(&self, e: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
         self.edge_corners(e)
             .iter()
-            .map(move |&c| self.corner_faces[c as usize])
+            .map(move |&c| self.corners.face(c as usize) as u32)
     }
 
     /// How many face corners use edge `e`: 1 naked, 2 manifold, more non-manifold.
@@ -355,7 +327,10 @@ impl Topology {
             let corners = self.edge_corners(e);
             match corners {
                 &[c1, c2] => {
-                    let (n1, n2) = (self.corner_next[c1 as usize], self.corner_next[c2 as usize]);
+                    let (n1, n2) = (
+                        self.corners.next(c1 as usize) as u32,
+                        self.corners.next(c2 as usize) as u32,
+                    );
                     if self.face_vertices[c1 as usize] == self.face_vertices[c2 as usize] {
                         fans.union(c1, c2);
                         fans.union(n1, n2);
@@ -390,18 +365,10 @@ impl Topology {
     /// across each manifold edge there (the edge's two faces' corners at
     /// the vertex), which are exactly the joins of that method's fans, so
     /// the count is the same without a union-find over all corners.
-    /// `face_offsets` are the mesh's.
-    fn non_manifold_vertex_count(&self, face_offsets: &[u32]) -> usize {
+    fn non_manifold_vertex_count(&self) -> usize {
         let vertex_count = self.adjacency.vertex_offsets.len() - 1;
         let corner_edges = &self.adjacency.corner_edges;
-        let previous = |c: u32| {
-            let f = self.corner_faces[c as usize] as usize;
-            if c == face_offsets[f] {
-                face_offsets[f + 1] - 1
-            } else {
-                c - 1
-            }
-        };
+        let previous = |c: u32| self.corners.previous(c as usize) as u32;
         (0..vertex_count)
             .into_par_iter()
             .with_min_len(CHUNK)
@@ -426,7 +393,7 @@ impl Topology {
                                     let at_v = if self.face_vertices[other as usize] as usize == v {
                                         other
                                     } else {
-                                        self.corner_next[other as usize]
+                                        self.corners.next(other as usize) as u32
                                     };
                                     if let Ok(j) = corners.binary_search(&at_v) {
                                         let (a, b) = (
@@ -458,9 +425,9 @@ impl Topology {
         let mut pieces = UnionFind::new(face_count);
         for e in 0..self.edge_count() {
             let corners = self.edge_corners(e);
-            let first = self.corner_faces[corners[0] as usize];
+            let first = self.corners.face(corners[0] as usize) as u32;
             for &c in &corners[1..] {
-                pieces.union(first, self.corner_faces[c as usize]);
+                pieces.union(first, self.corners.face(c as usize) as u32);
             }
         }
         let mut label = vec![u32::MAX; face_count];
@@ -487,8 +454,8 @@ impl Topology {
         for e in 0..self.edge_count() {
             if self.edge_face_count(e) != 2 {
                 // All faces on an edge are in one component: its first face's.
-                let face = self.corner_faces[self.edge_corners(e)[0] as usize];
-                closed[face_component[face as usize] as usize] = false;
+                let face = self.corners.face(self.edge_corners(e)[0] as usize);
+                closed[face_component[face] as usize] = false;
             }
         }
         closed
@@ -496,7 +463,7 @@ impl Topology {
 
     /// Number of faces.
     pub fn face_count(&self) -> usize {
-        self.corner_faces.last().map_or(0, |&f| f as usize + 1)
+        self.corners.face_count()
     }
 
     /// Gives every face a winding relative to the first face of its component,
@@ -525,16 +492,6 @@ impl Topology {
         let mut face_flip = vec![false; face_count];
         let mut disagreeing = Vec::new();
         let mut visited = vec![false; face_count];
-        // The faces' first corners: where the (ascending) corner faces step.
-        let corner_faces = &self.corner_faces;
-        let mut face_first_corner =
-            try_vec::<u32>(face_count, "first corners").unwrap_or_else(|error| panic!("{error}"));
-        face_first_corner.par_extend(
-            (0..face_count as u32)
-                .into_par_iter()
-                .with_min_len(CHUNK)
-                .map(|f| corner_faces.partition_point(|&g| g < f) as u32),
-        );
         let mut stack = Vec::new();
         for seed in 0..face_count {
             if visited[seed] {
@@ -543,13 +500,13 @@ impl Topology {
             visited[seed] = true;
             stack.push(seed as u32);
             while let Some(f) = stack.pop() {
-                let start = face_first_corner[f as usize];
+                let start = self.corners.first_corner(f as usize) as u32;
                 let mut c = start;
                 loop {
                     let e = self.adjacency.corner_edges[c as usize] as usize;
                     if let &[c1, c2] = self.edge_corners(e) {
                         let other = if c1 == c { c2 } else { c1 };
-                        let g = self.corner_faces[other as usize] as usize;
+                        let g = self.corners.face(other as usize);
                         // The same start vertex on both sides means both faces run the edge the same way.
                         let same_direction =
                             self.face_vertices[c as usize] == self.face_vertices[other as usize];
@@ -564,7 +521,7 @@ impl Topology {
                             }
                         }
                     }
-                    c = self.corner_next[c as usize];
+                    c = self.corners.next(c as usize) as u32;
                     if c == start {
                         break;
                     }
@@ -604,12 +561,7 @@ impl Topology {
                         )
                         .reduce(|| (0, 0, true), |a, b| (a.0 + b.0, a.1 + b.1, a.2 && b.2))
                 },
-                || {
-                    rayon::join(
-                        || self.orientation(),
-                        || self.non_manifold_vertex_count(mesh.face_offsets()),
-                    )
-                },
+                || rayon::join(|| self.orientation(), || self.non_manifold_vertex_count()),
             );
         MeshInfo {
             vertex_count: mesh.vertex_count(),
@@ -798,7 +750,7 @@ mod tests {
         ] {
             let topology = Topology::new(&mesh);
             assert_eq!(
-                topology.non_manifold_vertex_count(mesh.face_offsets()),
+                topology.non_manifold_vertex_count(),
                 topology.non_manifold_vertices().len()
             );
         }
