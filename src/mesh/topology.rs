@@ -156,8 +156,7 @@ impl Topology {
     pub fn try_new(mesh: &Mesh) -> Result<Topology> {
         let indices = mesh.face_indices();
         // Each corner's face and next corner (arithmetic for faces of one
-        // size); then the edges on one thread beside the corners' vertices
-        // on the other.
+        // size); then the edges beside the copy of the corners' vertices.
         let corners = CornerFaces::of_mesh(mesh)?;
         let (adjacency, face_vertices) = rayon::join(
             || {

@@ -34,8 +34,8 @@ pub struct Report {
 }
 
 pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
-    // The topology on one thread (its edge builder is sequential), the
-    // per-face and per-vertex counts on the other.
+    // The topology beside the per-face and per-vertex counts; each side
+    // splits its own work over the threads rayon has free.
     let (info, ((max_planarity_deviation, non_planar_faces), unused_vertices)) = rayon::join(
         || Topology::new(mesh).info(mesh),
         || {
