@@ -7,6 +7,5 @@
 pub mod cull;
 pub mod matching;
 pub mod orient;
-mod renumber;
 pub mod t_nodes;
 pub mod weld;

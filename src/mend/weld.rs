@@ -18,7 +18,6 @@ use rayon::prelude::*;
 
 use crate::buffers::try_vec;
 use crate::error::{Error, Result, MAX_ELEMENTS};
-use crate::mend::renumber::{faces_over_clusters, number_clusters, used_clusters};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{check_tolerance, Mesh};
 
@@ -137,17 +136,63 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
             .map(|v| clusters.root(v)),
     );
     drop(clusters);
-    let first_vertex = number_clusters(&mut cluster_of)?;
+    let mut first_vertex: Vec<u32> = Vec::new();
+    {
+        let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
+        label.resize(vertex_count, u32::MAX);
+        for (v, cluster) in cluster_of.iter_mut().enumerate() {
+            let root = *cluster as usize;
+            if label[root] == u32::MAX {
+                label[root] = first_vertex.len() as u32;
+                first_vertex.push(v as u32);
+            }
+            *cluster = label[root];
+        }
+    }
     let cluster_count = first_vertex.len();
-    let (face_sizes, mut face_indices, removed_face_count) =
-        faces_over_clusters(mesh, &cluster_of)?;
-    drop(cluster_of);
-    let (out_positions, unused_vertex_count) =
-        used_clusters(positions, &first_vertex, &mut face_indices)?;
+
+    // Faces over clusters, repeats dropped, collapsed faces removed.
+    let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the welded face sizes")?;
+    let mut face_indices = try_vec::<u32>(mesh.index_count(), "the welded face indices")?;
+    let mut seen_in_face = vec![u32::MAX; cluster_count];
+    let mut removed_face_count = 0;
+    for (f, face) in mesh.faces().enumerate() {
+        let start = face_indices.len();
+        for &v in face {
+            let c = cluster_of[v as usize];
+            if seen_in_face[c as usize] != f as u32 {
+                seen_in_face[c as usize] = f as u32;
+                face_indices.push(c);
+            }
+        }
+        let size = face_indices.len() - start;
+        if size < 3 {
+            face_indices.truncate(start);
+            removed_face_count += 1;
+        } else {
+            face_sizes.push(size as u32);
+        }
+    }
+
+    // Keep only the clusters some face uses, in order of their first vertex.
+    let mut new_index = vec![u32::MAX; cluster_count];
+    for &c in &face_indices {
+        new_index[c as usize] = 0;
+    }
+    let mut out_positions = try_vec::<DVec3>(cluster_count, "the welded positions")?;
+    for (c, slot) in new_index.iter_mut().enumerate() {
+        if *slot == 0 {
+            *slot = out_positions.len() as u32;
+            out_positions.push(positions[first_vertex[c] as usize]);
+        }
+    }
+    for c in &mut face_indices {
+        *c = new_index[*c as usize];
+    }
     let report = WeldReport {
         merged_vertex_count: vertex_count - cluster_count,
         removed_face_count,
-        unused_vertex_count,
+        unused_vertex_count: cluster_count - out_positions.len(),
     };
     Ok((
         Mesh::from_valid_parts(out_positions, face_sizes, face_indices),
