@@ -355,6 +355,11 @@ pub(crate) fn gather_levels(
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
     };
+    // Faces of one size are read by arithmetic here: their offsets go
+    // (as every refined level's, which are all of one size).
+    if faces.size != 0 {
+        faces.offsets = Vec::new();
+    }
     let (vertex_count, face_count, index_count) = check_counts(
         scheme,
         faces.vertex_count as u64,
@@ -391,7 +396,7 @@ pub(crate) fn gather_levels(
             let into = last_indices.take();
             return child_faces_into(scheme, &faces, &connectivity, false, into);
         }
-        let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
+        let next_faces = child_faces(scheme, &faces, &connectivity, false)?;
         each(Step::Level(gathers), false)?;
         // The vertices' edges are read by the next refinement, and by
         // Catmull-Clark's refined gathers.
