@@ -122,3 +122,28 @@ def test_what_the_library_refuses_leaves_the_arrays_writable():
         weft.Mesh(vertices, faces, copy=False)
     with pytest.raises(TypeError, match="copy must be True or False"):
         weft.Mesh(vertices, faces, copy=0)
+
+
+def test_meshes_borrowing_one_array_on_many_threads_give_it_back_writable():
+    import threading
+
+    vertices, faces = host_arrays()
+    errors = []
+
+    def borrow_and_free():
+        try:
+            for _ in range(50):
+                mesh = weft.Mesh(vertices, faces, copy=False)
+                assert not vertices.flags.writeable
+                del mesh
+        except Exception as error:  # reported below, on the test's thread
+            errors.append(error)
+
+    threads = [threading.Thread(target=borrow_and_free) for _ in range(4)]
+    for thread in threads:
+        thread.start()
+    for thread in threads:
+        thread.join()
+    gc.collect()
+    assert not errors
+    assert vertices.flags.writeable and faces.flags.writeable

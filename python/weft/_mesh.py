@@ -1,6 +1,7 @@
 """The Mesh class: a WeftMesh handle with numpy views on its buffers."""
 
 import ctypes
+import threading
 import weakref
 from collections import namedtuple
 
@@ -242,8 +243,10 @@ def _check_copy(copy):
         raise TypeError(f"copy must be True or False, not {copy!r}")
 
 
-# Arrays lent to meshes, by id: [array, meshes borrowing it, writeable before].
+# Arrays lent to meshes, by id: [array, meshes borrowing it, writeable before];
+# meshes are made and freed on any thread.
 _lent = {}
+_lent_lock = threading.Lock()
 
 
 def _borrowed_handle(positions, sizes, indices, allow_repeated_vertices):
@@ -262,22 +265,24 @@ def _borrowed_handle(positions, sizes, indices, allow_repeated_vertices):
         ctypes.byref(handle),
     )
     lent = (positions, indices)
-    for array in lent:
-        entry = _lent.setdefault(id(array), [array, 0, array.flags.writeable])
-        entry[1] += 1
-        array.flags.writeable = False
+    with _lent_lock:
+        for array in lent:
+            entry = _lent.setdefault(id(array), [array, 0, array.flags.writeable])
+            entry[1] += 1
+            array.flags.writeable = False
     return handle.value, lent
 
 
 def _free_borrowed(handle, lent):
     lib.weft_mesh_free(handle)
-    for array in lent:
-        entry = _lent[id(array)]
-        entry[1] -= 1
-        if entry[1] == 0:
-            del _lent[id(array)]
-            if entry[2]:
-                array.flags.writeable = True
+    with _lent_lock:
+        for array in lent:
+            entry = _lent[id(array)]
+            entry[1] -= 1
+            if entry[1] == 0:
+                del _lent[id(array)]
+                if entry[2]:
+                    array.flags.writeable = True
 
 
 def _check_repeats_flag(allow_repeated_vertices):
