@@ -252,25 +252,14 @@ _lent_lock = threading.Lock()
 def _borrowed_handle(positions, sizes, indices, allow_repeated_vertices):
     """A handle reading `positions` and `indices` in place, and the arrays
     it borrows, made read-only until the last mesh borrowing them is freed."""
-    _check_repeats_flag(allow_repeated_vertices)
-    handle = ctypes.c_void_p()
-    lib.weft_mesh_new_borrowed(
-        _arrays.address(positions),
-        positions.shape[0],
-        _arrays.address(sizes),
-        sizes.size,
-        _arrays.address(indices),
-        indices.size,
-        1 if allow_repeated_vertices else 0,  # WEFT_MESH_ALLOW_REPEATED_VERTICES
-        ctypes.byref(handle),
-    )
+    handle = _new_handle(positions, sizes, indices, allow_repeated_vertices, lib.weft_mesh_new_borrowed)
     lent = (positions, indices)
     with _lent_lock:
         for array in lent:
             entry = _lent.setdefault(id(array), [array, 0, array.flags.writeable])
             entry[1] += 1
             array.flags.writeable = False
-    return handle.value, lent
+    return handle, lent
 
 
 def _free_borrowed(handle, lent):
@@ -290,7 +279,10 @@ def _check_repeats_flag(allow_repeated_vertices):
         raise TypeError(f"allow_repeated_vertices must be True or False, not {allow_repeated_vertices!r}")
 
 
-def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
+def _new_handle(positions, sizes, indices, allow_repeated_vertices=False, make_ex=None):
+    """A WeftMesh * from the three arrays: by `make_ex` (a function taking
+    ``weft_mesh_new_ex``'s arguments) when given, else copied by
+    ``weft_mesh_new`` or, accepting repeated vertices, ``weft_mesh_new_ex``."""
     _check_repeats_flag(allow_repeated_vertices)
     handle = ctypes.c_void_p()
     buffers = (
@@ -301,10 +293,11 @@ def _new_handle(positions, sizes, indices, allow_repeated_vertices=False):
         _arrays.address(indices),
         indices.size,
     )
-    if allow_repeated_vertices:
-        lib.weft_mesh_new_ex(*buffers, 1, ctypes.byref(handle))  # WEFT_MESH_ALLOW_REPEATED_VERTICES
-    else:
+    flags = 1 if allow_repeated_vertices else 0  # WEFT_MESH_ALLOW_REPEATED_VERTICES
+    if make_ex is None and not flags:
         lib.weft_mesh_new(*buffers, ctypes.byref(handle))
+    else:
+        (make_ex or lib.weft_mesh_new_ex)(*buffers, flags, ctypes.byref(handle))
     return handle.value
 
 

@@ -192,21 +192,17 @@ pub unsafe extern "C" fn weft_mesh_new_ex(
     // SAFETY: `positions`, `face_sizes`, `face_indices` and `out_mesh` are as the `# Safety`
     // section above requires; each is checked for NULL before it is used.
     unsafe {
-        make_mesh(out_mesh, || {
-            let (options, (positions, face_sizes, face_indices)) = mesh_buffers(
-                flags,
-                (positions, vertex_count),
-                (face_sizes, face_count),
-                (face_indices, index_count),
-            )?;
-            let coordinates: &[f64] = bytemuck::cast_slice(positions);
-            Ok(Mesh::from_flat_with(
-                coordinates,
-                face_sizes,
-                face_indices,
-                options,
-            )?)
-        })
+        make_checked_mesh(
+            out_mesh,
+            flags,
+            (positions, vertex_count),
+            (face_sizes, face_count),
+            (face_indices, index_count),
+            |options, (positions, face_sizes, face_indices)| {
+                let coordinates: &[f64] = bytemuck::cast_slice(positions);
+                Mesh::from_flat_with(coordinates, face_sizes, face_indices, options)
+            },
+        )
     }
 }
 
@@ -242,32 +238,52 @@ pub unsafe extern "C" fn weft_mesh_new_borrowed(
     // SAFETY: as `weft_mesh_new_ex`; the lent arrays outlive the mesh, as
     // the caller promises, which is what their `'static` stands for.
     unsafe {
-        make_mesh(out_mesh, || {
-            let (options, (positions, face_sizes, face_indices)) = mesh_buffers(
-                flags,
-                (positions, vertex_count),
-                (face_sizes, face_count),
-                (face_indices, index_count),
-            )?;
-            Ok(Mesh::borrowing(
-                positions,
-                face_sizes,
-                face_indices,
-                options,
-            )?)
-        })
+        make_checked_mesh(
+            out_mesh,
+            flags,
+            (positions, vertex_count),
+            (face_sizes, face_count),
+            (face_indices, index_count),
+            |options, (positions, face_sizes, face_indices)| {
+                Mesh::borrowing(positions, face_sizes, face_indices, options)
+            },
+        )
     }
 }
 
 /// A mesh's positions, face sizes and face indices, as a caller passed them.
 type MeshBuffers<'a> = (&'a [glam::DVec3], &'a [u32], &'a [u32]);
 
-/// The options of `flags` and the three buffers of a mesh to be made, each
-/// count checked before its buffer is viewed (a slice longer than the
-/// caller's buffer is undefined behaviour even if never read).
+/// Writes to `out_mesh` the mesh `make` builds from the options of `flags`
+/// and the three buffers, each count checked before its buffer is viewed
+/// (a slice longer than the caller's buffer is undefined behaviour even if
+/// never read).
 ///
 /// # Safety
-/// Each non-NULL buffer holds the stated number of elements for `'a`.
+/// Each non-NULL buffer holds the stated number of elements for `'a`;
+/// `out_mesh` is NULL or writable.
+unsafe fn make_checked_mesh<'a>(
+    out_mesh: *mut *mut WeftMesh,
+    flags: u32,
+    positions: (*const f64, usize),
+    face_sizes: (*const u32, usize),
+    face_indices: (*const u32, usize),
+    make: impl FnOnce(MeshOptions, MeshBuffers<'a>) -> Result<Mesh, crate::MeshError>,
+) -> WeftStatus {
+    // SAFETY: the buffers and `out_mesh` are as the caller promises.
+    unsafe {
+        make_mesh(out_mesh, || {
+            let (options, buffers) = mesh_buffers(flags, positions, face_sizes, face_indices)?;
+            Ok(make(options, buffers)?)
+        })
+    }
+}
+
+/// The options of `flags` and the three buffers, checked as
+/// [`make_checked_mesh`] says.
+///
+/// # Safety
+/// As [`make_checked_mesh`].
 unsafe fn mesh_buffers<'a>(
     flags: u32,
     (positions, vertex_count): (*const f64, usize),
