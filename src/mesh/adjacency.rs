@@ -91,7 +91,22 @@ impl Adjacency {
         face_of: impl Fn(usize) -> usize + Sync,
     ) -> Result<Adjacency> {
         let split = Split::of(indices.len(), vertex_count);
-        Adjacency::build_split(vertex_count, indices, next, face_of, split)
+        Adjacency::build_split(vertex_count, indices, next, face_of, split, true)
+    }
+
+    /// As [`Adjacency::build`] without the vertices' corners (their lists
+    /// are left empty): for a pass that asks only about edges.
+    ///
+    /// # Errors
+    /// As [`Adjacency::build`].
+    pub(crate) fn build_edges(
+        vertex_count: usize,
+        indices: &[u32],
+        next: impl Fn(usize) -> usize + Sync,
+        face_of: impl Fn(usize) -> usize + Sync,
+    ) -> Result<Adjacency> {
+        let split = Split::of(indices.len(), vertex_count);
+        Adjacency::build_split(vertex_count, indices, next, face_of, split, false)
     }
 
     fn build_split(
@@ -100,6 +115,7 @@ impl Adjacency {
         next: impl Fn(usize) -> usize + Sync,
         face_of: impl Fn(usize) -> usize + Sync,
         split: Split,
+        with_vertices: bool,
     ) -> Result<Adjacency> {
         let corner_count = indices.len();
         // A corner's vertex and its edge's lower vertex.
@@ -120,7 +136,9 @@ impl Adjacency {
         // Each block counts its corners under their edge's lower vertex (the
         // edge buckets) and under their vertex, vertex v's count at v + 1.
         let mut edge_slots = per_block_counts(split.blocks, vertex_count, "edge buckets")?;
-        let mut vertex_slots = per_block_counts(split.blocks, vertex_count, "vertex corners")?;
+        let vertex_slots_count = if with_vertices { vertex_count } else { 0 };
+        let mut vertex_slots =
+            per_block_counts(split.blocks, vertex_slots_count, "vertex corners")?;
         blocks
             .par_iter()
             .zip(&mut edge_slots[..])
@@ -129,7 +147,9 @@ impl Adjacency {
                 for c in corners.clone() {
                     let (v, low) = vertex_and_low(c);
                     edge_counts[low as usize + 1] += 1;
-                    vertex_counts[v as usize + 1] += 1;
+                    if with_vertices {
+                        vertex_counts[v as usize + 1] += 1;
+                    }
                 }
             });
         rayon::join(
@@ -141,7 +161,10 @@ impl Adjacency {
         // earlier blocks': every vertex's corners ascend, and the last
         // block's slots end up at the offsets.
         let bucket = atomic(zeroed(corner_count, "edge corners")?);
-        let at_vertex = atomic(zeroed(corner_count, "vertex corners")?);
+        let at_vertex = atomic(zeroed(
+            if with_vertices { corner_count } else { 0 },
+            "vertex corners",
+        )?);
         blocks
             .par_iter()
             .zip(&mut edge_slots[..])
@@ -152,13 +175,19 @@ impl Adjacency {
                     let slot = &mut edge_slots[low as usize + 1];
                     bucket[*slot as usize].store(c as u32, Relaxed);
                     *slot += 1;
-                    let slot = &mut vertex_slots[v as usize + 1];
-                    at_vertex[*slot as usize].store(c as u32, Relaxed);
-                    *slot += 1;
+                    if with_vertices {
+                        let slot = &mut vertex_slots[v as usize + 1];
+                        at_vertex[*slot as usize].store(c as u32, Relaxed);
+                        *slot += 1;
+                    }
                 }
             });
         let bucket_offsets = last(edge_slots);
-        let vertex_offsets = last(vertex_slots);
+        let vertex_offsets = if with_vertices {
+            last(vertex_slots)
+        } else {
+            Vec::new()
+        };
         let mut edge_corners = plain(bucket);
         let vertex_corners = plain(at_vertex);
 
@@ -662,9 +691,25 @@ mod tests {
                     &next,
                     &face_of,
                     split,
+                    true,
                 )
                 .unwrap();
                 same(&a, &format!("{split:?}"));
+                // Edges only: the same edges, no vertex lists.
+                let edges = Adjacency::build_split(
+                    self.vertex_count,
+                    &self.indices,
+                    &next,
+                    &face_of,
+                    split,
+                    false,
+                )
+                .unwrap();
+                assert_eq!(edges.edges, expected.edges, "edges only, {split:?}");
+                assert_eq!(edges.corner_edges, expected.corner_edges);
+                assert_eq!(edges.edge_offsets, expected.edge_offsets);
+                assert_eq!(edges.edge_corners, expected.edge_corners);
+                assert!(edges.vertex_offsets.is_empty() && edges.vertex_corners.is_empty());
             }
         }
     }

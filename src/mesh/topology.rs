@@ -47,7 +47,7 @@ impl Edges {
         let indices = mesh.face_indices();
         let adjacency = match mesh.uniform_face_size() {
             // Faces of one size: the next corner is arithmetic.
-            Some(size) => Adjacency::build(
+            Some(size) => Adjacency::build_edges(
                 mesh.vertex_count(),
                 indices,
                 |c| {
@@ -65,7 +65,7 @@ impl Edges {
                 let faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
                     faces.fill(f as u32);
                 })?;
-                Adjacency::build(
+                Adjacency::build_edges(
                     mesh.vertex_count(),
                     indices,
                     |c| next[c] as usize,
