@@ -104,9 +104,7 @@ class Mesh:
             sizes = _arrays.index_array(face_sizes, "face_sizes")
             if sizes.ndim != 1:
                 raise ValueError(f"face_sizes must be one-dimensional, not of shape {sizes.shape}")
-            mesh = cls.__new__(cls)
-            mesh._adopt(*_borrowed_handle(positions, sizes, indices, allow_repeated_vertices))
-            return mesh
+            return cls._from_handle(*_borrowed_handle(positions, sizes, indices, allow_repeated_vertices))
         positions = _arrays.float_array(vertices, "vertices", width=3)
         sizes = _arrays.index_array(face_sizes, "face_sizes")
         indices = _arrays.index_array(face_indices, "face_indices")
@@ -117,10 +115,11 @@ class Mesh:
         return cls._from_handle(_new_handle(positions, sizes, indices, allow_repeated_vertices))
 
     @classmethod
-    def _from_handle(cls, handle):
-        """Takes ownership of a WeftMesh * the library handed out."""
+    def _from_handle(cls, handle, lent=()):
+        """Takes ownership of a WeftMesh * the library handed out (reading
+        the arrays `lent`, if any)."""
         mesh = cls.__new__(cls)
-        mesh._adopt(handle)
+        mesh._adopt(handle, lent)
         return mesh
 
     def _adopt(self, handle, lent=()):

@@ -198,8 +198,7 @@ pub unsafe extern "C" fn weft_mesh_new_ex(
             (positions, vertex_count),
             (face_sizes, face_count),
             (face_indices, index_count),
-            |options, (positions, face_sizes, face_indices)| {
-                let coordinates: &[f64] = bytemuck::cast_slice(positions);
+            |options, (coordinates, face_sizes, face_indices)| {
                 Mesh::from_flat_with(coordinates, face_sizes, face_indices, options)
             },
         )
@@ -244,15 +243,18 @@ pub unsafe extern "C" fn weft_mesh_new_borrowed(
             (positions, vertex_count),
             (face_sizes, face_count),
             (face_indices, index_count),
-            |options, (positions, face_sizes, face_indices)| {
+            |options, (coordinates, face_sizes, face_indices)| {
+                // Three doubles are a DVec3 (same alignment, no padding): no copy.
+                let positions = bytemuck::cast_slice(coordinates);
                 Mesh::borrowing(positions, face_sizes, face_indices, options)
             },
         )
     }
 }
 
-/// A mesh's positions, face sizes and face indices, as a caller passed them.
-type MeshBuffers<'a> = (&'a [glam::DVec3], &'a [u32], &'a [u32]);
+/// A mesh's coordinates (x, y, z per vertex), face sizes and face indices,
+/// as a caller passed them.
+type MeshBuffers<'a> = (&'a [f64], &'a [u32], &'a [u32]);
 
 /// Writes to `out_mesh` the mesh `make` builds from the options of `flags`
 /// and the three buffers, each count checked before its buffer is viewed
@@ -314,11 +316,7 @@ unsafe fn mesh_buffers<'a>(
             input_slice(face_indices, index_count, "face_indices")?,
         )
     };
-    // Three doubles are a DVec3 (same alignment, no padding): no copy.
-    Ok((
-        options,
-        (bytemuck::cast_slice(positions), face_sizes, face_indices),
-    ))
+    Ok((options, (positions, face_sizes, face_indices)))
 }
 
 /// Frees a mesh made by Weft. NULL is ignored.

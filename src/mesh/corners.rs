@@ -129,7 +129,7 @@ impl CornerFaces {
 }
 
 /// For each corner, the next corner of its face, written in parallel.
-pub(crate) fn corner_next(offsets: &[u32]) -> Result<Vec<u32>> {
+fn corner_next(offsets: &[u32]) -> Result<Vec<u32>> {
     fill_by_offsets(offsets, "next corners", |f, next: &mut [u32]| {
         let start = offsets[f];
         for (k, slot) in next.iter_mut().enumerate() {

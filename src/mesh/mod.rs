@@ -126,18 +126,18 @@ impl FaceLayout {
         })
     }
 
+    /// Where face `f`'s corners start (for `f` = the count, where they end).
+    #[inline]
+    fn start(&self, f: usize) -> usize {
+        match self.uniform {
+            Some(size) => f * size as usize,
+            None => self.offsets()[f] as usize,
+        }
+    }
+
     #[inline]
     fn range(&self, f: usize) -> std::ops::Range<usize> {
-        match self.uniform {
-            Some(size) => {
-                let start = f * size as usize;
-                start..start + size as usize
-            }
-            None => {
-                let offsets = self.offsets();
-                offsets[f] as usize..offsets[f + 1] as usize
-            }
-        }
+        self.start(f)..self.start(f + 1)
     }
 
     fn into_sizes(self) -> Vec<u32> {
@@ -396,10 +396,7 @@ impl Mesh {
     /// when the faces have one size: no offsets are written).
     #[inline]
     pub fn face_start(&self, f: usize) -> usize {
-        match self.faces.uniform {
-            Some(size) => f * size as usize,
-            None => self.faces.offsets()[f] as usize,
-        }
+        self.faces.start(f)
     }
 
     /// The vertex indices of face `f`.

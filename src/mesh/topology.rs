@@ -11,10 +11,10 @@
 
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, try_vec, CHUNK};
+use crate::buffers::{try_vec, CHUNK};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
-use crate::mesh::corners::{corner_next, CornerFaces};
+use crate::mesh::corners::CornerFaces;
 use crate::mesh::Mesh;
 
 /// Edges and adjacency of one mesh. Build it with [`Topology::new`]; it does
@@ -44,35 +44,14 @@ impl Edges {
     /// # Errors
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub(crate) fn try_new(mesh: &Mesh) -> Result<Edges> {
-        let indices = mesh.face_indices();
-        let adjacency = match mesh.uniform_face_size() {
-            // Faces of one size: the next corner is arithmetic.
-            Some(size) => Adjacency::build_edges(
-                mesh.vertex_count(),
-                indices,
-                |c| {
-                    if c % size == size - 1 {
-                        c + 1 - size
-                    } else {
-                        c + 1
-                    }
-                },
-                |c| c / size,
-            )?,
-            _ => {
-                let offsets = mesh.face_offsets();
-                let next = corner_next(offsets)?;
-                let faces = fill_by_offsets(offsets, "corner faces", |f, faces| {
-                    faces.fill(f as u32);
-                })?;
-                Adjacency::build_edges(
-                    mesh.vertex_count(),
-                    indices,
-                    |c| next[c] as usize,
-                    |c| faces[c] as usize,
-                )?
-            }
-        };
+        // Each corner's face and next corner: arithmetic for faces of one size.
+        let corners = CornerFaces::of_mesh(mesh)?;
+        let adjacency = Adjacency::build_edges(
+            mesh.vertex_count(),
+            mesh.face_indices(),
+            |c| corners.next(c),
+            |c| corners.face(c),
+        )?;
         Ok(Edges { adjacency })
     }
 
