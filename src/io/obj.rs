@@ -694,7 +694,8 @@ fn write_in_blocks(
 /// # Errors
 /// Whatever the writer returns.
 pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
-    write_file(w, &MeshFile::new(mesh.clone()))
+    // No attributes to write: the mesh is not copied into a file.
+    write_with(w, mesh, &MeshFile::default())
 }
 
 /// Writes a mesh with its colours, normals, UVs, creases and corners as OBJ.
@@ -703,8 +704,13 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
 /// Whatever the writer returns; [`std::io::ErrorKind::InvalidInput`] when an
 /// attribute does not have one entry per vertex (or corner).
 pub fn write_file(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
-    let mesh = &file.mesh;
     super::check_attribute_sizes(file)?;
+    write_with(w, &file.mesh, file)
+}
+
+/// Writes `mesh` with the attributes `file` holds (checked for `mesh`, or
+/// none at all).
+fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Result<()> {
     writeln!(
         w,
         "# weft {}: {} vertices, {} faces",

@@ -12,11 +12,12 @@
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
+use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::buffers::try_vec;
+use crate::buffers::{fill_by_offsets, try_vec, CHUNK};
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{check_tolerance, Mesh};
@@ -174,21 +175,37 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
         }
     }
 
-    // Keep only the clusters some face uses, in order of their first vertex.
-    let mut new_index = vec![u32::MAX; cluster_count];
-    for &c in &face_indices {
-        new_index[c as usize] = 0;
-    }
-    let mut out_positions = try_vec::<DVec3>(cluster_count, "the welded positions")?;
-    for (c, slot) in new_index.iter_mut().enumerate() {
-        if *slot == 0 {
-            *slot = out_positions.len() as u32;
-            out_positions.push(positions[first_vertex[c] as usize]);
+    // Keep only the clusters some face uses, in order of their first vertex
+    // (marked and renumbered on all threads; numbered in order on one).
+    let mut used = try_vec::<AtomicBool>(cluster_count, "the welded vertices")?;
+    used.par_extend(
+        (0..cluster_count)
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|_| AtomicBool::new(false)),
+    );
+    face_indices
+        .par_iter()
+        .with_min_len(CHUNK)
+        .for_each(|&c| used[c as usize].store(true, Relaxed));
+    // Each kept cluster's new index, and the count after the last.
+    let mut new_index = try_vec::<u32>(cluster_count + 1, "the welded vertices")?;
+    let mut kept: u32 = 0;
+    new_index.extend(used.iter_mut().map(|used| {
+        let index = kept;
+        kept += u32::from(*used.get_mut());
+        index
+    }));
+    new_index.push(kept);
+    let out_positions = fill_by_offsets(&new_index, "the welded positions", |c, slot| {
+        if let [slot] = slot {
+            *slot = positions[first_vertex[c] as usize];
         }
-    }
-    for c in &mut face_indices {
-        *c = new_index[*c as usize];
-    }
+    })?;
+    face_indices
+        .par_iter_mut()
+        .with_min_len(CHUNK)
+        .for_each(|c| *c = new_index[*c as usize]);
     let report = WeldReport {
         merged_vertex_count: vertex_count - cluster_count,
         removed_face_count,
@@ -284,7 +301,9 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let mut start = 0;
     while start < entries.len() {
         let key = entries[start].0;
-        let end = start + entries[start..].partition_point(|e| e.0 == key);
+        // Most cells hold a vertex or two: a scan, not a binary search
+        // that would miss the cache at every step.
+        let end = start + entries[start..].iter().take_while(|e| e.0 == key).count();
         let group = &order[start..end];
         cell_keys.push(key);
         cell_starts.push(sites.len() as u32);

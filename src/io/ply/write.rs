@@ -12,7 +12,8 @@ use crate::mesh::Mesh;
 /// # Errors
 /// Whatever the writer returns.
 pub fn write(w: &mut dyn Write, mesh: &Mesh, encoding: PlyEncoding) -> std::io::Result<()> {
-    write_file(w, &MeshFile::new(mesh.clone()), encoding)
+    // No attributes to write: the mesh is not copied into a file.
+    write_with(w, mesh, &MeshFile::default(), encoding)
 }
 
 /// Writes a mesh with its vertex colours (`uchar`), normals and per-vertex
@@ -28,7 +29,17 @@ pub fn write_file(
     encoding: PlyEncoding,
 ) -> std::io::Result<()> {
     check_attribute_sizes(file)?;
-    let mesh = &file.mesh;
+    write_with(w, &file.mesh, file, encoding)
+}
+
+/// Writes `mesh` with the attributes `file` holds (checked for `mesh`, or
+/// none at all).
+fn write_with(
+    w: &mut dyn Write,
+    mesh: &Mesh,
+    file: &MeshFile,
+    encoding: PlyEncoding,
+) -> std::io::Result<()> {
     let format = match encoding {
         PlyEncoding::Ascii => "ascii",
         PlyEncoding::BinaryLittleEndian => "binary_little_endian",

@@ -173,3 +173,47 @@ fn far_from_origin_tiny_tolerance_still_works() {
     assert_eq!(welded, m);
     assert_eq!(report.merged_vertex_count, 0);
 }
+
+#[test]
+fn a_face_soup_welds_back_to_its_mesh_in_order_of_first_use() {
+    // Every quad of a torus with corners of its own, and after every fifth
+    // quad a vertex no face uses: many blocks of vertices on every thread.
+    let torus = shapes::torus(100, 60);
+    let mut positions = Vec::new();
+    let mut faces = Vec::new();
+    let mut unused = 0;
+    for f in 0..torus.face_count() {
+        let start = positions.len() as u32;
+        positions.extend(torus.face(f).iter().map(|&v| torus.positions()[v as usize]));
+        faces.push((start..start + 4).collect::<Vec<u32>>());
+        if f % 5 == 4 {
+            positions.push(DVec3::new(1e3 + f as f64, 0.0, 0.0));
+            unused += 1;
+        }
+    }
+    let soup = Mesh::from_polygons(positions.clone(), &faces).unwrap();
+    let (welded, report) = weld(&soup, 0.0).unwrap();
+
+    // The torus's vertices numbered as its faces first name them.
+    let mut number = vec![u32::MAX; torus.vertex_count()];
+    let mut order = Vec::new();
+    for &v in torus.face_indices() {
+        if number[v as usize] == u32::MAX {
+            number[v as usize] = order.len() as u32;
+            order.push(torus.positions()[v as usize]);
+        }
+    }
+    let renumbered: Vec<u32> = torus
+        .face_indices()
+        .iter()
+        .map(|&v| number[v as usize])
+        .collect();
+    assert_eq!(welded.positions(), order.as_slice());
+    assert_eq!(welded.face_indices(), renumbered.as_slice());
+    assert_eq!(report.unused_vertex_count, unused);
+    assert_eq!(
+        report.merged_vertex_count,
+        positions.len() - torus.vertex_count() - unused
+    );
+    assert_eq!(report.removed_face_count, 0);
+}
