@@ -38,6 +38,7 @@ pub use mesh_file::{
 };
 
 pub mod creases;
+mod decimal;
 mod mesh_file;
 pub mod obj;
 pub mod off;

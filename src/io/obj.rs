@@ -35,6 +35,7 @@ use rayon::prelude::*;
 
 use glam::DVec3;
 
+use super::decimal::{push_f64, push_u64};
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh_with, IoError, Location};
@@ -641,22 +642,6 @@ fn resolve(value: i64, count: usize, line: usize, word: &[u8], what: &str) -> Re
     })
 }
 
-/// Appends `value` in decimal, as `write!(w, "{value}")` does.
-#[inline]
-fn push_decimal(w: &mut Vec<u8>, mut value: u64) {
-    let mut digits = [0u8; 20];
-    let mut at = digits.len();
-    loop {
-        at -= 1;
-        digits[at] = b'0' + (value % 10) as u8;
-        value /= 10;
-        if value == 0 {
-            break;
-        }
-    }
-    w.extend_from_slice(&digits[at..]);
-}
-
 /// Writes `count` items (vertices, faces) through `format`, which appends
 /// the text of a range of them to a buffer: blocks of items are formatted
 /// on all threads, a round at a time into buffers used again for the next
@@ -722,7 +707,12 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
     write_in_blocks(w, positions.len(), |vertices, w| {
         for i in vertices {
             let p = positions[i];
-            write!(w, "v {} {} {}", p.x, p.y, p.z)?;
+            w.extend_from_slice(b"v ");
+            push_f64(w, p.x);
+            w.push(b' ');
+            push_f64(w, p.y);
+            w.push(b' ');
+            push_f64(w, p.z);
             if let Some(colours) = &file.colours {
                 let [r, g, b, a] = colours.rgba[i];
                 write!(w, " {r} {g} {b}")?;
@@ -769,7 +759,7 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
                 match (&file.uvs, &file.normals) {
                     (None, None) => {
                         w.push(b' ');
-                        push_decimal(w, v);
+                        push_u64(w, v);
                     }
                     (Some(uvs), None) => write!(w, " {v}/{}", uvs.indices[corner] as u64 + 1)?,
                     (None, Some(_)) => write!(w, " {v}//{v}")?,
