@@ -60,7 +60,11 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
     // The digits without leading or trailing zeros; `point` of them come
     // before the decimal point (none or fewer than none: zeros after it).
     let leading = digits[..count].iter().take_while(|&&d| d == b'0').count();
-    let trailing = digits[leading..count].iter().rev().take_while(|&&d| d == b'0').count();
+    let trailing = digits[leading..count]
+        .iter()
+        .rev()
+        .take_while(|&&d| d == b'0')
+        .count();
     let digits = &digits[leading..count - trailing];
     let point = before_point - leading as i32 + exponent;
     let len = digits.len() as i32;
