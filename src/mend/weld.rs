@@ -267,36 +267,65 @@ pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    // By cell, then within the cell by exact position, then index (one
-    // parallel sort): duplicates become neighbours with their lowest index
-    // first.
-    let mut entries = try_vec::<(Cell, u32)>(positions.len(), "the weld cells")?;
+    if positions.is_empty() {
+        return Ok(UnionFind::new(0));
+    }
+    // The cells of the bounding box's corners bound every cell.
+    let (lo, hi) = positions
+        .par_iter()
+        .with_min_len(CHUNK)
+        .fold(
+            || (positions[0], positions[0]),
+            |(lo, hi), &p| (lo.min(p), hi.max(p)),
+        )
+        .reduce(
+            || (positions[0], positions[0]),
+            |(lo_a, hi_a), (lo_b, hi_b)| (lo_a.min(lo_b), hi_a.max(hi_b)),
+        );
+    let (first, last) = (grid.cell(lo), grid.cell(hi));
+    match PackedCell::origin(first, last) {
+        Some(origin) => clusters_by(positions, tolerance, |p| {
+            PackedCell::of(grid.cell(p), origin)
+        }),
+        None => clusters_by(positions, tolerance, |p| grid.cell(p)),
+    }
+}
+
+/// [`vertex_clusters`] with the cells as `cell_of` numbers them.
+fn clusters_by<K: CellKey>(
+    positions: &[DVec3],
+    tolerance: f64,
+    cell_of: impl Fn(DVec3) -> K + Sync,
+) -> Result<UnionFind> {
+    // By cell, then index (one parallel sort); each cell's vertices are then
+    // put in order of exact position, so that duplicates become neighbours
+    // with their lowest index first.
+    let mut entries = try_vec::<(K, u32)>(positions.len(), "the weld cells")?;
     entries.par_extend(
         positions
             .par_iter()
             .enumerate()
             .with_min_len(4096)
-            .map(|(v, &p)| (grid.cell(p), v as u32)),
+            .map(|(v, &p)| (cell_of(p), v as u32)),
     );
-    entries.par_sort_unstable_by(|&(cell_a, a), &(cell_b, b)| {
-        cell_a.cmp(&cell_b).then_with(|| {
-            let (pa, pb) = (positions[a as usize], positions[b as usize]);
-            // Adding 0 makes -0 and +0 one key: they are one position.
-            let (pa, pb) = (pa + 0.0, pb + 0.0);
-            pa.x.total_cmp(&pb.x)
-                .then(pa.y.total_cmp(&pb.y))
-                .then(pa.z.total_cmp(&pb.z))
-                .then(a.cmp(&b))
-        })
-    });
+    entries.par_sort_unstable();
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
     order.par_extend(entries.par_iter().with_min_len(4096).map(|&(_, v)| v));
+    let by_position = |&a: &u32, &b: &u32| {
+        let (pa, pb) = (positions[a as usize], positions[b as usize]);
+        // Adding 0 makes -0 and +0 one key: they are one position.
+        let (pa, pb) = (pa + 0.0, pb + 0.0);
+        pa.x.total_cmp(&pb.x)
+            .then(pa.y.total_cmp(&pb.y))
+            .then(pa.z.total_cmp(&pb.z))
+            .then(a.cmp(&b))
+    };
 
     let mut clusters = UnionFind::new(positions.len());
     // Distinct positions ("sites"), each standing for its exact duplicates.
     let mut sites: Vec<u32> = Vec::with_capacity(positions.len());
     // Sites of each occupied cell: cell_sites[cell_starts[k]..cell_starts[k + 1]].
-    let mut cell_keys: Vec<Cell> = Vec::new();
+    let mut cell_keys: Vec<K> = Vec::new();
     let mut cell_starts: Vec<u32> = Vec::new();
     let mut start = 0;
     while start < entries.len() {
@@ -304,7 +333,12 @@ fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
         // Most cells hold a vertex or two: a scan, not a binary search
         // that would miss the cache at every step.
         let end = start + entries[start..].iter().take_while(|e| e.0 == key).count();
-        let group = &order[start..end];
+        let group = &mut order[start..end];
+        match group.len() {
+            1 => {}
+            n if n < 1 << 16 => group.sort_unstable_by(by_position),
+            _ => group.par_sort_unstable_by(by_position),
+        }
         cell_keys.push(key);
         cell_starts.push(sites.len() as u32);
         let first_site = sites.len();
@@ -426,6 +460,58 @@ const FORWARD_NEIGHBOURS: [[i64; 3]; 13] = [
     [1, 1, 0],
     [1, 1, 1],
 ];
+
+/// A grid cell as the clusters sort and walk them.
+trait CellKey: Copy + Ord + Send + Sync {
+    /// The cell `d` cells away.
+    fn offset(self, d: [i64; 3]) -> Self;
+}
+
+impl CellKey for Cell {
+    #[inline]
+    fn offset(self, d: [i64; 3]) -> Cell {
+        Cell::offset(self, d)
+    }
+}
+
+/// A cell's coordinates in one word, 21 bits each, counted from one cell
+/// before the lowest: the numbers of every cell and of its neighbours are
+/// in the coordinates' order, so they sort and step alike, and a sort of
+/// them moves half the bytes.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+struct PackedCell(u64);
+
+impl PackedCell {
+    const BITS: u32 = 21;
+
+    /// Where the numbering starts, when the cells from `first` to `last`
+    /// (the lowest and highest in each axis) and their neighbours fit.
+    fn origin(first: Cell, last: Cell) -> Option<[i64; 3]> {
+        let fits = (0..3).all(|i| {
+            last.0[i]
+                .checked_sub(first.0[i])
+                .is_some_and(|span| span + 2 < 1 << Self::BITS)
+        });
+        fits.then(|| first.0.map(|c| c - 1))
+    }
+
+    #[inline]
+    fn of(cell: Cell, origin: [i64; 3]) -> PackedCell {
+        let [x, y, z] = [0, 1, 2].map(|i| (cell.0[i] - origin[i]) as u64);
+        PackedCell((x << (2 * Self::BITS)) | (y << Self::BITS) | z)
+    }
+}
+
+impl CellKey for PackedCell {
+    #[inline]
+    fn offset(self, [dx, dy, dz]: [i64; 3]) -> PackedCell {
+        // Every field stays inside its 21 bits, so the sum carries nothing.
+        PackedCell(
+            self.0
+                .wrapping_add_signed((dx << (2 * Self::BITS)) + (dy << Self::BITS) + dz),
+        )
+    }
+}
 
 /// A cell of a uniform grid, by its integer coordinates.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]

@@ -217,3 +217,65 @@ fn a_face_soup_welds_back_to_its_mesh_in_order_of_first_use() {
     );
     assert_eq!(report.removed_face_count, 0);
 }
+
+#[test]
+fn packed_cells_cluster_as_the_cells_themselves() {
+    // Near and exact duplicates on a jittered grid, many per cell and across
+    // cell borders, on both sides of the origin.
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut unit = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut positions = Vec::new();
+    for i in 0..20_000 {
+        let p = DVec3::new(unit() * 40.0 - 20.0, unit() * 8.0 - 4.0, unit() * 2.0);
+        positions.push(p);
+        if i % 3 == 0 {
+            positions.push(p);
+        }
+        if i % 5 == 0 {
+            positions.push(p + DVec3::splat(0.03 * unit()));
+        }
+    }
+    let tolerance = 0.05;
+    let grid = CellGrid::new(positions.iter().copied(), tolerance);
+    let lo = positions.iter().fold(positions[0], |m, &p| m.min(p));
+    let hi = positions.iter().fold(positions[0], |m, &p| m.max(p));
+    let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
+    let packed = clusters_by(&positions, tolerance, |p| {
+        PackedCell::of(grid.cell(p), origin)
+    })
+    .unwrap();
+    let plain = clusters_by(&positions, tolerance, |p| grid.cell(p)).unwrap();
+    // The same partition: each vertex's cluster named by its lowest vertex.
+    let lowest = |clusters: &UnionFind| {
+        let mut first = vec![u32::MAX; positions.len()];
+        (0..positions.len() as u32)
+            .map(|v| {
+                let root = clusters.root(v) as usize;
+                first[root] = first[root].min(v);
+                first[root]
+            })
+            .collect::<Vec<u32>>()
+    };
+    let (a, b) = (lowest(&packed), lowest(&plain));
+    assert_eq!(a, b);
+    // Some vertices merged and most did not, so the comparison could fail.
+    let merged = a
+        .iter()
+        .enumerate()
+        .filter(|&(v, &c)| c as usize != v)
+        .count();
+    assert!(merged > 5_000 && merged < positions.len() / 2, "{merged}");
+}
+
+#[test]
+fn cells_too_many_for_21_bits_are_not_packed() {
+    let first = Cell([-5, 0, 0]);
+    assert!(PackedCell::origin(first, Cell([(1 << 21) - 8, 3, 3])).is_some());
+    assert!(PackedCell::origin(first, Cell([(1 << 21) - 7, 3, 3])).is_none());
+    assert!(PackedCell::origin(Cell([i64::MIN, 0, 0]), Cell([i64::MAX, 0, 0])).is_none());
+}
