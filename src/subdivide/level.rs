@@ -147,7 +147,10 @@ impl std::ops::Deref for Connectivity {
 
 impl Connectivity {
     /// The faces and connectivity of a cage that `levels` levels of
-    /// `scheme` will refine, once every level's size is checked.
+    /// `scheme` will refine, once every level's size is checked. Without
+    /// `vertex_edges` the vertices' edges are left empty: only the
+    /// refinement of a level and Catmull-Clark's refined gathers read them,
+    /// so one level of plain subdivision never does.
     ///
     /// # Errors
     /// [`crate::Error::ResultTooLarge`] when a level would pass the size cap;
@@ -156,9 +159,10 @@ impl Connectivity {
         cage: &crate::Mesh,
         scheme: Scheme,
         levels: u32,
+        vertex_edges: bool,
     ) -> Result<(Faces, Connectivity)> {
         let faces = Faces::of_mesh(cage);
-        let connectivity = Connectivity::new(&faces)?;
+        let connectivity = Connectivity::build(&faces, vertex_edges)?;
         check_counts(
             scheme,
             cage.vertex_count() as u64,
@@ -175,6 +179,11 @@ impl Connectivity {
     /// # Errors
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub(crate) fn new(faces: &Faces) -> Result<Connectivity> {
+        Connectivity::build(faces, true)
+    }
+
+    /// As [`Connectivity::new`], the vertices' edges only when asked for.
+    fn build(faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
         let corner_count = faces.corner_count();
         let vertex_count = faces.vertex_count;
 
@@ -195,7 +204,10 @@ impl Connectivity {
             |c| faces.next(c, face_of(c)),
             face_of,
         )?;
-        let (vertex_edge_offsets, vertex_edges) = vertex_edges_of(&adjacency.edges, vertex_count)?;
+        let (vertex_edge_offsets, vertex_edges) = match with_vertex_edges {
+            true => vertex_edges_of(&adjacency.edges, vertex_count)?,
+            false => (Vec::new(), Vec::new()),
+        };
         Ok(Connectivity {
             adjacency,
             face_size: faces.size,

@@ -297,7 +297,8 @@ impl Levels<'_> {
         if levels == 0 || cage.face_count() == 0 {
             return Ok(Err(Faces::of_mesh(cage)));
         }
-        let (faces, connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
+        // The vertices' edges serve the next levels only (see `of_cage`).
+        let (faces, connectivity) = Connectivity::of_cage(cage, scheme, levels, levels > 1)?;
         let tags = cage_tags(&faces, &connectivity, naked_edges)?;
         Ok(Ok((faces, connectivity, tags)))
     }

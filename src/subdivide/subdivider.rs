@@ -67,7 +67,7 @@ impl Subdivider {
         options: &SubdivisionOptions,
     ) -> Result<Subdivider> {
         scheme.check_cage(cage)?;
-        let (mut faces, mut connectivity) = Connectivity::of_cage(cage, scheme, levels)?;
+        let (mut faces, mut connectivity) = Connectivity::of_cage(cage, scheme, levels, true)?;
         let mut sharpness = cage_sharpness(&faces, &connectivity, options)?;
         let holes = cage_holes(&faces, &connectivity, options)?;
         let levels = if cage.face_count() == 0 { 0 } else { levels };
