@@ -171,6 +171,46 @@ enum Side {
     /// A polygon edge that only this face has.
     Naked,
 }
+
+/// Which corners' edges are drawn as marked or naked lines.
+enum Outlines {
+    /// Whether each corner's edge is naked, when no edge is marked.
+    Naked(Vec<bool>),
+    /// The mesh's edges, to find the marked ones.
+    Edges { edges: Edges, marked: Vec<bool> },
+}
+
+impl Outlines {
+    fn of(mesh: &Mesh, marked_edges: &[[u32; 2]]) -> Result<Outlines, Error> {
+        if marked_edges.is_empty() {
+            return Ok(Outlines::Naked(Edges::naked_corners(mesh)?));
+        }
+        let edges = Edges::try_new(mesh)?;
+        let mut marked = vec![false; edges.edge_count()];
+        for &[a, b] in marked_edges {
+            if let Some(e) = edges.find_edge(a, b) {
+                marked[e] = true;
+            }
+        }
+        Ok(Outlines::Edges { edges, marked })
+    }
+
+    /// How the edge from `corner` stands out, if it does.
+    fn of_corner(&self, corner: usize) -> Option<Side> {
+        match self {
+            Outlines::Naked(naked) => naked[corner].then_some(Side::Naked),
+            Outlines::Edges { edges, marked } => {
+                let edge = edges.corner_edges()[corner] as usize;
+                if marked[edge] {
+                    Some(Side::Marked)
+                } else {
+                    edges.is_naked_edge(edge).then_some(Side::Naked)
+                }
+            }
+        }
+    }
+}
+
 const SAMPLES: usize = 2;
 
 /// Meshes with at least this many faces are drawn on two threads.
@@ -316,24 +356,11 @@ fn render_with(
         mesh.face_count() < EDGE_FACE_LIMIT && mesh.face_count() * EDGE_PIXELS_PER_FACE <= pixels,
     );
 
-    let topology = Edges::try_new(mesh)?;
-    let mut marked = vec![false; topology.edge_count()];
-    for &[a, b] in &options.marked_edges {
-        if let Some(e) = topology.find_edge(a, b) {
-            marked[e] = true;
-        }
-    }
-    let side = |corner: usize| {
-        let edge = topology.corner_edges()[corner] as usize;
-        if marked[edge] {
-            Side::Marked
-        } else if topology.is_naked_edge(edge) {
-            Side::Naked
-        } else if edges {
-            Side::Edge
-        } else {
-            Side::Hidden
-        }
+    let outlines = Outlines::of(mesh, &options.marked_edges)?;
+    let side = |corner: usize| match outlines.of_corner(corner) {
+        Some(outline) => outline,
+        None if edges => Side::Edge,
+        None => Side::Hidden,
     };
 
     // Draws a run of faces into a picture and depth buffer of its own.

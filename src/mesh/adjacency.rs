@@ -21,7 +21,7 @@
 //! [`Topology`]: crate::mesh::topology::Topology
 
 use std::ops::Range;
-use std::sync::atomic::{AtomicU32, Ordering::Relaxed};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering::Relaxed};
 
 use rayon::prelude::*;
 
@@ -109,6 +109,48 @@ impl Adjacency {
         Adjacency::build_split(vertex_count, indices, next, face_of, split, false)
     }
 
+    /// For each corner, whether it is its edge's only corner (a naked
+    /// edge, as [`Adjacency::build`] counts corners, faces naming a vertex
+    /// twice included), without the edges themselves: the buckets are
+    /// sorted as for the edges, and nothing else is written.
+    ///
+    /// # Errors
+    /// As [`Adjacency::build`].
+    pub(crate) fn naked_corners(
+        vertex_count: usize,
+        indices: &[u32],
+        next: impl Fn(usize) -> usize + Sync,
+        face_of: impl Fn(usize) -> usize + Sync,
+    ) -> Result<Vec<bool>> {
+        let split = Split::of(indices.len(), vertex_count);
+        let entry = |c: u32| bucket_entry(indices, &next, c);
+        let vertices = 1usize << split.shift;
+        let Buckets {
+            mut edge_corners,
+            bucket_offsets,
+            ..
+        } = buckets(vertex_count, indices, &next, split, false)?;
+        let naked: Vec<AtomicBool> = zeroed::<bool>(indices.len(), "naked corners")?
+            .into_iter()
+            .map(AtomicBool::new)
+            .collect();
+        split_by_offsets(&mut edge_corners, &bucket_offsets, vertices)
+            .into_par_iter()
+            .try_for_each(|(lows, corners)| -> Result<()> {
+                let base = bucket_offsets[lows.start];
+                let mut entries = Vec::new();
+                for low in lows {
+                    let bucket = &corners[(bucket_offsets[low] - base) as usize
+                        ..(bucket_offsets[low + 1] - base) as usize];
+                    read_entries(&mut entries, bucket, entry)?;
+                    entries.sort_unstable();
+                    bucket_edges(low as u32, &entries, &face_of, &mut MarkNaked(&naked));
+                }
+                Ok(())
+            })?;
+        Ok(naked.into_iter().map(AtomicBool::into_inner).collect())
+    }
+
     fn build_split(
         vertex_count: usize,
         indices: &[u32],
@@ -118,78 +160,14 @@ impl Adjacency {
         with_vertices: bool,
     ) -> Result<Adjacency> {
         let corner_count = indices.len();
-        // A corner's vertex and its edge's lower vertex.
-        let vertex_and_low = |c: usize| {
-            let (a, b) = (indices[c], indices[next(c)]);
-            (a, a.min(b))
-        };
-        // A bucket's entry: the corner's edge's higher vertex, then the corner.
-        let entry = |c: u32| {
-            let c = c as usize;
-            (u64::from(indices[c].max(indices[next(c)])) << 32) | c as u64
-        };
-        let blocks: Vec<Range<usize>> = (0..split.blocks)
-            .map(|b| corner_count * b / split.blocks..corner_count * (b + 1) / split.blocks)
-            .collect();
+        let entry = |c: u32| bucket_entry(indices, &next, c);
         let vertices = 1usize << split.shift;
-
-        // Each block counts its corners under their edge's lower vertex (the
-        // edge buckets) and under their vertex, vertex v's count at v + 1.
-        let mut edge_slots = per_block_counts(split.blocks, vertex_count, "edge buckets")?;
-        let vertex_slots_count = if with_vertices { vertex_count } else { 0 };
-        let mut vertex_slots =
-            per_block_counts(split.blocks, vertex_slots_count, "vertex corners")?;
-        blocks
-            .par_iter()
-            .zip(&mut edge_slots[..])
-            .zip(&mut vertex_slots[..])
-            .for_each(|((corners, edge_counts), vertex_counts)| {
-                for c in corners.clone() {
-                    let (v, low) = vertex_and_low(c);
-                    edge_counts[low as usize + 1] += 1;
-                    if with_vertices {
-                        vertex_counts[v as usize + 1] += 1;
-                    }
-                }
-            });
-        rayon::join(
-            || first_slots(&mut edge_slots, vertices),
-            || first_slots(&mut vertex_slots, vertices),
-        );
-
-        // Each block drops its corners, ascending, into the slots after the
-        // earlier blocks': every vertex's corners ascend, and the last
-        // block's slots end up at the offsets.
-        let bucket = atomic(zeroed(corner_count, "edge corners")?);
-        let at_vertex = atomic(zeroed(
-            if with_vertices { corner_count } else { 0 },
-            "vertex corners",
-        )?);
-        blocks
-            .par_iter()
-            .zip(&mut edge_slots[..])
-            .zip(&mut vertex_slots[..])
-            .for_each(|((corners, edge_slots), vertex_slots)| {
-                for c in corners.clone() {
-                    let (v, low) = vertex_and_low(c);
-                    let slot = &mut edge_slots[low as usize + 1];
-                    bucket[*slot as usize].store(c as u32, Relaxed);
-                    *slot += 1;
-                    if with_vertices {
-                        let slot = &mut vertex_slots[v as usize + 1];
-                        at_vertex[*slot as usize].store(c as u32, Relaxed);
-                        *slot += 1;
-                    }
-                }
-            });
-        let bucket_offsets = last(edge_slots);
-        let vertex_offsets = if with_vertices {
-            last(vertex_slots)
-        } else {
-            Vec::new()
-        };
-        let mut edge_corners = plain(bucket);
-        let vertex_corners = plain(at_vertex);
+        let Buckets {
+            mut edge_corners,
+            bucket_offsets,
+            vertex_offsets,
+            vertex_corners,
+        } = buckets(vertex_count, indices, &next, split, with_vertices)?;
 
         // Each range of vertices sorts its buckets by (higher vertex, corner),
         // keeping them so, and counts its edges.
@@ -299,6 +277,103 @@ impl Adjacency {
     }
 }
 
+/// Each corner under its edge's lower vertex (the edge buckets, each
+/// ascending) and, `with_vertices`, under its vertex.
+struct Buckets {
+    edge_corners: Vec<u32>,
+    bucket_offsets: Vec<u32>,
+    vertex_offsets: Vec<u32>,
+    vertex_corners: Vec<u32>,
+}
+
+/// The first passes of the edge builder: [`Buckets`] on all threads.
+fn buckets(
+    vertex_count: usize,
+    indices: &[u32],
+    next: impl Fn(usize) -> usize + Sync,
+    split: Split,
+    with_vertices: bool,
+) -> Result<Buckets> {
+    let corner_count = indices.len();
+    // A corner's vertex and its edge's lower vertex.
+    let vertex_and_low = |c: usize| {
+        let (a, b) = (indices[c], indices[next(c)]);
+        (a, a.min(b))
+    };
+    let blocks: Vec<Range<usize>> = (0..split.blocks)
+        .map(|b| corner_count * b / split.blocks..corner_count * (b + 1) / split.blocks)
+        .collect();
+    let vertices = 1usize << split.shift;
+
+    // Each block counts its corners under their edge's lower vertex (the
+    // edge buckets) and under their vertex, vertex v's count at v + 1.
+    let mut edge_slots = per_block_counts(split.blocks, vertex_count, "edge buckets")?;
+    let vertex_slots_count = if with_vertices { vertex_count } else { 0 };
+    let mut vertex_slots = per_block_counts(split.blocks, vertex_slots_count, "vertex corners")?;
+    blocks
+        .par_iter()
+        .zip(&mut edge_slots[..])
+        .zip(&mut vertex_slots[..])
+        .for_each(|((corners, edge_counts), vertex_counts)| {
+            for c in corners.clone() {
+                let (v, low) = vertex_and_low(c);
+                edge_counts[low as usize + 1] += 1;
+                if with_vertices {
+                    vertex_counts[v as usize + 1] += 1;
+                }
+            }
+        });
+    rayon::join(
+        || first_slots(&mut edge_slots, vertices),
+        || first_slots(&mut vertex_slots, vertices),
+    );
+
+    // Each block drops its corners, ascending, into the slots after the
+    // earlier blocks': every vertex's corners ascend, and the last
+    // block's slots end up at the offsets.
+    let bucket = atomic(zeroed(corner_count, "edge corners")?);
+    let at_vertex = atomic(zeroed(
+        if with_vertices { corner_count } else { 0 },
+        "vertex corners",
+    )?);
+    blocks
+        .par_iter()
+        .zip(&mut edge_slots[..])
+        .zip(&mut vertex_slots[..])
+        .for_each(|((corners, edge_slots), vertex_slots)| {
+            for c in corners.clone() {
+                let (v, low) = vertex_and_low(c);
+                let slot = &mut edge_slots[low as usize + 1];
+                bucket[*slot as usize].store(c as u32, Relaxed);
+                *slot += 1;
+                if with_vertices {
+                    let slot = &mut vertex_slots[v as usize + 1];
+                    at_vertex[*slot as usize].store(c as u32, Relaxed);
+                    *slot += 1;
+                }
+            }
+        });
+    let bucket_offsets = last(edge_slots);
+    let vertex_offsets = if with_vertices {
+        last(vertex_slots)
+    } else {
+        Vec::new()
+    };
+    Ok(Buckets {
+        edge_corners: plain(bucket),
+        bucket_offsets,
+        vertex_offsets,
+        vertex_corners: plain(at_vertex),
+    })
+}
+
+/// A bucket's entry for corner `c`: its edge's higher vertex, then the corner.
+#[inline]
+fn bucket_entry(indices: &[u32], next: impl Fn(usize) -> usize, c: u32) -> u64 {
+    let c = c as usize;
+    (u64::from(indices[c].max(indices[next(c)])) << 32) | c as u64
+}
+
 /// `blocks` zeroed counts of `vertex_count + 1` slots each.
 fn per_block_counts(blocks: usize, vertex_count: usize, what: &str) -> Result<Vec<Vec<u32>>> {
     (0..blocks)
@@ -396,6 +471,18 @@ impl Sink for Count {
     #[inline]
     fn edge(&mut self, _: [u32; 2], _: impl Iterator<Item = u32>) {
         self.0 += 1;
+    }
+}
+
+/// Marks the corners of the edges that have one corner.
+struct MarkNaked<'a>(&'a [AtomicBool]);
+
+impl Sink for MarkNaked<'_> {
+    #[inline]
+    fn edge(&mut self, _: [u32; 2], mut corners: impl Iterator<Item = u32>) {
+        if let (Some(c), None) = (corners.next(), corners.next()) {
+            self.0[c as usize].store(true, Relaxed);
+        }
     }
 }
 
@@ -682,6 +769,16 @@ mod tests {
                     .install(|| Adjacency::build(self.vertex_count, &self.indices, &next, &face_of))
                     .unwrap();
                 same(&a, &format!("{threads} threads"));
+                // The naked corners alone: those whose edge has one corner.
+                let naked = pool
+                    .install(|| {
+                        Adjacency::naked_corners(self.vertex_count, &self.indices, &next, &face_of)
+                    })
+                    .unwrap();
+                let expected_naked: Vec<bool> = (expected.corner_edges.iter())
+                    .map(|&e| expected.edge_corners(e as usize).len() == 1)
+                    .collect();
+                assert_eq!(naked, expected_naked, "naked corners, {threads} threads");
             }
             for (blocks, shift) in [(1, 0), (2, 3), (5, 6), (13, 10), (64, 2)] {
                 let split = Split { blocks, shift };

@@ -55,6 +55,22 @@ impl Edges {
         Ok(Edges { adjacency })
     }
 
+    /// For each corner of `mesh`, whether its edge is naked (what
+    /// [`Edges::is_naked_edge`] says of the corner's edge), without
+    /// building the edges.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
+    pub(crate) fn naked_corners(mesh: &Mesh) -> Result<Vec<bool>> {
+        let corners = CornerFaces::of_mesh(mesh)?;
+        Adjacency::naked_corners(
+            mesh.vertex_count(),
+            mesh.face_indices(),
+            |c| corners.next(c),
+            |c| corners.face(c),
+        )
+    }
+
     /// For each corner, the edge from it to the next corner of its face.
     #[inline]
     pub(crate) fn corner_edges(&self) -> &[u32] {
