@@ -7,7 +7,7 @@ use crate::ffi::boundary::{
 };
 use glam::DVec3;
 
-use crate::ffi::mesh::{degenerate_result, finite_result, mesh_ref, WeftMesh};
+use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::mesh::triangulate::{as_triangles, triangulate};
 use crate::mesh::Mesh;
 use crate::subdivide::{self, NakedEdges, Scheme};
@@ -132,8 +132,11 @@ unsafe fn run_scheme(
     unsafe {
         mesh_op(mesh, out_mesh, |mesh| {
             let naked_edges = naked_edges_arg(naked_edges)?;
+            // No pass over the result: subdivision refuses its own output
+            // beyond the f64 range (`subdivide/scale.rs`).
             let result = subdivide::subdivide(mesh, scheme, levels, naked_edges)?;
-            finite_result(result, "subdivision")
+            debug_assert!(result.first_non_finite_vertex().is_none());
+            Ok(result)
         })
     }
 }
@@ -188,11 +191,12 @@ pub unsafe extern "C" fn weft_subdivide_into(
             let positions: &mut [DVec3] =
                 bytemuck::cast_slice_mut(&mut coordinates[..whole_vertices]);
             let indices = output_slice(out_face_indices, index_capacity, "out_face_indices")?;
+            // As `weft_catmull_clark`: the output is checked where it is made.
             let counts =
                 subdivide::subdivide_into(mesh, scheme, levels, naked_edges, positions, indices)?;
-            if let Some(v) = crate::mesh::first_non_finite(&positions[..counts.vertex_count]) {
-                return Err(degenerate_result(&positions[v], v, "subdivision"));
-            }
+            debug_assert!(
+                crate::mesh::first_non_finite(&positions[..counts.vertex_count]).is_none()
+            );
             Ok(())
         })
     }
