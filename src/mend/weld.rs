@@ -17,10 +17,10 @@ use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, try_vec, CHUNK};
+use crate::buffers::{fill_by_offsets, par_map, par_offsets, try_vec, CHUNK};
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
-use crate::mesh::{check_tolerance, Mesh};
+use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
 
 /// The weld tolerance to use when the host gives none: 0.001 model units.
 ///
@@ -176,27 +176,18 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     }
 
     // Keep only the clusters some face uses, in order of their first vertex
-    // (marked and renumbered on all threads; numbered in order on one).
-    let mut used = try_vec::<AtomicBool>(cluster_count, "the welded vertices")?;
-    used.par_extend(
-        (0..cluster_count)
-            .into_par_iter()
-            .with_min_len(CHUNK)
-            .map(|_| AtomicBool::new(false)),
-    );
+    // (marked, numbered and renumbered on all threads).
+    let used = par_map(cluster_count, "the welded vertices", |_| {
+        AtomicBool::new(false)
+    })?;
     face_indices
         .par_iter()
         .with_min_len(CHUNK)
         .for_each(|&c| used[c as usize].store(true, Relaxed));
     // Each kept cluster's new index, and the count after the last.
-    let mut new_index = try_vec::<u32>(cluster_count + 1, "the welded vertices")?;
-    let mut kept: u32 = 0;
-    new_index.extend(used.iter_mut().map(|used| {
-        let index = kept;
-        kept += u32::from(*used.get_mut());
-        index
-    }));
-    new_index.push(kept);
+    let new_index = par_offsets(cluster_count, "the welded vertices", |c| {
+        u32::from(used[c].load(Relaxed))
+    })?;
     let out_positions = fill_by_offsets(&new_index, "the welded positions", |c, slot| {
         if let [slot] = slot {
             *slot = positions[first_vertex[c] as usize];
@@ -266,22 +257,11 @@ pub(crate) fn within(p: DVec3, q: DVec3, tolerance: f64) -> bool {
 
 /// Unions every two vertices at most `tolerance` apart.
 fn vertex_clusters(positions: &[DVec3], tolerance: f64) -> Result<UnionFind> {
-    let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    if positions.is_empty() {
+    let Some((lo, hi)) = bounding_box_of(positions) else {
         return Ok(UnionFind::new(0));
-    }
+    };
+    let grid = CellGrid::with_reach(lo.abs().max(hi.abs()).max_element(), tolerance);
     // The cells of the bounding box's corners bound every cell.
-    let (lo, hi) = positions
-        .par_iter()
-        .with_min_len(CHUNK)
-        .fold(
-            || (positions[0], positions[0]),
-            |(lo, hi), &p| (lo.min(p), hi.max(p)),
-        )
-        .reduce(
-            || (positions[0], positions[0]),
-            |(lo_a, hi_a), (lo_b, hi_b)| (lo_a.min(lo_b), hi_a.max(hi_b)),
-        );
     let (first, last) = (grid.cell(lo), grid.cell(hi));
     match PackedCell::origin(first, last) {
         Some(origin) => clusters_by(positions, tolerance, |p| {
@@ -578,7 +558,15 @@ pub(crate) struct CellGrid {
 impl CellGrid {
     /// A grid of cells at least `size` wide for points like `points`.
     pub(crate) fn new(points: impl Iterator<Item = DVec3>, size: f64) -> CellGrid {
-        let reach = points.fold(0.0f64, |m, p| m.max(p.abs().max_element()));
+        CellGrid::with_reach(
+            points.fold(0.0f64, |m, p| m.max(p.abs().max_element())),
+            size,
+        )
+    }
+
+    /// As [`CellGrid::new`], for points whose largest coordinate magnitude
+    /// is `reach`.
+    pub(crate) fn with_reach(reach: f64, size: f64) -> CellGrid {
         // 2^-40 of the coordinates' reach keeps cell numbers below 2^41, and a
         // cell that wide is still below the round-off of the coordinates.
         // Never below the smallest normal number: a cell width of 0 (the

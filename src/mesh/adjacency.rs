@@ -136,17 +136,9 @@ impl Adjacency {
             .collect();
         split_by_offsets(&mut edge_corners, &bucket_offsets, vertices)
             .into_par_iter()
-            .try_for_each(|(lows, corners)| -> Result<()> {
-                let base = bucket_offsets[lows.start];
-                let mut entries = Vec::new();
-                for low in lows {
-                    let bucket = &corners[(bucket_offsets[low] - base) as usize
-                        ..(bucket_offsets[low + 1] - base) as usize];
-                    read_entries(&mut entries, bucket, entry)?;
-                    entries.sort_unstable();
-                    bucket_edges(low as u32, &entries, &face_of, &mut MarkNaked(&naked));
-                }
-                Ok(())
+            .try_for_each(|(lows, corners)| {
+                let sink = &mut MarkNaked(&naked);
+                sort_buckets(lows, corners, &bucket_offsets, entry, &face_of, sink)
             })?;
         Ok(naked.into_iter().map(AtomicBool::into_inner).collect())
     }
@@ -174,19 +166,8 @@ impl Adjacency {
         let part_edges = split_by_offsets(&mut edge_corners, &bucket_offsets, vertices)
             .into_par_iter()
             .map(|(lows, corners)| -> Result<u32> {
-                let base = bucket_offsets[lows.start];
-                let mut entries = Vec::new();
                 let mut count = Count(0);
-                for low in lows {
-                    let bucket = &mut corners[(bucket_offsets[low] - base) as usize
-                        ..(bucket_offsets[low + 1] - base) as usize];
-                    read_entries(&mut entries, bucket, entry)?;
-                    entries.sort_unstable();
-                    for (corner, &e) in bucket.iter_mut().zip(&entries) {
-                        *corner = e as u32;
-                    }
-                    bucket_edges(low as u32, &entries, &face_of, &mut count);
-                }
+                sort_buckets(lows, corners, &bucket_offsets, entry, &face_of, &mut count)?;
                 Ok(count.0)
             })
             .collect::<Result<Vec<u32>>>()?;
@@ -365,6 +346,32 @@ fn buckets(
         vertex_offsets,
         vertex_corners: plain(at_vertex),
     })
+}
+
+/// Sorts the buckets of the lower vertices `lows`, whose corners are
+/// `corners` (from `bucket_offsets[lows.start]` on), by (higher vertex,
+/// corner), keeping them so, and hands their edges to `sink` in order.
+fn sort_buckets(
+    lows: Range<usize>,
+    corners: &mut [u32],
+    bucket_offsets: &[u32],
+    entry: impl Fn(u32) -> u64,
+    face_of: impl Fn(usize) -> usize,
+    sink: &mut impl Sink,
+) -> Result<()> {
+    let base = bucket_offsets[lows.start];
+    let mut entries = Vec::new();
+    for low in lows {
+        let bucket = &mut corners
+            [(bucket_offsets[low] - base) as usize..(bucket_offsets[low + 1] - base) as usize];
+        read_entries(&mut entries, bucket, &entry)?;
+        entries.sort_unstable();
+        for (corner, &e) in bucket.iter_mut().zip(&entries) {
+            *corner = e as u32;
+        }
+        bucket_edges(low as u32, &entries, &face_of, sink);
+    }
+    Ok(())
 }
 
 /// A bucket's entry for corner `c`: its edge's higher vertex, then the corner.

@@ -491,12 +491,7 @@ impl Mesh {
 
     /// The axis-aligned bounding box `(min, max)`, or `None` without vertices.
     pub fn bounding_box(&self) -> Option<(DVec3, DVec3)> {
-        let first = *self.positions.first()?;
-        Some(
-            self.positions
-                .iter()
-                .fold((first, first), |(lo, hi), &p| (lo.min(p), hi.max(p))),
-        )
+        bounding_box_of(self.positions())
     }
 
     /// Checks every face; the error names the first bad one. Blocks of
@@ -622,6 +617,23 @@ fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
         .filter(|w| w[0].0 == w[1].0)
         .map(|w| (w[0].1.min(w[1].1), w[0].1.max(w[1].1)))
         .min_by_key(|&(_, second)| second)
+}
+
+/// The axis-aligned bounding box `(min, max)` of `points`, or `None` for
+/// none; blocks of points on all threads (minima and maxima do not depend
+/// on the order they are taken in).
+pub(crate) fn bounding_box_of(points: &[DVec3]) -> Option<(DVec3, DVec3)> {
+    let first = *points.first()?;
+    let join = |(lo_a, hi_a): (DVec3, DVec3), (lo_b, hi_b): (DVec3, DVec3)| {
+        (lo_a.min(lo_b), hi_a.max(hi_b))
+    };
+    Some(
+        points
+            .par_iter()
+            .with_min_len(CHECK_CHUNK)
+            .fold(|| (first, first), |bounds, &p| join(bounds, (p, p)))
+            .reduce(|| (first, first), join),
+    )
 }
 
 /// Checks the vertex, face and index counts of a mesh to be built against

@@ -242,8 +242,7 @@ fn packed_cells_cluster_as_the_cells_themselves() {
     }
     let tolerance = 0.05;
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    let lo = positions.iter().fold(positions[0], |m, &p| m.min(p));
-    let hi = positions.iter().fold(positions[0], |m, &p| m.max(p));
+    let (lo, hi) = bounding_box_of(&positions).unwrap();
     let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
     let packed = clusters_by(&positions, tolerance, |p| {
         PackedCell::of(grid.cell(p), origin)
