@@ -4,20 +4,40 @@
 
 use std::io::Write;
 
+/// The two-digit numbers 00 to 99, written out.
+const PAIRS: &[u8; 200] = b"\
+    0001020304050607080910111213141516171819\
+    2021222324252627282930313233343536373839\
+    4041424344454647484950515253545556575859\
+    6061626364656667686970717273747576777879\
+    8081828384858687888990919293949596979899";
+
 /// Appends `value` in decimal, as `write!(w, "{value}")` does.
 #[inline]
-pub(crate) fn push_u64(w: &mut Vec<u8>, mut value: u64) {
-    let mut digits = [0u8; 20];
-    let mut at = digits.len();
-    loop {
-        at -= 1;
-        digits[at] = b'0' + (value % 10) as u8;
-        value /= 10;
-        if value == 0 {
-            break;
-        }
+pub(crate) fn push_u64(w: &mut Vec<u8>, value: u64) {
+    let count = value.checked_ilog10().unwrap_or(0) as usize + 1;
+    let mut digits = [b'0'; 20];
+    let (mut rest, mut at) = (value, count);
+    while rest >= 10 {
+        let pair = (rest % 100) as usize * 2;
+        rest /= 100;
+        at -= 2;
+        digits[at..at + 2].copy_from_slice(&PAIRS[pair..pair + 2]);
     }
-    w.extend_from_slice(&digits[at..]);
+    if at == 1 {
+        digits[0] = b'0' + rest as u8;
+    }
+    push_fixed(w, &digits, count);
+}
+
+/// Appends the first `count` bytes of `bytes`: the whole array is copied
+/// and the rest cut off again, which the compiler does with a few wide
+/// moves instead of a call to copy a length it does not know.
+#[inline]
+fn push_fixed<const N: usize>(w: &mut Vec<u8>, bytes: &[u8; N], count: usize) {
+    let len = w.len();
+    w.extend_from_slice(bytes);
+    w.truncate(len + count);
 }
 
 /// Appends `value` as `write!(w, "{value}")` does: the shortest digits that
@@ -32,16 +52,20 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
         let _ = write!(w, "{value}");
         return;
     }
+    let mut buffer = ryu::Buffer::new();
+    let text = buffer.format_finite(value).as_bytes();
+    // ryu writes most numbers as `{}` does, but for a `.0` after integers:
+    // `-5.0`, `0.25`, `1234.5678`. Those with an exponent are laid out here.
+    if !text.contains(&b'e') {
+        let text = text.strip_suffix(b".0").unwrap_or(text);
+        w.extend_from_slice(text);
+        return;
+    }
     if value.is_sign_negative() {
         w.push(b'-');
     }
-    if value == 0.0 {
-        w.push(b'0');
-        return;
-    }
-    let mut buffer = ryu::Buffer::new();
-    let text = buffer.format_finite(value.abs()).as_bytes();
-    // ryu writes digits, a point and digits, then maybe `e` and an exponent.
+    let text = text.strip_prefix(b"-").unwrap_or(text);
+    // Digits, maybe a point and digits, `e` and an exponent.
     let (mantissa, exponent) = match text.iter().position(|&c| c == b'e') {
         Some(e) => (&text[..e], exponent_of(&text[e + 1..])),
         None => (text, 0),
@@ -106,6 +130,10 @@ fn may_be_a_tie(value: f64) -> bool {
     power += zeros as i32;
     // The exact expansion's significant digits are those of mantissa · 2^power
     // (an integer) or of mantissa · 5^-power (its digits after the point).
+    // 2^60 and 5^26 alone pass 1e18: most doubles stop here.
+    if !(-25..60).contains(&power) {
+        return false;
+    }
     let digits = match power {
         0.. => 2u128.checked_pow(power as u32),
         _ => 5u128.checked_pow(power.unsigned_abs()),
@@ -197,10 +225,23 @@ mod tests {
 
     #[test]
     fn integers_are_written_as_the_formatter_writes_them() {
-        for value in [0, 1, 9, 10, 99, 100, 12345, u32::MAX as u64, u64::MAX] {
-            let mut w = Vec::new();
+        let mut values = vec![0, 1, 9, 10, 99, 100, 12345, u32::MAX as u64, u64::MAX];
+        // Every digit count, and its first and last values.
+        for digits in 1..20 {
+            let first = 10u64.pow(digits);
+            values.extend([first - 1, first, first + 1, 7 * first + 42]);
+        }
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..100_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            values.extend([state, state >> (state % 64), state % 10_000_000]);
+        }
+        for value in values {
+            let mut w = b"f ".to_vec();
             push_u64(&mut w, value);
-            assert_eq!(w, value.to_string().as_bytes());
+            assert_eq!(w, format!("f {value}").as_bytes());
         }
     }
 }

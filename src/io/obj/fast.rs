@@ -13,8 +13,9 @@
 //! line-by-line reader reads the file again to report it with its line: the
 //! result, or the error, is the same either way.
 //!
-//! Read from a file, a block at a time goes through one buffer, so the
-//! file's bytes are never all in memory and the buffer stays in cache.
+//! Read from a file, blocks go through two buffers, one filled while the
+//! other's pieces are read (and the block before is joined), so the file's
+//! bytes are never all in memory and the buffers stay in cache.
 
 use std::io::Read;
 
@@ -92,25 +93,25 @@ impl Piece {
     }
 
     fn read_lines(&mut self, data: &[u8]) -> Option<()> {
-        let mut rest = data;
+        // The next comment is found once for the lines before it, not on
+        // every line: most files have few.
+        let next_hash =
+            |from: usize| memchr(b'#', &data[from..]).map_or(data.len(), |at| from + at);
+        let mut hash = next_hash(0);
+        let mut start = 0;
         let mut line = 0;
         loop {
-            let (text, next) = match memchr(b'\n', rest) {
-                Some(end) => (&rest[..end], Some(&rest[end + 1..])),
-                None => (rest, None),
-            };
-            let text = match memchr(b'#', text) {
-                Some(hash) => &text[..hash],
-                None => text,
-            };
-            self.line(text, line)?;
-            match next {
-                Some(next) => {
-                    rest = next;
-                    line += 1;
-                }
-                None => break,
+            let end = memchr(b'\n', &data[start..]).map_or(data.len(), |at| start + at);
+            let text = &data[start..hash.min(end)];
+            if hash < end {
+                hash = next_hash(end);
             }
+            self.line(text, line)?;
+            if end == data.len() {
+                break;
+            }
+            start = end + 1;
+            line += 1;
         }
         self.newlines = line;
         Some(())
@@ -164,10 +165,11 @@ impl Piece {
             Some(b"f") => {
                 let mut size = 0u32;
                 for corner in w {
-                    let (index, uv) = match memchr(b'/', corner) {
+                    // Corners are short: a scan beats memchr's set-up.
+                    let (index, uv) = match corner.iter().position(|&b| b == b'/') {
                         Some(slash) => {
                             let rest = &corner[slash + 1..];
-                            let uv = match memchr(b'/', rest) {
+                            let uv = match rest.iter().position(|&b| b == b'/') {
                                 Some(end) => &rest[..end],
                                 None => rest,
                             };
@@ -227,10 +229,40 @@ fn index_of(value: i64, count: usize, slot: u32, relative: &mut Vec<(u32, i64)>)
     }
 }
 
-/// The file read so far, piece by piece.
+/// The pieces one block was cut into, read.
+#[derive(Default)]
+struct Block {
+    pieces: Vec<Piece>,
+    /// How many of `pieces` the block filled (the rest are kept for reuse).
+    count: usize,
+}
+
+impl Block {
+    /// Cuts `data` (whole lines) into pieces of about `piece` bytes at line
+    /// ends and reads them on all threads.
+    fn read(&mut self, data: &[u8], piece: usize) {
+        let mut cuts = Vec::new();
+        let mut start = 0;
+        while start < data.len() {
+            let end = block_end(data, start, piece);
+            cuts.push(start..end);
+            start = end;
+        }
+        if self.pieces.len() < cuts.len() {
+            self.pieces.resize_with(cuts.len(), Piece::default);
+        }
+        self.count = cuts.len();
+        self.pieces[..cuts.len()]
+            .par_iter_mut()
+            .zip(cuts.par_iter())
+            .with_max_len(1)
+            .for_each(|(piece, range)| piece.read(&data[range.clone()]));
+    }
+}
+
+/// The file read so far, block by block.
 struct Reader {
     piece: usize,
-    pieces: Vec<Piece>,
     lines_before: usize,
     positions: Vec<DVec3>,
     colours: Vec<[f64; 4]>,
@@ -248,7 +280,6 @@ impl Reader {
     fn new(piece: usize) -> Reader {
         Reader {
             piece: piece.max(1),
-            pieces: Vec::new(),
             lines_before: 0,
             positions: Vec::new(),
             colours: Vec::new(),
@@ -263,31 +294,31 @@ impl Reader {
         }
     }
 
-    /// Reads whole lines (the last may lack its line end only at the end of
-    /// the file); false when the line-by-line reader must read the file.
-    fn block(&mut self, data: &[u8]) -> bool {
-        let mut cuts = Vec::new();
-        let mut start = 0;
-        while start < data.len() {
-            let mut end = (start + self.piece).min(data.len());
-            if end < data.len() {
-                end = memchr(b'\n', &data[end - 1..]).map_or(data.len(), |at| end + at);
-            }
-            cuts.push(start..end);
-            start = end;
-        }
-        if self.pieces.len() < cuts.len() {
-            self.pieces.resize_with(cuts.len(), Piece::default);
-        }
-        self.pieces[..cuts.len()]
-            .par_iter_mut()
-            .zip(cuts.par_iter())
-            .with_max_len(1)
-            .for_each(|(piece, range)| piece.read(&data[range.clone()]));
-        let pieces = std::mem::take(&mut self.pieces);
-        let fine = pieces[..cuts.len()].iter().all(|piece| self.join(piece));
-        self.pieces = pieces;
-        fine
+    /// Appends a block read; false when the file must be read line by line.
+    fn join_block(&mut self, block: &Block) -> bool {
+        block.pieces[..block.count]
+            .iter()
+            .all(|piece| self.join(piece))
+    }
+
+    /// Reads `data`'s pieces into `reading` on all threads while `read`,
+    /// the block before, is appended and then `beside` runs (it fetches the
+    /// next block from a file). Appending is one thread's work; beside the
+    /// reading it costs little time. The first of the pair is false when the
+    /// file must be read line by line.
+    fn overlap<R: Send>(
+        &mut self,
+        reading: &mut Block,
+        data: &[u8],
+        read: &Block,
+        beside: impl FnOnce() -> R + Send,
+    ) -> (bool, R) {
+        let piece = self.piece;
+        rayon::join(
+            || reading.read(data, piece),
+            || (self.join_block(read), beside()),
+        )
+        .1
     }
 
     /// Appends a piece read; false when the file must be read line by line.
@@ -386,73 +417,134 @@ impl Reader {
     }
 }
 
+/// Where the block (or piece) that starts at `start` ends: `block` bytes
+/// on, moved to the next line end.
+fn block_end(data: &[u8], start: usize, block: usize) -> usize {
+    let end = (start + block.max(1)).min(data.len());
+    if end < data.len() {
+        memchr(b'\n', &data[end - 1..]).map_or(data.len(), |at| end + at)
+    } else {
+        end
+    }
+}
+
 /// Reads an OBJ file held in memory, `block` bytes and `piece` bytes at a
 /// time (cut at line ends); `None` when the line-by-line reader must read it.
 pub(crate) fn read_bytes(data: &[u8], block: usize, piece: usize) -> Option<MeshFile> {
     let mut reader = Reader::new(piece);
+    let (mut reading, mut read) = (Block::default(), Block::default());
     let mut start = 0;
     while start < data.len() {
-        let mut end = (start + block.max(1)).min(data.len());
-        if end < data.len() {
-            end = memchr(b'\n', &data[end - 1..]).map_or(data.len(), |at| end + at);
-        }
-        if !reader.block(&data[start..end]) {
+        let end = block_end(data, start, block);
+        if !reader
+            .overlap(&mut reading, &data[start..end], &read, || ())
+            .0
+        {
             return None;
         }
+        std::mem::swap(&mut reading, &mut read);
         start = end;
     }
-    reader.finish()
+    reader.join_block(&read).then(|| reader.finish())?
 }
 
-/// Reads an OBJ file from `source` through a buffer of `block` bytes (grown
-/// for a longer line); `Ok(None)` when the line-by-line reader must read it.
+/// A buffer of a file's bytes: whole lines up to `cut`, then the start of
+/// the line that goes on in the next buffer.
+struct Lines {
+    bytes: Vec<u8>,
+    cut: usize,
+    end: usize,
+    /// Whether the file ended in this buffer.
+    at_end: bool,
+}
+
+impl Lines {
+    fn new(size: usize) -> Lines {
+        Lines {
+            bytes: vec![0; size.max(1)],
+            cut: 0,
+            end: 0,
+            at_end: false,
+        }
+    }
+
+    fn lines(&self) -> &[u8] {
+        &self.bytes[..self.cut]
+    }
+
+    /// The start of a line the next buffer finishes.
+    fn carried(&self) -> &[u8] {
+        &self.bytes[self.cut..self.end]
+    }
+
+    /// Fills the buffer from `source` after `carried`, the start of the
+    /// line the last buffer ended in, growing it for a line longer than it.
+    fn fill(&mut self, source: &mut impl Read, carried: &[u8]) -> std::io::Result<()> {
+        if self.bytes.len() <= carried.len() {
+            self.bytes.resize(2 * carried.len(), 0);
+        }
+        self.bytes[..carried.len()].copy_from_slice(carried);
+        let mut end = carried.len();
+        loop {
+            while end < self.bytes.len() {
+                match source.read(&mut self.bytes[end..]) {
+                    Ok(0) => break,
+                    Ok(n) => end += n,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                    Err(e) => return Err(e),
+                }
+            }
+            self.end = end;
+            self.at_end = end < self.bytes.len();
+            if self.at_end {
+                self.cut = end;
+                return Ok(());
+            }
+            match memrchr(b'\n', &self.bytes[..end]) {
+                Some(last) => {
+                    self.cut = last + 1;
+                    return Ok(());
+                }
+                // A line longer than the buffer: read on into a larger one.
+                None => self.bytes.resize(2 * self.bytes.len(), 0),
+            }
+        }
+    }
+}
+
+/// Reads an OBJ file from `source` through two buffers of `block` bytes
+/// (grown for a longer line), one filled while the other is read;
+/// `Ok(None)` when the line-by-line reader must read it.
 ///
 /// # Errors
 /// Whatever reading `source` returns.
 pub(crate) fn read_source(
-    mut source: impl Read,
+    mut source: impl Read + Send,
     block: usize,
     piece: usize,
 ) -> std::io::Result<Option<MeshFile>> {
     let mut reader = Reader::new(piece);
-    let mut buffer = vec![0u8; block.max(1)];
-    let mut filled = 0;
+    let (mut reading, mut read) = (Block::default(), Block::default());
+    let mut front = Lines::new(block);
+    front.fill(&mut source, &[])?;
+    let mut back = Lines::new(block);
     loop {
-        let mut end = filled;
-        while end < buffer.len() {
-            match source.read(&mut buffer[end..]) {
-                Ok(0) => break,
-                Ok(n) => end += n,
-                Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-                Err(e) => return Err(e),
-            }
-        }
-        let at_end = end < buffer.len();
-        let cut = if at_end {
-            end
-        } else {
-            match memrchr(b'\n', &buffer[..end]) {
-                Some(last) => last + 1,
-                None => {
-                    // A line longer than the buffer: read on into a larger one.
-                    filled = end;
-                    buffer.resize(2 * buffer.len(), 0);
-                    continue;
-                }
-            }
-        };
-        if !reader.block(&buffer[..cut]) {
+        let (joined, filled) =
+            reader.overlap(&mut reading, front.lines(), &read, || match front.at_end {
+                true => Ok(false),
+                false => back.fill(&mut source, front.carried()).map(|()| true),
+            });
+        if !joined {
             return Ok(None);
         }
-        buffer.copy_within(cut..end, 0);
-        filled = end - cut;
-        if at_end {
+        std::mem::swap(&mut reading, &mut read);
+        if !filled? {
             break;
         }
+        std::mem::swap(&mut front, &mut back);
     }
-    Ok(reader.finish())
+    Ok(reader.join_block(&read).then(|| reader.finish()).flatten())
 }
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -533,6 +625,9 @@ mod tests {
             "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\nusemtl red stone\n\
              f 1 3 4\nusemtl blue\nf 4 3 2\nusemtl red stone\nf 2 1 4\nl 1 2 3\nl -1 -2\n\
              t crease 2/1/0 0 1 2.5\nt corner 1/1/0 3 inf\nt hole 1/0/0 2\nt other 0/0/0\n",
+            // Comments at the start, back to back, inside a word, hiding a
+            // face, and on a last line without its line end.
+            "# first\n#\nv 0 0 0#x\nv 1 0 0 ##\n\nv 1 1 0\n# f 9 9 9\nf 1 2 3 # end",
             // A backslash is no line continuation in this reader: a word of a comment only.
             "v 0 0 0\nv 1 0 0\nv 1 1 0 # \\\nf 1 2 3\n",
             // No faces at all; an empty file.
