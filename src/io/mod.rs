@@ -39,6 +39,7 @@ pub use mesh_file::{
 
 pub mod creases;
 mod decimal;
+mod flushing;
 mod mesh_file;
 pub mod obj;
 pub mod off;
@@ -474,8 +475,9 @@ pub fn write_to(
     }
 }
 
-/// Writes through `fill` into a temporary file beside `path`, then renames it
-/// into place: readers of `path` never see a partial file.
+/// Writes through `fill` into a temporary file beside `path`, puts it on
+/// disk (most of it while the rest is written), then renames it into
+/// place: readers of `path` never see a partial file, even after a crash.
 ///
 /// # Errors
 /// [`IoError::MissingFolder`] when the folder does not exist; [`IoError::File`]
@@ -506,11 +508,14 @@ pub fn write_atomically(
     };
     let result = (|| {
         let file = fs::File::create(&temporary).map_err(|e| file_error("create", e))?;
-        let mut writer = BufWriter::new(file);
-        fill(&mut writer).map_err(|e| file_error("write", e))?;
-        let file = writer
-            .into_inner()
-            .map_err(|e| file_error("write", e.into_error()))?;
+        let file = std::thread::scope(|scope| {
+            let mut writer = BufWriter::new(flushing::FlushingWriter::new(scope, file));
+            fill(&mut writer).map_err(|e| file_error("write", e))?;
+            let writer = writer
+                .into_inner()
+                .map_err(|e| file_error("write", e.into_error()))?;
+            Ok::<_, IoError>(writer.into_file())
+        })?;
         file.sync_all().map_err(|e| file_error("write", e))?;
         drop(file);
         fs::rename(&temporary, path).map_err(|e| file_error("replace", e))

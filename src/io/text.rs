@@ -74,6 +74,44 @@ pub(crate) fn f64_of(word: &[u8]) -> Option<f64> {
     plain_decimal(word).or_else(|| std::str::from_utf8(word).ok()?.parse().ok())
 }
 
+/// The number the word at the start of `text` holds, read as [`f64_of`]
+/// reads that word, and the word's length. Plain decimals are read in the
+/// same pass that finds the word's end.
+#[inline]
+pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
+    let negative = text.first() == Some(&b'-');
+    let mut end = usize::from(negative);
+    let (mut mantissa, mut digits, mut decimals, mut point) = (0u64, 0usize, 0usize, false);
+    while let Some(&b) = text.get(end) {
+        match b {
+            b'0'..=b'9' => {
+                // Past 19 digits the value is not used: the word goes to f64_of.
+                mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
+                digits += 1;
+                decimals += usize::from(point);
+            }
+            b'.' if !point => point = true,
+            _ => break,
+        }
+        end += 1;
+    }
+    let word_ends = text.get(end).is_none_or(u8::is_ascii_whitespace);
+    if word_ends
+        && (1..=19).contains(&digits)
+        && mantissa <= 1 << 53
+        && decimals < EXACT_POWERS_OF_TEN.len()
+    {
+        let value = mantissa as f64 / EXACT_POWERS_OF_TEN[decimals];
+        return Some((if negative { -value } else { value }, end));
+    }
+    let end = end
+        + text[end..]
+            .iter()
+            .position(u8::is_ascii_whitespace)
+            .unwrap_or(text.len() - end);
+    f64_of(&text[..end]).map(|value| (value, end))
+}
+
 #[inline]
 fn plain_decimal(word: &[u8]) -> Option<f64> {
     let (negative, digits) = match word.split_first() {

@@ -25,7 +25,7 @@ use rayon::prelude::*;
 
 use super::{Collected, Statements};
 use crate::io::mesh_file::MeshFile;
-use crate::io::text::{f64_of, i64_of, words};
+use crate::io::text::{f64_at_start, f64_of, i64_of, words};
 use crate::mesh::MeshOptions;
 
 /// Bytes read from a file at a time.
@@ -121,6 +121,13 @@ impl Piece {
     /// must read the file.
     #[inline]
     fn line(&mut self, text: &[u8], line: usize) -> Option<()> {
+        // Most lines are `v x y z` or `f a b c ...`: read in one pass, or
+        // left to the general reading below when anything else is there.
+        match text {
+            [b'v', b' ', rest @ ..] if self.plain_vertex(rest) => return Some(()),
+            [b'f', b' ', rest @ ..] if self.plain_face(rest) => return Some(()),
+            _ => {}
+        }
         let mut w = words(text);
         match w.next() {
             Some(b"v") => {
@@ -212,6 +219,83 @@ impl Piece {
         }
         Some(())
     }
+}
+
+impl Piece {
+    /// A vertex of three coordinates and nothing after them; false, having
+    /// read nothing, for anything else.
+    #[inline]
+    fn plain_vertex(&mut self, text: &[u8]) -> bool {
+        if self.coloured == Some(true) {
+            return false;
+        }
+        let mut values = [0.0; 3];
+        let mut at = 0;
+        for value in &mut values {
+            at += skip_space(&text[at..]);
+            match f64_at_start(&text[at..]) {
+                Some((v, length)) if length > 0 => {
+                    *value = v;
+                    at += length;
+                }
+                _ => return false,
+            }
+        }
+        if at + skip_space(&text[at..]) < text.len() {
+            return false;
+        }
+        self.coloured = Some(false);
+        self.positions
+            .push(DVec3::new(values[0], values[1], values[2]));
+        true
+    }
+
+    /// A face of positive vertex indices without UVs or normals; false,
+    /// having read nothing, for anything else.
+    #[inline]
+    fn plain_face(&mut self, text: &[u8]) -> bool {
+        if self.has_uvs == Some(true) {
+            return false;
+        }
+        let first_corner = self.face_indices.len();
+        let mut at = 0;
+        loop {
+            at += skip_space(&text[at..]);
+            if at == text.len() {
+                break;
+            }
+            let start = at;
+            let mut value = 0u64;
+            while let Some(&b @ b'0'..=b'9') = text.get(at) {
+                value = value * 10 + u64::from(b - b'0');
+                at += 1;
+                if at - start > 10 {
+                    break;
+                }
+            }
+            let whole = text.get(at).is_none_or(u8::is_ascii_whitespace);
+            if !whole || at == start || value == 0 || value > u64::from(u32::MAX) {
+                self.face_indices.truncate(first_corner);
+                return false;
+            }
+            self.face_indices.push((value - 1) as u32);
+        }
+        let size = self.face_indices.len() - first_corner;
+        if size > 0 {
+            self.has_uvs = Some(false);
+        }
+        self.face_sizes
+            .push(u32::try_from(size).unwrap_or(u32::MAX));
+        true
+    }
+}
+
+/// How many bytes of white space `text` starts with.
+#[inline]
+fn skip_space(text: &[u8]) -> usize {
+    text.iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .unwrap_or(text.len())
 }
 
 /// An OBJ index made 0-based: positive ones at once, negative ones noted
@@ -666,6 +750,48 @@ mod tests {
         ];
         for file in files {
             assert!(!check(file), "{file}");
+        }
+    }
+
+    #[test]
+    fn lines_on_the_edge_of_the_one_pass_reading_read_equal() {
+        let square = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n";
+        let lines = [
+            // Spacing the one-pass reading must take as the general one does.
+            "f  1  2\t3  \r",
+            "f 1 2 3 \x0c",
+            "v\t2 2 2\nf 1 2 5",
+            "v  2   2 2 \r\nf 1 2 5",
+            // Numbers it leaves to the general reading.
+            "v 1e5 2 3\nf 1 2 5",
+            "v 12345678901234567890 1 2\nf 1 2 5",
+            "v 0.12345678901234567 -9007199254740993 2\nf 1 2 5",
+            "v +1 .5 1.\nf 1 2 5",
+            "v -0 -0.0 0.\nf 1 2 5",
+            "v inf 1 2\nf 1 2 5",
+            "v - 1 2\nf 1 2 5",
+            "v . 1 2\nf 1 2 5",
+            "v 1 2 3 4\nf 1 2 5",
+            "v 1 2\nf 1 2 5",
+            "v 1 2 3 0.5 0.5 0.5\nf 1 2 5",
+            "v 1 2 3x\nf 1 2 5",
+            // Indices it leaves to the general reading.
+            "f +1 2 3",
+            "f 1 2 -1",
+            "f 01 002 0000000003",
+            "f 1 2 4294967296",
+            "f 1 2 4294967297",
+            "f 1 2 99999999999",
+            "f 1 2 3a",
+            "f 1 2 0",
+            "f 1/1 2/2 3/3\nvt 0 0\nf 1 2 3",
+            "vt 0 0\nvt 1 0\nvt 1 1\nf 1 2 3\nf 1/1 2/2 3/3",
+            "f 1//1 2//1 3//1\nf 1 2 3",
+            "f",
+            "f ",
+        ];
+        for line in lines {
+            check(&format!("{square}{line}\nf 1 2 3 4\n"));
         }
     }
 
