@@ -63,6 +63,17 @@ pub(crate) fn advised_copy<T: Copy + Send + Sync>(values: &[T]) -> Vec<T> {
     copy
 }
 
+/// `f(0), …, f(n - 1)` written on all threads into memory advised for huge
+/// pages when large. Aborts, as `collect` does, when memory runs out.
+pub(crate) fn advised_map<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
+    let mut values = Vec::with_capacity(n);
+    if n.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE_ADVICE_BYTES {
+        weft_pages::advise_huge_pages(values.spare_capacity_mut());
+    }
+    values.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(f));
+    values
+}
+
 /// A copy of `values`, reserved fallibly.
 pub(crate) fn try_copy<T: Clone>(values: &[T], what: &str) -> Result<Vec<T>> {
     let mut copy = try_vec(values.len(), what)?;

@@ -43,18 +43,20 @@ fn push_fixed<const N: usize>(w: &mut Vec<u8>, bytes: &[u8; N], count: usize) {
 /// Appends `value` as `write!(w, "{value}")` does: the shortest digits that
 /// read back as the same double, never in exponent form (`1e20` is written
 /// `100000000000000000000`, `1.0` is `1`, `-0.0` is `-0`). The digits are
-/// ryu's, which are the standard library's; only the layout is done here.
+/// zmij's (Schubfach), which are the standard library's; only the layout is
+/// done here.
 pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
     if !value.is_finite() || may_be_a_tie(value) {
         // NaN and the infinities (which a mesh never holds), and doubles
         // halfway between two shortest decimals, which the formatter and
-        // ryu round differently: through the formatter.
+        // the shortest-digit algorithms may round differently: through the
+        // formatter.
         let _ = write!(w, "{value}");
         return;
     }
-    let mut buffer = ryu::Buffer::new();
+    let mut buffer = zmij::Buffer::new();
     let text = buffer.format_finite(value).as_bytes();
-    // ryu writes most numbers as `{}` does, but for a `.0` after integers:
+    // zmij writes most numbers as `{}` does, but for a `.0` after integers:
     // `-5.0`, `0.25`, `1234.5678`. Those with an exponent are laid out here.
     if !text.contains(&b'e') {
         let text = text.strip_suffix(b".0").unwrap_or(text);
@@ -107,9 +109,9 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
 }
 
 /// Whether `value` could lie exactly halfway between two decimals of its
-/// shortest length, where ryu and the formatter choose differently: only a
-/// double whose exact decimal expansion has at most 18 significant digits
-/// can (`1690060720831323.25`, whose shortest forms end in 2 and 3). Such
+/// shortest length, where the shortest-digit algorithms and the formatter
+/// may choose differently: only a double whose exact decimal expansion has
+/// at most 18 significant digits can (`1690060720831323.25`, whose shortest forms end in 2 and 3). Such
 /// doubles are integers below 1e18 or have few binary fraction digits;
 /// the coordinates of scanned and subdivided meshes almost never are.
 fn may_be_a_tie(value: f64) -> bool {
@@ -142,10 +144,11 @@ fn may_be_a_tie(value: f64) -> bool {
     digits.is_some_and(|n| n < LIMIT)
 }
 
-/// The exponent ryu wrote after its `e`.
+/// The exponent zmij wrote after its `e` (`e-7`, `e+16`).
 fn exponent_of(text: &[u8]) -> i32 {
     let (sign, digits) = match text.split_first() {
         Some((b'-', rest)) => (-1, rest),
+        Some((b'+', rest)) => (1, rest),
         _ => (1, text),
     };
     sign * digits

@@ -592,9 +592,10 @@ pub(crate) struct UnionFind {
 
 impl UnionFind {
     pub(crate) fn new(n: usize) -> UnionFind {
+        // Fresh, large and written once: on all threads, in huge pages.
         UnionFind {
-            parent: (0..n as u32).collect(),
-            size: vec![1; n],
+            parent: crate::buffers::advised_map(n, |i| i as u32),
+            size: crate::buffers::advised_map(n, |_| 1),
         }
     }
 
