@@ -110,12 +110,16 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
 
 /// Whether `value` could lie exactly halfway between two decimals of its
 /// shortest length, where the shortest-digit algorithms and the formatter
-/// may choose differently: only a double whose exact decimal expansion has
-/// at most 18 significant digits can (`1690060720831323.25`, whose shortest forms end in 2 and 3). Such
-/// doubles are integers below 1e18 or have few binary fraction digits;
-/// the coordinates of scanned and subdivided meshes almost never are.
+/// may choose differently. A tie is one digit longer than the shortest
+/// form, so its exact decimal expansion has 16 to 18 significant digits
+/// (`1690060720831323.25`, whose shortest forms end in 2 and 3): with 15 or
+/// fewer, no shorter decimal reads back as the same double, and the exact
+/// digits are the only shortest ones (integers, halves, the coordinates of
+/// grids). Doubles with 16 to 18 exact digits are integers or have few
+/// binary fraction digits; scanned and subdivided coordinates almost never do.
 fn may_be_a_tie(value: f64) -> bool {
-    const LIMIT: u128 = 1_000_000_000_000_000_000;
+    // 16 to 18 digits (or fewer, with trailing zeros: counted as a maybe).
+    const DIGITS: std::ops::Range<u128> = 1_000_000_000_000_000..1_000_000_000_000_000_000;
     let bits = value.to_bits();
     let exponent = ((bits >> 52) & 0x7ff) as i32;
     let fraction = bits & ((1 << 52) - 1);
@@ -141,7 +145,7 @@ fn may_be_a_tie(value: f64) -> bool {
         _ => 5u128.checked_pow(power.unsigned_abs()),
     }
     .and_then(|scale| scale.checked_mul(mantissa as u128));
-    digits.is_some_and(|n| n < LIMIT)
+    digits.is_some_and(|n| DIGITS.contains(&n))
 }
 
 /// The exponent zmij wrote after its `e` (`e-7`, `e+16`).
@@ -186,6 +190,7 @@ mod tests {
             1e22,
             1.2345e23,
             9007199254740993.0,
+            1690060720831323.25,
             5e-324,
             f64::MIN_POSITIVE,
             f64::MAX,
@@ -214,6 +219,19 @@ mod tests {
             assert_eq!(pushed(value), format!("{value}"), "{value:e}");
             let decimal = (next() % 2_000_001) as f64 / 1000.0 - 1000.0;
             assert_eq!(pushed(decimal), format!("{decimal}"));
+        }
+        // Integers, halves and grid steps, whose exact digits are short.
+        for i in -300_000..300_000 {
+            for value in [i as f64, i as f64 * 0.5, i as f64 * 0.125, i as f64 * 1e-3] {
+                assert_eq!(pushed(value), format!("{value}"), "{value:e}");
+            }
+        }
+        for power in 0..64 {
+            for value in [2f64.powi(power), 10f64.powi(power / 3), 2f64.powi(-power)] {
+                for value in [value, value - 1.0, value + 1.0, -value] {
+                    assert_eq!(pushed(value), format!("{value}"), "{value:e}");
+                }
+            }
         }
         // Full mantissas with few binary fraction digits, or none, where
         // halfway doubles lie (and just past where they can).
