@@ -190,7 +190,8 @@ mod tests {
             1e22,
             1.2345e23,
             9007199254740993.0,
-            1690060720831323.25,
+            // Halfway between 1690060720831323.2 and .3 (clippy would shorten the literal).
+            1_690_060_720_831_323.0 + 0.25,
             5e-324,
             f64::MIN_POSITIVE,
             f64::MAX,
