@@ -71,7 +71,12 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
 /// digits, `inf`, a `+` sign, malformed words) goes to the standard library.
 #[inline]
 pub(crate) fn f64_of(word: &[u8]) -> Option<f64> {
-    plain_decimal(word).or_else(|| std::str::from_utf8(word).ok()?.parse().ok())
+    plain_decimal(word).or_else(|| parsed_f64(word))
+}
+
+/// The standard library's reading of `word`.
+fn parsed_f64(word: &[u8]) -> Option<f64> {
+    std::str::from_utf8(word).ok()?.parse().ok()
 }
 
 /// The number the word at the start of `text` holds, read as [`f64_of`]
@@ -104,12 +109,13 @@ pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
         let value = mantissa as f64 / EXACT_POWERS_OF_TEN[decimals];
         return Some((if negative { -value } else { value }, end));
     }
+    // What fails the test above fails `plain_decimal` too.
     let end = end
         + text[end..]
             .iter()
             .position(u8::is_ascii_whitespace)
             .unwrap_or(text.len() - end);
-    f64_of(&text[..end]).map(|value| (value, end))
+    parsed_f64(&text[..end]).map(|value| (value, end))
 }
 
 #[inline]
