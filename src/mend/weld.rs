@@ -137,7 +137,7 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
             .map(|v| clusters.root(v)),
     );
     drop(clusters);
-    let mut first_vertex: Vec<u32> = Vec::new();
+    let mut first_vertex = try_vec::<u32>(vertex_count, "the weld clusters")?;
     {
         let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
         label.resize(vertex_count, u32::MAX);
@@ -152,29 +152,28 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     }
     let cluster_count = first_vertex.len();
 
-    // Faces over clusters, repeats dropped, collapsed faces removed: each
-    // face's distinct clusters counted, then written, on all threads.
-    let faces = mesh.face_count();
-    let offsets = par_offsets(faces, "the welded faces", |f| {
-        match distinct_clusters(mesh.face(f), &cluster_of, |_, _| {}) {
-            kept if kept < 3 => 0,
-            kept => kept as u32,
+    // Faces over clusters, repeats dropped, collapsed faces removed.
+    let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the welded face sizes")?;
+    let mut face_indices = try_vec::<u32>(mesh.index_count(), "the welded face indices")?;
+    let mut seen_in_face = vec![u32::MAX; cluster_count];
+    let mut removed_face_count = 0;
+    for (f, face) in mesh.faces().enumerate() {
+        let start = face_indices.len();
+        for &v in face {
+            let c = cluster_of[v as usize];
+            if seen_in_face[c as usize] != f as u32 {
+                seen_in_face[c as usize] = f as u32;
+                face_indices.push(c);
+            }
         }
-    })?;
-    let mut face_indices = fill_by_offsets(&offsets, "the welded face indices", |f, slot| {
-        if !slot.is_empty() {
-            distinct_clusters(mesh.face(f), &cluster_of, |i, c| slot[i] = c);
+        let size = face_indices.len() - start;
+        if size < 3 {
+            face_indices.truncate(start);
+            removed_face_count += 1;
+        } else {
+            face_sizes.push(size as u32);
         }
-    })?;
-    let mut face_sizes = try_vec::<u32>(faces, "the welded face sizes")?;
-    face_sizes.par_extend(
-        offsets
-            .par_windows(2)
-            .with_min_len(CHUNK)
-            .filter_map(|w| (w[1] > w[0]).then_some(w[1] - w[0])),
-    );
-    drop(offsets);
-    let removed_face_count = faces - face_sizes.len();
+    }
 
     // Keep only the clusters some face uses, in order of their first vertex
     // (marked, numbered and renumbered on all threads).
@@ -207,35 +206,6 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
         Mesh::from_valid_parts(out_positions, face_sizes, face_indices),
         report,
     ))
-}
-
-/// Gives `put` the distinct clusters of `face`'s corners in corner order,
-/// each with its place among them; returns how many there are.
-#[inline]
-fn distinct_clusters(face: &[u32], cluster_of: &[u32], mut put: impl FnMut(usize, u32)) -> usize {
-    let mut kept = 0;
-    if face.len() <= 16 {
-        // Small faces, nearly all: each corner against those kept before it.
-        let mut seen = [0u32; 16];
-        for &v in face {
-            let c = cluster_of[v as usize];
-            if !seen[..kept].contains(&c) {
-                seen[kept] = c;
-                put(kept, c);
-                kept += 1;
-            }
-        }
-    } else {
-        let mut seen = std::collections::HashSet::with_capacity(face.len());
-        for &v in face {
-            let c = cluster_of[v as usize];
-            if seen.insert(c) {
-                put(kept, c);
-                kept += 1;
-            }
-        }
-    }
-    kept
 }
 
 /// How many vertices no face uses.
@@ -333,10 +303,11 @@ fn clusters_by<K: CellKey>(
 
     let mut clusters = UnionFind::new(positions.len());
     // Distinct positions ("sites"), each standing for its exact duplicates.
-    let mut sites: Vec<u32> = Vec::with_capacity(positions.len());
+    let mut sites = try_vec::<u32>(positions.len(), "the weld sites")?;
     // Sites of each occupied cell: cell_sites[cell_starts[k]..cell_starts[k + 1]].
-    let mut cell_keys: Vec<K> = Vec::new();
-    let mut cell_starts: Vec<u32> = Vec::new();
+    // Room for a cell a vertex (only what is written is faulted in).
+    let mut cell_keys = try_vec::<K>(positions.len(), "the weld cells")?;
+    let mut cell_starts = try_vec::<u32>(positions.len() + 1, "the weld cells")?;
     let mut start = 0;
     while start < entries.len() {
         let key = entries[start].0;

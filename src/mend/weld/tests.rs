@@ -280,30 +280,6 @@ fn cells_too_many_for_21_bits_are_not_packed() {
 }
 
 #[test]
-fn faces_keep_their_first_corner_of_each_cluster_in_order() {
-    // Vertex v is in cluster v % 7: small faces take the array path, faces
-    // of more than 16 corners the set; both keep first uses in order.
-    let cluster_of: Vec<u32> = (0..100).map(|v| v % 7).collect();
-    for face in [
-        vec![0u32, 7, 1, 8, 2],
-        vec![3, 10, 17, 24],
-        (0..17).collect(),
-        (0..40).rev().collect(),
-        (0..60).map(|i| (i * 13) % 100).collect(),
-    ] {
-        let mut expected = Vec::new();
-        for &v in &face {
-            if !expected.contains(&cluster_of[v as usize]) {
-                expected.push(cluster_of[v as usize]);
-            }
-        }
-        let mut got = vec![u32::MAX; expected.len()];
-        let kept = distinct_clusters(&face, &cluster_of, |i, c| got[i] = c);
-        assert_eq!((kept, &got), (expected.len(), &expected), "{face:?}");
-    }
-}
-
-#[test]
 fn a_large_polygon_with_merged_corners_loses_only_its_repeats() {
     // A 20-gon whose corners come in close pairs: it welds to a 10-gon.
     let positions: Vec<[f64; 3]> = (0..20)
