@@ -13,6 +13,15 @@ pub(crate) const CHUNK: usize = 4096;
 /// Buffers from this size up are advised for transparent huge pages.
 const HUGE_PAGE_ADVICE_BYTES: usize = 8 << 20;
 
+/// Advises `memory` for huge pages when it is large; says whether it was.
+fn advise_when_large<T>(memory: &mut [T]) -> bool {
+    let large = std::mem::size_of_val(memory) >= HUGE_PAGE_ADVICE_BYTES;
+    if large {
+        weft_pages::advise_huge_pages(memory);
+    }
+    large
+}
+
 /// Reserve `capacity` elements or report, rather than abort, that memory ran out.
 pub(crate) fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
     let mut v = Vec::new();
@@ -24,9 +33,7 @@ pub(crate) fn try_vec<T>(capacity: usize, what: &str) -> Result<Vec<T>> {
     })?;
     // Large results are written once into fresh memory: with 4 KiB pages,
     // faulting it in costs more than the arithmetic that fills it.
-    if capacity.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE_ADVICE_BYTES {
-        weft_pages::advise_huge_pages(v.spare_capacity_mut());
-    }
+    advise_when_large(v.spare_capacity_mut());
     Ok(v)
 }
 
@@ -41,9 +48,7 @@ pub(crate) fn fresh_zeroed<T: bytemuck::Zeroable>(n: usize, what: &str) -> Resul
             std::mem::size_of::<T>()
         ))
     })?;
-    if std::mem::size_of_val(values.as_slice()) >= HUGE_PAGE_ADVICE_BYTES {
-        weft_pages::advise_huge_pages(values.as_mut_slice());
-    }
+    advise_when_large(values.as_mut_slice());
     Ok(values)
 }
 
@@ -52,8 +57,7 @@ pub(crate) fn fresh_zeroed<T: bytemuck::Zeroable>(n: usize, what: &str) -> Resul
 /// Aborts, as `to_vec` does, when memory runs out.
 pub(crate) fn advised_copy<T: Copy + Send + Sync>(values: &[T]) -> Vec<T> {
     let mut copy = Vec::with_capacity(values.len());
-    if std::mem::size_of_val(values) >= HUGE_PAGE_ADVICE_BYTES {
-        weft_pages::advise_huge_pages(copy.spare_capacity_mut());
+    if advise_when_large(&mut copy.spare_capacity_mut()[..values.len()]) {
         // Fresh pages fault in on the thread that first writes them: copy
         // on all threads.
         copy.par_extend(values.par_iter().copied().with_min_len(16 * CHUNK));
@@ -67,9 +71,7 @@ pub(crate) fn advised_copy<T: Copy + Send + Sync>(values: &[T]) -> Vec<T> {
 /// pages when large. Aborts, as `collect` does, when memory runs out.
 pub(crate) fn advised_map<T: Send>(n: usize, f: impl Fn(usize) -> T + Sync + Send) -> Vec<T> {
     let mut values = Vec::with_capacity(n);
-    if n.saturating_mul(std::mem::size_of::<T>()) >= HUGE_PAGE_ADVICE_BYTES {
-        weft_pages::advise_huge_pages(values.spare_capacity_mut());
-    }
+    advise_when_large(values.spare_capacity_mut());
     values.par_extend((0..n).into_par_iter().with_min_len(CHUNK).map(f));
     values
 }

@@ -58,20 +58,16 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
     let text = buffer.format_finite(value).as_bytes();
     // zmij writes most numbers as `{}` does, but for a `.0` after integers:
     // `-5.0`, `0.25`, `1234.5678`. Those with an exponent are laid out here.
-    if !text.contains(&b'e') {
-        let text = text.strip_suffix(b".0").unwrap_or(text);
-        w.extend_from_slice(text);
+    let Some(e) = text.iter().position(|&c| c == b'e') else {
+        w.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
         return;
-    }
+    };
+    // Digits, maybe a point and digits, `e` and an exponent.
+    let (mantissa, exponent) = (&text[..e], exponent_of(&text[e + 1..]));
     if value.is_sign_negative() {
         w.push(b'-');
     }
-    let text = text.strip_prefix(b"-").unwrap_or(text);
-    // Digits, maybe a point and digits, `e` and an exponent.
-    let (mantissa, exponent) = match text.iter().position(|&c| c == b'e') {
-        Some(e) => (&text[..e], exponent_of(&text[e + 1..])),
-        None => (text, 0),
-    };
+    let mantissa = mantissa.strip_prefix(b"-").unwrap_or(mantissa);
     let mut digits = [0u8; 24];
     let mut count = 0;
     let mut before_point = mantissa.len() as i32;

@@ -71,7 +71,11 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
 /// digits, `inf`, a `+` sign, malformed words) goes to the standard library.
 #[inline]
 pub(crate) fn f64_of(word: &[u8]) -> Option<f64> {
-    plain_decimal(word).or_else(|| parsed_f64(word))
+    // A word holds no white space; a slice that does is no number, as for
+    // the standard library.
+    f64_at_start(word)
+        .filter(|&(_, length)| length == word.len())
+        .map(|(value, _)| value)
 }
 
 /// The standard library's reading of `word`.
@@ -80,8 +84,8 @@ fn parsed_f64(word: &[u8]) -> Option<f64> {
 }
 
 /// The number the word at the start of `text` holds, read as [`f64_of`]
-/// reads that word, and the word's length. Plain decimals are read in the
-/// same pass that finds the word's end.
+/// describes, and the word's length. Plain decimals are read in the same
+/// pass that finds the word's end.
 #[inline]
 pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
     let negative = text.first() == Some(&b'-');
@@ -90,7 +94,8 @@ pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
     while let Some(&b) = text.get(end) {
         match b {
             b'0'..=b'9' => {
-                // Past 19 digits the value is not used: the word goes to f64_of.
+                // Past 19 digits the value is not used: the word goes to the
+                // standard library.
                 mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
                 digits += 1;
                 decimals += usize::from(point);
@@ -109,46 +114,12 @@ pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
         let value = mantissa as f64 / EXACT_POWERS_OF_TEN[decimals];
         return Some((if negative { -value } else { value }, end));
     }
-    // What fails the test above fails `plain_decimal` too.
     let end = end
         + text[end..]
             .iter()
             .position(u8::is_ascii_whitespace)
             .unwrap_or(text.len() - end);
     parsed_f64(&text[..end]).map(|value| (value, end))
-}
-
-#[inline]
-fn plain_decimal(word: &[u8]) -> Option<f64> {
-    let (negative, digits) = match word.split_first() {
-        Some((b'-', rest)) => (true, rest),
-        _ => (false, word),
-    };
-    let mut mantissa = 0u64;
-    let mut digit_count = 0usize;
-    let mut decimals: Option<usize> = None;
-    for &b in digits {
-        match b {
-            b'0'..=b'9' => {
-                if digit_count == 19 {
-                    return None;
-                }
-                mantissa = mantissa * 10 + u64::from(b - b'0');
-                digit_count += 1;
-                if let Some(d) = &mut decimals {
-                    *d += 1;
-                }
-            }
-            b'.' if decimals.is_none() => decimals = Some(0),
-            _ => return None,
-        }
-    }
-    let decimals = decimals.unwrap_or(0);
-    if digit_count == 0 || mantissa > 1 << 53 || decimals >= EXACT_POWERS_OF_TEN.len() {
-        return None;
-    }
-    let value = mantissa as f64 / EXACT_POWERS_OF_TEN[decimals];
-    Some(if negative { -value } else { value })
 }
 
 /// A signed integer, exactly as `str::parse::<i64>` reads it, or `None`
