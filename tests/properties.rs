@@ -407,7 +407,7 @@ mod operations {
     use super::*;
     use weft::mend::cull::cull_adjacent;
     use weft::mend::orient::{flip, signed_volume, unify_orientation};
-    use weft::mend::weld::{join, weld, WeldReport};
+    use weft::mend::weld::{join, weld, weld_owned, WeldReport};
     use weft::mesh::triangulate::triangulate;
     use weft::subdivide::{
         catmull_clark, loop_subdivision, refined_counts, subdivide, NakedEdges, Refiner, Scheme,
@@ -593,6 +593,7 @@ mod operations {
         fn weld_restores_loose_faces_and_is_idempotent((mesh, _) in polygon_mesh()) {
             let loose = unweld(&mesh);
             let (welded, report) = weld(&loose, 1e-6).unwrap();
+            prop_assert_eq!(weld_owned(loose.clone(), 1e-6).unwrap(), (welded.clone(), report));
             prop_assert!(welded.vertex_count() <= loose.vertex_count());
             prop_assert!(welded.face_count() <= loose.face_count());
             prop_assert_eq!(welded.vertex_count(), mesh.vertex_count());
@@ -664,6 +665,7 @@ mod operations {
             prop_assert!(welded.face_count() <= mesh.face_count());
             prop_assert!(welded.index_count() <= mesh.index_count());
             prop_assert_eq!(&welded, &expected);
+            prop_assert_eq!(weld_owned(mesh.clone(), tolerance).unwrap(), (welded.clone(), report));
             let clusters = cluster.iter().enumerate().filter(|&(v, &c)| v == c).count();
             prop_assert_eq!(report.merged_vertex_count, n - clusters);
             prop_assert_eq!(report.unused_vertex_count, clusters - welded.vertex_count());

@@ -30,7 +30,7 @@ use glam::DVec3;
 use thiserror::Error;
 
 use crate::error::MeshError;
-use crate::mend::weld::weld;
+use crate::mend::weld::weld_owned;
 use crate::mesh::{Mesh, MeshOptions};
 
 pub use mesh_file::{
@@ -195,7 +195,7 @@ pub enum PlyEncoding {
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 pub struct ReadOptions {
     /// Merge vertices at identical positions (STL stores every triangle's
-    /// corners separately), as [`weld`] at tolerance 0 does: faces that
+    /// corners separately), as [`weld`](crate::mend::weld::weld) at tolerance 0 does: faces that
     /// collapse are dropped, the vertices no face uses are left out.
     pub weld: bool,
     /// Accept faces that name a vertex more than once, as
@@ -242,7 +242,7 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
             .map_err(|e| e.in_file(path))?,
     };
     if options.weld {
-        weld_identical(path, &mesh)
+        weld_identical(path, mesh)
     } else {
         Ok(mesh)
     }
@@ -262,7 +262,7 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
             .map_err(|e| e.in_file(path))?,
     };
     if options.weld {
-        Ok(MeshFile::new(weld_identical(path, &file.mesh)?))
+        Ok(MeshFile::new(weld_identical(path, file.mesh)?))
     } else {
         Ok(file)
     }
@@ -277,11 +277,11 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, IoError> {
     })
 }
 
-/// The weld of [`ReadOptions::weld`]: the library's [`weld`] at tolerance 0,
+/// The weld of [`ReadOptions::weld`]: the library's [`weld`](crate::mend::weld::weld) at tolerance 0,
 /// which merges vertices at identical positions and drops faces that
-/// collapse.
-fn weld_identical(path: &Path, mesh: &Mesh) -> Result<Mesh, IoError> {
-    weld(mesh, 0.0)
+/// collapse, written over the mesh read.
+fn weld_identical(path: &Path, mesh: Mesh) -> Result<Mesh, IoError> {
+    weld_owned(mesh, 0.0)
         .map(|(welded, _)| welded)
         .map_err(|source| IoError::Weld {
             path: path.to_path_buf(),

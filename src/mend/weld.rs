@@ -17,7 +17,7 @@ use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, par_map, par_offsets, try_vec, CHUNK};
+use crate::buffers::{par_map, par_offsets, try_copy, try_vec, CHUNK};
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
@@ -122,23 +122,47 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 /// [`Error::InvalidArgument`] when `tolerance` is negative, NaN or infinite;
 /// [`Error::OutOfMemory`] when the result cannot be allocated.
 pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
-    check_tolerance(tolerance)?;
-    let positions = mesh.positions();
-    let vertex_count = positions.len();
-    let clusters = vertex_clusters(positions, tolerance)?;
+    let clusters = Clusters::of(mesh.positions(), tolerance)?;
+    let positions = try_copy(mesh.positions(), "the welded positions")?;
+    let face_sizes = try_copy(mesh.face_sizes(), "the welded face sizes")?;
+    let face_indices = try_copy(mesh.face_indices(), "the welded face indices")?;
+    clusters.apply(positions, face_sizes, face_indices)
+}
 
-    // The cluster of each vertex, numbered in order of its first vertex.
-    // Each vertex's root, found on all threads, then numbered in order.
-    let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
-    cluster_of.par_extend(
-        (0..vertex_count as u32)
-            .into_par_iter()
-            .with_min_len(4096)
-            .map(|v| clusters.root(v)),
-    );
-    drop(clusters);
-    let mut first_vertex = try_vec::<u32>(vertex_count, "the weld clusters")?;
-    {
+/// As [`weld`], the result written over `mesh`'s own arrays: a command that
+/// reads a mesh only to weld it needs no second copy of its positions and
+/// faces (for 10 M triangles, 280 MB less, none of it fresh memory).
+///
+/// # Errors
+/// As [`weld`].
+pub fn weld_owned(mesh: Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
+    let clusters = Clusters::of(mesh.positions(), tolerance)?;
+    let (positions, face_sizes, face_indices) = mesh.into_parts();
+    clusters.apply(positions, face_sizes, face_indices)
+}
+
+/// The clusters of a weld: each vertex's, numbered in order of their first
+/// vertex, and each cluster's first vertex.
+struct Clusters {
+    cluster_of: Vec<u32>,
+    first_vertex: Vec<u32>,
+}
+
+impl Clusters {
+    fn of(positions: &[DVec3], tolerance: f64) -> Result<Clusters> {
+        check_tolerance(tolerance)?;
+        let vertex_count = positions.len();
+        let clusters = vertex_clusters(positions, tolerance)?;
+        // Each vertex's root, found on all threads, then numbered in order.
+        let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
+        cluster_of.par_extend(
+            (0..vertex_count as u32)
+                .into_par_iter()
+                .with_min_len(4096)
+                .map(|v| clusters.root(v)),
+        );
+        drop(clusters);
+        let mut first_vertex = try_vec::<u32>(vertex_count, "the weld clusters")?;
         let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
         label.resize(vertex_count, u32::MAX);
         for (v, cluster) in cluster_of.iter_mut().enumerate() {
@@ -149,63 +173,91 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
             }
             *cluster = label[root];
         }
+        Ok(Clusters {
+            cluster_of,
+            first_vertex,
+        })
     }
-    let cluster_count = first_vertex.len();
 
-    // Faces over clusters, repeats dropped, collapsed faces removed.
-    let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the welded face sizes")?;
-    let mut face_indices = try_vec::<u32>(mesh.index_count(), "the welded face indices")?;
-    let mut seen_in_face = vec![u32::MAX; cluster_count];
-    let mut removed_face_count = 0;
-    for (f, face) in mesh.faces().enumerate() {
-        let start = face_indices.len();
-        for &v in face {
-            let c = cluster_of[v as usize];
-            if seen_in_face[c as usize] != f as u32 {
-                seen_in_face[c as usize] = f as u32;
-                face_indices.push(c);
+    /// The welded mesh, written over the arrays of the mesh the clusters
+    /// are of: every write lands at or before what is still to be read.
+    fn apply(
+        self,
+        mut positions: Vec<DVec3>,
+        mut face_sizes: Vec<u32>,
+        mut face_indices: Vec<u32>,
+    ) -> Result<(Mesh, WeldReport)> {
+        let Clusters {
+            cluster_of,
+            first_vertex,
+        } = self;
+        let vertex_count = positions.len();
+        let cluster_count = first_vertex.len();
+
+        // Faces over clusters, repeats dropped, collapsed faces removed.
+        let mut seen_in_face = try_vec::<u32>(cluster_count, "the weld clusters")?;
+        seen_in_face.resize(cluster_count, u32::MAX);
+        let (mut read, mut written, mut kept_faces) = (0, 0, 0);
+        for f in 0..face_sizes.len() {
+            let start = written;
+            let size = face_sizes[f] as usize;
+            for corner in read..read + size {
+                let c = cluster_of[face_indices[corner] as usize];
+                if seen_in_face[c as usize] != f as u32 {
+                    seen_in_face[c as usize] = f as u32;
+                    face_indices[written] = c;
+                    written += 1;
+                }
+            }
+            read += size;
+            if written - start < 3 {
+                written = start;
+            } else {
+                face_sizes[kept_faces] = (written - start) as u32;
+                kept_faces += 1;
             }
         }
-        let size = face_indices.len() - start;
-        if size < 3 {
-            face_indices.truncate(start);
-            removed_face_count += 1;
-        } else {
-            face_sizes.push(size as u32);
-        }
-    }
+        let removed_face_count = face_sizes.len() - kept_faces;
+        face_indices.truncate(written);
+        face_sizes.truncate(kept_faces);
+        drop((seen_in_face, cluster_of));
 
-    // Keep only the clusters some face uses, in order of their first vertex
-    // (marked, numbered and renumbered on all threads).
-    let used = par_map(cluster_count, "the welded vertices", |_| {
-        AtomicBool::new(false)
-    })?;
-    face_indices
-        .par_iter()
-        .with_min_len(CHUNK)
-        .for_each(|&c| used[c as usize].store(true, Relaxed));
-    // Each kept cluster's new index, and the count after the last.
-    let new_index = par_offsets(cluster_count, "the welded vertices", |c| {
-        u32::from(used[c].load(Relaxed))
-    })?;
-    let out_positions = fill_by_offsets(&new_index, "the welded positions", |c, slot| {
-        if let [slot] = slot {
-            *slot = positions[first_vertex[c] as usize];
+        // Keep only the clusters some face uses, in order of their first
+        // vertex (marked and numbered on all threads). The k-th kept
+        // cluster's first vertex is at k or after it, past every slot
+        // written before it.
+        let used = par_map(cluster_count, "the welded vertices", |_| {
+            AtomicBool::new(false)
+        })?;
+        face_indices
+            .par_iter()
+            .with_min_len(CHUNK)
+            .for_each(|&c| used[c as usize].store(true, Relaxed));
+        // Each kept cluster's new index, and the count after the last.
+        let new_index = par_offsets(cluster_count, "the welded vertices", |c| {
+            u32::from(used[c].load(Relaxed))
+        })?;
+        drop(used);
+        for c in 0..cluster_count {
+            if new_index[c] != new_index[c + 1] {
+                positions[new_index[c] as usize] = positions[first_vertex[c] as usize];
+            }
         }
-    })?;
-    face_indices
-        .par_iter_mut()
-        .with_min_len(CHUNK)
-        .for_each(|c| *c = new_index[*c as usize]);
-    let report = WeldReport {
-        merged_vertex_count: vertex_count - cluster_count,
-        removed_face_count,
-        unused_vertex_count: cluster_count - out_positions.len(),
-    };
-    Ok((
-        Mesh::from_valid_parts(out_positions, face_sizes, face_indices),
-        report,
-    ))
+        positions.truncate(new_index[cluster_count] as usize);
+        face_indices
+            .par_iter_mut()
+            .with_min_len(CHUNK)
+            .for_each(|c| *c = new_index[*c as usize]);
+        let report = WeldReport {
+            merged_vertex_count: vertex_count - cluster_count,
+            removed_face_count,
+            unused_vertex_count: cluster_count - positions.len(),
+        };
+        Ok((
+            Mesh::from_valid_parts(positions, face_sizes, face_indices),
+            report,
+        ))
+    }
 }
 
 /// How many vertices no face uses.

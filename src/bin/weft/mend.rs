@@ -10,6 +10,9 @@ use crate::args::InOut;
 use crate::files::{operation_failed, read, with_progress, write};
 use crate::{Cli, Failure};
 
+/// Faces whose sides give the median edge length of the hint.
+const EDGE_SAMPLES: usize = 100_000;
+
 /// Joins the inputs and merges vertices closer than `tolerance` (by
 /// default relative to the mesh's size); refuses, writing nothing, when
 /// faces would collapse, unless `allow_collapse`.
@@ -35,23 +38,26 @@ pub fn weld(
     };
     let input_count = inputs.len();
     let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&joined));
-    let (welded, report) = with_progress("welding", || weft::mend::weld::weld(&joined, tolerance))
-        .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
+    let (vertex_count, face_count) = (joined.vertex_count(), joined.face_count());
+    // Read before the weld takes the mesh: the hint if faces would collapse.
+    let edge_length = weft::mesh::analysis::median_edge_length_sampled(&joined, EDGE_SAMPLES);
+    let (welded, report) = with_progress("welding", || {
+        weft::mend::weld::weld_owned(joined, tolerance)
+    })
+    .map_err(|e| Failure::Failed(format!("cannot weld the inputs: {e}")))?;
     if report.removed_face_count > 0 && !allow_collapse {
         return Err(Failure::Failed(format!(
-            "welding at tolerance {tolerance} would collapse {} of {} faces (the median edge \
-             is {:.6} long); nothing was written. Give a smaller --tolerance, or \
-             --allow-collapse to remove them",
+            "welding at tolerance {tolerance} would collapse {} of {face_count} faces (the median \
+             edge is about {edge_length:.6} long); nothing was written. Give a smaller \
+             --tolerance, or --allow-collapse to remove them",
             report.removed_face_count,
-            joined.face_count(),
-            weft::mesh::analysis::median_edge_length(&joined)
         )));
     }
     eprintln!(
         "joined {} meshes ({} vertices, {} faces); welded at tolerance {tolerance}: merged {} vertices, removed {} collapsed faces and {} unused vertices",
         input_count,
-        joined.vertex_count(),
-        joined.face_count(),
+        vertex_count,
+        face_count,
         report.merged_vertex_count,
         report.removed_face_count,
         report.unused_vertex_count

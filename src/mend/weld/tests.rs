@@ -1,5 +1,6 @@
 use super::*;
 use crate::mesh::shapes;
+use crate::mesh::MeshOptions;
 
 fn mesh(positions: &[[f64; 3]], faces: &[&[u32]]) -> Mesh {
     Mesh::from_polygons(
@@ -295,4 +296,43 @@ fn a_large_polygon_with_merged_corners_loses_only_its_repeats() {
     assert_eq!(welded.face(0), (0..10).collect::<Vec<u32>>().as_slice());
     assert_eq!(report.merged_vertex_count, 10);
     assert_eq!(report.removed_face_count, 0);
+}
+
+#[test]
+fn welding_a_mesh_given_away_matches_welding_a_borrowed_one() {
+    // Merged corners, a collapsed face, an unused vertex and mixed sizes:
+    // every step of the in-place writing moves something.
+    let m = mesh(
+        &[
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [5.0, 5.0, 5.0],
+            [1.0, 0.0, 1e-9],
+            [0.0, 1.0, 0.0],
+            [2.0, 2.0, 0.0],
+        ],
+        &[&[0, 1, 3, 6], &[2, 5, 1], &[5, 3, 7], &[2, 3, 6, 7]],
+    );
+    let (welded, report) = weld(&m, 1e-6).unwrap();
+    assert_eq!(report.merged_vertex_count, 2);
+    assert_eq!(report.removed_face_count, 1);
+    assert_eq!(report.unused_vertex_count, 1);
+    assert_eq!(welded.face_sizes(), &[4, 3, 4]);
+    assert_eq!(welded.face_indices(), &[0, 1, 2, 3, 1, 2, 4, 0, 2, 3, 4]);
+    let kept = [0usize, 1, 3, 6, 7].map(|v| m.positions()[v]);
+    assert_eq!(welded.positions(), &kept);
+    assert_eq!(
+        weld_owned(m.clone(), 1e-6).unwrap(),
+        (welded.clone(), report)
+    );
+
+    // A host's arrays, lent: the weld writes a copy and leaves them as they were.
+    let positions: &'static [DVec3] = Vec::leak(m.positions().to_vec());
+    let indices: &'static [u32] = Vec::leak(m.face_indices().to_vec());
+    let lent = Mesh::borrowing(positions, m.face_sizes(), indices, MeshOptions::default()).unwrap();
+    assert_eq!(weld_owned(lent, 1e-6).unwrap(), (welded, report));
+    assert_eq!(positions, m.positions());
+    assert_eq!(indices, m.face_indices());
 }
