@@ -142,41 +142,17 @@ pub fn weld_owned(mesh: Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
 }
 
 /// The clusters of a weld: each vertex's, numbered in order of their first
-/// vertex, and each cluster's first vertex.
+/// vertex, and how many there are.
 struct Clusters {
     cluster_of: Vec<u32>,
-    first_vertex: Vec<u32>,
+    count: usize,
 }
 
 impl Clusters {
     fn of(positions: &[DVec3], tolerance: f64) -> Result<Clusters> {
         check_tolerance(tolerance)?;
-        let vertex_count = positions.len();
-        let clusters = vertex_clusters(positions, tolerance)?;
-        // Each vertex's root, found on all threads, then numbered in order.
-        let mut cluster_of = try_vec::<u32>(vertex_count, "the weld clusters")?;
-        cluster_of.par_extend(
-            (0..vertex_count as u32)
-                .into_par_iter()
-                .with_min_len(4096)
-                .map(|v| clusters.root(v)),
-        );
-        drop(clusters);
-        let mut first_vertex = try_vec::<u32>(vertex_count, "the weld clusters")?;
-        let mut label = try_vec::<u32>(vertex_count, "the weld clusters")?;
-        label.resize(vertex_count, u32::MAX);
-        for (v, cluster) in cluster_of.iter_mut().enumerate() {
-            let root = *cluster as usize;
-            if label[root] == u32::MAX {
-                label[root] = first_vertex.len() as u32;
-                first_vertex.push(v as u32);
-            }
-            *cluster = label[root];
-        }
-        Ok(Clusters {
-            cluster_of,
-            first_vertex,
-        })
+        let (cluster_of, count) = vertex_clusters(positions, tolerance)?.into_labels();
+        Ok(Clusters { cluster_of, count })
     }
 
     /// The welded mesh, written over the arrays of the mesh the clusters
@@ -189,10 +165,9 @@ impl Clusters {
     ) -> Result<(Mesh, WeldReport)> {
         let Clusters {
             cluster_of,
-            first_vertex,
+            count: cluster_count,
         } = self;
         let vertex_count = positions.len();
-        let cluster_count = first_vertex.len();
 
         // Faces over clusters, repeats dropped, collapsed faces removed.
         let mut seen_in_face = try_vec::<u32>(cluster_count, "the weld clusters")?;
@@ -220,12 +195,10 @@ impl Clusters {
         let removed_face_count = face_sizes.len() - kept_faces;
         face_indices.truncate(written);
         face_sizes.truncate(kept_faces);
-        drop((seen_in_face, cluster_of));
+        drop(seen_in_face);
 
         // Keep only the clusters some face uses, in order of their first
-        // vertex (marked and numbered on all threads). The k-th kept
-        // cluster's first vertex is at k or after it, past every slot
-        // written before it.
+        // vertex (marked and numbered on all threads).
         let used = par_map(cluster_count, "the welded vertices", |_| {
             AtomicBool::new(false)
         })?;
@@ -238,11 +211,20 @@ impl Clusters {
             u32::from(used[c].load(Relaxed))
         })?;
         drop(used);
-        for c in 0..cluster_count {
-            if new_index[c] != new_index[c + 1] {
-                positions[new_index[c] as usize] = positions[first_vertex[c] as usize];
+        // Each cluster's first vertex is where its number first appears, and
+        // the k-th kept cluster's is at k or after it, past every slot
+        // written before it.
+        let mut next_cluster = 0;
+        for (v, &c) in cluster_of.iter().enumerate() {
+            if c == next_cluster {
+                let c = c as usize;
+                if new_index[c] != new_index[c + 1] {
+                    positions[new_index[c] as usize] = positions[v];
+                }
+                next_cluster += 1;
             }
         }
+        drop(cluster_of);
         positions.truncate(new_index[cluster_count] as usize);
         face_indices
             .par_iter_mut()

@@ -424,18 +424,7 @@ impl Topology {
                 pieces.union(first, self.corners.face(c as usize) as u32);
             }
         }
-        let mut label = vec![u32::MAX; face_count];
-        let mut component = Vec::with_capacity(face_count);
-        let mut count = 0u32;
-        for f in 0..face_count as u32 {
-            let root = pieces.find(f) as usize;
-            if label[root] == u32::MAX {
-                label[root] = count;
-                count += 1;
-            }
-            component.push(label[root]);
-        }
-        (component, count as usize)
+        pieces.into_labels()
     }
 
     /// Whether each connected component (numbered as by
@@ -584,10 +573,12 @@ fn root(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
-/// Disjoint sets over `0..n` with path halving and union by size.
+/// Disjoint sets over `0..n` with path halving, each set's root its lowest
+/// member: a union links the higher root under the lower, so every parent
+/// lies below its child, which lets [`UnionFind::into_labels`] number the
+/// sets in one pass over the parents themselves.
 pub(crate) struct UnionFind {
     parent: Vec<u32>,
-    size: Vec<u32>,
 }
 
 impl UnionFind {
@@ -595,7 +586,6 @@ impl UnionFind {
         // Fresh, large and written once: on all threads, in huge pages.
         UnionFind {
             parent: crate::buffers::advised_map(n, |i| i as u32),
-            size: crate::buffers::advised_map(n, |_| 1),
         }
     }
 
@@ -608,26 +598,32 @@ impl UnionFind {
         x
     }
 
-    /// The root of `x`, without shortening the path (so it can be asked
-    /// from many threads at once).
-    pub(crate) fn root(&self, mut x: u32) -> u32 {
-        while self.parent[x as usize] != x {
-            x = self.parent[x as usize];
-        }
-        x
+    /// Joins the sets of `a` and `b`; returns the root of the union, the
+    /// lowest member of both.
+    pub(crate) fn union(&mut self, a: u32, b: u32) -> u32 {
+        let (a, b) = (self.find(a), self.find(b));
+        let (low, high) = (a.min(b), a.max(b));
+        self.parent[high as usize] = low;
+        low
     }
 
-    pub(crate) fn union(&mut self, a: u32, b: u32) -> u32 {
-        let (mut a, mut b) = (self.find(a), self.find(b));
-        if a == b {
-            return a;
+    /// Each element's set, numbered from 0 in order of the sets' lowest
+    /// members, and the number of sets: written over the parents, in order,
+    /// each element's from its parent's (which lies below it, so is numbered
+    /// already).
+    pub(crate) fn into_labels(self) -> (Vec<u32>, usize) {
+        let mut labels = self.parent;
+        let mut count = 0;
+        for x in 0..labels.len() {
+            let parent = labels[x] as usize;
+            labels[x] = if parent == x {
+                count += 1;
+                count as u32 - 1
+            } else {
+                labels[parent]
+            };
         }
-        if self.size[a as usize] < self.size[b as usize] {
-            std::mem::swap(&mut a, &mut b);
-        }
-        self.parent[b as usize] = a;
-        self.size[a as usize] += self.size[b as usize];
-        a
+        (labels, count)
     }
 }
 
@@ -635,6 +631,21 @@ impl UnionFind {
 mod tests {
     use super::*;
     use crate::mesh::shapes;
+
+    #[test]
+    fn union_find_numbers_its_sets_by_their_lowest_member() {
+        // Unions in an order that links high roots first and leaves long
+        // paths: {0, 4, 7}, {1}, {2, 3, 5, 8}, {6}.
+        let mut sets = UnionFind::new(9);
+        for (a, b) in [(8, 5), (5, 3), (7, 4), (3, 2), (4, 0), (8, 2), (7, 7)] {
+            sets.union(a, b);
+        }
+        assert_eq!(sets.find(8), 2);
+        let (labels, count) = sets.into_labels();
+        assert_eq!(count, 4);
+        assert_eq!(labels, [0, 1, 2, 2, 0, 2, 3, 0, 2]);
+        assert_eq!(UnionFind::new(0).into_labels(), (Vec::new(), 0));
+    }
 
     #[test]
     fn cube_is_closed_and_orientable() {
