@@ -235,11 +235,16 @@ pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
 /// As [`read_mesh`].
 pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
     let path = path.as_ref();
-    let mesh = match Format::from_path(path)? {
-        Format::Obj => obj::read_mesh_at(path, options.mesh_options())?,
-        format => parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), false)
-            .map(|file| file.mesh)
-            .map_err(|e| e.in_file(path))?,
+    let format = Format::from_path(path)?;
+    let streamed = read_streamed(format, path)?;
+    let mesh = match (format, streamed) {
+        (_, Some(mesh)) => mesh,
+        (Format::Obj, None) => obj::read_mesh_at(path, options.mesh_options())?,
+        (format, None) => {
+            parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), false)
+                .map(|file| file.mesh)
+                .map_err(|e| e.in_file(path))?
+        }
     };
     if options.weld {
         weld_identical(path, mesh)
@@ -256,15 +261,29 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
 /// As [`read_mesh`], and malformed colours, UVs or creases with their line.
 pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
     let path = path.as_ref();
-    let file = match Format::from_path(path)? {
-        Format::Obj => obj::read_file_at(path, options.mesh_options())?,
-        format => parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), true)
-            .map_err(|e| e.in_file(path))?,
+    let format = Format::from_path(path)?;
+    let streamed = read_streamed(format, path)?;
+    let file = match (format, streamed) {
+        (_, Some(mesh)) => MeshFile::new(mesh),
+        (Format::Obj, None) => obj::read_file_at(path, options.mesh_options())?,
+        (format, None) => {
+            parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), true)
+                .map_err(|e| e.in_file(path))?
+        }
     };
     if options.weld {
         Ok(MeshFile::new(weld_identical(path, file.mesh)?))
     } else {
         Ok(file)
+    }
+}
+
+/// A binary STL file read a block at a time (see [`stl::read_path`]);
+/// `None` for every other file, which is read whole.
+fn read_streamed(format: Format, path: &Path) -> Result<Option<Mesh>, IoError> {
+    match format {
+        Format::Stl => stl::read_path(path),
+        _ => Ok(None),
     }
 }
 

@@ -7,7 +7,9 @@
 //! byte 80 (binary headers may start with `solid` too), text when it starts
 //! with `solid`, and binary otherwise.
 
-use std::io::Write;
+use std::fs::File;
+use std::io::{Read, Write};
+use std::path::Path;
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -66,17 +68,82 @@ fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
             ),
         ));
     }
-    // Every corner on its own, written on all threads.
     let mut positions = Vec::with_capacity(count * 3);
-    positions.par_extend((0..count * 3).into_par_iter().with_min_len(4096).map(|v| {
+    push_corners(&mut positions, &data[84..84 + count * RECORD]);
+    soup(positions)
+}
+
+/// Reads a binary STL file a block of triangles at a time, the next block
+/// read from the file while this one's corners are written, never holding
+/// all its bytes; `None` when the file is not one whose size is that of its
+/// triangle count (text, or truncated), which [`parse`] reads whole.
+///
+/// # Errors
+/// As [`parse`]; [`IoError::File`] when the file cannot be read.
+pub(crate) fn read_path(path: &Path) -> Result<Option<Mesh>, IoError> {
+    read_in_blocks(path, BLOCK_TRIANGLES)
+}
+
+/// [`read_path`], `block_triangles` at a time.
+fn read_in_blocks(path: &Path, block_triangles: usize) -> Result<Option<Mesh>, IoError> {
+    let block_triangles = block_triangles.max(1);
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    let mut file = File::open(path).map_err(failed)?;
+    let size = file.metadata().map_err(failed)?.len();
+    let mut head = [0u8; 84];
+    if size < 84 {
+        return Ok(None);
+    }
+    file.read_exact(&mut head).map_err(failed)?;
+    let count = u32::from_le_bytes([head[80], head[81], head[82], head[83]]) as usize;
+    if count as u64 * RECORD as u64 + 84 != size {
+        return Ok(None);
+    }
+    let block = count.min(block_triangles) * RECORD;
+    let (mut front, mut back) = (vec![0u8; block], vec![0u8; block]);
+    let mut left = count;
+    let mut filled = left.min(block_triangles) * RECORD;
+    file.read_exact(&mut front[..filled]).map_err(failed)?;
+    left -= filled / RECORD;
+    let mut positions = Vec::with_capacity(count * 3);
+    while filled > 0 {
+        let next = left.min(block_triangles) * RECORD;
+        let ((), read) = rayon::join(
+            || push_corners(&mut positions, &front[..filled]),
+            || file.read_exact(&mut back[..next]),
+        );
+        read.map_err(failed)?;
+        std::mem::swap(&mut front, &mut back);
+        (filled, left) = (next, left - next / RECORD);
+    }
+    soup(positions).map(Some).map_err(|e| e.in_file(path))
+}
+
+/// Triangles a block of [`read_path`] holds: 13 MB.
+const BLOCK_TRIANGLES: usize = 1 << 18;
+
+/// Appends the corners of binary STL `records` (whole ones), each on its
+/// own, written on all threads.
+fn push_corners(positions: &mut Vec<DVec3>, records: &[u8]) {
+    let corners = records.len() / RECORD * 3;
+    positions.par_extend((0..corners).into_par_iter().with_min_len(4096).map(|v| {
         let (t, corner) = (v / 3, v % 3);
-        let at = 84 + t * RECORD + 12 + corner * 12;
+        let at = t * RECORD + 12 + corner * 12;
         let xyz: [f64; 3] = std::array::from_fn(|axis| {
-            let b = &data[at + axis * 4..at + axis * 4 + 4];
+            let b = &records[at + axis * 4..at + axis * 4 + 4];
             f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64
         });
         DVec3::from_array(xyz)
     }));
+}
+
+/// The mesh of a binary file's corners: a triangle every three.
+fn soup(positions: Vec<DVec3>) -> Result<Mesh, IoError> {
+    let count = positions.len() / 3;
     let mut indices = Vec::with_capacity(count * 3);
     indices.par_extend((0..count as u32 * 3).into_par_iter().with_min_len(4096));
     let mut sizes = Vec::with_capacity(count);
@@ -230,4 +297,103 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()>
         w.write_all(&record)?;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+
+    fn binary(mesh: &Mesh) -> Vec<u8> {
+        let mut bytes = Vec::new();
+        write(&mut bytes, mesh, false).unwrap();
+        bytes
+    }
+
+    /// A file of `bytes` under a name of its own, removed when dropped.
+    struct Scratch(std::path::PathBuf);
+
+    impl Scratch {
+        fn new(name: &str, bytes: &[u8]) -> Scratch {
+            let path =
+                std::env::temp_dir().join(format!("weft-stl-{}-{name}.stl", std::process::id()));
+            std::fs::write(&path, bytes).unwrap();
+            Scratch(path)
+        }
+    }
+
+    impl Drop for Scratch {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_file(&self.0);
+        }
+    }
+
+    /// The mesh `read_in_blocks` gives for a file of `bytes`, with each
+    /// position's bits (so -0 and 0 differ).
+    fn read_file(bytes: &[u8], block_triangles: usize) -> Option<(Mesh, Vec<[u64; 3]>)> {
+        let file = Scratch::new(&format!("{}-{block_triangles}", bytes.len()), bytes);
+        let mesh = read_in_blocks(&file.0, block_triangles).unwrap()?;
+        let bits = mesh
+            .positions()
+            .iter()
+            .map(|p| p.to_array().map(f64::to_bits))
+            .collect();
+        Some((mesh, bits))
+    }
+
+    #[test]
+    fn binary_files_read_in_blocks_of_any_size_as_their_bytes_parse() {
+        let mut torus = shapes::triangle_torus(6, 5);
+        torus.positions_mut()[0].x = -0.0;
+        let bytes = binary(&torus);
+        let whole = parse(&bytes).unwrap();
+        let bits: Vec<[u64; 3]> = whole
+            .positions()
+            .iter()
+            .map(|p| p.to_array().map(f64::to_bits))
+            .collect();
+        let triangles = whole.face_count();
+        for block in [
+            0,
+            1,
+            2,
+            7,
+            triangles - 1,
+            triangles,
+            triangles + 5,
+            BLOCK_TRIANGLES,
+        ] {
+            let (mesh, read_bits) = read_file(&bytes, block).unwrap();
+            assert_eq!(mesh, whole, "block of {block}");
+            assert_eq!(read_bits, bits, "block of {block}");
+        }
+        // No triangles at all.
+        let empty = binary(&Mesh::empty());
+        assert_eq!(read_file(&empty, 4).unwrap().0, Mesh::empty());
+    }
+
+    #[test]
+    fn files_whose_size_is_not_their_triangle_count_are_left_to_the_whole_reading() {
+        let bytes = binary(&shapes::cube());
+        // Truncated, one byte too long, shorter than a header, and text.
+        assert!(read_file(&bytes[..bytes.len() - 1], 3).is_none());
+        assert!(read_file(&[&bytes[..], b" "].concat(), 3).is_none());
+        assert!(read_file(&bytes[..40], 3).is_none());
+        let mut text = Vec::new();
+        write(&mut text, &shapes::cube(), true).unwrap();
+        assert!(read_file(&text, 3).is_none());
+    }
+
+    #[test]
+    fn a_non_finite_corner_read_in_blocks_is_named_by_its_byte() {
+        let mut bytes = binary(&shapes::cube());
+        // The second triangle's third corner's y.
+        let at = 84 + RECORD + 12 + 2 * 12 + 4;
+        bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
+        let file = Scratch::new("nan", &bytes);
+        let streamed = read_in_blocks(&file.0, 1).unwrap_err().to_string();
+        let whole = parse(&bytes).unwrap_err().in_file(&file.0).to_string();
+        assert_eq!(streamed, whole);
+        assert!(streamed.contains(&format!("byte {}", at - 4)), "{streamed}");
+    }
 }
