@@ -58,7 +58,14 @@ pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
     let text = buffer.format_finite(value).as_bytes();
     // zmij writes most numbers as `{}` does, but for a `.0` after integers:
     // `-5.0`, `0.25`, `1234.5678`. Those with an exponent are laid out here.
-    let Some(e) = text.iter().position(|&c| c == b'e') else {
+    // An exponent is `e` and at most four more bytes (`e-324`): only the
+    // tail is searched.
+    let tail = text.len().saturating_sub(5);
+    let Some(e) = text[tail..]
+        .iter()
+        .position(|&c| c == b'e')
+        .map(|e| tail + e)
+    else {
         w.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
         return;
     };
