@@ -786,3 +786,35 @@ fn render_on_two_threads_equals_one_thread() {
         assert_eq!(draw(1), draw(2), "{view:?}");
     }
 }
+
+#[test]
+fn obj_face_lines_are_written_as_the_formatter_writes_them() {
+    // Indices of every digit count, and faces from 3 to 12 corners (past
+    // the 8 a line is put together for on the stack).
+    let positions: Vec<DVec3> = (0..1_000_001)
+        .map(|i| DVec3::new(i as f64, 0.0, 1.0))
+        .collect();
+    let faces: Vec<Vec<u32>> = vec![
+        vec![0, 1, 2],
+        vec![9, 10, 99, 100],
+        vec![
+            999, 1000, 9_999, 10_000, 99_999, 100_000, 999_999, 1_000_000,
+        ],
+        (0..9).map(|i| i * 111_111).collect(),
+        (0..12).map(|i| 1_000_000 - i * 7).collect(),
+    ];
+    let mesh = Mesh::from_polygons(positions, faces.clone()).unwrap();
+    let text = String::from_utf8(encode(Format::Obj, &mesh, &WriteOptions::default())).unwrap();
+    let written: Vec<&str> = text.lines().filter(|l| l.starts_with('f')).collect();
+    let expected: Vec<String> = faces
+        .iter()
+        .map(|f| {
+            let corners: Vec<String> = f.iter().map(|v| format!("{}", v + 1)).collect();
+            format!("f {}", corners.join(" "))
+        })
+        .collect();
+    assert_eq!(written, expected);
+    assert!(text.ends_with(
+        "f 1000001 999994 999987 999980 999973 999966 999959 999952 999945 999938 999931 999924\n"
+    ));
+}

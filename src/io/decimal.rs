@@ -15,19 +15,28 @@ const PAIRS: &[u8; 200] = b"\
 /// Appends `value` in decimal, as `write!(w, "{value}")` does.
 #[inline]
 pub(crate) fn push_u64(w: &mut Vec<u8>, value: u64) {
-    let count = value.checked_ilog10().unwrap_or(0) as usize + 1;
     let mut digits = [b'0'; 20];
-    let (mut rest, mut at) = (value, count);
+    let count = put_u64(&mut digits, 0, value);
+    push_fixed(w, &digits, count);
+}
+
+/// Writes `value` in decimal into `out` from `at`, which has room for 20
+/// digits; returns where the digits end.
+#[inline]
+pub(crate) fn put_u64(out: &mut [u8], at: usize, value: u64) -> usize {
+    let count = value.checked_ilog10().unwrap_or(0) as usize + 1;
+    let digits = &mut out[at..at + count];
+    let (mut rest, mut end) = (value, count);
     while rest >= 10 {
         let pair = (rest % 100) as usize * 2;
         rest /= 100;
-        at -= 2;
-        digits[at..at + 2].copy_from_slice(&PAIRS[pair..pair + 2]);
+        end -= 2;
+        digits[end..end + 2].copy_from_slice(&PAIRS[pair..pair + 2]);
     }
-    if at == 1 {
+    if end == 1 {
         digits[0] = b'0' + rest as u8;
     }
-    push_fixed(w, &digits, count);
+    at + count
 }
 
 /// Appends the first `count` bytes of `bytes`: the whole array is copied

@@ -35,7 +35,7 @@ use rayon::prelude::*;
 
 use glam::DVec3;
 
-use super::decimal::{push_f64, push_u64};
+use super::decimal::{push_f64, push_u64, put_u64};
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh_with, IoError, Location};
@@ -738,6 +738,9 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
     if let Some(libraries) = materials.map(|m| &m.libraries).filter(|l| !l.is_empty()) {
         writeln!(w, "mtllib {}", libraries.join(" "))?;
     }
+    if file.uvs.is_none() && file.normals.is_none() && materials.is_none() {
+        return write_plain_faces(w, mesh).and_then(|()| write_tags(w, file));
+    }
     write_in_blocks(w, mesh.face_count(), |faces, w| {
         // The material in force after the face before the block.
         let mut current = match (materials, faces.start) {
@@ -773,6 +776,42 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
         }
         Ok(())
     })?;
+    write_tags(w, file)
+}
+
+/// Faces with nothing but their vertices (`f 1 2 3`), each line put
+/// together on the stack and appended at once: most meshes' faces.
+fn write_plain_faces(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
+    // `f`, then a space and up to 20 digits a corner, and the line's end.
+    const CORNERS: usize = 8;
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        let mut line = [0u8; 2 + 21 * CORNERS];
+        for f in faces {
+            let face = mesh.face(f);
+            if face.len() > CORNERS {
+                w.push(b'f');
+                for &v in face {
+                    w.push(b' ');
+                    push_u64(w, v as u64 + 1);
+                }
+                w.push(b'\n');
+                continue;
+            }
+            line[0] = b'f';
+            let mut end = 1;
+            for &v in face {
+                line[end] = b' ';
+                end = put_u64(&mut line, end + 1, v as u64 + 1);
+            }
+            line[end] = b'\n';
+            w.extend_from_slice(&line[..=end]);
+        }
+        Ok(())
+    })
+}
+
+/// The creases, corners and holes of `file` as `l` and `t` lines.
+fn write_tags(w: &mut dyn Write, file: &MeshFile) -> std::io::Result<()> {
     for c in &file.creases {
         let [a, b] = c.edge;
         if c.sharpness >= SHARPNESS_INFINITE {
