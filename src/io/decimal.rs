@@ -49,34 +49,70 @@ fn push_fixed<const N: usize>(w: &mut Vec<u8>, bytes: &[u8; N], count: usize) {
     w.truncate(len + count);
 }
 
+/// How `value` is written: zmij's text as it stands, zmij's text with an
+/// exponent (at byte `e`) to lay out, or through the formatter.
+enum Text<'a> {
+    Plain(&'a [u8]),
+    Exponent(&'a [u8], usize),
+    Formatter,
+}
+
+#[inline]
+fn text_of(buffer: &mut zmij::Buffer, value: f64) -> Text<'_> {
+    if !value.is_finite() || may_be_a_tie(value) {
+        // NaN and the infinities (which a mesh never holds), and doubles
+        // halfway between two shortest decimals, which the formatter and
+        // the shortest-digit algorithms may round differently.
+        return Text::Formatter;
+    }
+    let text = buffer.format_finite(value).as_bytes();
+    // zmij writes most numbers as `{}` does, but for a `.0` after integers:
+    // `-5.0`, `0.25`, `1234.5678`. An exponent is `e` and at most four more
+    // bytes (`e-324`): only the tail is searched.
+    let tail = text.len().saturating_sub(5);
+    match text[tail..].iter().position(|&c| c == b'e') {
+        Some(e) => Text::Exponent(text, tail + e),
+        None => Text::Plain(text.strip_suffix(b".0").unwrap_or(text)),
+    }
+}
+
+/// Room [`put_f64`] needs: the longest text zmij writes without an
+/// exponent (`-0.000012345678901234567`) and one byte more.
+pub(crate) const F64_ROOM: usize = 25;
+
+/// Writes `value` as [`push_f64`] appends it into `out` from `at`, which
+/// has [`F64_ROOM`] bytes of room, and returns where it ends; `None`, with
+/// nothing written, for a value that needs more laying out (an exponent,
+/// a tie, not finite), which [`push_f64`] writes.
+#[inline]
+pub(crate) fn put_f64(out: &mut [u8], at: usize, value: f64) -> Option<usize> {
+    let mut buffer = zmij::Buffer::new();
+    match text_of(&mut buffer, value) {
+        Text::Plain(text) if text.len() <= F64_ROOM => {
+            out[at..at + text.len()].copy_from_slice(text);
+            Some(at + text.len())
+        }
+        _ => None,
+    }
+}
+
 /// Appends `value` as `write!(w, "{value}")` does: the shortest digits that
 /// read back as the same double, never in exponent form (`1e20` is written
 /// `100000000000000000000`, `1.0` is `1`, `-0.0` is `-0`). The digits are
 /// zmij's (Schubfach), which are the standard library's; only the layout is
 /// done here.
 pub(crate) fn push_f64(w: &mut Vec<u8>, value: f64) {
-    if !value.is_finite() || may_be_a_tie(value) {
-        // NaN and the infinities (which a mesh never holds), and doubles
-        // halfway between two shortest decimals, which the formatter and
-        // the shortest-digit algorithms may round differently: through the
-        // formatter.
-        let _ = write!(w, "{value}");
-        return;
-    }
     let mut buffer = zmij::Buffer::new();
-    let text = buffer.format_finite(value).as_bytes();
-    // zmij writes most numbers as `{}` does, but for a `.0` after integers:
-    // `-5.0`, `0.25`, `1234.5678`. Those with an exponent are laid out here.
-    // An exponent is `e` and at most four more bytes (`e-324`): only the
-    // tail is searched.
-    let tail = text.len().saturating_sub(5);
-    let Some(e) = text[tail..]
-        .iter()
-        .position(|&c| c == b'e')
-        .map(|e| tail + e)
-    else {
-        w.extend_from_slice(text.strip_suffix(b".0").unwrap_or(text));
-        return;
+    let (text, e) = match text_of(&mut buffer, value) {
+        Text::Plain(text) => {
+            w.extend_from_slice(text);
+            return;
+        }
+        Text::Exponent(text, e) => (text, e),
+        Text::Formatter => {
+            let _ = write!(w, "{value}");
+            return;
+        }
     };
     // Digits, maybe a point and digits, `e` and an exponent.
     let (mantissa, exponent) = (&text[..e], exponent_of(&text[e + 1..]));
@@ -176,10 +212,44 @@ fn exponent_of(text: &[u8]) -> i32 {
 mod tests {
     use super::*;
 
+    /// `push_f64`'s text, checked against `put_f64`'s wherever that writes.
     fn pushed(value: f64) -> String {
         let mut w = Vec::new();
         push_f64(&mut w, value);
+        let mut room = [b'#'; 7 + F64_ROOM + 3];
+        match put_f64(&mut room, 7, value) {
+            Some(end) => assert_eq!(&room[7..end], &w[..], "{value:e}"),
+            None => assert!(room.iter().all(|&b| b == b'#'), "{value:e}"),
+        }
         String::from_utf8(w).unwrap()
+    }
+
+    #[test]
+    fn doubles_without_an_exponent_are_put_in_place() {
+        let mut room = [0u8; F64_ROOM];
+        for value in [
+            -4.9939024390243905,
+            -0.000012345678901234567,
+            -5.0,
+            0.1,
+            -0.0,
+            123456789012345.6,
+        ] {
+            let end = put_f64(&mut room, 0, value).unwrap();
+            assert_eq!(&room[..end], format!("{value}").as_bytes());
+        }
+        assert_eq!(put_f64(&mut room, 0, -5.0), Some(2));
+        // Laid out from an exponent, ties and non-finite values are left
+        // to `push_f64`.
+        for value in [
+            1e-7,
+            1e20,
+            -3.2e-17,
+            1_690_060_720_831_323.0 + 0.25,
+            f64::NAN,
+        ] {
+            assert_eq!(put_f64(&mut room, 0, value), None, "{value:e}");
+        }
     }
 
     #[test]

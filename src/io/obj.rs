@@ -35,7 +35,7 @@ use rayon::prelude::*;
 
 use glam::DVec3;
 
-use super::decimal::{push_f64, push_u64, put_u64};
+use super::decimal::{push_f64, push_u64, put_f64, put_u64, F64_ROOM};
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh_with, IoError, Location};
@@ -705,8 +705,26 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
     )?;
     let positions = mesh.positions();
     write_in_blocks(w, positions.len(), |vertices, w| {
+        // `v`, then a space and a coordinate each, and the line's end.
+        let mut line = [0u8; 1 + 3 * (1 + F64_ROOM) + 1];
+        line[0] = b'v';
         for i in vertices {
             let p = positions[i];
+            // Most lines are put together on the stack and appended at once.
+            if file.colours.is_none() {
+                let mut end = Some(1);
+                for c in [p.x, p.y, p.z] {
+                    end = end.and_then(|at| {
+                        line[at] = b' ';
+                        put_f64(&mut line, at + 1, c)
+                    });
+                }
+                if let Some(end) = end {
+                    line[end] = b'\n';
+                    w.extend_from_slice(&line[..=end]);
+                    continue;
+                }
+            }
             w.extend_from_slice(b"v ");
             push_f64(w, p.x);
             w.push(b' ');
