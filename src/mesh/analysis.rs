@@ -50,9 +50,9 @@ pub fn median_edge_length(mesh: &Mesh) -> f64 {
 /// The median length of the sides of at most `max_faces` faces spread
 /// evenly over the mesh (all of them when there are fewer; 0 without
 /// faces): [`median_edge_length`] at a cost that does not grow with the
-/// mesh, for a hint to read before the mesh is taken apart. An inner edge
-/// is the side of two faces and counts twice, as it does in every closed
-/// mesh's median.
+/// mesh, for a hint to read before the mesh is taken apart. Every face's
+/// sides count, so an inner edge counts twice; in a closed mesh every edge
+/// does, and the median is that of the edges.
 pub fn median_edge_length_sampled(mesh: &Mesh, max_faces: usize) -> f64 {
     let step = mesh.face_count().div_ceil(max_faces.max(1)).max(1);
     let p = mesh.positions();
