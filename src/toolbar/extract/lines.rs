@@ -176,20 +176,12 @@ fn weld(segments: &[[DVec3; 2]], tolerance: f64) -> (Vec<DVec3>, Vec<[u32; 2]>) 
         }
         grid.entry(c).or_default().push(i as u32);
     }
-    let mut id = vec![u32::MAX; ends.len()];
-    let (mut sums, mut counts) = (Vec::new(), Vec::new());
-    let mut point_of = vec![0u32; ends.len()];
-    for (i, &p) in ends.iter().enumerate() {
-        let root = clusters.find(i as u32) as usize;
-        if id[root] == u32::MAX {
-            id[root] = sums.len() as u32;
-            sums.push(DVec3::ZERO);
-            counts.push(0.0);
-        }
-        let k = id[root] as usize;
-        sums[k] += p;
-        counts[k] += 1.0;
-        point_of[i] = k as u32;
+    // Clusters numbered in order of their first end.
+    let (point_of, count) = clusters.into_labels();
+    let (mut sums, mut counts) = (vec![DVec3::ZERO; count], vec![0.0; count]);
+    for (&p, &k) in ends.iter().zip(&point_of) {
+        sums[k as usize] += p;
+        counts[k as usize] += 1.0;
     }
     let points = sums.iter().zip(&counts).map(|(s, n)| *s / *n).collect();
     let mut edges: Vec<[u32; 2]> = point_of
