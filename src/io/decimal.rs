@@ -77,7 +77,7 @@ fn text_of(buffer: &mut zmij::Buffer, value: f64) -> Text<'_> {
 }
 
 /// Room [`put_f64`] needs: the longest text zmij writes without an
-/// exponent (`-0.000012345678901234567`) and one byte more.
+/// exponent (a sign, `0.0000` and 17 digits: 24 bytes) and one byte more.
 pub(crate) const F64_ROOM: usize = 25;
 
 /// Writes `value` as [`push_f64`] appends it into `out` from `at`, which

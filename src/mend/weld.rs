@@ -124,7 +124,7 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     let clusters = Clusters::of(mesh.positions(), tolerance)?;
     let positions = try_copy(mesh.positions(), "the welded positions")?;
-    let face_sizes = try_copy(mesh.face_sizes(), "the welded face sizes")?;
+    let face_sizes = mesh.try_copy_face_sizes("the welded face sizes")?;
     let face_indices = try_copy(mesh.face_indices(), "the welded face indices")?;
     clusters.apply(positions, face_sizes, face_indices)
 }

@@ -22,7 +22,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use self::buffer::Buffer;
-use crate::buffers::advised_copy;
+use crate::buffers::{advised_copy, try_copy, try_vec};
 use crate::error::{Error, MeshError, Result, MAX_ELEMENTS};
 
 /// Inputs from this many items up are copied and checked on all threads
@@ -480,6 +480,20 @@ impl Mesh {
         self.positions.to_mut()
     }
 
+    /// A copy of the face sizes, reserved fallibly. Sizes the mesh finds by
+    /// arithmetic (every face of one size) are written for the copy only,
+    /// not kept in the mesh as [`Mesh::face_sizes`] keeps them.
+    pub(crate) fn try_copy_face_sizes(&self, what: &str) -> Result<Vec<u32>> {
+        match (self.faces.uniform, self.faces.sizes.get()) {
+            (Some(size), None) => {
+                let mut sizes = try_vec(self.faces.count, what)?;
+                sizes.resize(self.faces.count, size);
+                Ok(sizes)
+            }
+            _ => try_copy(self.face_sizes(), what),
+        }
+    }
+
     /// Takes the mesh apart into positions, face sizes and face indices.
     pub fn into_parts(self) -> (Vec<DVec3>, Vec<u32>, Vec<u32>) {
         (
@@ -762,6 +776,30 @@ mod tests {
         let coordinates = bytemuck::cast_slice(torus.positions()).to_vec();
         let (_, sizes, indices) = torus.into_parts();
         (coordinates, sizes, indices)
+    }
+
+    #[test]
+    fn copied_face_sizes_of_uniform_faces_are_not_kept_in_the_mesh() {
+        let quads = Mesh::from_valid_uniform_parts(
+            shapes::cube().positions().to_vec(),
+            4,
+            shapes::cube().face_indices().to_vec(),
+        )
+        .unwrap();
+        assert_eq!(quads.try_copy_face_sizes("sizes").unwrap(), vec![4; 6]);
+        assert!(quads.faces.sizes.get().is_none());
+        // Mixed sizes, and sizes already written, are copied as they stand.
+        let mixed = shapes::mixed_polygons();
+        assert_eq!(
+            mixed.try_copy_face_sizes("sizes").unwrap(),
+            mixed.face_sizes()
+        );
+        assert_eq!(quads.face_sizes(), &[4; 6]);
+        assert_eq!(quads.try_copy_face_sizes("sizes").unwrap(), vec![4; 6]);
+        assert_eq!(
+            Mesh::empty().try_copy_face_sizes("sizes").unwrap(),
+            Vec::<u32>::new()
+        );
     }
 
     #[test]
