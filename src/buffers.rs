@@ -11,7 +11,7 @@ use crate::error::{Error, Result};
 pub(crate) const CHUNK: usize = 4096;
 
 /// Buffers from this size up are advised for transparent huge pages.
-const HUGE_PAGE_ADVICE_BYTES: usize = 8 << 20;
+const HUGE_PAGE_ADVICE_BYTES: usize = 2 << 20;
 
 /// Advises `memory` for huge pages when it is large; says whether it was.
 fn advise_when_large<T>(memory: &mut [T]) -> bool {

@@ -18,7 +18,7 @@ use rayon::prelude::*;
 
 use super::gathers::{sharp_vertex_point, Gathers, RefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
-use crate::buffers::{fresh_zeroed, par_groups};
+use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -100,7 +100,12 @@ fn divided(value: DVec3, n: f64) -> DVec3 {
 
 #[inline]
 fn edge_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], e: usize) -> DVec3 {
-    let [a, b, f0, f1] = level.edge(e);
+    edge_point_of(level.edge(e), points, face_points)
+}
+
+/// The point of the edge `[a, b, f0, f1]` (see [`Gathers::edge`]).
+#[inline]
+fn edge_point_of([a, b, f0, f1]: [u32; 4], points: &[DVec3], face_points: &[DVec3]) -> DVec3 {
     let ends = points[a as usize] + points[b as usize];
     if f0 == NONE {
         ends * 0.5
@@ -134,16 +139,54 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .enumerate()
         .for_each(|(f, out)| *out = face_point(level, points, f));
     let face_points = &*face_points;
-    edge_points
+    let walked = match level.as_refined() {
+        Some(refined) => {
+            let slots = refined.parent.connectivity.vertex_edges.len();
+            slot_points(&refined, points, face_points, &mut edge_points[..slots]);
+            slots
+        }
+        None => 0,
+    };
+    edge_points[walked..]
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(e, out)| *out = edge_point(level, points, face_points, e));
+        .for_each(|(i, out)| *out = edge_point(level, points, face_points, walked + i));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
         .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
+}
+
+/// The points of the refined level's first 2E edges, `[v, V + e]` for
+/// each of the parent's vertices v and its edges e in order, vertex by
+/// vertex: the gathers of [`edge_point`], with the wings of all of a
+/// vertex's edges found in one walk around it
+/// ([`RefinedGathers::slot_wings`]) instead of edge by edge.
+fn slot_points(level: &RefinedGathers, points: &[DVec3], face_points: &[DVec3], out: &mut [DVec3]) {
+    let connectivity = level.parent.connectivity;
+    let offsets = &connectivity.vertex_edge_offsets;
+    let v_count = level.parent.faces.vertex_count as u32;
+    split_by_offsets(out, offsets, CHUNK)
+        .into_par_iter()
+        .for_each(|(vertices, part)| {
+            let base = offsets[vertices.start] as usize;
+            for v in vertices {
+                let slots = offsets[v] as usize..offsets[v + 1] as usize;
+                let outs = &mut part[slots.start - base..slots.end - base];
+                let Some(wings) = level.slot_wings(v) else {
+                    for (out, s) in outs.iter_mut().zip(slots) {
+                        *out = edge_point(level, points, face_points, s);
+                    }
+                    continue;
+                };
+                let edges = connectivity.vertex_edges(v);
+                for ((out, &e), [f0, f1]) in outs.iter_mut().zip(edges).zip(wings) {
+                    *out = edge_point_of([v as u32, v_count + e, f0, f1], points, face_points);
+                }
+            }
+        });
 }
 
 /// As [`apply`], into a new vector of the allocator's untouched zeroed

@@ -11,7 +11,7 @@
 
 use glam::DVec3;
 
-use super::level::{Connectivity, Faces, NONE};
+use super::level::{position, Connectivity, Faces, NONE};
 use super::rules::Tags;
 use super::scheme::{Scheme, VertexRule};
 use crate::buffers::{fill_by_offsets, par_map, par_offsets};
@@ -147,6 +147,11 @@ pub(crate) trait Gathers: Sync {
     /// is reached through (Catmull-Clark; [`NONE`] for Loop), and returns
     /// how many there are.
     fn around(&self, v: usize, visit: impl FnMut(u32, u32)) -> usize;
+    /// These gathers as [`RefinedGathers`], when they are: their edges have
+    /// a faster walk (see [`RefinedGathers::slot_wings`]).
+    fn as_refined(&self) -> Option<RefinedGathers<'_>> {
+        None
+    }
 }
 
 impl Gathers for Plan {
@@ -365,6 +370,54 @@ impl RefinedGathers<'_> {
     }
 }
 
+/// The most edges [`RefinedGathers::slot_wings`] walks around at once.
+pub(crate) const MAX_WALKED_EDGES: usize = 32;
+
+impl RefinedGathers<'_> {
+    /// The wings of the level's edges `[v, V + e]` at the parent's vertex
+    /// `v`, one per slot of `v`'s edges in order, as [`Gathers::edge`] gives
+    /// them, found in one walk around `v` instead of edge by edge: the
+    /// child quad at each corner k of `v` lies beside the halves at `v` of
+    /// both of k's edges, and the half of a smooth edge has exactly two
+    /// such quads. `None` for a vertex of more than [`MAX_WALKED_EDGES`]
+    /// edges (or where a smooth edge's half is not beside two of them),
+    /// whose wings [`Gathers::edge`] gives one by one.
+    #[inline]
+    pub(crate) fn slot_wings(&self, v: usize) -> Option<[[u32; 2]; MAX_WALKED_EDGES]> {
+        let parent = &self.parent;
+        let connectivity = parent.connectivity;
+        let edges = connectivity.vertex_edges(v);
+        if edges.len() > MAX_WALKED_EDGES {
+            return None;
+        }
+        let mut wings = [[NONE; 2]; MAX_WALKED_EDGES];
+        let mut found = [0u8; MAX_WALKED_EDGES];
+        for &k in connectivity.vertex_corners(v) {
+            let k = k as usize;
+            let leaving = connectivity.corner_edges[k];
+            let arriving = connectivity.corner_edges[parent.prev(k)];
+            for e in [leaving, arriving] {
+                let i = position(edges, e) as usize;
+                // More than two only beside a sharp edge, whose wings are unused.
+                if let Some(wing) = wings[i].get_mut(found[i] as usize) {
+                    *wing = k as u32;
+                    found[i] += 1;
+                }
+            }
+        }
+        for (i, &e) in edges.iter().enumerate() {
+            let [k1, k2] = wings[i];
+            wings[i] = match parent.tags.edge_sharp[e as usize] {
+                true => [NONE; 2],
+                // Not met by a smooth edge: there, edge by edge.
+                false if found[i] != 2 => return None,
+                false => [k1.min(k2), k1.max(k2)],
+            };
+        }
+        Some(wings)
+    }
+}
+
 /// The two faces of a child edge from its two corners, in the order of the
 /// corners (as the level's sorted edge corners list them).
 #[inline]
@@ -373,6 +426,10 @@ fn faces_of_corners(k1: u32, k2: u32) -> [u32; 2] {
 }
 
 impl Gathers for RefinedGathers<'_> {
+    fn as_refined(&self) -> Option<RefinedGathers<'_>> {
+        Some(*self)
+    }
+
     fn vertex_count(&self) -> usize {
         let (v, e) = self.parent_counts();
         v + e + self.parent.faces.face_count()

@@ -333,7 +333,7 @@ impl Connectivity {
 
 /// The index of `x` in the short list `list`, which holds it.
 #[inline]
-pub(super) fn position(list: &[u32], x: u32) -> u32 {
+pub(crate) fn position(list: &[u32], x: u32) -> u32 {
     list.iter().position(|&y| y == x).unwrap_or(0) as u32
 }
 

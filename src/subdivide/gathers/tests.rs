@@ -84,6 +84,17 @@ fn refined_gathers_equal_the_built_level() {
             for e in 0..built.edge_count() {
                 assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
             }
+            // The wings walked around each parent vertex are its slots' wings.
+            for v in 0..faces.vertex_count {
+                let slots =
+                    connectivity.vertex_edge_offsets[v]..connectivity.vertex_edge_offsets[v + 1];
+                if let Some(wings) = refined.slot_wings(v) {
+                    for (i, s) in slots.enumerate() {
+                        let [_, _, w0, w1] = refined.edge(s as usize);
+                        assert_eq!(wings[i], [w0, w1], "{what}: vertex {v}, slot {s}");
+                    }
+                }
+            }
             for v in 0..built.vertex_count() {
                 let rule = built.rule(v);
                 assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
