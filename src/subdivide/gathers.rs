@@ -4,8 +4,9 @@
 //! A [`Plan`] (made by [`plan`]) stores the gathers of a level once, for a refiner to re-apply
 //! to new positions. A one-shot subdivision applies each level once, so it
 //! reads the same gathers where they already lie: [`LevelGathers`] from the
-//! level's faces, connectivity and tags, and for Catmull-Clark's last level
-//! [`RefinedGathers`] from its parent level's, so that the largest
+//! level's faces, connectivity and tags, and for the last level
+//! [`RefinedGathers`] (Catmull-Clark) or [`LoopRefinedGathers`] (Loop, in
+//! `gathers/loop_refined.rs`) from its parent level's, so that the largest
 //! connectivity is never built. All give the same gathers in the same
 //! order, so all give the same bits.
 
@@ -557,6 +558,9 @@ impl Gathers for RefinedGathers<'_> {
         }
     }
 }
+
+mod loop_refined;
+pub(crate) use loop_refined::LoopRefinedGathers;
 
 #[cfg(test)]
 mod tests;

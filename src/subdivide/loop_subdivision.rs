@@ -15,7 +15,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{sharp_vertex_point, Gathers};
+use super::gathers::{sharp_vertex_point, Gathers, LoopRefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::loop_smooth_weights;
 use crate::buffers::{par_groups, try_vec};
@@ -44,6 +44,37 @@ pub(crate) fn child_indices(
                 base + corner_edges[3 * f + source - 3]
             }
         })
+    })
+}
+
+/// The triangles two levels down from `level`'s parent, written from the
+/// parent alone (see [`LoopRefinedGathers`]): the level between is never
+/// built. Their order is that of [`child_indices`] applied twice; without
+/// offsets. The indices go `into` a caller's buffer when given (see
+/// [`par_groups`]).
+pub(crate) fn grandchild_faces(
+    level: &LoopRefinedGathers,
+    into: Option<&mut [u32]>,
+) -> Result<Faces> {
+    let base = level.vertex_count() as u32;
+    let parent_faces = level.parent.faces.face_count();
+    // Each of a parent triangle's four children makes four triangles, as
+    // `child_indices` makes them from its vertices and edge points.
+    let indices = par_groups(parent_faces, into, "child faces", |f| {
+        let mut out = [0u32; 48];
+        for (group, (w, edges)) in out.chunks_exact_mut(12).zip(level.children(f)) {
+            let x = edges.map(|e| base + e);
+            group.copy_from_slice(&[
+                w[0], x[0], x[2], w[1], x[1], x[0], w[2], x[2], x[1], x[0], x[1], x[2],
+            ]);
+        }
+        out
+    })?;
+    Ok(Faces {
+        vertex_count: level.vertex_count() + level.edge_count(),
+        size: 3,
+        offsets: Vec::new(),
+        indices,
     })
 }
 

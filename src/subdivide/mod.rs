@@ -7,7 +7,7 @@
 //! every new point is then a gather of old points. An arithmetic pass applies
 //! the gathers to positions in parallel, with no atomics. [`Refiner`] stores
 //! them once as *plans* for re-evaluation; a one-shot subdivision reads them
-//! where they lie, Catmull-Clark's last level from the level before it
+//! where they lie, the last level's from the level before it
 //! (`gathers.rs`), so the largest connectivity is never built.
 //!
 //! # Layers
@@ -232,12 +232,14 @@ fn refine_points(
                 written = match &step {
                     Step::Level(level) => write_points(scheme, level, source, out),
                     Step::Refined(level) => write_points(scheme, level, source, out),
+                    Step::LoopRefined(level) => write_points(scheme, *level, source, out),
                 };
             }
             _ => {
                 let next = match &step {
                     Step::Level(level) => point_rules::points(scheme, level, source)?,
                     Step::Refined(level) => point_rules::points(scheme, level, source)?,
+                    Step::LoopRefined(level) => point_rules::points(scheme, *level, source)?,
                 };
                 positions = Some(next);
             }

@@ -8,13 +8,13 @@ use std::sync::Mutex;
 use glam::DVec3;
 
 use super::creases::SubdivisionOptions;
-use super::gathers::{plan, LevelGathers, Plan, RefinedGathers};
+use super::gathers::{plan, LevelGathers, LoopRefinedGathers, Plan, RefinedGathers};
 use super::level::{Connectivity, Faces};
 use super::point_rules::{apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
 use super::scheme::{check_counts, NakedEdges, RefinedCounts, Scheme};
 use super::subdivider::Subdivider;
-use super::{catmull_clark, scale};
+use super::{catmull_clark, loop_subdivision, scale};
 use crate::buffers::try_vec;
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
@@ -263,6 +263,8 @@ pub(crate) enum Step<'a> {
     /// Catmull-Clark's last level's gathers, read from the level before the
     /// one they apply to.
     Refined(RefinedGathers<'a>),
+    /// Loop's, the same way.
+    LoopRefined(&'a LoopRefinedGathers<'a>),
 }
 
 /// A cage and what to do to it: the plain subdivision both the refiner and
@@ -337,9 +339,9 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
 /// One-shot subdivision's levels: hands each level's gathers to `each`
 /// with whether it is the last, read where they lie instead of planned
 /// (each applies once), and returns the faces of the last level, without
-/// offsets (all the same size). Catmull-Clark's last two levels both come
-/// from the connectivity of the level before them, so the largest
-/// connectivity is never built.
+/// offsets (all the same size). The last two levels both come from the
+/// connectivity of the level before them, so the largest connectivity is
+/// never built.
 ///
 /// With `last_indices`, a caller's buffer, the last level's face indices
 /// are written there instead (the returned faces then have none); `room`
@@ -381,12 +383,26 @@ pub(crate) fn gather_levels(
             connectivity: &connectivity,
             tags: &tags,
         };
-        if scheme == Scheme::CatmullClark && next_last {
+        if next_last {
+            // The next level's points, then the last level's faces and
+            // points from this level's connectivity: the next level's is
+            // never built.
             each(Step::Level(gathers), false)?;
-            let refined = RefinedGathers { parent: gathers };
-            let last_faces = catmull_clark::grandchild_faces(&refined, last_indices.take())?;
-            each(Step::Refined(refined), true)?;
-            return Ok(last_faces);
+            let into = last_indices.take();
+            return match scheme {
+                Scheme::CatmullClark => {
+                    let refined = RefinedGathers { parent: gathers };
+                    let last_faces = catmull_clark::grandchild_faces(&refined, into)?;
+                    each(Step::Refined(refined), true)?;
+                    Ok(last_faces)
+                }
+                Scheme::Loop => {
+                    let refined = LoopRefinedGathers::new(gathers)?;
+                    let last_faces = loop_subdivision::grandchild_faces(&refined, into)?;
+                    each(Step::LoopRefined(&refined), true)?;
+                    Ok(last_faces)
+                }
+            };
         }
         if last {
             // The points first: then the last faces, the largest array, are

@@ -1,9 +1,9 @@
 use super::*;
 use crate::mesh::shapes;
-use crate::subdivide::catmull_clark;
 use crate::subdivide::point_rules::child_faces;
 use crate::subdivide::rules::{cage_tags, child_tags};
 use crate::subdivide::scheme::NakedEdges;
+use crate::subdivide::{catmull_clark, loop_subdivision};
 use glam::DVec3;
 
 /// Reading a level's gathers from its parent gives what building the
@@ -94,6 +94,104 @@ fn refined_gathers_equal_the_built_level() {
                         assert_eq!(wings[i], [w0, w1], "{what}: vertex {v}, slot {s}");
                     }
                 }
+            }
+            for v in 0..built.vertex_count() {
+                let rule = built.rule(v);
+                assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
+                match rule {
+                    VertexRule::Crease => assert_eq!(
+                        refined.crease_neighbours(v),
+                        built.crease_neighbours(v),
+                        "{what}: vertex {v}"
+                    ),
+                    VertexRule::Smooth => {
+                        let (mut a, mut b) = (Vec::new(), Vec::new());
+                        let n = refined.around(v, |u, f| a.push((u, f)));
+                        assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
+                        assert_eq!(a, b, "{what}: vertex {v}");
+                    }
+                    VertexRule::Corner => {}
+                }
+            }
+        }
+    }
+}
+
+/// Loop's gathers read from the parent level give what building the level
+/// and reading it gives, as for Catmull-Clark above: on closed, open and
+/// non-manifold triangle meshes, with two triangles on the same three
+/// vertices (each keeps its own inside edges), in every naked-edge mode;
+/// and the triangles two levels down are the built level's children.
+#[test]
+fn loop_refined_gathers_equal_the_built_level() {
+    let triangulated =
+        |mesh: &crate::Mesh| crate::mesh::triangulate::triangulate(mesh).unwrap().mesh;
+    let shapes = [
+        shapes::tetrahedron(),
+        shapes::icosahedron(),
+        shapes::triangle_grid(3, 2),
+        shapes::triangle_grid_with_hole(),
+        shapes::triangle_torus(5, 4),
+        triangulated(&shapes::fin()),
+        triangulated(&shapes::bow_tie()),
+        triangulated(&shapes::mobius_strip(6)),
+        crate::Mesh::from_polygons(
+            vec![DVec3::ZERO, DVec3::X, DVec3::Y],
+            [[0u32, 1, 2], [1, 0, 2]],
+        )
+        .unwrap(),
+    ];
+    for (s, mesh) in shapes.iter().enumerate() {
+        assert!(mesh.first_non_triangle().is_none(), "shape {s}");
+        for naked in [
+            NakedEdges::Fixed,
+            NakedEdges::Smooth,
+            NakedEdges::CornerFixed,
+        ] {
+            let faces = Faces::of_mesh(mesh);
+            let connectivity = Connectivity::new(&faces).unwrap();
+            let tags = cage_tags(&faces, &connectivity, naked).unwrap();
+            let child = child_faces(Scheme::Loop, &faces, &connectivity, true).unwrap();
+            let child_connectivity = connectivity.refine(Scheme::Loop, &faces, true).unwrap();
+            let child_tags = child_tags(Scheme::Loop, &tags, &faces, &child_connectivity).unwrap();
+            let parent = LevelGathers {
+                scheme: Scheme::Loop,
+                faces: &faces,
+                connectivity: &connectivity,
+                tags: &tags,
+            };
+            let refined = LoopRefinedGathers::new(parent).unwrap();
+            let built = LevelGathers {
+                scheme: Scheme::Loop,
+                faces: &child,
+                connectivity: &child_connectivity,
+                tags: &child_tags,
+            };
+            let what = format!("shape {s} {naked:?}");
+            let grandchild = child_faces(Scheme::Loop, &child, &child_connectivity, false).unwrap();
+            let refined_faces = loop_subdivision::grandchild_faces(&refined, None).unwrap();
+            assert_eq!(
+                refined_faces.indices, grandchild.indices,
+                "{what}: grandchild faces"
+            );
+            assert_eq!(
+                refined_faces.vertex_count, grandchild.vertex_count,
+                "{what}"
+            );
+            assert_eq!(refined.vertex_count(), built.vertex_count(), "{what}");
+            assert_eq!(refined.edge_count(), built.edge_count(), "{what}");
+            assert_eq!(refined.face_count(), built.face_count(), "{what}");
+            for f in 0..child.face_count() {
+                assert!(refined.face(f).eq(built.face(f)), "{what}: face {f}");
+                let (_, edges) = refined.children(f / 4)[f % 4];
+                assert_eq!(
+                    edges.to_vec(),
+                    child_connectivity.corner_edges[3 * f..3 * f + 3].to_vec(),
+                    "{what}: face {f}"
+                );
+            }
+            for e in 0..built.edge_count() {
+                assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
             }
             for v in 0..built.vertex_count() {
                 let rule = built.rule(v);
