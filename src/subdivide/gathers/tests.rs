@@ -39,31 +39,21 @@ fn refined_gathers_equal_the_built_level() {
             NakedEdges::Smooth,
             NakedEdges::CornerFixed,
         ] {
-            let faces = Faces::of_mesh(mesh);
-            let connectivity = Connectivity::new(&faces).unwrap();
-            let tags = cage_tags(&faces, &connectivity, naked).unwrap();
-            let child = child_faces(Scheme::CatmullClark, &faces, &connectivity, true).unwrap();
-            let child_connectivity = connectivity
-                .refine(Scheme::CatmullClark, &faces, true)
-                .unwrap();
-            let child_tags =
-                child_tags(Scheme::CatmullClark, &tags, &faces, &child_connectivity).unwrap();
-            let parent = LevelGathers {
-                scheme: Scheme::CatmullClark,
-                faces: &faces,
-                connectivity: &connectivity,
-                tags: &tags,
+            let levels = TwoLevels::of(mesh, Scheme::CatmullClark, naked);
+            let TwoLevels {
+                faces,
+                connectivity,
+                child,
+                child_connectivity,
+                ..
+            } = &levels;
+            let refined = RefinedGathers {
+                parent: levels.parent(),
             };
-            let refined = RefinedGathers { parent };
-            let built = LevelGathers {
-                scheme: Scheme::CatmullClark,
-                faces: &child,
-                connectivity: &child_connectivity,
-                tags: &child_tags,
-            };
+            let built = levels.child();
             let what = format!("shape {s} {naked:?}");
             let grandchild =
-                child_faces(Scheme::CatmullClark, &child, &child_connectivity, false).unwrap();
+                child_faces(Scheme::CatmullClark, child, child_connectivity, false).unwrap();
             assert_eq!(
                 catmull_clark::grandchild_faces(&refined, None)
                     .unwrap()
@@ -81,9 +71,7 @@ fn refined_gathers_equal_the_built_level() {
                     .collect();
                 assert_eq!(refined.quad_edges(f).to_vec(), edges, "{what}: face {f}");
             }
-            for e in 0..built.edge_count() {
-                assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
-            }
+            assert_same_gathers(&refined, &built, &what);
             // The wings walked around each parent vertex are its slots' wings.
             for v in 0..faces.vertex_count {
                 let slots =
@@ -95,24 +83,81 @@ fn refined_gathers_equal_the_built_level() {
                     }
                 }
             }
-            for v in 0..built.vertex_count() {
-                let rule = built.rule(v);
-                assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
-                match rule {
-                    VertexRule::Crease => assert_eq!(
-                        refined.crease_neighbours(v),
-                        built.crease_neighbours(v),
-                        "{what}: vertex {v}"
-                    ),
-                    VertexRule::Smooth => {
-                        let (mut a, mut b) = (Vec::new(), Vec::new());
-                        let n = refined.around(v, |u, f| a.push((u, f)));
-                        assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
-                        assert_eq!(a, b, "{what}: vertex {v}");
-                    }
-                    VertexRule::Corner => {}
-                }
+        }
+    }
+}
+
+/// A cage's level and the level `scheme` makes of it, built.
+struct TwoLevels {
+    scheme: Scheme,
+    faces: Faces,
+    connectivity: Connectivity,
+    tags: Tags,
+    child: Faces,
+    child_connectivity: Connectivity,
+    child_tags: Tags,
+}
+
+impl TwoLevels {
+    fn of(mesh: &crate::Mesh, scheme: Scheme, naked: NakedEdges) -> TwoLevels {
+        let faces = Faces::of_mesh(mesh);
+        let connectivity = Connectivity::new(&faces).unwrap();
+        let tags = cage_tags(&faces, &connectivity, naked).unwrap();
+        let child = child_faces(scheme, &faces, &connectivity, true).unwrap();
+        let child_connectivity = connectivity.refine(scheme, &faces, true).unwrap();
+        let child_tags = child_tags(scheme, &tags, &faces, &child_connectivity).unwrap();
+        TwoLevels {
+            scheme,
+            faces,
+            connectivity,
+            tags,
+            child,
+            child_connectivity,
+            child_tags,
+        }
+    }
+
+    fn parent(&self) -> LevelGathers<'_> {
+        LevelGathers {
+            scheme: self.scheme,
+            faces: &self.faces,
+            connectivity: &self.connectivity,
+            tags: &self.tags,
+        }
+    }
+
+    fn child(&self) -> LevelGathers<'_> {
+        LevelGathers {
+            scheme: self.scheme,
+            faces: &self.child,
+            connectivity: &self.child_connectivity,
+            tags: &self.child_tags,
+        }
+    }
+}
+
+/// Every edge, and every vertex's rule, crease neighbours or ring, of two
+/// readings of one level are the same.
+fn assert_same_gathers(refined: &impl Gathers, built: &impl Gathers, what: &str) {
+    for e in 0..built.edge_count() {
+        assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
+    }
+    for v in 0..built.vertex_count() {
+        let rule = built.rule(v);
+        assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
+        match rule {
+            VertexRule::Crease => assert_eq!(
+                refined.crease_neighbours(v),
+                built.crease_neighbours(v),
+                "{what}: vertex {v}"
+            ),
+            VertexRule::Smooth => {
+                let (mut a, mut b) = (Vec::new(), Vec::new());
+                let n = refined.around(v, |u, f| a.push((u, f)));
+                assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
+                assert_eq!(a, b, "{what}: vertex {v}");
             }
+            VertexRule::Corner => {}
         }
     }
 }
@@ -148,27 +193,16 @@ fn loop_refined_gathers_equal_the_built_level() {
             NakedEdges::Smooth,
             NakedEdges::CornerFixed,
         ] {
-            let faces = Faces::of_mesh(mesh);
-            let connectivity = Connectivity::new(&faces).unwrap();
-            let tags = cage_tags(&faces, &connectivity, naked).unwrap();
-            let child = child_faces(Scheme::Loop, &faces, &connectivity, true).unwrap();
-            let child_connectivity = connectivity.refine(Scheme::Loop, &faces, true).unwrap();
-            let child_tags = child_tags(Scheme::Loop, &tags, &faces, &child_connectivity).unwrap();
-            let parent = LevelGathers {
-                scheme: Scheme::Loop,
-                faces: &faces,
-                connectivity: &connectivity,
-                tags: &tags,
-            };
-            let refined = LoopRefinedGathers::new(parent).unwrap();
-            let built = LevelGathers {
-                scheme: Scheme::Loop,
-                faces: &child,
-                connectivity: &child_connectivity,
-                tags: &child_tags,
-            };
+            let levels = TwoLevels::of(mesh, Scheme::Loop, naked);
+            let TwoLevels {
+                child,
+                child_connectivity,
+                ..
+            } = &levels;
+            let refined = LoopRefinedGathers::new(levels.parent()).unwrap();
+            let built = levels.child();
             let what = format!("shape {s} {naked:?}");
-            let grandchild = child_faces(Scheme::Loop, &child, &child_connectivity, false).unwrap();
+            let grandchild = child_faces(Scheme::Loop, child, child_connectivity, false).unwrap();
             let refined_faces = loop_subdivision::grandchild_faces(&refined, None).unwrap();
             assert_eq!(
                 refined_faces.indices, grandchild.indices,
@@ -190,27 +224,7 @@ fn loop_refined_gathers_equal_the_built_level() {
                     "{what}: face {f}"
                 );
             }
-            for e in 0..built.edge_count() {
-                assert_eq!(refined.edge(e), built.edge(e), "{what}: edge {e}");
-            }
-            for v in 0..built.vertex_count() {
-                let rule = built.rule(v);
-                assert_eq!(refined.rule(v), rule, "{what}: vertex {v}");
-                match rule {
-                    VertexRule::Crease => assert_eq!(
-                        refined.crease_neighbours(v),
-                        built.crease_neighbours(v),
-                        "{what}: vertex {v}"
-                    ),
-                    VertexRule::Smooth => {
-                        let (mut a, mut b) = (Vec::new(), Vec::new());
-                        let n = refined.around(v, |u, f| a.push((u, f)));
-                        assert_eq!(n, built.around(v, |u, f| b.push((u, f))));
-                        assert_eq!(a, b, "{what}: vertex {v}");
-                    }
-                    VertexRule::Corner => {}
-                }
-            }
+            assert_same_gathers(&refined, &built, &what);
         }
     }
 }
