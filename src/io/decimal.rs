@@ -43,7 +43,7 @@ pub(crate) fn put_u64(out: &mut [u8], at: usize, value: u64) -> usize {
 /// and the rest cut off again, which the compiler does with a few wide
 /// moves instead of a call to copy a length it does not know.
 #[inline]
-fn push_fixed<const N: usize>(w: &mut Vec<u8>, bytes: &[u8; N], count: usize) {
+pub(crate) fn push_fixed<const N: usize>(w: &mut Vec<u8>, bytes: &[u8; N], count: usize) {
     let len = w.len();
     w.extend_from_slice(bytes);
     w.truncate(len + count);

@@ -35,7 +35,7 @@ use rayon::prelude::*;
 
 use glam::DVec3;
 
-use super::decimal::{push_f64, push_u64, put_f64, put_u64, F64_ROOM};
+use super::decimal::{push_f64, push_fixed, push_u64, put_f64, put_u64, F64_ROOM};
 use super::mesh_file::{Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL};
 use super::text::{lines, parse_f64, parse_i64, show, words};
 use super::{build_mesh_with, IoError, Location};
@@ -721,7 +721,7 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
                 }
                 if let Some(end) = end {
                     line[end] = b'\n';
-                    w.extend_from_slice(&line[..=end]);
+                    push_fixed(w, &line, end + 1);
                     continue;
                 }
             }
@@ -822,7 +822,7 @@ fn write_plain_faces(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
                 end = put_u64(&mut line, end + 1, v as u64 + 1);
             }
             line[end] = b'\n';
-            w.extend_from_slice(&line[..=end]);
+            push_fixed(w, &line, end + 1);
         }
         Ok(())
     })
