@@ -328,16 +328,18 @@ mod tests {
         }
     }
 
-    /// The mesh `read_in_blocks` gives for a file of `bytes`, with each
-    /// position's bits (so -0 and 0 differ).
+    /// Each position's bits (so -0 and 0 differ).
+    fn position_bits(mesh: &Mesh) -> Vec<[u64; 3]> {
+        let positions = mesh.positions().iter();
+        positions.map(|p| p.to_array().map(f64::to_bits)).collect()
+    }
+
+    /// The mesh `read_in_blocks` gives for a file of `bytes`, with its
+    /// [`position_bits`].
     fn read_file(bytes: &[u8], block_triangles: usize) -> Option<(Mesh, Vec<[u64; 3]>)> {
         let file = Scratch::new(&format!("{}-{block_triangles}", bytes.len()), bytes);
         let mesh = read_in_blocks(&file.0, block_triangles).unwrap()?;
-        let bits = mesh
-            .positions()
-            .iter()
-            .map(|p| p.to_array().map(f64::to_bits))
-            .collect();
+        let bits = position_bits(&mesh);
         Some((mesh, bits))
     }
 
@@ -347,11 +349,7 @@ mod tests {
         torus.positions_mut()[0].x = -0.0;
         let bytes = binary(&torus);
         let whole = parse(&bytes).unwrap();
-        let bits: Vec<[u64; 3]> = whole
-            .positions()
-            .iter()
-            .map(|p| p.to_array().map(f64::to_bits))
-            .collect();
+        let bits = position_bits(&whole);
         let triangles = whole.face_count();
         for block in [
             0,

@@ -35,16 +35,13 @@ pub fn face_normal(mesh: &Mesh, f: usize) -> DVec3 {
 pub fn median_edge_length(mesh: &Mesh) -> f64 {
     let topology = crate::mesh::topology::Topology::new(mesh);
     let p = mesh.positions();
-    let mut lengths: Vec<f64> = topology
-        .edges()
-        .iter()
-        .map(|&[a, b]| p[a as usize].distance(p[b as usize]))
-        .collect();
-    if lengths.is_empty() {
-        return 0.0;
-    }
-    let middle = lengths.len() / 2;
-    *lengths.select_nth_unstable_by(middle, f64::total_cmp).1
+    median(
+        topology
+            .edges()
+            .iter()
+            .map(|&[a, b]| p[a as usize].distance(p[b as usize]))
+            .collect(),
+    )
 }
 
 /// The median length of the sides of at most `max_faces` faces spread
@@ -56,14 +53,22 @@ pub fn median_edge_length(mesh: &Mesh) -> f64 {
 pub fn median_edge_length_sampled(mesh: &Mesh, max_faces: usize) -> f64 {
     let step = mesh.face_count().div_ceil(max_faces.max(1)).max(1);
     let p = mesh.positions();
-    let mut lengths: Vec<f64> = (0..mesh.face_count())
-        .step_by(step)
-        .flat_map(|f| {
-            let face = mesh.face(f);
-            (0..face.len())
-                .map(move |i| p[face[i] as usize].distance(p[face[(i + 1) % face.len()] as usize]))
-        })
-        .collect();
+    median(
+        (0..mesh.face_count())
+            .step_by(step)
+            .flat_map(|f| {
+                let face = mesh.face(f);
+                (0..face.len()).map(move |i| {
+                    p[face[i] as usize].distance(p[face[(i + 1) % face.len()] as usize])
+                })
+            })
+            .collect(),
+    )
+}
+
+/// The median of `lengths` (the upper of the two middle ones of an even
+/// count), or 0 for none.
+fn median(mut lengths: Vec<f64>) -> f64 {
     if lengths.is_empty() {
         return 0.0;
     }
