@@ -170,32 +170,11 @@ impl Clusters {
         let vertex_count = positions.len();
 
         // Faces over clusters, repeats dropped, collapsed faces removed.
-        let mut seen_in_face = try_vec::<u32>(cluster_count, "the weld clusters")?;
-        seen_in_face.resize(cluster_count, u32::MAX);
-        let (mut read, mut written, mut kept_faces) = (0, 0, 0);
-        for f in 0..face_sizes.len() {
-            let start = written;
-            let size = face_sizes[f] as usize;
-            for corner in read..read + size {
-                let c = cluster_of[face_indices[corner] as usize];
-                if seen_in_face[c as usize] != f as u32 {
-                    seen_in_face[c as usize] = f as u32;
-                    face_indices[written] = c;
-                    written += 1;
-                }
-            }
-            read += size;
-            if written - start < 3 {
-                written = start;
-            } else {
-                face_sizes[kept_faces] = (written - start) as u32;
-                kept_faces += 1;
-            }
-        }
+        let (kept_corners, kept_faces) =
+            faces_over_clusters(&mut face_sizes, &mut face_indices, &cluster_of);
         let removed_face_count = face_sizes.len() - kept_faces;
-        face_indices.truncate(written);
+        face_indices.truncate(kept_corners);
         face_sizes.truncate(kept_faces);
-        drop(seen_in_face);
 
         // Keep only the clusters some face uses, in order of their first
         // vertex (marked and numbered on all threads).
@@ -240,6 +219,94 @@ impl Clusters {
             report,
         ))
     }
+}
+
+/// Faces per block of [`faces_over_clusters`].
+const FACE_BLOCK: usize = 16 * 1024;
+
+/// Rewrites the faces over `cluster_of`, in place: each face's corners
+/// become their clusters, a cluster met again in the same face is dropped,
+/// and a face left with fewer than three corners is removed. Returns how
+/// many corners and faces are kept, at the front of `indices` and `sizes`.
+/// Blocks of faces are rewritten on all threads, each within its own
+/// corners, then slid down over what the blocks before them dropped.
+fn faces_over_clusters(
+    sizes: &mut [u32],
+    indices: &mut [u32],
+    cluster_of: &[u32],
+) -> (usize, usize) {
+    let block_corners: Vec<usize> = sizes
+        .par_chunks(FACE_BLOCK)
+        .map(|block| block.iter().map(|&n| n as usize).sum())
+        .collect();
+    let mut blocks = Vec::with_capacity(block_corners.len());
+    let mut rest = &mut *indices;
+    for (face_block, &corners) in sizes.chunks_mut(FACE_BLOCK).zip(&block_corners) {
+        let (here, after) = rest.split_at_mut(corners);
+        blocks.push((face_block, here));
+        rest = after;
+    }
+    let kept: Vec<(usize, usize)> = blocks
+        .into_par_iter()
+        .map(|(block_sizes, block_indices)| compact_faces(block_sizes, block_indices, cluster_of))
+        .collect();
+    let (mut corner_end, mut face_end, mut corner_start) = (0, 0, 0);
+    for (b, (&(corners, faces), &block_corners)) in kept.iter().zip(&block_corners).enumerate() {
+        let face_start = b * FACE_BLOCK;
+        if corner_start != corner_end {
+            indices.copy_within(corner_start..corner_start + corners, corner_end);
+        }
+        if face_start != face_end {
+            sizes.copy_within(face_start..face_start + faces, face_end);
+        }
+        corner_start += block_corners;
+        corner_end += corners;
+        face_end += faces;
+    }
+    (corner_end, face_end)
+}
+
+/// Faces larger than this drop their repeats through a set rather than by
+/// looking back over the corners already kept.
+const SCANNED_FACE_SIZE: usize = 32;
+
+/// [`faces_over_clusters`] on one block: the kept faces' sizes and corners
+/// written at the front of `sizes` and `indices`; returns how many.
+fn compact_faces(sizes: &mut [u32], indices: &mut [u32], cluster_of: &[u32]) -> (usize, usize) {
+    let (mut read, mut written, mut kept_faces) = (0, 0, 0);
+    let mut seen = std::collections::HashSet::new();
+    for f in 0..sizes.len() {
+        let start = written;
+        let size = sizes[f] as usize;
+        // Every corner is read before anything is written over it:
+        // `written` never passes `corner`.
+        if size <= SCANNED_FACE_SIZE {
+            for corner in read..read + size {
+                let c = cluster_of[indices[corner] as usize];
+                if !indices[start..written].contains(&c) {
+                    indices[written] = c;
+                    written += 1;
+                }
+            }
+        } else {
+            seen.clear();
+            for corner in read..read + size {
+                let c = cluster_of[indices[corner] as usize];
+                if seen.insert(c) {
+                    indices[written] = c;
+                    written += 1;
+                }
+            }
+        }
+        read += size;
+        if written - start < 3 {
+            written = start;
+        } else {
+            sizes[kept_faces] = (written - start) as u32;
+            kept_faces += 1;
+        }
+    }
+    (written, kept_faces)
 }
 
 /// How many vertices no face uses.

@@ -322,3 +322,72 @@ fn welding_a_mesh_given_away_matches_welding_a_borrowed_one() {
     assert_eq!(positions, m.positions());
     assert_eq!(indices, m.face_indices());
 }
+
+/// Faces over clusters as a plain walk: each face's clusters in order,
+/// the first of each kept, faces under three corners left out.
+fn faces_over_clusters_one_by_one(
+    sizes: &[u32],
+    indices: &[u32],
+    cluster_of: &[u32],
+) -> (Vec<u32>, Vec<u32>) {
+    let (mut kept_sizes, mut kept_indices, mut read) = (Vec::new(), Vec::new(), 0);
+    for &size in sizes {
+        let mut face: Vec<u32> = Vec::new();
+        for &v in &indices[read..read + size as usize] {
+            let c = cluster_of[v as usize];
+            if !face.contains(&c) {
+                face.push(c);
+            }
+        }
+        read += size as usize;
+        if face.len() >= 3 {
+            kept_sizes.push(face.len() as u32);
+            kept_indices.extend(face);
+        }
+    }
+    (kept_sizes, kept_indices)
+}
+
+#[test]
+fn faces_over_clusters_in_blocks_match_one_face_after_another() {
+    // Several blocks of faces of 3 to 40 corners over few clusters: faces
+    // collapse in every block, so each block slides down over the gaps,
+    // and the large faces drop their repeats through the set.
+    let mut state = 0x2545_F491_4F6C_DD1Du64;
+    let mut next = |n: u64| {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        state % n
+    };
+    let vertex_count = 5000;
+    for cluster_count in [3, 40, 5000] {
+        let cluster_of: Vec<u32> = (0..vertex_count)
+            .map(|_| next(cluster_count) as u32)
+            .collect();
+        let face_count = 2 * FACE_BLOCK + 777;
+        let sizes: Vec<u32> = (0..face_count)
+            .map(|f| match f % 97 {
+                0 => 3 + next(38) as u32,
+                _ => 3 + next(2) as u32,
+            })
+            .collect();
+        let total: u32 = sizes.iter().sum();
+        let indices: Vec<u32> = (0..total).map(|_| next(vertex_count) as u32).collect();
+        let expected = faces_over_clusters_one_by_one(&sizes, &indices, &cluster_of);
+        assert!(expected.0.len() < face_count, "some faces collapse");
+        assert!(sizes.iter().any(|&n| n as usize > SCANNED_FACE_SIZE));
+        let (mut sizes, mut indices) = (sizes, indices);
+        let (corners, faces) = faces_over_clusters(&mut sizes, &mut indices, &cluster_of);
+        assert_eq!(
+            &sizes[..faces],
+            expected.0.as_slice(),
+            "{cluster_count} clusters"
+        );
+        assert_eq!(
+            &indices[..corners],
+            expected.1.as_slice(),
+            "{cluster_count} clusters"
+        );
+    }
+}
