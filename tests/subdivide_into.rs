@@ -15,7 +15,22 @@ const MODES: [NakedEdges; 4] = [
 /// A value no subdivision writes, to see what was left alone.
 const UNTOUCHED: f64 = -1234.5;
 
+/// `cage` with `count` more vertices that no face uses, after its own:
+/// too many for the points of the level before the last to be kept in the
+/// last level's index buffer.
+fn with_unused_vertices(cage: &Mesh, count: usize) -> Mesh {
+    let mut positions = cage.positions().to_vec();
+    positions.extend((0..count).map(|i| DVec3::new(i as f64, 0.5, -2.0)));
+    Mesh::from_polygons(positions, cage.faces()).unwrap()
+}
+
 fn cages(scheme: Scheme) -> Vec<Mesh> {
+    let mut cages = some_cages(scheme);
+    cages.push(with_unused_vertices(&cages[0], 2000));
+    cages
+}
+
+fn some_cages(scheme: Scheme) -> Vec<Mesh> {
     match scheme {
         Scheme::CatmullClark => vec![
             shapes::cube(),

@@ -318,12 +318,25 @@ fn non_manifold_input_keeps_every_face() {
     }
 }
 
+/// `cage` with `count` more vertices that no face uses, after its own.
+fn with_unused_vertices(cage: &Mesh, count: usize) -> Mesh {
+    let mut positions = cage.positions().to_vec();
+    positions.extend((0..count).map(|i| DVec3::new(i as f64, 0.5, -2.0)));
+    Mesh::from_polygons(positions, cage.faces()).unwrap()
+}
+
 #[test]
 fn refiner_evaluate_equals_one_shot() {
     let cage = shapes::mixed_polygons();
+    let triangles = triangulate(&cage).unwrap().mesh;
+    // One-shot keeps the points of the level before the last in the last
+    // level's index buffer where they fit; with many unused vertices they
+    // do not, and go to a buffer of their own.
     for (scheme, cage) in [
         (Scheme::CatmullClark, cage.clone()),
-        (Scheme::Loop, triangulate(&cage).unwrap().mesh),
+        (Scheme::Loop, triangles.clone()),
+        (Scheme::CatmullClark, with_unused_vertices(&cage, 2000)),
+        (Scheme::Loop, with_unused_vertices(&triangles, 2000)),
     ] {
         for mode in MODES {
             for levels in 0..=3 {

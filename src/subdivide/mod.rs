@@ -80,7 +80,7 @@ pub use limit::Limit;
 pub use limit_patches::{limit_patches, BezierPatch, LimitPatches, MAX_ISOLATION};
 pub use limit_surface::LimitSurface;
 pub use refiner::Refiner;
-use refiner::Step;
+use refiner::{Points, Step};
 pub(crate) use scheme::check_counts;
 use scheme::too_large;
 pub use scheme::{NakedEdges, RefinedCounts, Scheme};
@@ -225,17 +225,31 @@ fn refine_points(
         None => (None, None),
     };
     let mut written = 0;
-    let faces = refiner::gather_levels(request, into_indices, room, |step, last| {
-        let source = positions.as_deref().unwrap_or(mesh.positions());
-        match (last, into_points.as_deref_mut()) {
-            (true, Some(out)) => {
+    let faces = refiner::gather_levels(request, into_indices, room, |step, points| {
+        let made = positions.as_deref().unwrap_or(mesh.positions());
+        match (points, into_points.as_deref_mut()) {
+            (Points::Last(source), Some(out)) => {
+                let source = source.unwrap_or(made);
                 written = match &step {
                     Step::Level(level) => write_points(scheme, level, source, out),
                     Step::Refined(level) => write_points(scheme, level, source, out),
                     Step::LoopRefined(level) => write_points(scheme, *level, source, out),
                 };
             }
-            _ => {
+            (Points::NextInto(out), _) => {
+                match &step {
+                    Step::Level(level) => write_points(scheme, level, made, out),
+                    Step::Refined(level) => write_points(scheme, level, made, out),
+                    Step::LoopRefined(level) => write_points(scheme, *level, made, out),
+                };
+                // The last level reads the points from `out`.
+                positions = None;
+            }
+            (points, _) => {
+                let source = match points {
+                    Points::Last(Some(source)) => source,
+                    _ => made,
+                };
                 let next = match &step {
                     Step::Level(level) => point_rules::points(scheme, level, source)?,
                     Step::Refined(level) => point_rules::points(scheme, level, source)?,

@@ -10,12 +10,12 @@ use glam::DVec3;
 use super::creases::SubdivisionOptions;
 use super::gathers::{plan, LevelGathers, LoopRefinedGathers, Plan, RefinedGathers};
 use super::level::{Connectivity, Faces};
-use super::point_rules::{apply, child_faces, child_faces_into};
+use super::point_rules::{self, apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
 use super::scheme::{check_counts, NakedEdges, RefinedCounts, Scheme};
 use super::subdivider::Subdivider;
 use super::{catmull_clark, loop_subdivision, scale};
-use crate::buffers::try_vec;
+use crate::buffers::{fresh_zeroed, try_vec};
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
@@ -267,6 +267,19 @@ pub(crate) enum Step<'a> {
     LoopRefined(&'a LoopRefinedGathers<'a>),
 }
 
+/// Where [`gather_levels`] has a level's points written, and read.
+pub(crate) enum Points<'a> {
+    /// An intermediate level's, into a buffer of the callback's own.
+    Next,
+    /// The points of the level before the last, into this slice: the tail
+    /// of the last level's index buffer, written over only once the last
+    /// level's points have read them.
+    NextInto(&'a mut [DVec3]),
+    /// The last level's, made from these points when given (those written
+    /// [`Points::NextInto`]), else from those the callback made before.
+    Last(Option<&'a [DVec3]>),
+}
+
 /// A cage and what to do to it: the plain subdivision both the refiner and
 /// the one-shot drivers walk level by level.
 #[derive(Clone, Copy)]
@@ -337,11 +350,13 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
 }
 
 /// One-shot subdivision's levels: hands each level's gathers to `each`
-/// with whether it is the last, read where they lie instead of planned
-/// (each applies once), and returns the faces of the last level, without
-/// offsets (all the same size). The last two levels both come from the
-/// connectivity of the level before them, so the largest connectivity is
-/// never built.
+/// with where its points go ([`Points`]), read where they lie instead of
+/// planned (each applies once), and returns the faces of the last level,
+/// without offsets (all the same size). The last two levels both come from
+/// the connectivity of the level before them, so the largest connectivity
+/// is never built; the points of the level between them are kept in the
+/// last level's index buffer until the last points are made, and the last
+/// faces are written after them.
 ///
 /// With `last_indices`, a caller's buffer, the last level's face indices
 /// are written there instead (the returned faces then have none); `room`
@@ -351,7 +366,7 @@ pub(crate) fn gather_levels(
     request: Levels<'_>,
     mut last_indices: Option<&mut [u32]>,
     room: impl FnOnce(RefinedCounts) -> Result<()>,
-    mut each: impl FnMut(Step<'_>, bool) -> Result<()>,
+    mut each: impl FnMut(Step<'_>, Points<'_>) -> Result<()>,
 ) -> Result<Faces> {
     let scheme = request.scheme;
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
@@ -384,37 +399,56 @@ pub(crate) fn gather_levels(
             tags: &tags,
         };
         if next_last {
-            // The next level's points, then the last level's faces and
-            // points from this level's connectivity: the next level's is
+            // The next level's points, then the last level's points and
+            // faces from this level's connectivity: the next level's is
             // never built.
-            each(Step::Level(gathers), false)?;
-            let into = last_indices.take();
-            return match scheme {
+            let mut own_indices = Vec::new();
+            let indices: &mut [u32] = match last_indices.take() {
+                Some(into) => &mut into[..index_count as usize],
+                None => {
+                    own_indices = fresh_zeroed(index_count as usize, "child faces")?;
+                    &mut own_indices
+                }
+            };
+            let next_points = point_rules::point_count(scheme, &gathers);
+            let kept = match points_tail(indices, next_points) {
+                Some(tail) => {
+                    each(Step::Level(gathers), Points::NextInto(tail))?;
+                    true
+                }
+                None => {
+                    each(Step::Level(gathers), Points::Next)?;
+                    false
+                }
+            };
+            let mut last_faces = match scheme {
                 Scheme::CatmullClark => {
                     let refined = RefinedGathers { parent: gathers };
-                    let last_faces = catmull_clark::grandchild_faces(&refined, into)?;
-                    each(Step::Refined(refined), true)?;
-                    Ok(last_faces)
+                    let source = kept_points(indices, next_points, kept);
+                    each(Step::Refined(refined), Points::Last(source))?;
+                    catmull_clark::grandchild_faces(&refined, Some(indices))?
                 }
                 Scheme::Loop => {
                     let refined = LoopRefinedGathers::new(gathers)?;
-                    let last_faces = loop_subdivision::grandchild_faces(&refined, into)?;
-                    each(Step::LoopRefined(&refined), true)?;
-                    Ok(last_faces)
+                    let source = kept_points(indices, next_points, kept);
+                    each(Step::LoopRefined(&refined), Points::Last(source))?;
+                    loop_subdivision::grandchild_faces(&refined, Some(indices))?
                 }
             };
+            last_faces.indices = own_indices;
+            return Ok(last_faces);
         }
         if last {
             // The points first: then the last faces, the largest array, are
             // written once most of this level's connectivity is freed.
-            each(Step::Level(gathers), true)?;
+            each(Step::Level(gathers), Points::Last(None))?;
             connectivity.keep_only_corner_edges();
             drop(tags);
             let into = last_indices.take();
             return child_faces_into(scheme, &faces, &connectivity, false, into);
         }
         let next_faces = child_faces(scheme, &faces, &connectivity, false)?;
-        each(Step::Level(gathers), false)?;
+        each(Step::Level(gathers), Points::Next)?;
         // The vertices' edges are read by the next refinement, and by
         // Catmull-Clark's refined gathers.
         let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
@@ -422,4 +456,23 @@ pub(crate) fn gather_levels(
         (faces, connectivity) = (next_faces, next_connectivity);
     }
     Ok(faces)
+}
+
+/// Room for `count` points at the end of `indices`, when they fit there
+/// (as they do for every mesh whose level before the last has fewer
+/// points than a sixth of the last level's indices) and the memory is
+/// aligned for them.
+fn points_tail(indices: &mut [u32], count: usize) -> Option<&mut [DVec3]> {
+    let words = count.checked_mul(6)?;
+    // An even start keeps a buffer aligned to 8 bytes aligned for f64s.
+    let start = indices.len().checked_sub(words)? & !1;
+    bytemuck::try_cast_slice_mut(&mut indices[start..start + words]).ok()
+}
+
+/// The points [`points_tail`] made room for, when `kept` there.
+fn kept_points(indices: &mut [u32], count: usize, kept: bool) -> Option<&[DVec3]> {
+    match kept {
+        true => points_tail(indices, count).map(|points| &*points),
+        false => None,
+    }
 }
