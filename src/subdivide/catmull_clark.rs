@@ -16,7 +16,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{sharp_vertex_point, Gathers, RefinedGathers};
+use super::gathers::{prefetch_at, sharp_vertex_point, Gathers, RefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
 use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
@@ -156,8 +156,16 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
+        .for_each(|(v, out)| {
+            level.prefetch_around(v + PREFETCH_AHEAD, points, face_points);
+            *out = vertex_point(level, points, face_points, v)
+        });
 }
+
+/// How many points ahead a pass brings in what it will read (see
+/// [`Gathers::prefetch_around`]): the reads of a point wait on memory, and
+/// their indices are known only from other arrays.
+const PREFETCH_AHEAD: usize = 8;
 
 /// The points of the refined level's first 2E edges, `[v, V + e]` for
 /// each of the parent's vertices v and its edges e in order, vertex by
@@ -173,6 +181,15 @@ fn slot_points(level: &RefinedGathers, points: &[DVec3], face_points: &[DVec3], 
         .for_each(|(vertices, part)| {
             let base = offsets[vertices.start] as usize;
             for v in vertices {
+                if v + PREFETCH_AHEAD < v_count as usize {
+                    let ahead = v + PREFETCH_AHEAD;
+                    for &e in connectivity.vertex_edges(ahead) {
+                        prefetch_at(points, v_count as usize + e as usize);
+                    }
+                    for &k in connectivity.vertex_corners(ahead) {
+                        prefetch_at(face_points, k as usize);
+                    }
+                }
                 let slots = offsets[v] as usize..offsets[v + 1] as usize;
                 let outs = &mut part[slots.start - base..slots.end - base];
                 let Some(wings) = level.slot_wings(v) else {
