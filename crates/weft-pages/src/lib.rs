@@ -1,14 +1,18 @@
-//! Transparent huge-page advice for large buffers.
+//! Transparent huge-page advice and prefetch hints for large buffers.
 //!
 //! Filling a fresh buffer of hundreds of megabytes faults it in 4 KiB page by
 //! page; on Linux with transparent huge pages in `madvise` mode (the common
 //! default), advising the buffer first lets the kernel back it with 2 MiB
 //! pages instead, which cuts the page faults 512-fold. Subdividing a mesh to
 //! a few million faces spends more time in those faults than in arithmetic.
+//! A pass whose reads hop across such buffers, at places it learns from
+//! other arrays, waits on memory at each one; [`prefetch`] asks for a
+//! line a few steps early.
 //!
 //! The library's only `unsafe` outside its C ABI lives here: one
 //! `madvise(MADV_HUGEPAGE)` call, which never reads, writes or frees the
-//! memory it is given, so the function is safe to call on any slice.
+//! memory it is given, so the function is safe to call on any slice; and
+//! the prefetch instruction, a hint that changes nothing but the caches.
 
 #![deny(unsafe_op_in_unsafe_fn)]
 
