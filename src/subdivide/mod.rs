@@ -228,35 +228,18 @@ fn refine_points(
     let faces = refiner::gather_levels(request, into_indices, room, |step, points| {
         let made = positions.as_deref().unwrap_or(mesh.positions());
         match (points, into_points.as_deref_mut()) {
-            (Points::Last(source), Some(out)) => {
-                let source = source.unwrap_or(made);
-                written = match &step {
-                    Step::Level(level) => write_points(scheme, level, source, out),
-                    Step::Refined(level) => write_points(scheme, level, source, out),
-                    Step::LoopRefined(level) => write_points(scheme, *level, source, out),
-                };
-            }
             (Points::NextInto(out), _) => {
-                match &step {
-                    Step::Level(level) => write_points(scheme, level, made, out),
-                    Step::Refined(level) => write_points(scheme, level, made, out),
-                    Step::LoopRefined(level) => write_points(scheme, *level, made, out),
-                };
+                write_points(scheme, &step, made, out);
                 // The last level reads the points from `out`.
                 positions = None;
             }
-            (points, _) => {
-                let source = match points {
-                    Points::Last(Some(source)) => source,
-                    _ => made,
-                };
-                let next = match &step {
-                    Step::Level(level) => point_rules::points(scheme, level, source)?,
-                    Step::Refined(level) => point_rules::points(scheme, level, source)?,
-                    Step::LoopRefined(level) => point_rules::points(scheme, *level, source)?,
-                };
-                positions = Some(next);
+            (Points::Last(source), Some(out)) => {
+                written = write_points(scheme, &step, source.unwrap_or(made), out);
             }
+            (Points::Last(source), None) => {
+                positions = Some(new_points(scheme, &step, source.unwrap_or(made))?);
+            }
+            (Points::Next, _) => positions = Some(new_points(scheme, &step, made)?),
         }
         Ok(())
     })?;
@@ -271,15 +254,31 @@ fn refine_points(
 }
 
 /// Writes one level's points into the start of `out`; returns how many.
-fn write_points(
-    scheme: Scheme,
-    level: &impl gathers::Gathers,
-    source: &[DVec3],
-    out: &mut [DVec3],
-) -> usize {
-    let count = point_rules::point_count(scheme, level);
-    point_rules::apply(scheme, level, source, &mut out[..count]);
-    count
+fn write_points(scheme: Scheme, step: &Step<'_>, source: &[DVec3], out: &mut [DVec3]) -> usize {
+    fn write(
+        scheme: Scheme,
+        level: &impl gathers::Gathers,
+        source: &[DVec3],
+        out: &mut [DVec3],
+    ) -> usize {
+        let count = point_rules::point_count(scheme, level);
+        point_rules::apply(scheme, level, source, &mut out[..count]);
+        count
+    }
+    match step {
+        Step::Level(level) => write(scheme, level, source, out),
+        Step::Refined(level) => write(scheme, level, source, out),
+        Step::LoopRefined(level) => write(scheme, *level, source, out),
+    }
+}
+
+/// One level's points, in a new buffer.
+fn new_points(scheme: Scheme, step: &Step<'_>, source: &[DVec3]) -> Result<Vec<DVec3>> {
+    match step {
+        Step::Level(level) => point_rules::points(scheme, level, source),
+        Step::Refined(level) => point_rules::points(scheme, level, source),
+        Step::LoopRefined(level) => point_rules::points(scheme, *level, source),
+    }
 }
 
 /// Refuses buffers of `(positions, face indices)` lengths too short for `counts`.
