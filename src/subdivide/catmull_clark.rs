@@ -124,13 +124,24 @@ fn vertex_point(level: &impl Gathers, points: &[DVec3], face_points: &[DVec3], v
     let n = level.around(v, |u, f| {
         neighbours += points[u as usize];
         faces += face_points[f as usize];
-    }) as f64;
-    divided(points[v] * (n - 2.0) + divided(neighbours + faces, n), n)
+    });
+    smooth_vertex_point(points[v], neighbours, faces, n)
+}
+
+/// The smooth rule on a vertex at `p` of valence `n`, from the sums of its
+/// neighbours and of its face points, each summed in ring order.
+#[inline]
+fn smooth_vertex_point(p: DVec3, neighbours: DVec3, faces: DVec3, n: usize) -> DVec3 {
+    let n = n as f64;
+    divided(p * (n - 2.0) + divided(neighbours + faces, n), n)
 }
 
 /// Applies one level's gathers: reads `points` (the level's V positions) and
 /// fills `out` with the V + E + F positions of the next level.
 pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
+    if let Some(refined) = level.as_refined() {
+        return apply_refined(&refined, points, out);
+    }
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
     face_points
@@ -139,48 +150,173 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .enumerate()
         .for_each(|(f, out)| *out = face_point(level, points, f));
     let face_points = &*face_points;
-    let walked = match level.as_refined() {
-        Some(refined) => {
-            let slots = refined.parent.connectivity.vertex_edges.len();
-            slot_points(&refined, points, face_points, &mut edge_points[..slots]);
-            slots
-        }
-        None => 0,
-    };
-    edge_points[walked..]
+    edge_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(i, out)| *out = edge_point(level, points, face_points, walked + i));
+        .for_each(|(e, out)| *out = edge_point(level, points, face_points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| {
-            level.prefetch_around(v + PREFETCH_AHEAD, points, face_points);
-            *out = vertex_point(level, points, face_points, v)
+        .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
+}
+
+/// [`apply`] for the level refined from `level.parent`, in three passes
+/// over the parent's faces, edges and vertices instead of one per kind of
+/// point: every point a parent element's neighbourhood makes is made while
+/// that neighbourhood's points are in the cache (each level's points are
+/// larger than the cache, and a pass per kind read them all again).
+/// Each point is the same sum in the same order as [`apply`]'s, so the
+/// same bits.
+fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
+    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
+    let parent_vertices = level.parent.faces.vertex_count;
+    let parent_edges = level.parent.connectivity.edge_count();
+    let (at_vertices, rest) = vertex_points.split_at_mut(parent_vertices);
+    let (at_edges, at_faces) = rest.split_at_mut(parent_edges);
+    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
+    around_parent_faces(level, points, face_points, at_faces);
+    let face_points = &*face_points;
+    around_parent_edges(level, points, face_points, at_edges, inside);
+    around_parent_vertices(level, points, face_points, at_vertices, halves);
+}
+
+/// The face points (one per parent corner) and the vertex points of the
+/// parent's face points, face by face.
+fn around_parent_faces(
+    level: &RefinedGathers,
+    points: &[DVec3],
+    face_points: &mut [DVec3],
+    vertex_points: &mut [DVec3],
+) {
+    let parent = &level.parent;
+    let faces = parent.faces;
+    let corner_edges = &parent.connectivity.corner_edges;
+    let edge_base = faces.vertex_count;
+    let face_base = edge_base + parent.connectivity.edge_count();
+    let face_count = faces.face_count();
+    let mut blocks = Vec::with_capacity(face_count.div_ceil(CHUNK));
+    let (mut face_rest, mut vertex_rest) = (face_points, vertex_points);
+    for first in (0..face_count).step_by(CHUNK) {
+        let last = (first + CHUNK).min(face_count);
+        let corners = faces.corners(first).start..faces.corners(last - 1).end;
+        let (block_faces, rest) = std::mem::take(&mut face_rest).split_at_mut(corners.len());
+        face_rest = rest;
+        let (block_vertices, rest) = std::mem::take(&mut vertex_rest).split_at_mut(last - first);
+        vertex_rest = rest;
+        blocks.push((first..last, corners.start, block_faces, block_vertices));
+    }
+    blocks
+        .into_par_iter()
+        .for_each(|(block, first_corner, face_points, vertex_points)| {
+            for f in block.clone() {
+                let corners = faces.corners(f);
+                for c in corners.clone() {
+                    face_points[c - first_corner] = face_point(level, points, c);
+                }
+                // The ring of face f's point (see `RefinedGathers::around`):
+                // the points of the edges before its corners, its face points.
+                let (mut neighbours, mut rings) = (DVec3::ZERO, DVec3::ZERO);
+                for c in corners.clone() {
+                    let previous = corner_edges[faces.prev(c, f)] as usize;
+                    neighbours += points[edge_base + previous];
+                    rings += face_points[c - first_corner];
+                }
+                let u = face_base + f;
+                vertex_points[f - block.start] =
+                    smooth_vertex_point(points[u], neighbours, rings, corners.len());
+            }
         });
 }
 
-/// How many points ahead a pass brings in what it will read (see
-/// [`Gathers::prefetch_around`]): the reads of a point wait on memory, and
-/// their indices are known only from other arrays.
-const PREFETCH_AHEAD: usize = 8;
+/// The points of the edges inside the parent's faces (one per parent
+/// corner, in the parent's edge-corner order) and the vertex points of the
+/// parent's edge points, edge by edge.
+fn around_parent_edges(
+    level: &RefinedGathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    vertex_points: &mut [DVec3],
+    inside: &mut [DVec3],
+) {
+    let parent = &level.parent;
+    let connectivity = parent.connectivity;
+    let edge_base = parent.faces.vertex_count;
+    let edge_count = connectivity.edge_count();
+    let face_base = edge_base + edge_count;
+    let slot_base = 2 * edge_count;
+    split_by_offsets(inside, &connectivity.edge_offsets, CHUNK)
+        .into_par_iter()
+        .zip(vertex_points.par_chunks_mut(CHUNK))
+        .for_each(|((edges, inside), vertex_points)| {
+            let first_slot = connectivity.edge_offsets[edges.start] as usize;
+            for e in edges.clone() {
+                let slots = connectivity.edge_offsets[e] as usize
+                    ..connectivity.edge_offsets[e + 1] as usize;
+                let u = edge_base + e;
+                let corners = connectivity.edge_corners(e);
+                let &[c1, c2] = corners else {
+                    for s in slots {
+                        inside[s - first_slot] =
+                            edge_point(level, points, face_points, slot_base + s);
+                    }
+                    vertex_points[e - edges.start] = vertex_point(level, points, face_points, u);
+                    continue;
+                };
+                // Each corner's inside edge joins u to its face's point; its
+                // wings are the child quads at the corner and the next one.
+                let mut ring = [(0u32, 0u32, 0u32); 4];
+                for (j, c) in [c1, c2].into_iter().enumerate() {
+                    let c = c as usize;
+                    let next = parent.next(c);
+                    let face = (face_base + connectivity.face_of(c)) as u32;
+                    let wings = [c.min(next) as u32, c.max(next) as u32];
+                    inside[slots.start + j - first_slot] =
+                        edge_point_of([u as u32, face, wings[0], wings[1]], points, face_points);
+                    ring[2 * j] = (4 * c as u32 + 1, face, c as u32);
+                    ring[2 * j + 1] =
+                        (4 * next as u32 + 3, parent.faces.indices[next], next as u32);
+                }
+                vertex_points[e - edges.start] = match parent.tags.edge_sharp[e] {
+                    true => vertex_point(level, points, face_points, u),
+                    false => {
+                        // In child corner order, as `RefinedGathers::around` visits them.
+                        ring.sort_unstable();
+                        let (mut neighbours, mut rings) = (DVec3::ZERO, DVec3::ZERO);
+                        for (_, neighbour, face) in ring {
+                            neighbours += points[neighbour as usize];
+                            rings += face_points[face as usize];
+                        }
+                        smooth_vertex_point(points[u], neighbours, rings, 4)
+                    }
+                };
+            }
+        });
+}
 
-/// The points of the refined level's first 2E edges, `[v, V + e]` for
-/// each of the parent's vertices v and its edges e in order, vertex by
-/// vertex: the gathers of [`edge_point`], with the wings of all of a
-/// vertex's edges found in one walk around it
-/// ([`RefinedGathers::slot_wings`]) instead of edge by edge.
-fn slot_points(level: &RefinedGathers, points: &[DVec3], face_points: &[DVec3], out: &mut [DVec3]) {
+/// The points of the halves of the parent's edges, `[v, V + e]` for each
+/// parent vertex v and its edges e in order (the wings of all of a
+/// vertex's edges found in one walk around it,
+/// [`RefinedGathers::slot_wings`]), and the vertex points of the parent's
+/// vertices, vertex by vertex.
+fn around_parent_vertices(
+    level: &RefinedGathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    vertex_points: &mut [DVec3],
+    halves: &mut [DVec3],
+) {
     let connectivity = level.parent.connectivity;
     let offsets = &connectivity.vertex_edge_offsets;
     let v_count = level.parent.faces.vertex_count as u32;
-    split_by_offsets(out, offsets, CHUNK)
+    split_by_offsets(halves, offsets, CHUNK)
         .into_par_iter()
-        .for_each(|(vertices, part)| {
+        .zip(vertex_points.par_chunks_mut(CHUNK))
+        .for_each(|((vertices, part), vertex_points)| {
             let base = offsets[vertices.start] as usize;
-            for v in vertices {
+            for v in vertices.clone() {
                 if v + PREFETCH_AHEAD < v_count as usize {
                     let ahead = v + PREFETCH_AHEAD;
                     for &e in connectivity.vertex_edges(ahead) {
@@ -192,19 +328,29 @@ fn slot_points(level: &RefinedGathers, points: &[DVec3], face_points: &[DVec3], 
                 }
                 let slots = offsets[v] as usize..offsets[v + 1] as usize;
                 let outs = &mut part[slots.start - base..slots.end - base];
-                let Some(wings) = level.slot_wings(v) else {
-                    for (out, s) in outs.iter_mut().zip(slots) {
-                        *out = edge_point(level, points, face_points, s);
+                match level.slot_wings(v) {
+                    Some(wings) => {
+                        let edges = connectivity.vertex_edges(v);
+                        for ((out, &e), [f0, f1]) in outs.iter_mut().zip(edges).zip(wings) {
+                            *out =
+                                edge_point_of([v as u32, v_count + e, f0, f1], points, face_points);
+                        }
                     }
-                    continue;
-                };
-                let edges = connectivity.vertex_edges(v);
-                for ((out, &e), [f0, f1]) in outs.iter_mut().zip(edges).zip(wings) {
-                    *out = edge_point_of([v as u32, v_count + e, f0, f1], points, face_points);
+                    None => {
+                        for (out, s) in outs.iter_mut().zip(slots) {
+                            *out = edge_point(level, points, face_points, s);
+                        }
+                    }
                 }
+                vertex_points[v - vertices.start] = vertex_point(level, points, face_points, v);
             }
         });
 }
+
+/// How many vertices ahead [`around_parent_vertices`] brings in what it
+/// will read: the reads of a vertex's ring wait on memory, and their
+/// places are known only from the parent's lists.
+const PREFETCH_AHEAD: usize = 8;
 
 /// As [`apply`], into a new vector of the allocator's untouched zeroed
 /// memory: the face points are written into its tail first, where the edge

@@ -156,11 +156,6 @@ pub(crate) trait Gathers: Sync {
     /// is reached through (Catmull-Clark; [`NONE`] for Loop), and returns
     /// how many there are.
     fn around(&self, v: usize, visit: impl FnMut(u32, u32)) -> usize;
-    /// Brings in what vertex `v`'s point will read, where that is cheap to
-    /// find and the reads would wait on memory, for a point made a little
-    /// later.
-    #[inline]
-    fn prefetch_around(&self, _v: usize, _points: &[DVec3], _face_points: &[DVec3]) {}
     /// These gathers as [`RefinedGathers`], when they are: their edges have
     /// a faster walk (see [`RefinedGathers::slot_wings`]).
     fn as_refined(&self) -> Option<RefinedGathers<'_>> {
@@ -231,7 +226,7 @@ impl LevelGathers<'_> {
     }
 
     #[inline]
-    fn next(&self, c: usize) -> usize {
+    pub(crate) fn next(&self, c: usize) -> usize {
         self.faces.next(c, self.connectivity.face_of(c))
     }
 
@@ -442,23 +437,6 @@ fn faces_of_corners(k1: u32, k2: u32) -> [u32; 2] {
 impl Gathers for RefinedGathers<'_> {
     fn as_refined(&self) -> Option<RefinedGathers<'_>> {
         Some(*self)
-    }
-
-    #[inline]
-    fn prefetch_around(&self, u: usize, points: &[DVec3], face_points: &[DVec3]) {
-        // Only the parent's vertices: their corners lie all over the level,
-        // where the other points' reads are close to each other (bringing
-        // those in was measured slower).
-        let (v_count, _) = self.parent_counts();
-        if u >= v_count {
-            return;
-        }
-        let connectivity = self.parent.connectivity;
-        for &c in connectivity.vertex_corners(u) {
-            let c = c as usize;
-            prefetch_at(face_points, c);
-            prefetch_at(points, v_count + connectivity.corner_edges[c] as usize);
-        }
     }
 
     fn vertex_count(&self) -> usize {
