@@ -23,7 +23,7 @@
 
 use std::fmt;
 use std::fs;
-use std::io::{BufWriter, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use glam::DVec3;
@@ -39,7 +39,7 @@ pub use mesh_file::{
 
 pub mod creases;
 mod decimal;
-mod flushing;
+mod disk_writer;
 mod mesh_file;
 pub mod obj;
 pub mod off;
@@ -495,7 +495,8 @@ pub fn write_to(
 }
 
 /// Writes through `fill` into a temporary file beside `path`, puts it on
-/// disk (most of it while the rest is written), then renames it into
+/// disk (block by block while the rest is written, past the page cache
+/// where the file system allows), then renames it into
 /// place: readers of `path` never see a partial file, even after a crash.
 ///
 /// # Errors
@@ -528,12 +529,9 @@ pub fn write_atomically(
     let result = (|| {
         let file = fs::File::create(&temporary).map_err(|e| file_error("create", e))?;
         let file = std::thread::scope(|scope| {
-            let mut writer = BufWriter::new(flushing::FlushingWriter::new(scope, file));
+            let mut writer = disk_writer::DiskWriter::new(scope, &temporary, file);
             fill(&mut writer).map_err(|e| file_error("write", e))?;
-            let writer = writer
-                .into_inner()
-                .map_err(|e| file_error("write", e.into_error()))?;
-            Ok::<_, IoError>(writer.into_file())
+            writer.finish().map_err(|e| file_error("write", e))
         })?;
         file.sync_all().map_err(|e| file_error("write", e))?;
         drop(file);
