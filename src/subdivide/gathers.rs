@@ -161,6 +161,11 @@ pub(crate) trait Gathers: Sync {
     fn as_refined(&self) -> Option<RefinedGathers<'_>> {
         None
     }
+    /// These gathers as [`LoopRefinedGathers`], when they are: their points
+    /// are made around the parent's edges and vertices.
+    fn as_loop_refined(&self) -> Option<&LoopRefinedGathers<'_>> {
+        None
+    }
 }
 
 impl Gathers for Plan {

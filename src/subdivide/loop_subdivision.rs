@@ -18,7 +18,7 @@ use rayon::prelude::*;
 use super::gathers::{sharp_vertex_point, Gathers, LoopRefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::loop_smooth_weights;
-use crate::buffers::{par_groups, try_vec};
+use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets, try_vec};
 use crate::error::Result;
 
 const CHUNK: usize = 2048;
@@ -103,6 +103,9 @@ fn vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
 /// Applies one level's gathers: reads `points` (the level's V positions) and
 /// fills `out` with the V + E positions of the next level.
 pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
+    if let Some(refined) = level.as_loop_refined() {
+        return apply_refined(refined, points, out);
+    }
     let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     edge_points
         .par_iter_mut()
@@ -116,12 +119,61 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .for_each(|(v, out)| *out = vertex_point(level, points, v));
 }
 
+/// [`apply`] for the level refined from `level.parent`, in two passes over
+/// the parent's edges and vertices instead of one per kind of point: the
+/// points each parent element's neighbourhood makes are made while its
+/// points are in the cache (as Catmull-Clark's last level is made). Each
+/// point is the same gather as [`apply`]'s, so the same bits.
+fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
+    let (parent_vertices, parent_edges) = level.parent_counts();
+    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
+    let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
+    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
+    // Around each parent edge m: its point's vertex point, and the edges
+    // inside triangles whose lower parent edge is m.
+    let inside_offsets = level.inside_offsets();
+    split_by_offsets(inside, inside_offsets, CHUNK)
+        .into_par_iter()
+        .zip(at_edges.par_chunks_mut(CHUNK))
+        .for_each(|((edges, inside), vertex_points)| {
+            let first = inside_offsets[edges.start] as usize;
+            for m in edges.clone() {
+                vertex_points[m - edges.start] = vertex_point(level, points, parent_vertices + m);
+                let slots = inside_offsets[m] as usize..inside_offsets[m + 1] as usize;
+                for k in slots {
+                    inside[k - first] = edge_point(level, points, 2 * parent_edges + k);
+                }
+            }
+        });
+    // Around each parent vertex v: the halves of its edges at v, and its
+    // vertex point.
+    let offsets = &level.parent.connectivity.vertex_edge_offsets;
+    split_by_offsets(halves, offsets, CHUNK)
+        .into_par_iter()
+        .zip(at_vertices.par_chunks_mut(CHUNK))
+        .for_each(|((vertices, halves), vertex_points)| {
+            let first = offsets[vertices.start] as usize;
+            for v in vertices.clone() {
+                for s in offsets[v] as usize..offsets[v + 1] as usize {
+                    halves[s - first] = edge_point(level, points, s);
+                }
+                vertex_points[v - vertices.start] = vertex_point(level, points, v);
+            }
+        });
+}
+
 /// As [`apply`], into a new vector written once (no zero-filling).
 ///
 /// # Errors
 /// [`crate::Error::OutOfMemory`].
 pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3>> {
     let (v, e) = (level.vertex_count(), level.edge_count());
+    if let Some(refined) = level.as_loop_refined() {
+        // The allocator's untouched zeroed memory, written once in any order.
+        let mut out = fresh_zeroed(v + e, "refined positions")?;
+        apply_refined(refined, points, &mut out);
+        return Ok(out);
+    }
     let mut out = try_vec(v + e, "refined positions")?;
     out.par_extend(
         (0..v)

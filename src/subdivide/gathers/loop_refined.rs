@@ -67,7 +67,13 @@ impl<'a> LoopRefinedGathers<'a> {
         })
     }
 
-    fn parent_counts(&self) -> (usize, usize) {
+    /// Where the edges inside triangles whose lower parent edge is m start
+    /// among the level's inside edges (m from 0 to E, inclusive).
+    pub(crate) fn inside_offsets(&self) -> &[u32] {
+        &self.inside_offsets
+    }
+
+    pub(crate) fn parent_counts(&self) -> (usize, usize) {
         (
             self.parent.faces.vertex_count,
             self.parent.connectivity.edge_count(),
@@ -138,6 +144,10 @@ fn edges_from(corner_edges: &[u32], c: usize) -> [u32; 3] {
 }
 
 impl Gathers for LoopRefinedGathers<'_> {
+    fn as_loop_refined(&self) -> Option<&LoopRefinedGathers<'_>> {
+        Some(self)
+    }
+
     fn vertex_count(&self) -> usize {
         let (v, e) = self.parent_counts();
         v + e

@@ -73,22 +73,14 @@ fn refined_gathers_equal_the_built_level() {
             }
             assert_same_gathers(&refined, &built, &what);
             // The points made around the parent's faces, edges and vertices
-            // are the points made kind by kind from the built level, bit for bit.
-            let points: Vec<DVec3> = (0..built.vertex_count())
-                .map(|i| {
-                    let t = i as f64;
-                    DVec3::new((t * 0.7).sin(), (t * 1.3).cos() * 3.1, t.sqrt() - 0.4)
-                })
-                .collect();
-            let count = built.vertex_count() + built.edge_count() + built.face_count();
-            let mut around_parent = vec![DVec3::NAN; count];
-            catmull_clark::apply(&refined, &points, &mut around_parent);
-            let mut kind_by_kind = vec![DVec3::NAN; count];
-            catmull_clark::apply(&built, &points, &mut kind_by_kind);
-            for (i, (a, b)) in around_parent.iter().zip(&kind_by_kind).enumerate() {
-                let bits = |p: &DVec3| p.to_array().map(f64::to_bits);
-                assert_eq!(bits(a), bits(b), "{what}: point {i}");
-            }
+            // are the points made kind by kind from the built level.
+            assert_same_points(
+                |points, out| catmull_clark::apply(&refined, points, out),
+                |points, out| catmull_clark::apply(&built, points, out),
+                built.vertex_count(),
+                built.vertex_count() + built.edge_count() + built.face_count(),
+                &what,
+            );
             // The wings walked around each parent vertex are its slots' wings.
             for v in 0..faces.vertex_count {
                 let slots =
@@ -242,6 +234,39 @@ fn loop_refined_gathers_equal_the_built_level() {
                 );
             }
             assert_same_gathers(&refined, &built, &what);
+            assert_same_points(
+                |points, out| loop_subdivision::apply(&refined, points, out),
+                |points, out| loop_subdivision::apply(&built, points, out),
+                built.vertex_count(),
+                built.vertex_count() + built.edge_count(),
+                &what,
+            );
         }
+    }
+}
+
+/// The points two readings of one level make of the same positions are
+/// the same bits: `refined` makes them around the parent's elements,
+/// `built` kind by kind (`count` of them from `vertex_count` positions).
+fn assert_same_points(
+    refined: impl Fn(&[DVec3], &mut [DVec3]),
+    built: impl Fn(&[DVec3], &mut [DVec3]),
+    vertex_count: usize,
+    count: usize,
+    what: &str,
+) {
+    let points: Vec<DVec3> = (0..vertex_count)
+        .map(|i| {
+            let t = i as f64;
+            DVec3::new((t * 0.7).sin(), (t * 1.3).cos() * 3.1, t.sqrt() - 0.4)
+        })
+        .collect();
+    let mut around_parent = vec![DVec3::NAN; count];
+    refined(&points, &mut around_parent);
+    let mut kind_by_kind = vec![DVec3::NAN; count];
+    built(&points, &mut kind_by_kind);
+    for (i, (a, b)) in around_parent.iter().zip(&kind_by_kind).enumerate() {
+        let bits = |p: &DVec3| p.to_array().map(f64::to_bits);
+        assert_eq!(bits(a), bits(b), "{what}: point {i}");
     }
 }
