@@ -3,7 +3,8 @@
 //!
 //! `cargo bench --bench subdivision` runs every case, then prints Markdown
 //! tables of the medians and ratios (read back from criterion's estimates),
-//! the targets with their measured ratios, the first call in fresh processes
+//! the target cases timed in turn (in_turn.rs), the targets with their
+//! measured ratios, the first call in fresh processes
 //! beside the steady state, and the peak memory of each one-shot case
 //! (children of this binary, `VmHWM` after `clear_refs`). A criterion filter
 //! after `--` runs a subset, e.g. `cargo bench --bench subdivision --
@@ -33,6 +34,7 @@
 
 mod abi;
 mod floors;
+mod in_turn;
 mod memory;
 mod report;
 
@@ -240,6 +242,35 @@ fn reevaluation(
     });
 }
 
+/// The target cases (level 3 of the 100k tori) timed in turn, those the
+/// filter selects (see [`in_turn`]).
+fn target_cases_in_turn(
+    cases: &[Case],
+    all: &ThreadPool,
+    one: &ThreadPool,
+    filter: Option<&str>,
+) -> Vec<in_turn::InTurn> {
+    let levels = 3;
+    cases
+        .iter()
+        .filter(|case| REEVALUATED.contains(&case.name))
+        .map(|case| (case, format!("{}-L{levels}", case.name)))
+        .filter(|(_, name)| filter.is_none_or(|f| name.contains(f) || f.contains(name.as_str())))
+        .map(|(case, name)| {
+            let bytes = weft_one_shot(case, levels).output_bytes();
+            in_turn::InTurn::run(
+                name,
+                [
+                    &|| drop(black_box(osd_one_shot(case, levels))),
+                    &|| one.install(|| drop(black_box(weft_one_shot(case, levels)))),
+                    &|| all.install(|| drop(black_box(weft_one_shot(case, levels)))),
+                    &|| floors::fresh(bytes, true),
+                ],
+            )
+        })
+        .collect()
+}
+
 fn main() {
     if let Some(result) = memory::child() {
         println!("{result}");
@@ -257,12 +288,14 @@ fn main() {
     if std::env::args().any(|a| a == "--list" || a == "--test") {
         return;
     }
+    let in_turn = target_cases_in_turn(&cases, &all, &one, filter.as_deref());
     drop(cases);
     report::one_shot(threads);
     report::into_buffers(threads);
     report::reevaluation(threads);
     let cold = memory::cold_calls(filter.as_deref());
     report::cold(&cold, threads);
-    report::targets(threads, &cold);
+    in_turn::print(&in_turn, threads);
+    report::targets(threads, &cold, &in_turn);
     memory::peak_memory(filter.as_deref());
 }
