@@ -505,9 +505,11 @@ fn fill_triangle(
     if x0 > x1 || y0 > y1 {
         return;
     }
-    // Length of the side opposite each corner, for distances to the sides.
+    // Length of the side opposite each corner, for distances to the sides:
+    // worked out at the first pixel drawn, since most faces of a dense mesh
+    // cover none.
     let side = |p: (f64, f64, f64), q: (f64, f64, f64)| (q.0 - p.0).hypot(q.1 - p.1);
-    let lengths = [side(b, c), side(c, a), side(a, b)];
+    let mut side_lengths = None;
     let inverse_depth = [1.0 / a.2, 1.0 / b.2, 1.0 / c.2];
     for y in y0 as usize..=y1 as usize {
         let py = y as f64 + 0.5;
@@ -526,6 +528,8 @@ fn fill_triangle(
                 continue;
             }
             depth[i] = z as f32;
+            let lengths: &[f64; 3] =
+                side_lengths.get_or_insert_with(|| [side(b, c), side(c, a), side(a, b)]);
             // Distance to side k: twice the area of (pixel, side) over its length.
             let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
             let wide =
