@@ -74,10 +74,16 @@ impl Block {
 /// A block for the helper, and where in the file it goes.
 type Job = (Block, u64);
 
-struct Helper<'scope> {
-    jobs: SyncSender<Job>,
-    done: Receiver<Block>,
-    thread: ScopedJoinHandle<'scope, io::Result<()>>,
+enum Helper<'scope> {
+    NotYet,
+    Running {
+        jobs: SyncSender<Job>,
+        done: Receiver<Block>,
+        thread: ScopedJoinHandle<'scope, io::Result<()>>,
+    },
+    /// No second handle to the file, or no thread: the writer writes each
+    /// block itself, through the page cache, and the final sync does it all.
+    Unavailable,
 }
 
 /// Writes a new file at `path` (created, empty) through its handle `file`.
@@ -90,7 +96,7 @@ pub(super) struct DiskWriter<'scope, 'env> {
     blocks: usize,
     /// Where `block` goes in the file: the bytes handed to the helper.
     offset: u64,
-    helper: Option<Helper<'scope>>,
+    helper: Helper<'scope>,
     /// Direct writes are tried (false in tests of the fallback).
     try_direct: bool,
 }
@@ -116,7 +122,7 @@ impl<'scope, 'env> DiskWriter<'scope, 'env> {
             block: Block::new(block_bytes.next_multiple_of(ALIGN)),
             blocks: 1,
             offset: 0,
-            helper: None,
+            helper: Helper::NotYet,
             try_direct,
         }
     }
@@ -124,24 +130,29 @@ impl<'scope, 'env> DiskWriter<'scope, 'env> {
     /// Hands the full block to the helper (started at the first) and takes
     /// an empty one, waiting for the disk when all are in use.
     fn hand_off(&mut self) -> io::Result<()> {
-        if self.helper.is_none() {
-            self.helper = Some(self.start_helper()?);
+        if let Helper::NotYet = self.helper {
+            self.helper = self.start_helper().unwrap_or(Helper::Unavailable);
         }
-        let helper = self.helper.as_ref().expect("started above");
-        let empty = match helper.done.try_recv() {
+        let Helper::Running { jobs, done, .. } = &self.helper else {
+            write_all_at(&self.file, self.block.bytes(), self.offset)?;
+            self.offset += self.block.len as u64;
+            self.block.len = 0;
+            return Ok(());
+        };
+        let empty = match done.try_recv() {
             Ok(block) => block,
             Err(_) if self.blocks < BLOCKS => {
                 self.blocks += 1;
                 Block::new(self.block.capacity())
             }
-            Err(_) => match helper.done.recv() {
+            Err(_) => match done.recv() {
                 Ok(block) => block,
                 Err(_) => return Err(self.stop_helper()),
             },
         };
         let full = std::mem::replace(&mut self.block, empty);
         let len = full.len as u64;
-        if helper.jobs.send((full, self.offset)).is_err() {
+        if jobs.send((full, self.offset)).is_err() {
             return Err(self.stop_helper());
         }
         self.offset += len;
@@ -162,13 +173,17 @@ impl<'scope, 'env> DiskWriter<'scope, 'env> {
             .spawn_scoped(self.scope, move || {
                 write_blocks(direct, buffered, received, finished)
             })?;
-        Ok(Helper { jobs, done, thread })
+        Ok(Helper::Running { jobs, done, thread })
     }
 
     /// The helper's error, once it has stopped on one.
     fn stop_helper(&mut self) -> io::Error {
-        match self.helper.take().map(|h| h.thread.join()) {
-            Some(Ok(Err(e))) => e,
+        let stopped = std::mem::replace(&mut self.helper, Helper::Unavailable);
+        match stopped {
+            Helper::Running { thread, .. } => match thread.join() {
+                Ok(Err(e)) => e,
+                _ => io::Error::other("the file's writing thread stopped"),
+            },
             _ => io::Error::other("the file's writing thread stopped"),
         }
     }
@@ -176,7 +191,8 @@ impl<'scope, 'env> DiskWriter<'scope, 'env> {
     /// Writes what is left, waits for the helper, and returns the file
     /// (not yet synced: the caller syncs it before renaming it into place).
     pub(super) fn finish(mut self) -> io::Result<File> {
-        if let Some(Helper { jobs, thread, .. }) = self.helper.take() {
+        let helper = std::mem::replace(&mut self.helper, Helper::Unavailable);
+        if let Helper::Running { jobs, thread, .. } = helper {
             drop(jobs);
             match thread.join() {
                 Ok(result) => result?,
@@ -286,7 +302,7 @@ mod tests {
             for chunk in bytes.chunks(piece) {
                 writer.write_all(chunk).unwrap();
             }
-            let started = writer.helper.is_some();
+            let started = matches!(writer.helper, Helper::Running { .. });
             assert_eq!(started, bytes.len() >= writer.block.capacity());
             writer.finish().unwrap().sync_all().unwrap();
         });
@@ -311,6 +327,30 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn without_a_helper_the_writer_writes_each_block_itself() {
+        let bytes: Vec<u8> = (0..50_000u32).flat_map(|i| i.to_le_bytes()).collect();
+        let path = std::env::current_dir()
+            .unwrap()
+            .join("target")
+            .join(format!("weft-disk-writer-alone-{}.bin", std::process::id()));
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::thread::scope(|scope| {
+            let file = File::create(&path).unwrap();
+            let mut writer = DiskWriter::with_blocks(scope, &path, file, ALIGN, true);
+            // As when no second handle or thread could be had.
+            writer.helper = Helper::Unavailable;
+            for chunk in bytes.chunks(3000) {
+                writer.write_all(chunk).unwrap();
+            }
+            assert!(matches!(writer.helper, Helper::Unavailable));
+            writer.finish().unwrap().sync_all().unwrap();
+        });
+        let read = std::fs::read(&path).unwrap();
+        std::fs::remove_file(&path).unwrap();
+        assert!(read == bytes);
     }
 
     #[test]

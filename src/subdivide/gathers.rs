@@ -156,8 +156,8 @@ pub(crate) trait Gathers: Sync {
     /// is reached through (Catmull-Clark; [`NONE`] for Loop), and returns
     /// how many there are.
     fn around(&self, v: usize, visit: impl FnMut(u32, u32)) -> usize;
-    /// These gathers as [`RefinedGathers`], when they are: their edges have
-    /// a faster walk (see [`RefinedGathers::slot_wings`]).
+    /// These gathers as [`RefinedGathers`], when they are: their points
+    /// are made around the parent's faces, edges and vertices.
     fn as_refined(&self) -> Option<RefinedGathers<'_>> {
         None
     }
