@@ -16,7 +16,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{prefetch_at, sharp_vertex_point, Gathers, RefinedGathers};
+use super::gathers::{prefetch_at, sharp_vertex_point, Gathers, ParentGroups, RefinedGathers};
 use super::level::{Connectivity, Faces, NONE};
 use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
@@ -142,6 +142,9 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_refined() {
         return apply_refined(&refined, points, out);
     }
+    if let Some(groups) = level.parent_groups() {
+        return apply_grouped(level, groups, points, out);
+    }
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
     face_points
@@ -181,6 +184,91 @@ fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
     let face_points = &*face_points;
     around_parent_edges(level, points, face_points, at_edges, inside);
     around_parent_vertices(level, points, face_points, at_vertices, halves);
+}
+
+/// [`apply`] for a plan of a level refined from a parent level, in the
+/// three passes of [`apply_refined`], around the parent's faces, edges and
+/// vertices, the gathers read from the plan: each pass reads the points
+/// and face points near one parent element while they are in the cache,
+/// where a pass per kind of point reads them all again. The same gathers
+/// in the same order, so the same bits.
+fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
+    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
+    let (parent_vertices, parent_edges) = groups.parent_counts();
+    let (at_vertices, rest) = vertex_points.split_at_mut(parent_vertices);
+    let (at_edges, at_faces) = rest.split_at_mut(parent_edges);
+    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
+    let face_base = parent_vertices + parent_edges;
+    // Around parent face f: the faces made in it, then the point of its
+    // own face point, whose ring are those faces.
+    split_by_offsets(face_points, &groups.face_faces, CHUNK)
+        .into_par_iter()
+        .zip(at_faces.par_chunks_mut(CHUNK))
+        .for_each(|((parents, face_points), vertex_points)| {
+            let first = groups.face_faces[parents.start] as usize;
+            for f in parents.clone() {
+                let faces = groups.face_faces[f] as usize..groups.face_faces[f + 1] as usize;
+                for g in faces {
+                    face_points[g - first] = face_point(level, points, g);
+                }
+                let u = face_base + f;
+                vertex_points[f - parents.start] =
+                    vertex_point_near(level, points, face_points, first, u);
+            }
+        });
+    let face_points = &*face_points;
+    // Around parent edge m: the edges inside its faces, then its point's point.
+    let inside_base = 2 * parent_edges;
+    split_by_offsets(inside, &groups.edge_inside, CHUNK)
+        .into_par_iter()
+        .zip(at_edges.par_chunks_mut(CHUNK))
+        .for_each(|((parents, inside), vertex_points)| {
+            let first = groups.edge_inside[parents.start] as usize;
+            for m in parents.clone() {
+                let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
+                for s in slots {
+                    inside[s - first] = edge_point(level, points, face_points, inside_base + s);
+                }
+                vertex_points[m - parents.start] =
+                    vertex_point(level, points, face_points, parent_vertices + m);
+            }
+        });
+    // Around parent vertex v: the halves of its edges at v, then its point.
+    split_by_offsets(halves, &groups.vertex_halves, CHUNK)
+        .into_par_iter()
+        .zip(at_vertices.par_chunks_mut(CHUNK))
+        .for_each(|((parents, halves), vertex_points)| {
+            let first = groups.vertex_halves[parents.start] as usize;
+            for v in parents.clone() {
+                let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
+                for s in slots {
+                    halves[s - first] = edge_point(level, points, face_points, s);
+                }
+                vertex_points[v - parents.start] = vertex_point(level, points, face_points, v);
+            }
+        });
+}
+
+/// [`vertex_point`] of a vertex whose faces are among those of one block,
+/// `face_points`, the first of which is face `first`.
+#[inline]
+fn vertex_point_near(
+    level: &impl Gathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    first: usize,
+    v: usize,
+) -> DVec3 {
+    if let Some(sharp) = sharp_vertex_point(level, points, v) {
+        return sharp;
+    }
+    let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
+    let n = level.around(v, |u, f| {
+        neighbours += points[u as usize];
+        faces += face_points[f as usize - first];
+    });
+    smooth_vertex_point(points[v], neighbours, faces, n)
 }
 
 /// The face points (one per parent corner) and the vertex points of the

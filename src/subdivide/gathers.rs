@@ -39,6 +39,35 @@ pub(crate) struct Plan {
     /// neighbours; nothing for a corner.
     pub(crate) vertex_ring_offsets: Vec<u32>,
     pub(crate) vertex_ring: Vec<u32>,
+    /// For a level refined from a parent level: where its elements group
+    /// around the parent's, so that the plan is applied parent element by
+    /// parent element, as one-shot subdivision makes its last level.
+    pub(crate) parent: Option<ParentGroups>,
+}
+
+/// How the elements of a level refined from a parent level group around
+/// the parent's elements, in the level's own order (see
+/// `Connectivity::refine`): each list runs over the parent's elements,
+/// plus the total.
+#[derive(Debug, Clone)]
+pub(crate) struct ParentGroups {
+    /// Catmull-Clark: the level's faces made in parent face f, one per
+    /// corner (empty for Loop).
+    pub(crate) face_faces: Vec<u32>,
+    /// The level's edges inside the parent's faces, grouped by the parent
+    /// edge they meet (Catmull-Clark: one per corner of the edge; Loop:
+    /// those whose lower parent edge it is), counted from the first of them.
+    pub(crate) edge_inside: Vec<u32>,
+    /// The level's halves of the parent's edges at parent vertex v, counted
+    /// from the level's first edge.
+    pub(crate) vertex_halves: Vec<u32>,
+}
+
+impl ParentGroups {
+    /// The parent's vertex and edge counts.
+    pub(crate) fn parent_counts(&self) -> (usize, usize) {
+        (self.vertex_halves.len() - 1, self.edge_inside.len() - 1)
+    }
 }
 
 impl Plan {
@@ -105,6 +134,7 @@ pub(crate) fn plan(
         vertex_rules: tags.vertex_rules.clone(),
         vertex_ring_offsets: ring_offsets,
         vertex_ring: ring,
+        parent: None,
     })
 }
 
@@ -166,11 +196,20 @@ pub(crate) trait Gathers: Sync {
     fn as_loop_refined(&self) -> Option<&LoopRefinedGathers<'_>> {
         None
     }
+    /// How the level's elements group around its parent's, when these
+    /// gathers are a plan that knows (see [`Plan::parent`]).
+    fn parent_groups(&self) -> Option<&ParentGroups> {
+        None
+    }
 }
 
 impl Gathers for Plan {
     fn vertex_count(&self) -> usize {
         self.vertex_count
+    }
+
+    fn parent_groups(&self) -> Option<&ParentGroups> {
+        self.parent.as_ref()
     }
 
     fn edge_count(&self) -> usize {
@@ -573,7 +612,7 @@ impl Gathers for RefinedGathers<'_> {
 }
 
 mod loop_refined;
-pub(crate) use loop_refined::LoopRefinedGathers;
+pub(crate) use loop_refined::{inside_offsets as loop_inside_offsets, LoopRefinedGathers};
 
 #[cfg(test)]
 mod tests;

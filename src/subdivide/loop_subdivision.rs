@@ -15,7 +15,7 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{sharp_vertex_point, Gathers, LoopRefinedGathers};
+use super::gathers::{sharp_vertex_point, Gathers, LoopRefinedGathers, ParentGroups};
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::loop_smooth_weights;
 use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets, try_vec};
@@ -106,6 +106,9 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_loop_refined() {
         return apply_refined(refined, points, out);
     }
+    if let Some(groups) = level.parent_groups() {
+        return apply_grouped(level, groups, points, out);
+    }
     let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     edge_points
         .par_iter_mut()
@@ -117,6 +120,44 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .with_min_len(CHUNK)
         .enumerate()
         .for_each(|(v, out)| *out = vertex_point(level, points, v));
+}
+
+/// [`apply`] for a plan of a level refined from a parent level, in the two
+/// passes of [`apply_refined`], around the parent's edges and vertices,
+/// the gathers read from the plan. The same gathers in the same order, so
+/// the same bits.
+fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+    let (parent_vertices, parent_edges) = groups.parent_counts();
+    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
+    let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
+    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
+    let inside_base = 2 * parent_edges;
+    split_by_offsets(inside, &groups.edge_inside, CHUNK)
+        .into_par_iter()
+        .zip(at_edges.par_chunks_mut(CHUNK))
+        .for_each(|((parents, inside), vertex_points)| {
+            let first = groups.edge_inside[parents.start] as usize;
+            for m in parents.clone() {
+                vertex_points[m - parents.start] = vertex_point(level, points, parent_vertices + m);
+                let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
+                for s in slots {
+                    inside[s - first] = edge_point(level, points, inside_base + s);
+                }
+            }
+        });
+    split_by_offsets(halves, &groups.vertex_halves, CHUNK)
+        .into_par_iter()
+        .zip(at_vertices.par_chunks_mut(CHUNK))
+        .for_each(|((parents, halves), vertex_points)| {
+            let first = groups.vertex_halves[parents.start] as usize;
+            for v in parents.clone() {
+                let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
+                for s in slots {
+                    halves[s - first] = edge_point(level, points, s);
+                }
+                vertex_points[v - parents.start] = vertex_point(level, points, v);
+            }
+        });
 }
 
 /// [`apply`] for the level refined from `level.parent`, in two passes over

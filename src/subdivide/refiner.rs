@@ -8,7 +8,9 @@ use std::sync::Mutex;
 use glam::DVec3;
 
 use super::creases::SubdivisionOptions;
-use super::gathers::{plan, LevelGathers, LoopRefinedGathers, Plan, RefinedGathers};
+use super::gathers::{
+    loop_inside_offsets, plan, LevelGathers, LoopRefinedGathers, ParentGroups, Plan, RefinedGathers,
+};
 use super::level::{Connectivity, Faces};
 use super::point_rules::{self, apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
@@ -327,10 +329,15 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         Err(faces) => return Ok(faces),
     };
     let scheme = request.scheme;
+    let mut groups = None;
     for (last, next_last) in request.steps() {
         let next_faces = child_faces(scheme, &faces, &connectivity, true)?;
         let mut plan = plan(scheme, &faces, &connectivity, &tags)?;
+        // This level's plan groups around the level before; the next's
+        // around this one.
+        plan.parent = groups.take();
         if !last {
+            groups = Some(parent_groups(scheme, &faces, &connectivity)?);
             // The next level's edges and adjacency, written from this one's.
             let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
@@ -347,6 +354,32 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         faces = next_faces;
     }
     Ok(faces)
+}
+
+/// How the elements of the level `scheme` refines from `faces` group
+/// around them (see [`ParentGroups`]); `connectivity` has its vertices' edges.
+fn parent_groups(
+    scheme: Scheme,
+    faces: &Faces,
+    connectivity: &Connectivity,
+) -> Result<ParentGroups> {
+    let copy = |values: &[u32], what: &str| -> Result<Vec<u32>> {
+        let mut copy = try_vec(values.len(), what)?;
+        copy.extend_from_slice(values);
+        Ok(copy)
+    };
+    Ok(match scheme {
+        Scheme::CatmullClark => ParentGroups {
+            face_faces: copy(&faces.offsets, "parent groups")?,
+            edge_inside: copy(&connectivity.edge_offsets, "parent groups")?,
+            vertex_halves: copy(&connectivity.vertex_edge_offsets, "parent groups")?,
+        },
+        Scheme::Loop => ParentGroups {
+            face_faces: Vec::new(),
+            edge_inside: loop_inside_offsets(connectivity)?,
+            vertex_halves: copy(&connectivity.vertex_edge_offsets, "parent groups")?,
+        },
+    })
 }
 
 /// One-shot subdivision's levels: hands each level's gathers to `each`

@@ -19,8 +19,37 @@
 use super::{Gathers, LevelGathers};
 use crate::buffers::{fill_by_offsets, par_offsets};
 use crate::error::Result;
-use crate::subdivide::level::NONE;
+use crate::subdivide::level::{Connectivity, NONE};
 use crate::subdivide::scheme::VertexRule;
+
+/// The edges inside the triangles of the level refined from a level of
+/// this connectivity whose lower parent edge is m, as (higher parent edge,
+/// triangle, m), unsorted.
+fn higher_edges(
+    connectivity: &Connectivity,
+    m: usize,
+) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
+    connectivity.edge_corners(m).iter().flat_map(move |&c| {
+        let f = c as usize / 3;
+        let [_, next, previous] = edges_from(&connectivity.corner_edges, c as usize);
+        [next, previous]
+            .into_iter()
+            .filter(move |&h| h as usize > m)
+            .map(move |h| (h, f as u32, m as u32))
+    })
+}
+
+/// Where the edges inside triangles whose lower parent edge is m start
+/// among the inside edges of the level refined from a level of this
+/// connectivity (m from 0 to E, inclusive).
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`].
+pub(crate) fn inside_offsets(connectivity: &Connectivity) -> Result<Vec<u32>> {
+    par_offsets(connectivity.edge_count(), "edges", |m| {
+        higher_edges(connectivity, m).count() as u32
+    })
+}
 
 /// A Loop level's gathers worked out from its parent's (see the module doc).
 pub(crate) struct LoopRefinedGathers<'a> {
@@ -40,22 +69,9 @@ impl<'a> LoopRefinedGathers<'a> {
     /// [`crate::Error::OutOfMemory`].
     pub(crate) fn new(parent: LevelGathers<'a>) -> Result<LoopRefinedGathers<'a>> {
         let connectivity = parent.connectivity;
-        let higher_edges = |m: usize| {
-            let corners = connectivity.edge_corners(m).iter();
-            corners.flat_map(move |&c| {
-                let f = c as usize / 3;
-                let [_, next, previous] = edges_from(&connectivity.corner_edges, c as usize);
-                [next, previous]
-                    .into_iter()
-                    .filter(move |&h| h as usize > m)
-                    .map(move |h| (h, f as u32, m as u32))
-            })
-        };
-        let offsets = par_offsets(connectivity.edge_count(), "edges", |m| {
-            higher_edges(m).count() as u32
-        })?;
+        let offsets = inside_offsets(connectivity)?;
         let edges = fill_by_offsets(&offsets, "edges", |m, out| {
-            for (out, edge) in out.iter_mut().zip(higher_edges(m)) {
+            for (out, edge) in out.iter_mut().zip(higher_edges(connectivity, m)) {
                 *out = edge;
             }
             out.sort_unstable();
