@@ -16,8 +16,12 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{prefetch_at, sharp_vertex_point, Gathers, ParentGroups, RefinedGathers};
+use super::gathers::{
+    planned_sharp_point, prefetch_at, sharp_vertex_point, Gathers, ParentGroups, Plan,
+    RefinedGathers,
+};
 use super::level::{Connectivity, Faces, NONE};
+use super::scheme::VertexRule;
 use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
 
@@ -142,8 +146,8 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_refined() {
         return apply_refined(&refined, points, out);
     }
-    if let Some(groups) = level.parent_groups() {
-        return apply_grouped(level, groups, points, out);
+    if let Some((plan, groups)) = level.as_plan().and_then(|p| Some((p, p.parent.as_ref()?))) {
+        return apply_grouped(plan, groups, points, out);
     }
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
@@ -192,9 +196,9 @@ fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
 /// and face points near one parent element while they are in the cache,
 /// where a pass per kind of point reads them all again. The same gathers
 /// in the same order, so the same bits.
-fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
-    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
-    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
+fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
+    let (edge_points, face_points) = rest.split_at_mut(plan.edges.len());
     let (parent_vertices, parent_edges) = groups.parent_counts();
     let (at_vertices, rest) = vertex_points.split_at_mut(parent_vertices);
     let (at_edges, at_faces) = rest.split_at_mut(parent_edges);
@@ -210,11 +214,11 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             for f in parents.clone() {
                 let faces = groups.face_faces[f] as usize..groups.face_faces[f + 1] as usize;
                 for g in faces {
-                    face_points[g - first] = face_point(level, points, g);
+                    face_points[g - first] = planned_face_point(plan, points, g);
                 }
                 let u = face_base + f;
                 vertex_points[f - parents.start] =
-                    vertex_point_near(level, points, face_points, first, u);
+                    planned_vertex_point(plan, points, face_points, first, u);
             }
         });
     let face_points = &*face_points;
@@ -227,11 +231,15 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             let first = groups.edge_inside[parents.start] as usize;
             for m in parents.clone() {
                 let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-                for s in slots {
-                    inside[s - first] = edge_point(level, points, face_points, inside_base + s);
+                let edges = &plan.edges[inside_base + slots.start..inside_base + slots.end];
+                for (out, &edge) in inside[slots.start - first..slots.end - first]
+                    .iter_mut()
+                    .zip(edges)
+                {
+                    *out = edge_point_of(edge, points, face_points);
                 }
                 vertex_points[m - parents.start] =
-                    vertex_point(level, points, face_points, parent_vertices + m);
+                    planned_vertex_point(plan, points, face_points, 0, parent_vertices + m);
             }
         });
     // Around parent vertex v: the halves of its edges at v, then its point.
@@ -242,33 +250,61 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             let first = groups.vertex_halves[parents.start] as usize;
             for v in parents.clone() {
                 let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-                for s in slots {
-                    halves[s - first] = edge_point(level, points, face_points, s);
+                let edges = &plan.edges[slots.clone()];
+                for (out, &edge) in halves[slots.start - first..slots.end - first]
+                    .iter_mut()
+                    .zip(edges)
+                {
+                    *out = edge_point_of(edge, points, face_points);
                 }
-                vertex_points[v - parents.start] = vertex_point(level, points, face_points, v);
+                vertex_points[v - parents.start] =
+                    planned_vertex_point(plan, points, face_points, 0, v);
             }
         });
 }
 
-/// [`vertex_point`] of a vertex whose faces are among those of one block,
-/// `face_points`, the first of which is face `first`.
+/// [`face_point`] of a plan's face `f`: the same sum, a quad's unrolled.
 #[inline]
-fn vertex_point_near(
-    level: &impl Gathers,
+fn planned_face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
+    let corners = plan.face_offsets[f] as usize..plan.face_offsets[f + 1] as usize;
+    match plan.face_indices[corners] {
+        [a, b, c, d] => {
+            let sum = DVec3::ZERO + points[a as usize] + points[b as usize];
+            (sum + points[c as usize] + points[d as usize]) * 0.25
+        }
+        ref corners => {
+            let sum = corners
+                .iter()
+                .fold(DVec3::ZERO, |s, &v| s + points[v as usize]);
+            divided(sum, corners.len() as f64)
+        }
+    }
+}
+
+/// [`vertex_point`] of a plan's vertex `v`, read from its ring, whose
+/// faces are among `face_points`, the first of which is face `first_face`.
+#[inline]
+fn planned_vertex_point(
+    plan: &Plan,
     points: &[DVec3],
     face_points: &[DVec3],
-    first: usize,
+    first_face: usize,
     v: usize,
 ) -> DVec3 {
-    if let Some(sharp) = sharp_vertex_point(level, points, v) {
-        return sharp;
+    let ring = plan.ring(v);
+    match plan.vertex_rules[v] {
+        VertexRule::Smooth => {
+            // Two sums side by side, each in ring order.
+            let (neighbour_ring, face_ring) = ring.split_at(ring.len() / 2);
+            let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
+            for (&u, &f) in neighbour_ring.iter().zip(face_ring) {
+                neighbours += points[u as usize];
+                faces += face_points[f as usize - first_face];
+            }
+            smooth_vertex_point(points[v], neighbours, faces, neighbour_ring.len())
+        }
+        rule => planned_sharp_point(rule, points, v, ring),
     }
-    let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
-    let n = level.around(v, |u, f| {
-        neighbours += points[u as usize];
-        faces += face_points[f as usize - first];
-    });
-    smooth_vertex_point(points[v], neighbours, faces, n)
 }
 
 /// The face points (one per parent corner) and the vertex points of the

@@ -161,9 +161,33 @@ pub(crate) fn sharp_vertex_point(
         VertexRule::Corner => Some(p),
         VertexRule::Crease => {
             let [a, b] = level.crease_neighbours(v);
-            Some(p * 0.75 + (points[a as usize] + points[b as usize]) * 0.125)
+            Some(crease_point(p, points[a as usize], points[b as usize]))
         }
         VertexRule::Smooth => None,
+    }
+}
+
+/// The point of a crease vertex at `p` whose crease neighbours are at `a`
+/// and `b`.
+#[inline]
+fn crease_point(p: DVec3, a: DVec3, b: DVec3) -> DVec3 {
+    p * 0.75 + (a + b) * 0.125
+}
+
+/// [`sharp_vertex_point`] of a plan's vertex `v` of a sharp `rule`, whose
+/// `ring` holds its crease neighbours (see [`Plan::vertex_ring`]).
+#[inline]
+pub(crate) fn planned_sharp_point(
+    rule: VertexRule,
+    points: &[DVec3],
+    v: usize,
+    ring: &[u32],
+) -> DVec3 {
+    match (rule, ring) {
+        (VertexRule::Crease, &[a, b]) => {
+            crease_point(points[v], points[a as usize], points[b as usize])
+        }
+        _ => points[v],
     }
 }
 
@@ -196,9 +220,8 @@ pub(crate) trait Gathers: Sync {
     fn as_loop_refined(&self) -> Option<&LoopRefinedGathers<'_>> {
         None
     }
-    /// How the level's elements group around its parent's, when these
-    /// gathers are a plan that knows (see [`Plan::parent`]).
-    fn parent_groups(&self) -> Option<&ParentGroups> {
+    /// These gathers as a stored [`Plan`], when they are.
+    fn as_plan(&self) -> Option<&Plan> {
         None
     }
 }
@@ -208,8 +231,8 @@ impl Gathers for Plan {
         self.vertex_count
     }
 
-    fn parent_groups(&self) -> Option<&ParentGroups> {
-        self.parent.as_ref()
+    fn as_plan(&self) -> Option<&Plan> {
+        Some(self)
     }
 
     fn edge_count(&self) -> usize {

@@ -15,9 +15,11 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use super::gathers::{sharp_vertex_point, Gathers, LoopRefinedGathers, ParentGroups};
+use super::gathers::{
+    planned_sharp_point, sharp_vertex_point, Gathers, LoopRefinedGathers, ParentGroups, Plan,
+};
 use super::level::{Connectivity, Faces, NONE};
-use super::scheme::loop_smooth_weights;
+use super::scheme::{loop_smooth_weights, VertexRule};
 use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets, try_vec};
 use crate::error::Result;
 
@@ -80,7 +82,12 @@ pub(crate) fn grandchild_faces(
 
 #[inline]
 fn edge_point(level: &impl Gathers, points: &[DVec3], e: usize) -> DVec3 {
-    let [a, b, c, d] = level.edge(e);
+    edge_point_of(level.edge(e), points)
+}
+
+/// The point of the edge `[a, b, c, d]` (see [`Gathers::edge`]).
+#[inline]
+fn edge_point_of([a, b, c, d]: [u32; 4], points: &[DVec3]) -> DVec3 {
     let ends = points[a as usize] + points[b as usize];
     if c == NONE {
         ends * 0.5
@@ -106,8 +113,8 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_loop_refined() {
         return apply_refined(refined, points, out);
     }
-    if let Some(groups) = level.parent_groups() {
-        return apply_grouped(level, groups, points, out);
+    if let Some((plan, groups)) = level.as_plan().and_then(|p| Some((p, p.parent.as_ref()?))) {
+        return apply_grouped(plan, groups, points, out);
     }
     let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     edge_points
@@ -126,9 +133,9 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 /// passes of [`apply_refined`], around the parent's edges and vertices,
 /// the gathers read from the plan. The same gathers in the same order, so
 /// the same bits.
-fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
     let (parent_vertices, parent_edges) = groups.parent_counts();
-    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
+    let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
     let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
     let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
     let inside_base = 2 * parent_edges;
@@ -138,10 +145,15 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
         .for_each(|((parents, inside), vertex_points)| {
             let first = groups.edge_inside[parents.start] as usize;
             for m in parents.clone() {
-                vertex_points[m - parents.start] = vertex_point(level, points, parent_vertices + m);
+                vertex_points[m - parents.start] =
+                    planned_vertex_point(plan, points, parent_vertices + m);
                 let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-                for s in slots {
-                    inside[s - first] = edge_point(level, points, inside_base + s);
+                let edges = &plan.edges[inside_base + slots.start..inside_base + slots.end];
+                for (out, &edge) in inside[slots.start - first..slots.end - first]
+                    .iter_mut()
+                    .zip(edges)
+                {
+                    *out = edge_point_of(edge, points);
                 }
             }
         });
@@ -152,12 +164,32 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             let first = groups.vertex_halves[parents.start] as usize;
             for v in parents.clone() {
                 let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-                for s in slots {
-                    halves[s - first] = edge_point(level, points, s);
+                let edges = &plan.edges[slots.clone()];
+                for (out, &edge) in halves[slots.start - first..slots.end - first]
+                    .iter_mut()
+                    .zip(edges)
+                {
+                    *out = edge_point_of(edge, points);
                 }
-                vertex_points[v - parents.start] = vertex_point(level, points, v);
+                vertex_points[v - parents.start] = planned_vertex_point(plan, points, v);
             }
         });
+}
+
+/// [`vertex_point`] of a plan's vertex `v`, read from its ring.
+#[inline]
+fn planned_vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
+    let ring = plan.ring(v);
+    match plan.vertex_rules[v] {
+        VertexRule::Smooth => {
+            let sum = ring
+                .iter()
+                .fold(DVec3::ZERO, |sum, &u| sum + points[u as usize]);
+            let (own, each) = loop_smooth_weights(ring.len());
+            points[v] * own + sum * each
+        }
+        rule => planned_sharp_point(rule, points, v, ring),
+    }
 }
 
 /// [`apply`] for the level refined from `level.parent`, in two passes over
