@@ -146,8 +146,8 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_refined() {
         return apply_refined(&refined, points, out);
     }
-    if let Some((plan, groups)) = level.as_plan().and_then(|p| Some((p, p.parent.as_ref()?))) {
-        return apply_grouped(plan, groups, points, out);
+    if let Some(groups) = level.parent_groups() {
+        return apply_grouped(level, groups, points, out);
     }
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
@@ -190,15 +190,16 @@ fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
     around_parent_vertices(level, points, face_points, at_vertices, halves);
 }
 
-/// [`apply`] for a plan of a level refined from a parent level, in the
-/// three passes of [`apply_refined`], around the parent's faces, edges and
-/// vertices, the gathers read from the plan: each pass reads the points
-/// and face points near one parent element while they are in the cache,
-/// where a pass per kind of point reads them all again. The same gathers
-/// in the same order, so the same bits.
-fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
-    let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
-    let (edge_points, face_points) = rest.split_at_mut(plan.edges.len());
+/// [`apply`] for a level whose elements are known to group around those
+/// of the level it was refined from (a refiner's plan, or an intermediate
+/// level of one-shot subdivision), in the three passes of
+/// [`apply_refined`], around the parent's faces, edges and vertices: each
+/// pass reads the points and face points near one parent element while
+/// they are in the cache, where a pass per kind of point reads them all
+/// again. The same gathers in the same order, so the same bits.
+fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
+    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
     let (parent_vertices, parent_edges) = groups.parent_counts();
     let (at_vertices, rest) = vertex_points.split_at_mut(parent_vertices);
     let (at_edges, at_faces) = rest.split_at_mut(parent_edges);
@@ -214,11 +215,11 @@ fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut
             for f in parents.clone() {
                 let faces = groups.face_faces[f] as usize..groups.face_faces[f + 1] as usize;
                 for g in faces {
-                    face_points[g - first] = planned_face_point(plan, points, g);
+                    face_points[g - first] = grouped_face_point(level, points, g);
                 }
                 let u = face_base + f;
                 vertex_points[f - parents.start] =
-                    planned_vertex_point(plan, points, face_points, first, u);
+                    grouped_vertex_point(level, points, face_points, first, u);
             }
         });
     let face_points = &*face_points;
@@ -231,15 +232,10 @@ fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut
             let first = groups.edge_inside[parents.start] as usize;
             for m in parents.clone() {
                 let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-                let edges = &plan.edges[inside_base + slots.start..inside_base + slots.end];
-                for (out, &edge) in inside[slots.start - first..slots.end - first]
-                    .iter_mut()
-                    .zip(edges)
-                {
-                    *out = edge_point_of(edge, points, face_points);
-                }
+                let outs = &mut inside[slots.start - first..slots.end - first];
+                grouped_edge_points(level, points, face_points, inside_base + slots.start, outs);
                 vertex_points[m - parents.start] =
-                    planned_vertex_point(plan, points, face_points, 0, parent_vertices + m);
+                    grouped_vertex_point(level, points, face_points, 0, parent_vertices + m);
             }
         });
     // Around parent vertex v: the halves of its edges at v, then its point.
@@ -250,17 +246,71 @@ fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut
             let first = groups.vertex_halves[parents.start] as usize;
             for v in parents.clone() {
                 let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-                let edges = &plan.edges[slots.clone()];
-                for (out, &edge) in halves[slots.start - first..slots.end - first]
-                    .iter_mut()
-                    .zip(edges)
-                {
-                    *out = edge_point_of(edge, points, face_points);
-                }
+                let outs = &mut halves[slots.start - first..slots.end - first];
+                grouped_edge_points(level, points, face_points, slots.start, outs);
                 vertex_points[v - parents.start] =
-                    planned_vertex_point(plan, points, face_points, 0, v);
+                    grouped_vertex_point(level, points, face_points, 0, v);
             }
         });
+}
+
+/// The points of edges `first..` into `outs`, for [`apply_grouped`]: read
+/// straight from a plan.
+#[inline]
+fn grouped_edge_points(
+    level: &impl Gathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    first: usize,
+    outs: &mut [DVec3],
+) {
+    match level.as_plan() {
+        Some(plan) => {
+            let edges = &plan.edges[first..first + outs.len()];
+            for (out, &edge) in outs.iter_mut().zip(edges) {
+                *out = edge_point_of(edge, points, face_points);
+            }
+        }
+        None => {
+            for (k, out) in outs.iter_mut().enumerate() {
+                *out = edge_point(level, points, face_points, first + k);
+            }
+        }
+    }
+}
+
+/// A face point of [`apply_grouped`]: read straight from a plan.
+#[inline]
+fn grouped_face_point(level: &impl Gathers, points: &[DVec3], f: usize) -> DVec3 {
+    match level.as_plan() {
+        Some(plan) => planned_face_point(plan, points, f),
+        None => face_point(level, points, f),
+    }
+}
+
+/// A vertex point of [`apply_grouped`], whose faces are among
+/// `face_points`, the first of which is face `first_face`: read straight
+/// from a plan.
+#[inline]
+fn grouped_vertex_point(
+    level: &impl Gathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    first_face: usize,
+    v: usize,
+) -> DVec3 {
+    if let Some(plan) = level.as_plan() {
+        return planned_vertex_point(plan, points, face_points, first_face, v);
+    }
+    if let Some(sharp) = sharp_vertex_point(level, points, v) {
+        return sharp;
+    }
+    let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
+    let n = level.around(v, |u, f| {
+        neighbours += points[u as usize];
+        faces += face_points[f as usize - first_face];
+    });
+    smooth_vertex_point(points[v], neighbours, faces, n)
 }
 
 /// [`face_point`] of a plan's face `f`: the same sum, a quad's unrolled.

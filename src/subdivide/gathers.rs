@@ -92,6 +92,7 @@ pub(crate) fn plan(
         faces,
         connectivity,
         tags,
+        groups: None,
     };
     let vertex_count = faces.vertex_count;
     let edges = par_map(connectivity.edge_count(), "edge stencils", |e| {
@@ -224,6 +225,11 @@ pub(crate) trait Gathers: Sync {
     fn as_plan(&self) -> Option<&Plan> {
         None
     }
+    /// How the level's elements group around the level it was refined
+    /// from, when known (see [`Plan::parent`]).
+    fn parent_groups(&self) -> Option<&ParentGroups> {
+        None
+    }
 }
 
 impl Gathers for Plan {
@@ -233,6 +239,10 @@ impl Gathers for Plan {
 
     fn as_plan(&self) -> Option<&Plan> {
         Some(self)
+    }
+
+    fn parent_groups(&self) -> Option<&ParentGroups> {
+        self.parent.as_ref()
     }
 
     fn edge_count(&self) -> usize {
@@ -283,6 +293,9 @@ pub(crate) struct LevelGathers<'a> {
     pub(crate) faces: &'a Faces,
     pub(crate) connectivity: &'a Connectivity,
     pub(crate) tags: &'a Tags,
+    /// How the level groups around the level it was refined from, when
+    /// known (see [`Plan::parent`]).
+    pub(crate) groups: Option<&'a ParentGroups>,
 }
 
 impl LevelGathers<'_> {
@@ -329,6 +342,10 @@ impl LevelGathers<'_> {
 }
 
 impl Gathers for LevelGathers<'_> {
+    fn parent_groups(&self) -> Option<&ParentGroups> {
+        self.groups
+    }
+
     fn vertex_count(&self) -> usize {
         self.faces.vertex_count
     }

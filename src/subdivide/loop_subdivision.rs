@@ -113,8 +113,8 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_loop_refined() {
         return apply_refined(refined, points, out);
     }
-    if let Some((plan, groups)) = level.as_plan().and_then(|p| Some((p, p.parent.as_ref()?))) {
-        return apply_grouped(plan, groups, points, out);
+    if let Some(groups) = level.parent_groups() {
+        return apply_grouped(level, groups, points, out);
     }
     let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     edge_points
@@ -129,13 +129,14 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .for_each(|(v, out)| *out = vertex_point(level, points, v));
 }
 
-/// [`apply`] for a plan of a level refined from a parent level, in the two
-/// passes of [`apply_refined`], around the parent's edges and vertices,
-/// the gathers read from the plan. The same gathers in the same order, so
-/// the same bits.
-fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+/// [`apply`] for a level whose elements are known to group around those
+/// of the level it was refined from (a refiner's plan, or an intermediate
+/// level of one-shot subdivision), in the two passes of [`apply_refined`],
+/// around the parent's edges and vertices. The same gathers in the same
+/// order, so the same bits.
+fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
     let (parent_vertices, parent_edges) = groups.parent_counts();
-    let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
+    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
     let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
     let inside_base = 2 * parent_edges;
@@ -146,15 +147,10 @@ fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut
             let first = groups.edge_inside[parents.start] as usize;
             for m in parents.clone() {
                 vertex_points[m - parents.start] =
-                    planned_vertex_point(plan, points, parent_vertices + m);
+                    grouped_vertex_point(level, points, parent_vertices + m);
                 let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-                let edges = &plan.edges[inside_base + slots.start..inside_base + slots.end];
-                for (out, &edge) in inside[slots.start - first..slots.end - first]
-                    .iter_mut()
-                    .zip(edges)
-                {
-                    *out = edge_point_of(edge, points);
-                }
+                let outs = &mut inside[slots.start - first..slots.end - first];
+                grouped_edge_points(level, points, inside_base + slots.start, outs);
             }
         });
     split_by_offsets(halves, &groups.vertex_halves, CHUNK)
@@ -164,16 +160,39 @@ fn apply_grouped(plan: &Plan, groups: &ParentGroups, points: &[DVec3], out: &mut
             let first = groups.vertex_halves[parents.start] as usize;
             for v in parents.clone() {
                 let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-                let edges = &plan.edges[slots.clone()];
-                for (out, &edge) in halves[slots.start - first..slots.end - first]
-                    .iter_mut()
-                    .zip(edges)
-                {
-                    *out = edge_point_of(edge, points);
-                }
-                vertex_points[v - parents.start] = planned_vertex_point(plan, points, v);
+                let outs = &mut halves[slots.start - first..slots.end - first];
+                grouped_edge_points(level, points, slots.start, outs);
+                vertex_points[v - parents.start] = grouped_vertex_point(level, points, v);
             }
         });
+}
+
+/// The points of edges `first..` into `outs`, for [`apply_grouped`]: read
+/// straight from a plan.
+#[inline]
+fn grouped_edge_points(level: &impl Gathers, points: &[DVec3], first: usize, outs: &mut [DVec3]) {
+    match level.as_plan() {
+        Some(plan) => {
+            let edges = &plan.edges[first..first + outs.len()];
+            for (out, &edge) in outs.iter_mut().zip(edges) {
+                *out = edge_point_of(edge, points);
+            }
+        }
+        None => {
+            for (k, out) in outs.iter_mut().enumerate() {
+                *out = edge_point(level, points, first + k);
+            }
+        }
+    }
+}
+
+/// A vertex point of [`apply_grouped`]: read straight from a plan.
+#[inline]
+fn grouped_vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
+    match level.as_plan() {
+        Some(plan) => planned_vertex_point(plan, points, v),
+        None => vertex_point(level, points, v),
+    }
 }
 
 /// [`vertex_point`] of a plan's vertex `v`, read from its ring.

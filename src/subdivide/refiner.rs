@@ -11,7 +11,7 @@ use super::creases::SubdivisionOptions;
 use super::gathers::{
     loop_inside_offsets, plan, LevelGathers, LoopRefinedGathers, ParentGroups, Plan, RefinedGathers,
 };
-use super::level::{Connectivity, Faces};
+use super::level::{uniform_offsets, Connectivity, Faces};
 use super::point_rules::{self, apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
 use super::scheme::{check_counts, NakedEdges, RefinedCounts, Scheme};
@@ -337,10 +337,10 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         // around this one.
         plan.parent = groups.take();
         if !last {
-            groups = Some(parent_groups(scheme, &faces, &connectivity)?);
             // The next level's edges and adjacency, written from this one's.
             let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
+            groups = Some(parent_groups(scheme, &faces, &mut connectivity)?);
             connectivity = next_connectivity;
         } else {
             // Not needed any more: free it before the last, largest pass.
@@ -357,28 +357,33 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
 }
 
 /// How the elements of the level `scheme` refines from `faces` group
-/// around them (see [`ParentGroups`]); `connectivity` has its vertices' edges.
+/// around them (see [`ParentGroups`]), the lists moved out of
+/// `connectivity`, which has its vertices' edges and is done with.
 fn parent_groups(
     scheme: Scheme,
     faces: &Faces,
-    connectivity: &Connectivity,
+    connectivity: &mut Connectivity,
 ) -> Result<ParentGroups> {
-    let copy = |values: &[u32], what: &str| -> Result<Vec<u32>> {
-        let mut copy = try_vec(values.len(), what)?;
-        copy.extend_from_slice(values);
-        Ok(copy)
+    let face_faces = match scheme {
+        Scheme::Loop => Vec::new(),
+        // Faces of one size may have no offsets (see `gather_levels`).
+        Scheme::CatmullClark if faces.offsets.is_empty() => {
+            uniform_offsets(faces.face_count(), faces.size, true)?
+        }
+        Scheme::CatmullClark => {
+            let mut copy = try_vec(faces.offsets.len(), "parent groups")?;
+            copy.extend_from_slice(&faces.offsets);
+            copy
+        }
     };
-    Ok(match scheme {
-        Scheme::CatmullClark => ParentGroups {
-            face_faces: copy(&faces.offsets, "parent groups")?,
-            edge_inside: copy(&connectivity.edge_offsets, "parent groups")?,
-            vertex_halves: copy(&connectivity.vertex_edge_offsets, "parent groups")?,
-        },
-        Scheme::Loop => ParentGroups {
-            face_faces: Vec::new(),
-            edge_inside: loop_inside_offsets(connectivity)?,
-            vertex_halves: copy(&connectivity.vertex_edge_offsets, "parent groups")?,
-        },
+    let edge_inside = match scheme {
+        Scheme::CatmullClark => std::mem::take(&mut connectivity.adjacency.edge_offsets),
+        Scheme::Loop => loop_inside_offsets(connectivity)?,
+    };
+    Ok(ParentGroups {
+        face_faces,
+        edge_inside,
+        vertex_halves: std::mem::take(&mut connectivity.vertex_edge_offsets),
     })
 }
 
@@ -424,12 +429,15 @@ pub(crate) fn gather_levels(
         face_count: face_count as usize,
         index_count: index_count as usize,
     })?;
+    // How the level read groups around the level before it, once there is one.
+    let mut groups = None;
     for (last, next_last) in request.steps() {
         let gathers = LevelGathers {
             scheme,
             faces: &faces,
             connectivity: &connectivity,
             tags: &tags,
+            groups: groups.as_ref(),
         };
         if next_last {
             // The next level's points, then the last level's points and
@@ -486,6 +494,7 @@ pub(crate) fn gather_levels(
         // Catmull-Clark's refined gathers.
         let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
         tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
+        groups = Some(parent_groups(scheme, &faces, &mut connectivity)?);
         (faces, connectivity) = (next_faces, next_connectivity);
     }
     Ok(faces)

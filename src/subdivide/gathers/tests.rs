@@ -132,6 +132,7 @@ impl TwoLevels {
             faces: &self.faces,
             connectivity: &self.connectivity,
             tags: &self.tags,
+            groups: None,
         }
     }
 
@@ -141,6 +142,7 @@ impl TwoLevels {
             faces: &self.child,
             connectivity: &self.child_connectivity,
             tags: &self.child_tags,
+            groups: None,
         }
     }
 }
