@@ -17,8 +17,8 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::gathers::{
-    planned_sharp_point, prefetch_at, sharp_vertex_point, Gathers, ParentGroups, Plan,
-    RefinedGathers,
+    edge_points_into, planned_sharp_point, prefetch_at, sharp_vertex_point, Gathers, ParentGroups,
+    Plan, RefinedGathers,
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
@@ -233,7 +233,9 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             for m in parents.clone() {
                 let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
                 let outs = &mut inside[slots.start - first..slots.end - first];
-                grouped_edge_points(level, points, face_points, inside_base + slots.start, outs);
+                edge_points_into(level, inside_base + slots.start, outs, |edge| {
+                    edge_point_of(edge, points, face_points)
+                });
                 vertex_points[m - parents.start] =
                     grouped_vertex_point(level, points, face_points, 0, parent_vertices + m);
             }
@@ -247,36 +249,13 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             for v in parents.clone() {
                 let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
                 let outs = &mut halves[slots.start - first..slots.end - first];
-                grouped_edge_points(level, points, face_points, slots.start, outs);
+                edge_points_into(level, slots.start, outs, |edge| {
+                    edge_point_of(edge, points, face_points)
+                });
                 vertex_points[v - parents.start] =
                     grouped_vertex_point(level, points, face_points, 0, v);
             }
         });
-}
-
-/// The points of edges `first..` into `outs`, for [`apply_grouped`]: read
-/// straight from a plan.
-#[inline]
-fn grouped_edge_points(
-    level: &impl Gathers,
-    points: &[DVec3],
-    face_points: &[DVec3],
-    first: usize,
-    outs: &mut [DVec3],
-) {
-    match level.as_plan() {
-        Some(plan) => {
-            let edges = &plan.edges[first..first + outs.len()];
-            for (out, &edge) in outs.iter_mut().zip(edges) {
-                *out = edge_point_of(edge, points, face_points);
-            }
-        }
-        None => {
-            for (k, out) in outs.iter_mut().enumerate() {
-                *out = edge_point(level, points, face_points, first + k);
-            }
-        }
-    }
 }
 
 /// A face point of [`apply_grouped`]: read straight from a plan.

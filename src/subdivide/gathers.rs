@@ -168,6 +168,31 @@ pub(crate) fn sharp_vertex_point(
     }
 }
 
+/// Writes the points of `level`'s edges `first..first + outs.len()` into
+/// `outs` by the scheme's edge `rule`, each edge's gather read straight
+/// from the plan when `level` is one.
+#[inline]
+pub(crate) fn edge_points_into(
+    level: &impl Gathers,
+    first: usize,
+    outs: &mut [DVec3],
+    rule: impl Fn([u32; 4]) -> DVec3,
+) {
+    match level.as_plan() {
+        Some(plan) => {
+            let edges = &plan.edges[first..first + outs.len()];
+            for (out, &edge) in outs.iter_mut().zip(edges) {
+                *out = rule(edge);
+            }
+        }
+        None => {
+            for (k, out) in outs.iter_mut().enumerate() {
+                *out = rule(level.edge(first + k));
+            }
+        }
+    }
+}
+
 /// The point of a crease vertex at `p` whose crease neighbours are at `a`
 /// and `b`.
 #[inline]
