@@ -15,7 +15,7 @@
 
 use weft::mesh::shapes;
 use weft::mesh::triangulate::triangulate;
-use weft::subdivide::{subdivide, NakedEdges, Scheme};
+use weft::subdivide::{subdivide, NakedEdges, Refiner, Scheme};
 use weft::Mesh;
 use weft_reference::{
     openmesh_catmull_clark, openmesh_loop, opensubdiv_refine, BoundaryInterpolation, OsdOptions,
@@ -202,6 +202,31 @@ fn compare_with_opensubdiv(scheme: Scheme) {
                 let ours = subdivide(&cage, scheme, levels, mode).unwrap();
                 let reference = opensubdiv_refine(&reference_cage, &options, levels).unwrap();
                 assert_same_mesh(&ours, &reference, &what);
+            }
+        }
+    }
+}
+
+/// Level 4, where one-shot subdivision makes levels 2 and 3 around the
+/// elements of the level before, and the refiner applies its plans of
+/// levels 2, 3 and 4 that way: both against OpenSubdiv, on every shape in
+/// every naked-edge mode.
+#[test]
+fn level_four_equals_opensubdiv_one_shot_and_refined() {
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        for (name, cage) in shapes_for(scheme) {
+            let reference_cage = to_ref(&cage);
+            for mode in MODES {
+                let what = format!("{scheme:?} {mode:?} level 4 of the {name}");
+                let options = osd_options(scheme, mode, &reference_cage);
+                let reference = opensubdiv_refine(&reference_cage, &options, 4).unwrap();
+                let ours = subdivide(&cage, scheme, 4, mode).unwrap();
+                assert_same_mesh(&ours, &reference, &what);
+                let refined = Refiner::new(&cage, scheme, 4, mode)
+                    .unwrap()
+                    .mesh()
+                    .unwrap();
+                assert_same_mesh(&refined, &reference, &format!("{what}, refined"));
             }
         }
     }
