@@ -136,33 +136,54 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 /// around the parent's edges and vertices. The same gathers in the same
 /// order, so the same bits.
 fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
-    let (parent_vertices, parent_edges) = groups.parent_counts();
+    around_parents(
+        level,
+        &groups.edge_inside,
+        &groups.vertex_halves,
+        points,
+        out,
+    );
+}
+
+/// The two passes of [`apply_grouped`] and [`apply_refined`]: around each
+/// parent edge m, its point's vertex point and the edges inside triangles
+/// whose lower parent edge is m (`edge_inside`, see
+/// [`ParentGroups::edge_inside`]); around each parent vertex v, the halves
+/// of its edges at v (`vertex_halves`) and its vertex point.
+fn around_parents(
+    level: &impl Gathers,
+    edge_inside: &[u32],
+    vertex_halves: &[u32],
+    points: &[DVec3],
+    out: &mut [DVec3],
+) {
+    let (parent_vertices, parent_edges) = (vertex_halves.len() - 1, edge_inside.len() - 1);
     let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
     let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
     let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
     let inside_base = 2 * parent_edges;
-    split_by_offsets(inside, &groups.edge_inside, CHUNK)
+    split_by_offsets(inside, edge_inside, CHUNK)
         .into_par_iter()
         .zip(at_edges.par_chunks_mut(CHUNK))
         .for_each(|((parents, inside), vertex_points)| {
-            let first = groups.edge_inside[parents.start] as usize;
+            let first = edge_inside[parents.start] as usize;
             for m in parents.clone() {
                 vertex_points[m - parents.start] =
                     grouped_vertex_point(level, points, parent_vertices + m);
-                let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
+                let slots = edge_inside[m] as usize..edge_inside[m + 1] as usize;
                 let outs = &mut inside[slots.start - first..slots.end - first];
                 edge_points_into(level, inside_base + slots.start, outs, |edge| {
                     edge_point_of(edge, points)
                 });
             }
         });
-    split_by_offsets(halves, &groups.vertex_halves, CHUNK)
+    split_by_offsets(halves, vertex_halves, CHUNK)
         .into_par_iter()
         .zip(at_vertices.par_chunks_mut(CHUNK))
         .for_each(|((parents, halves), vertex_points)| {
-            let first = groups.vertex_halves[parents.start] as usize;
+            let first = vertex_halves[parents.start] as usize;
             for v in parents.clone() {
-                let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
+                let slots = vertex_halves[v] as usize..vertex_halves[v + 1] as usize;
                 let outs = &mut halves[slots.start - first..slots.end - first];
                 edge_points_into(level, slots.start, outs, |edge| edge_point_of(edge, points));
                 vertex_points[v - parents.start] = grouped_vertex_point(level, points, v);
@@ -170,7 +191,7 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
         });
 }
 
-/// A vertex point of [`apply_grouped`]: read straight from a plan.
+/// A vertex point of [`around_parents`]: read straight from a plan.
 #[inline]
 fn grouped_vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
     match level.as_plan() {
@@ -201,41 +222,8 @@ fn planned_vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
 /// points are in the cache (as Catmull-Clark's last level is made). Each
 /// point is the same gather as [`apply`]'s, so the same bits.
 fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
-    let (parent_vertices, parent_edges) = level.parent_counts();
-    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
-    let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
-    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
-    // Around each parent edge m: its point's vertex point, and the edges
-    // inside triangles whose lower parent edge is m.
-    let inside_offsets = level.inside_offsets();
-    split_by_offsets(inside, inside_offsets, CHUNK)
-        .into_par_iter()
-        .zip(at_edges.par_chunks_mut(CHUNK))
-        .for_each(|((edges, inside), vertex_points)| {
-            let first = inside_offsets[edges.start] as usize;
-            for m in edges.clone() {
-                vertex_points[m - edges.start] = vertex_point(level, points, parent_vertices + m);
-                let slots = inside_offsets[m] as usize..inside_offsets[m + 1] as usize;
-                for k in slots {
-                    inside[k - first] = edge_point(level, points, 2 * parent_edges + k);
-                }
-            }
-        });
-    // Around each parent vertex v: the halves of its edges at v, and its
-    // vertex point.
-    let offsets = &level.parent.connectivity.vertex_edge_offsets;
-    split_by_offsets(halves, offsets, CHUNK)
-        .into_par_iter()
-        .zip(at_vertices.par_chunks_mut(CHUNK))
-        .for_each(|((vertices, halves), vertex_points)| {
-            let first = offsets[vertices.start] as usize;
-            for v in vertices.clone() {
-                for s in offsets[v] as usize..offsets[v + 1] as usize {
-                    halves[s - first] = edge_point(level, points, s);
-                }
-                vertex_points[v - vertices.start] = vertex_point(level, points, v);
-            }
-        });
+    let vertex_halves = &level.parent.connectivity.vertex_edge_offsets;
+    around_parents(level, level.inside_offsets(), vertex_halves, points, out);
 }
 
 /// As [`apply`], into a new vector written once (no zero-filling).

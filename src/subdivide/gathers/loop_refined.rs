@@ -89,7 +89,7 @@ impl<'a> LoopRefinedGathers<'a> {
         &self.inside_offsets
     }
 
-    pub(crate) fn parent_counts(&self) -> (usize, usize) {
+    fn parent_counts(&self) -> (usize, usize) {
         (
             self.parent.faces.vertex_count,
             self.parent.connectivity.edge_count(),
