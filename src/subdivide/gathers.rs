@@ -496,44 +496,61 @@ impl RefinedGathers<'_> {
     /// `v`, one per slot of `v`'s edges in order, as [`Gathers::edge`] gives
     /// them, found in one walk around `v` instead of edge by edge: the
     /// child quad at each corner k of `v` lies beside the halves at `v` of
-    /// both of k's edges, and the half of a smooth edge has exactly two
-    /// such quads. `None` for a vertex of more than [`MAX_WALKED_EDGES`]
-    /// edges (or where a smooth edge's half is not beside two of them),
-    /// whose wings [`Gathers::edge`] gives one by one.
+    /// both of k's edges. `None` where [`slot_wings_around`] is.
     #[inline]
     pub(crate) fn slot_wings(&self, v: usize) -> Option<[[u32; 2]; MAX_WALKED_EDGES]> {
-        let parent = &self.parent;
-        let connectivity = parent.connectivity;
-        let edges = connectivity.vertex_edges(v);
-        if edges.len() > MAX_WALKED_EDGES {
-            return None;
-        }
-        let mut wings = [[NONE; 2]; MAX_WALKED_EDGES];
-        let mut found = [0u8; MAX_WALKED_EDGES];
-        for &k in connectivity.vertex_corners(v) {
-            let k = k as usize;
-            let leaving = connectivity.corner_edges[k];
-            let arriving = connectivity.corner_edges[parent.prev(k)];
-            for e in [leaving, arriving] {
-                let i = position(edges, e) as usize;
-                // More than two only beside a sharp edge, whose wings are unused.
-                if let Some(wing) = wings[i].get_mut(found[i] as usize) {
-                    *wing = k as u32;
-                    found[i] += 1;
-                }
+        let k = |k: usize, _leaving: bool| (k as u32, k as u32);
+        slot_wings_around(&self.parent, v, k)
+    }
+}
+
+/// The wings of the halves at the parent's vertex `v` of its edges, one
+/// per slot of `v`'s edges in order, found in one walk around `v`: each
+/// corner k of `v` lies beside the halves of both its edges, the one
+/// leaving v and the one arriving, and `wing(k, leaving)` gives that
+/// half's wing there as (its order among the half's wings, the wing). The
+/// half of a smooth edge has exactly two, in that order; a sharp edge's
+/// are [`NONE`]. `None` for a vertex of more than [`MAX_WALKED_EDGES`]
+/// edges, or where a smooth edge's half is not beside two corners: there
+/// [`Gathers::edge`] gives them one by one.
+#[inline]
+pub(crate) fn slot_wings_around(
+    parent: &LevelGathers,
+    v: usize,
+    wing: impl Fn(usize, bool) -> (u32, u32),
+) -> Option<[[u32; 2]; MAX_WALKED_EDGES]> {
+    let connectivity = parent.connectivity;
+    let edges = connectivity.vertex_edges(v);
+    if edges.len() > MAX_WALKED_EDGES {
+        return None;
+    }
+    let mut found = [[(0u32, NONE); 2]; MAX_WALKED_EDGES];
+    let mut counts = [0u8; MAX_WALKED_EDGES];
+    for &k in connectivity.vertex_corners(v) {
+        let k = k as usize;
+        let leaving = connectivity.corner_edges[k];
+        let arriving = connectivity.corner_edges[parent.prev(k)];
+        for (e, is_leaving) in [(leaving, true), (arriving, false)] {
+            let i = position(edges, e) as usize;
+            // More than two only beside a sharp edge, whose wings are unused.
+            if let Some(slot) = found[i].get_mut(counts[i] as usize) {
+                *slot = wing(k, is_leaving);
+                counts[i] += 1;
             }
         }
-        for (i, &e) in edges.iter().enumerate() {
-            let [k1, k2] = wings[i];
-            wings[i] = match parent.tags.edge_sharp[e as usize] {
-                true => [NONE; 2],
-                // Not met by a smooth edge: there, edge by edge.
-                false if found[i] != 2 => return None,
-                false => [k1.min(k2), k1.max(k2)],
-            };
-        }
-        Some(wings)
     }
+    let mut wings = [[NONE; 2]; MAX_WALKED_EDGES];
+    for (i, &e) in edges.iter().enumerate() {
+        let [w1, w2] = found[i];
+        wings[i] = match parent.tags.edge_sharp[e as usize] {
+            true => [NONE; 2],
+            // Not met by a smooth edge: there, edge by edge.
+            false if counts[i] != 2 => return None,
+            false if w1.0 < w2.0 => [w1.1, w2.1],
+            false => [w2.1, w1.1],
+        };
+    }
+    Some(wings)
 }
 
 /// The two faces of a child edge from its two corners, in the order of the

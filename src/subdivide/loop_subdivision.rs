@@ -185,7 +185,21 @@ fn around_parents(
             for v in parents.clone() {
                 let slots = vertex_halves[v] as usize..vertex_halves[v + 1] as usize;
                 let outs = &mut halves[slots.start - first..slots.end - first];
-                edge_points_into(level, slots.start, outs, |edge| edge_point_of(edge, points));
+                let walked = level.as_loop_refined().and_then(|refined| {
+                    let edges = refined.parent.connectivity.vertex_edges(v);
+                    Some((edges, refined.slot_wings(v)?))
+                });
+                match walked {
+                    Some((edges, wings)) => {
+                        let point = |e: u32| parent_vertices as u32 + e;
+                        for ((out, &e), [c, d]) in outs.iter_mut().zip(edges).zip(wings) {
+                            *out = edge_point_of([v as u32, point(e), c, d], points);
+                        }
+                    }
+                    None => edge_points_into(level, slots.start, outs, |edge| {
+                        edge_point_of(edge, points)
+                    }),
+                }
                 vertex_points[v - parents.start] = grouped_vertex_point(level, points, v);
             }
         });

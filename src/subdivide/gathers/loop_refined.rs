@@ -16,7 +16,7 @@
 //! edges inside the triangles, `[V + m, V + h]` grouped by the lower parent
 //! edge m, sorted by h, then by triangle.
 
-use super::{Gathers, LevelGathers};
+use super::{slot_wings_around, Gathers, LevelGathers, MAX_WALKED_EDGES};
 use crate::buffers::{fill_by_offsets, par_offsets};
 use crate::error::Result;
 use crate::subdivide::level::{Connectivity, NONE};
@@ -113,6 +113,25 @@ impl<'a> LoopRefinedGathers<'a> {
             .position(|&(high, face, _)| (high, face) == (h, f as u32))
             .unwrap_or(0);
         (2 * self.parent_counts().1 + start + k) as u32
+    }
+
+    /// The wings of the level's edges `[v, V + e]` at the parent's vertex
+    /// `v`, one per slot of `v`'s edges in order, as [`Gathers::edge`] gives
+    /// them, found in one walk around `v` (see [`slot_wings_around`]):
+    /// `v`'s corner `3f + i` makes the triangle `[v_i, E_i, E_(i-1)]`, child
+    /// corner `12f + 3i`, beside the half leaving `v` opposite `E_(i-1)`
+    /// and the half arriving opposite `E_i`.
+    #[inline]
+    pub(crate) fn slot_wings(&self, v: usize) -> Option<[[u32; 2]; MAX_WALKED_EDGES]> {
+        let v_count = self.parent_counts().0 as u32;
+        slot_wings_around(&self.parent, v, |k, leaving| {
+            let [own, _, previous] = self.edges_from(k);
+            let child = 12 * (k / 3) as u32 + 3 * (k % 3) as u32;
+            match leaving {
+                true => (child, v_count + previous),
+                false => (child + 2, v_count + own),
+            }
+        })
     }
 
     /// The level's four triangles made from parent triangle f, in order,
@@ -274,7 +293,9 @@ impl Gathers for LoopRefinedGathers<'_> {
         // The point of e is corner 1 of [v_i, E_i, E_(i-1)] (next E_(i-1)),
         // corner 2 of [v_(i+1), E_(i+1), E_i] (next v_(i+1)) and corner i of
         // [E_0, E_1, E_2] (next E_(i+1)), for each corner 3f + i of e,
-        // visited in child corner order.
+        // visited in child corner order: a triangle's three in the order of
+        // their child corners (3i + 1, 3i + 5 mod 9, 9 + i), the lower
+        // triangle's first.
         let mut ring = [(0u32, 0u32); 6];
         let corners = connectivity.edge_corners(e);
         for (triple, &c) in ring.chunks_exact_mut(3).zip(corners) {
@@ -286,10 +307,20 @@ impl Gathers for LoopRefinedGathers<'_> {
                 (12 * f + 3 * ((i + 1) % 3) + 2, following),
                 (12 * f + 9 + i, v_count as u32 + next),
             ]);
+            if i == 2 {
+                triple.swap(0, 1);
+            }
         }
         // A smooth edge has two corners.
         let n = (3 * corners.len()).min(6);
-        ring[..n].sort_unstable();
+        match corners {
+            [c1, c2] if c1 / 3 > c2 / 3 => {
+                let (lower, higher) = ring.split_at_mut(3);
+                lower.swap_with_slice(higher);
+            }
+            [c1, c2] if c1 / 3 < c2 / 3 => {}
+            _ => ring[..n].sort_unstable(),
+        }
         for &(_, neighbour) in &ring[..n] {
             visit(neighbour, NONE);
         }

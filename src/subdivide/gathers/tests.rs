@@ -41,7 +41,6 @@ fn refined_gathers_equal_the_built_level() {
         ] {
             let levels = TwoLevels::of(mesh, Scheme::CatmullClark, naked);
             let TwoLevels {
-                faces,
                 connectivity,
                 child,
                 child_connectivity,
@@ -81,19 +80,37 @@ fn refined_gathers_equal_the_built_level() {
                 built.vertex_count() + built.edge_count() + built.face_count(),
                 &what,
             );
-            // The wings walked around each parent vertex are its slots' wings.
-            for v in 0..faces.vertex_count {
-                let slots =
-                    connectivity.vertex_edge_offsets[v]..connectivity.vertex_edge_offsets[v + 1];
-                if let Some(wings) = refined.slot_wings(v) {
-                    for (i, s) in slots.enumerate() {
-                        let [_, _, w0, w1] = refined.edge(s as usize);
-                        assert_eq!(wings[i], [w0, w1], "{what}: vertex {v}, slot {s}");
-                    }
-                }
+            assert_walked_wings(
+                &connectivity.vertex_edge_offsets,
+                |v| refined.slot_wings(v),
+                |s| refined.edge(s),
+                &what,
+            );
+        }
+    }
+}
+
+/// The wings walked around each parent vertex (`walked`) are its slots'
+/// wings, edge by edge (`edge`), wherever the walk gives them; and it
+/// gives them around some vertex.
+fn assert_walked_wings(
+    vertex_edge_offsets: &[u32],
+    walked: impl Fn(usize) -> Option<[[u32; 2]; MAX_WALKED_EDGES]>,
+    edge: impl Fn(usize) -> [u32; 4],
+    what: &str,
+) {
+    let mut walked_any = false;
+    for v in 0..vertex_edge_offsets.len() - 1 {
+        let slots = vertex_edge_offsets[v]..vertex_edge_offsets[v + 1];
+        if let Some(wings) = walked(v) {
+            walked_any = true;
+            for (i, s) in slots.enumerate() {
+                let [_, _, w0, w1] = edge(s as usize);
+                assert_eq!(wings[i], [w0, w1], "{what}: vertex {v}, slot {s}");
             }
         }
     }
+    assert!(walked_any, "{what}: no vertex walked");
 }
 
 /// A cage's level and the level `scheme` makes of it, built.
@@ -236,6 +253,12 @@ fn loop_refined_gathers_equal_the_built_level() {
                 );
             }
             assert_same_gathers(&refined, &built, &what);
+            assert_walked_wings(
+                &levels.connectivity.vertex_edge_offsets,
+                |v| refined.slot_wings(v),
+                |s| refined.edge(s),
+                &what,
+            );
             assert_same_points(
                 |points, out| loop_subdivision::apply(&refined, points, out),
                 |points, out| loop_subdivision::apply(&built, points, out),
