@@ -524,7 +524,8 @@ pub(crate) fn slot_wings_around(
     if edges.len() > MAX_WALKED_EDGES {
         return None;
     }
-    let mut found = [[(0u32, NONE); 2]; MAX_WALKED_EDGES];
+    let mut wings = [[NONE; 2]; MAX_WALKED_EDGES];
+    let mut first_orders = [0u32; MAX_WALKED_EDGES];
     let mut counts = [0u8; MAX_WALKED_EDGES];
     for &k in connectivity.vertex_corners(v) {
         let k = k as usize;
@@ -532,23 +533,23 @@ pub(crate) fn slot_wings_around(
         let arriving = connectivity.corner_edges[parent.prev(k)];
         for (e, is_leaving) in [(leaving, true), (arriving, false)] {
             let i = position(edges, e) as usize;
-            // More than two only beside a sharp edge, whose wings are unused.
-            if let Some(slot) = found[i].get_mut(counts[i] as usize) {
-                *slot = wing(k, is_leaving);
-                counts[i] += 1;
+            let (order, found) = wing(k, is_leaving);
+            match counts[i] {
+                0 => (wings[i][0], first_orders[i]) = (found, order),
+                1 if order < first_orders[i] => wings[i] = [found, wings[i][0]],
+                1 => wings[i][1] = found,
+                _ => {}
             }
+            counts[i] = counts[i].saturating_add(1);
         }
     }
-    let mut wings = [[NONE; 2]; MAX_WALKED_EDGES];
     for (i, &e) in edges.iter().enumerate() {
-        let [w1, w2] = found[i];
-        wings[i] = match parent.tags.edge_sharp[e as usize] {
-            true => [NONE; 2],
+        match parent.tags.edge_sharp[e as usize] {
+            true => wings[i] = [NONE; 2],
             // Not met by a smooth edge: there, edge by edge.
             false if counts[i] != 2 => return None,
-            false if w1.0 < w2.0 => [w1.1, w2.1],
-            false => [w2.1, w1.1],
-        };
+            false => {}
+        }
     }
     Some(wings)
 }
