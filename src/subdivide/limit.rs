@@ -92,6 +92,16 @@ impl Subdivider {
     }
 
     fn limit_at(&self, cage: &[DVec3]) -> Result<Limit> {
+        self.limit_at_vertices(cage, 0..self.vertex_count())
+    }
+
+    /// [`Subdivider::limit_of`] at the last level's `vertices` alone, in
+    /// their order, for positions that need no scaling (see `scale.rs`).
+    pub(crate) fn limit_at_vertices(
+        &self,
+        cage: &[DVec3],
+        vertices: impl ExactSizeIterator<Item = usize>,
+    ) -> Result<Limit> {
         let last = self.last();
         let faces = &last.faces;
         let connectivity = &last.connectivity;
@@ -108,7 +118,7 @@ impl Subdivider {
         let mut points = vec![DVec3::ZERO; self.vertex_count()];
         self.evaluate(cage, &mut points)?;
         let sharpness = &last.sharpness;
-        let n = points.len();
+        let n = vertices.len();
         let mut limit = Limit {
             positions: Vec::with_capacity(n),
             du: Vec::with_capacity(n),
@@ -116,7 +126,7 @@ impl Subdivider {
             normals: Vec::with_capacity(n),
         };
         let (mut edges, mut corners) = (Vec::new(), Vec::new());
-        for v in 0..n {
+        for v in vertices {
             let p = points[v];
             let edge_count = sharpness.edges_at(v).len();
             if edge_count == 0 {

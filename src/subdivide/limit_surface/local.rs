@@ -264,13 +264,11 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     let size = scheme.refined_face_size();
     let mut corners = vec![None; corner_count];
     if local.mesh.face_sizes().iter().all(|&s| s == size) {
+        // The limit at the face's corners alone (unit points need no scaling).
         let masks = dense(m, |basis, values| {
-            let limit = zero.limit_of(basis)?;
+            let limit = zero.limit_at_vertices(basis, own.iter().map(|&v| v as usize))?;
             values.clear();
-            values.extend(own.iter().map(|&v| {
-                let v = v as usize;
-                [limit.positions[v], limit.du[v], limit.dv[v]]
-            }));
+            values.extend((0..own.len()).map(|k| [limit.positions[k], limit.du[k], limit.dv[k]]));
             Ok(())
         })?;
         for (k, slot) in corners.iter_mut().enumerate() {
@@ -302,8 +300,8 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
         }
     }
     let one = Subdivider::new(&local.mesh, scheme, 1, &local.options)?;
+    let mut refined = vec![DVec3::ZERO; one.vertex_count()];
     let weights = dense(m, |basis, values| {
-        let mut refined = vec![DVec3::ZERO; one.vertex_count()];
         one.evaluate(basis, &mut refined)?;
         values.clear();
         values.extend(refined.iter().map(|&p| [p, DVec3::ZERO, DVec3::ZERO]));
