@@ -15,6 +15,7 @@
 //! evaluation follows it as deep as a sample needs.
 
 use std::collections::HashMap;
+use std::sync::{Arc, Mutex};
 
 use glam::DVec3;
 
@@ -76,7 +77,7 @@ impl Sparse {
 #[derive(Debug, Clone)]
 pub(super) struct Child {
     pub(super) node: u32,
-    pub(super) points: Sparse,
+    pub(super) points: Arc<Sparse>,
 }
 
 /// The limit at a corner of a node: position, first and second tangent
@@ -92,12 +93,12 @@ pub(super) struct CornerLimit {
 #[derive(Debug, Clone)]
 pub(super) enum Kind {
     /// A regular patch's control points.
-    Patch(Vec<Row>),
+    Patch(Arc<Vec<Row>>),
     /// Refined once more: the children in the order of the face's corners
     /// (Loop: the three corner triangles, then the middle one).
     Refine {
         children: Vec<Child>,
-        corners: Vec<Option<CornerLimit>>,
+        corners: Arc<Vec<Option<CornerLimit>>>,
     },
 }
 
@@ -245,10 +246,51 @@ fn dense(
 }
 
 /// What one node becomes: a patch, or its children's small meshes and
-/// points and its corners' limits.
+/// points and its corners' limits. It depends on the node's small mesh
+/// alone, so the faces whose graphs meet the same small mesh share it
+/// (see [`Expansions`]).
 enum Expanded {
-    Patch(Vec<Row>),
-    Refine(Vec<(Local, Sparse)>, Vec<Option<CornerLimit>>),
+    Patch(Arc<Vec<Row>>),
+    Refine(
+        Vec<(Arc<Local>, Arc<Sparse>)>,
+        Arc<Vec<Option<CornerLimit>>>,
+    ),
+}
+
+/// The nodes expanded so far by any face, by their small mesh's identity:
+/// a cage whose faces' neighbourhoods repeat (a grid, a pattern) expands
+/// each kind of neighbourhood once, and its faces' graphs share the
+/// weights. Kept while the faces' graphs are built.
+#[derive(Default)]
+pub(super) struct Expansions {
+    by_key: Mutex<HashMap<Vec<u64>, Arc<Expanded>>>,
+}
+
+impl Expansions {
+    /// How many nodes have been expanded.
+    #[cfg(test)]
+    pub(super) fn len(&self) -> usize {
+        self.by_key.lock().map_or(0, |by_key| by_key.len())
+    }
+
+    /// The expansion of `local`'s node, made here when no face has made it.
+    fn of(&self, scheme: Scheme, local: &Local) -> Result<Arc<Expanded>> {
+        let known = |expansions: &Self| {
+            let by_key = expansions.by_key.lock();
+            let by_key = by_key.unwrap_or_else(|poisoned| poisoned.into_inner());
+            by_key.get(&local.key).cloned()
+        };
+        if let Some(expanded) = known(self) {
+            return Ok(expanded);
+        }
+        let expanded = Arc::new(expand(scheme, local)?);
+        let mut by_key = self
+            .by_key
+            .lock()
+            .unwrap_or_else(|poisoned| poisoned.into_inner());
+        // Another face may have made the same one meanwhile: keep the first.
+        Ok(by_key.entry(local.key.clone()).or_insert(expanded).clone())
+    }
 }
 
 fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
@@ -256,7 +298,7 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     let level = &zero.levels[0];
     let g = local.face;
     if let Some(rows) = regular_patch(scheme, level, g) {
-        return Ok(Expanded::Patch(rows));
+        return Ok(Expanded::Patch(Arc::new(rows)));
     }
     let m = local.mesh.vertex_count();
     let own = local.mesh.face(g).to_vec();
@@ -325,9 +367,9 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
             map.iter()
                 .map(|&r| (0..m).map(move |k| weights[r as usize * m + k][0])),
         );
-        out.push((child, points));
+        out.push((Arc::new(child), Arc::new(points)));
     }
-    Ok(Expanded::Refine(out, corners))
+    Ok(Expanded::Refine(out, Arc::new(corners)))
 }
 
 /// The graph of cage face `f`; `cage` is the cage's level (sharpness with
@@ -341,6 +383,7 @@ pub(super) fn face_graph(
     cage: &KeptLevel,
     f: usize,
     options: &SubdivisionOptions,
+    expansions: &Expansions,
 ) -> Result<FaceGraph> {
     if let Some(rows) = regular_patch(scheme, cage, f) {
         // A regular cage face: its patch on its own points.
@@ -363,7 +406,7 @@ pub(super) fn face_graph(
         let node = Node {
             point_count: vertices.len(),
             corners: Vec::new(),
-            kind: Kind::Patch(rows),
+            kind: Kind::Patch(Arc::new(rows)),
         };
         return Ok(FaceGraph {
             vertices,
@@ -374,12 +417,12 @@ pub(super) fn face_graph(
     let mut ids: HashMap<Vec<u64>, u32> = HashMap::new();
     let mut nodes: Vec<Option<Node>> = vec![None];
     ids.insert(root.key.clone(), 0);
-    let mut pending = vec![(0u32, root)];
+    let mut pending = vec![(0u32, Arc::new(root))];
     while let Some((id, local)) = pending.pop() {
         let point_count = local.mesh.vertex_count();
         let corners = local.mesh.face(local.face).to_vec();
-        let kind = match expand(scheme, &local)? {
-            Expanded::Patch(rows) => Kind::Patch(rows),
+        let kind = match &*expansions.of(scheme, &local)? {
+            Expanded::Patch(rows) => Kind::Patch(rows.clone()),
             Expanded::Refine(children, corners) => {
                 let mut out = Vec::with_capacity(children.len());
                 for (child, points) in children {
@@ -396,15 +439,18 @@ pub(super) fn face_graph(
                             let node = nodes.len() as u32;
                             nodes.push(None);
                             ids.insert(child.key.clone(), node);
-                            pending.push((node, child));
+                            pending.push((node, child.clone()));
                             node
                         }
                     };
-                    out.push(Child { node, points });
+                    out.push(Child {
+                        node,
+                        points: points.clone(),
+                    });
                 }
                 Kind::Refine {
                     children: out,
-                    corners,
+                    corners: corners.clone(),
                 }
             }
         };

@@ -107,9 +107,10 @@ impl LimitSurface {
         let subdivider = Subdivider::new(cage, scheme, 0, options)?;
         let level = &subdivider.levels[0];
         let holes = mesh_holes(cage, options)?;
+        let expansions = local::Expansions::default();
         let faces: Vec<FaceGraph> = (0..cage.face_count())
             .into_par_iter()
-            .map(|f| local::face_graph(scheme, level, f, options))
+            .map(|f| local::face_graph(scheme, level, f, options, &expansions))
             .collect::<Result<_>>()?;
         let largest = faces.iter().map(FaceGraph::largest).max().unwrap_or(0);
         Ok(LimitSurface {

@@ -117,3 +117,88 @@ fn derivatives_match_finite_differences_on_sub_faces() {
         }
     }
 }
+
+/// A torus of `n` × `n` quads with every fourth quad split into two
+/// triangles: extraordinary vertices in a repeating pattern.
+fn split_torus(n: usize) -> Mesh {
+    let torus = shapes::torus(n, n);
+    let mut faces: Vec<Vec<u32>> = Vec::new();
+    for f in 0..torus.face_count() {
+        let q = torus.face(f);
+        match f % 4 {
+            0 => faces.extend([vec![q[0], q[1], q[2]], vec![q[0], q[2], q[3]]]),
+            _ => faces.push(q.to_vec()),
+        }
+    }
+    Mesh::from_polygons(torus.positions().to_vec(), faces).unwrap()
+}
+
+/// Faces whose graphs meet the same small mesh share its expansion, and
+/// every sample is the same bits as with each face expanding its own.
+#[test]
+fn faces_share_the_expansions_of_alike_neighbourhoods() {
+    let cage = split_torus(12);
+    let mut options = SubdivisionOptions::new(NakedEdges::Smooth);
+    // A semi-sharp crease and a corner, whose sharpness is in the nodes' identity.
+    let q = cage.face(5);
+    options.creases.push(([q[0], q[1]], 1.5));
+    options.corners.push((cage.face(40)[2], 2.0));
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        let cage = match scheme {
+            Scheme::CatmullClark => cage.clone(),
+            Scheme::Loop => crate::mesh::triangulate::triangulate(&cage).unwrap().mesh,
+        };
+        let shared = LimitSurface::new(&cage, scheme, &options).unwrap();
+        let subdivider = Subdivider::new(&cage, scheme, 0, &options).unwrap();
+        let level = &subdivider.levels[0];
+        let expansions = local::Expansions::default();
+        let mut node_count = 0;
+        for f in 0..cage.face_count() {
+            let graph = local::face_graph(scheme, level, f, &options, &expansions).unwrap();
+            node_count += graph.nodes.len();
+        }
+        assert!(
+            expansions.len() * 4 < node_count,
+            "{scheme:?}: {} expansions for {node_count} nodes",
+            expansions.len()
+        );
+        let mut alone = shared.clone();
+        alone.faces = (0..cage.face_count())
+            .map(|f| {
+                let own = local::Expansions::default();
+                local::face_graph(scheme, level, f, &options, &own).unwrap()
+            })
+            .collect();
+        let (mut faces, mut uvs) = (Vec::new(), Vec::new());
+        for f in 0..cage.face_count() as u32 {
+            for (u, v) in [
+                (0.0, 0.0),
+                (0.1, 0.3),
+                (0.25, 0.25),
+                (0.5, 0.0),
+                (1e-9, 0.4),
+            ] {
+                faces.push(f);
+                uvs.extend([u, v]);
+            }
+        }
+        let n = faces.len();
+        let evaluate = |surface: &LimitSurface| {
+            let (mut p, mut du, mut dv) = (
+                vec![DVec3::ZERO; n],
+                vec![DVec3::ZERO; n],
+                vec![DVec3::ZERO; n],
+            );
+            surface
+                .evaluate(&faces, &uvs, &mut p, Some(&mut du), Some(&mut dv))
+                .unwrap();
+            [p, du, dv].map(|values| {
+                values
+                    .iter()
+                    .map(|q| q.to_array().map(f64::to_bits))
+                    .collect::<Vec<_>>()
+            })
+        };
+        assert!(evaluate(&shared) == evaluate(&alone), "{scheme:?}");
+    }
+}
