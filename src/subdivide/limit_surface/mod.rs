@@ -83,7 +83,26 @@ pub struct LimitSurface {
 }
 
 /// Two buffers of local points for one evaluation at a time.
-type Scratch = [Vec<DVec3>; 2];
+/// A task's working points: the points of the node a walk is at and of
+/// the child it goes to, and the points of the children of the last
+/// sample's face's root, which the next samples of that face reuse (as
+/// samples face by face and the closest points' steps come).
+#[derive(Default)]
+struct Scratch {
+    here: Vec<DVec3>,
+    next: Vec<DVec3>,
+    face: usize,
+    first_children: Vec<FirstChild>,
+}
+
+/// The points of a child of the face's root node, relative to `origin`,
+/// when made.
+#[derive(Default)]
+struct FirstChild {
+    made: bool,
+    origin: DVec3,
+    points: Vec<DVec3>,
+}
 
 /// One evaluated sample: position, d/du, d/dv.
 type Sample = [DVec3; 3];
@@ -237,10 +256,7 @@ impl LimitSurface {
         tasks
             .into_par_iter()
             .for_each(|(chunk, ((p, mut du), mut dv))| {
-                let mut scratch = [
-                    vec![DVec3::ZERO; self.largest],
-                    vec![DVec3::ZERO; self.largest],
-                ];
+                let mut scratch = self.scratch();
                 for k in 0..p.len() {
                     let i = chunk * CHUNK + k;
                     let (u, v) = (uvs[2 * i], uvs[2 * i + 1]);
@@ -259,10 +275,12 @@ impl LimitSurface {
     }
 
     fn scratch(&self) -> Scratch {
-        [
-            vec![DVec3::ZERO; self.largest],
-            vec![DVec3::ZERO; self.largest],
-        ]
+        Scratch {
+            here: vec![DVec3::ZERO; self.largest],
+            next: vec![DVec3::ZERO; self.largest],
+            face: usize::MAX,
+            first_children: Vec::new(),
+        }
     }
 
     /// One sample, its domain checked.
@@ -275,7 +293,18 @@ impl LimitSurface {
         scratch: &mut Scratch,
     ) -> Sample {
         let graph = &self.faces[f];
-        let [mut here, mut next] = std::mem::take(scratch);
+        if scratch.face != f {
+            scratch.face = f;
+            for first in &mut scratch.first_children {
+                first.made = false;
+            }
+        }
+        let Scratch {
+            mut here,
+            mut next,
+            face,
+            mut first_children,
+        } = std::mem::take(scratch);
         // Points are kept relative to `origin`, moved to the first point at
         // every level: their differences, which shrink by half per level,
         // keep their full precision however deep the walk goes.
@@ -332,13 +361,30 @@ impl LimitSurface {
                         break;
                     };
                     let rows = child.points.rows();
-                    for (r, slot) in next.iter_mut().enumerate().take(rows) {
-                        *slot = child.points.apply(r, &here);
+                    if depth == 0 && first_children.len() < children.len() {
+                        first_children.resize_with(children.len(), FirstChild::default);
                     }
-                    let shift = next[0];
-                    origin += shift;
-                    for slot in next.iter_mut().take(rows) {
-                        *slot -= shift;
+                    match first_children.get_mut(j).filter(|_| depth == 0) {
+                        // The same points, made the same way for a sample before.
+                        Some(first) if first.made => {
+                            next[..rows].copy_from_slice(&first.points);
+                            origin = first.origin;
+                        }
+                        first => {
+                            for (r, slot) in next.iter_mut().enumerate().take(rows) {
+                                *slot = child.points.apply(r, &here);
+                            }
+                            let shift = next[0];
+                            origin += shift;
+                            for slot in next.iter_mut().take(rows) {
+                                *slot -= shift;
+                            }
+                            if let Some(first) = first {
+                                first.points.clear();
+                                first.points.extend_from_slice(&next[..rows]);
+                                (first.made, first.origin) = (true, origin);
+                            }
+                        }
                     }
                     std::mem::swap(&mut here, &mut next);
                     (s, t) = (s2, t2);
@@ -346,7 +392,12 @@ impl LimitSurface {
                 }
             }
         }
-        *scratch = [here, next];
+        *scratch = Scratch {
+            here,
+            next,
+            face,
+            first_children,
+        };
         let [p, ps, pt] = result.unwrap_or([DVec3::NAN; 3]);
         let [a, b, c, d] = frame;
         [origin + p, ps * a + pt * b, ps * c + pt * d]

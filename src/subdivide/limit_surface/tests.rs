@@ -202,3 +202,60 @@ fn faces_share_the_expansions_of_alike_neighbourhoods() {
         assert!(evaluate(&shared) == evaluate(&alone), "{scheme:?}");
     }
 }
+
+/// Samples evaluated together, where a face's samples reuse the points of
+/// its root's children, are the same bits as each evaluated alone: face by
+/// face, faces interleaved, and the children in any order.
+#[test]
+fn samples_together_equal_samples_alone() {
+    let cage = split_torus(6);
+    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+        let cage = match scheme {
+            Scheme::CatmullClark => cage.clone(),
+            Scheme::Loop => crate::mesh::triangulate::triangulate(&cage).unwrap().mesh,
+        };
+        let options = SubdivisionOptions::new(NakedEdges::Smooth);
+        let surface = LimitSurface::new(&cage, scheme, &options).unwrap();
+        let parameters = [(0.1, 0.2), (0.4, 0.05), (0.05, 0.4), (0.2, 0.1), (0.3, 0.3)];
+        let (mut faces, mut uvs) = (Vec::new(), Vec::new());
+        // Face by face, then two faces interleaved.
+        for f in 0..cage.face_count() as u32 {
+            for (u, v) in parameters {
+                faces.push(f);
+                uvs.extend([u, v]);
+            }
+        }
+        for f in 0..cage.face_count() as u32 - 1 {
+            for (i, (u, v)) in parameters.into_iter().enumerate() {
+                faces.push(f + (i % 2) as u32);
+                uvs.extend([u, v]);
+            }
+        }
+        let n = faces.len();
+        let (mut p, mut du, mut dv) = (
+            vec![DVec3::ZERO; n],
+            vec![DVec3::ZERO; n],
+            vec![DVec3::ZERO; n],
+        );
+        surface
+            .evaluate(&faces, &uvs, &mut p, Some(&mut du), Some(&mut dv))
+            .unwrap();
+        let bits = |q: DVec3| q.to_array().map(f64::to_bits);
+        for i in 0..n {
+            let (mut q, mut qu, mut qv) = ([DVec3::ZERO], [DVec3::ZERO], [DVec3::ZERO]);
+            surface
+                .evaluate(
+                    &faces[i..=i],
+                    &uvs[2 * i..2 * i + 2],
+                    &mut q,
+                    Some(&mut qu),
+                    Some(&mut qv),
+                )
+                .unwrap();
+            let what = format!("{scheme:?}: sample {i}, face {}", faces[i]);
+            assert_eq!(bits(p[i]), bits(q[0]), "{what}");
+            assert_eq!(bits(du[i]), bits(qu[0]), "{what}");
+            assert_eq!(bits(dv[i]), bits(qv[0]), "{what}");
+        }
+    }
+}
