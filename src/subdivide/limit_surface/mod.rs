@@ -84,16 +84,22 @@ pub struct LimitSurface {
 
 /// Two buffers of local points for one evaluation at a time.
 /// A task's working points: the points of the node a walk is at and of
-/// the child it goes to, and the points of the children of the last
-/// sample's face's root, which the next samples of that face reuse (as
-/// samples face by face and the closest points' steps come).
+/// the child it goes to, and what the last sample's face's root gave (the
+/// points of its children, or its patch's control points), which the next
+/// samples of that face reuse (as samples face by face and the closest
+/// points' steps come).
 #[derive(Default)]
 struct Scratch {
     here: Vec<DVec3>,
     next: Vec<DVec3>,
     face: usize,
     first_children: Vec<FirstChild>,
+    /// The control points of the face's root, when it is a patch.
+    root_control: Option<Control>,
 }
+
+/// A patch's control points, relative to its walk's origin (Loop's first 12).
+type Control = [DVec3; 16];
 
 /// The points of a child of the face's root node, relative to `origin`,
 /// when made.
@@ -280,6 +286,7 @@ impl LimitSurface {
             next: vec![DVec3::ZERO; self.largest],
             face: usize::MAX,
             first_children: Vec::new(),
+            root_control: None,
         }
     }
 
@@ -295,6 +302,7 @@ impl LimitSurface {
         let graph = &self.faces[f];
         if scratch.face != f {
             scratch.face = f;
+            scratch.root_control = None;
             for first in &mut scratch.first_children {
                 first.made = false;
             }
@@ -304,6 +312,7 @@ impl LimitSurface {
             mut next,
             face,
             mut first_children,
+            mut root_control,
         } = std::mem::take(scratch);
         // Points are kept relative to `origin`, moved to the first point at
         // every level: their differences, which shrink by half per level,
@@ -314,8 +323,10 @@ impl LimitSurface {
             .get(origin_index)
             .copied()
             .unwrap_or_default();
-        for (slot, &c) in here.iter_mut().zip(&graph.vertices) {
-            *slot = self.cage_positions[c as usize] - origin;
+        if root_control.is_none() {
+            for (slot, &c) in here.iter_mut().zip(&graph.vertices) {
+                *slot = self.cage_positions[c as usize] - origin;
+            }
         }
         // (Pu, Pv) = (a Ps + b Pt, c Ps + d Pt) for the node's own (s, t).
         let mut frame = [1.0, 0.0, 0.0, 1.0];
@@ -326,7 +337,11 @@ impl LimitSurface {
             let current = &graph.nodes[node];
             match &current.kind {
                 Kind::Patch(rows) => {
-                    result = Some(patch(self.scheme, rows, &here, s, t));
+                    let control = match depth {
+                        0 => *root_control.get_or_insert_with(|| control_points(rows, &here)),
+                        _ => control_points(rows, &here),
+                    };
+                    result = Some(patch(self.scheme, &control, s, t));
                     break;
                 }
                 Kind::Refine { children, corners } => {
@@ -397,6 +412,7 @@ impl LimitSurface {
             next,
             face,
             first_children,
+            root_control,
         };
         let [p, ps, pt] = result.unwrap_or([DVec3::NAN; 3]);
         let [a, b, c, d] = frame;
@@ -414,16 +430,24 @@ fn tile_width(n: usize) -> usize {
 }
 
 /// Position and (s, t) derivatives of a regular patch.
-fn patch(scheme: Scheme, rows: &[patches::Row], points: &[DVec3], s: f64, t: f64) -> Sample {
+/// The control points of a patch of `rows` on `points`.
+fn control_points(rows: &[patches::Row], points: &[DVec3]) -> Control {
+    let mut control = [DVec3::ZERO; 16];
+    for (p, row) in control.iter_mut().zip(rows) {
+        for k in 0..row.len as usize {
+            *p += points[row.points[k] as usize] * row.weights[k];
+        }
+    }
+    control
+}
+
+/// A patch's position and derivatives at `(s, t)` from its control points.
+fn patch(scheme: Scheme, control: &Control, s: f64, t: f64) -> Sample {
     let mut out = [DVec3::ZERO; 3];
     let mut add = |weights: &[[f64; 16]; 3], n: usize| {
-        for (i, row) in rows.iter().enumerate().take(n) {
-            let mut p = DVec3::ZERO;
-            for k in 0..row.len as usize {
-                p += points[row.points[k] as usize] * row.weights[k];
-            }
+        for (i, p) in control.iter().enumerate().take(n) {
             for (o, w) in out.iter_mut().zip(weights) {
-                *o += p * w[i];
+                *o += *p * w[i];
             }
         }
     };

@@ -208,11 +208,16 @@ fn faces_share_the_expansions_of_alike_neighbourhoods() {
 /// face, faces interleaved, and the children in any order.
 #[test]
 fn samples_together_equal_samples_alone() {
-    let cage = split_torus(6);
-    for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+    // Faces whose root is refined (beside the split quads) and faces whose
+    // root is a patch (all of the plain torus's).
+    let cages = [split_torus(6), shapes::torus(5, 6)];
+    for (cage, scheme) in cages
+        .iter()
+        .flat_map(|cage| [Scheme::CatmullClark, Scheme::Loop].map(|scheme| (cage, scheme)))
+    {
         let cage = match scheme {
             Scheme::CatmullClark => cage.clone(),
-            Scheme::Loop => crate::mesh::triangulate::triangulate(&cage).unwrap().mesh,
+            Scheme::Loop => crate::mesh::triangulate::triangulate(cage).unwrap().mesh,
         };
         let options = SubdivisionOptions::new(NakedEdges::Smooth);
         let surface = LimitSurface::new(&cage, scheme, &options).unwrap();
