@@ -12,7 +12,9 @@
 //! edges, creases, Chaikin, the triangle rule, non-manifold tags). Nodes
 //! with the same small mesh are the same node, so the chain of faces around
 //! an extraordinary vertex closes into a loop after a few levels, and
-//! evaluation follows it as deep as a sample needs.
+//! evaluation follows it as deep as a sample needs. A node's expansion
+//! depends on its small mesh alone, so it is made once for all the faces
+//! whose graphs meet that small mesh, and they share its weights.
 
 use std::collections::HashMap;
 use std::sync::{Arc, Mutex};

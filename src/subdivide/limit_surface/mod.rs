@@ -20,10 +20,12 @@
 //! (Loop) patch of its 16 or 12 control points (`patches.rs`, `basis.rs`;
 //! boundary and infinitely sharp crease patches with phantom points); any
 //! other face is refined one level with the subdivider's own rules, and each
-//! child is again a patch or refined further. Evaluation walks down to the
+//! child is again a patch or refined further (faces with alike
+//! neighbourhoods share these refinements). Evaluation walks down to the
 //! patch that holds the sample, applying each level's weights to a few dozen
 //! points, and evaluates the patch: the result is the limit surface to
-//! rounding. Exactly at an extraordinary vertex or a crease end the limit
+//! rounding. Consecutive samples of one face reuse what the walk made at
+//! its root. Exactly at an extraordinary vertex or a crease end the limit
 //! masks of [`super::Limit`] give the point and its tangents. A sample at a
 //! corner, or within 2⁻⁶⁰ of the face size of an irregular point, is
 //! followed 60 levels down and takes the limit of the nearest corner there,
