@@ -182,24 +182,10 @@ fn faces_share_the_expansions_of_alike_neighbourhoods() {
                 uvs.extend([u, v]);
             }
         }
-        let n = faces.len();
-        let evaluate = |surface: &LimitSurface| {
-            let (mut p, mut du, mut dv) = (
-                vec![DVec3::ZERO; n],
-                vec![DVec3::ZERO; n],
-                vec![DVec3::ZERO; n],
-            );
-            surface
-                .evaluate(&faces, &uvs, &mut p, Some(&mut du), Some(&mut dv))
-                .unwrap();
-            [p, du, dv].map(|values| {
-                values
-                    .iter()
-                    .map(|q| q.to_array().map(f64::to_bits))
-                    .collect::<Vec<_>>()
-            })
-        };
-        assert!(evaluate(&shared) == evaluate(&alone), "{scheme:?}");
+        assert!(
+            sample_bits(&shared, &faces, &uvs) == sample_bits(&alone, &faces, &uvs),
+            "{scheme:?}"
+        );
     }
 }
 
@@ -236,31 +222,32 @@ fn samples_together_equal_samples_alone() {
                 uvs.extend([u, v]);
             }
         }
-        let n = faces.len();
-        let (mut p, mut du, mut dv) = (
-            vec![DVec3::ZERO; n],
-            vec![DVec3::ZERO; n],
-            vec![DVec3::ZERO; n],
-        );
-        surface
-            .evaluate(&faces, &uvs, &mut p, Some(&mut du), Some(&mut dv))
-            .unwrap();
-        let bits = |q: DVec3| q.to_array().map(f64::to_bits);
-        for i in 0..n {
-            let (mut q, mut qu, mut qv) = ([DVec3::ZERO], [DVec3::ZERO], [DVec3::ZERO]);
-            surface
-                .evaluate(
-                    &faces[i..=i],
-                    &uvs[2 * i..2 * i + 2],
-                    &mut q,
-                    Some(&mut qu),
-                    Some(&mut qv),
-                )
-                .unwrap();
+        let together = sample_bits(&surface, &faces, &uvs);
+        for i in 0..faces.len() {
+            let alone = sample_bits(&surface, &faces[i..=i], &uvs[2 * i..2 * i + 2]);
             let what = format!("{scheme:?}: sample {i}, face {}", faces[i]);
-            assert_eq!(bits(p[i]), bits(q[0]), "{what}");
-            assert_eq!(bits(du[i]), bits(qu[0]), "{what}");
-            assert_eq!(bits(dv[i]), bits(qv[0]), "{what}");
+            for (values, alone) in together.iter().zip(&alone) {
+                assert_eq!(values[i], alone[0], "{what}");
+            }
         }
     }
+}
+
+/// The bits of the positions, first and second derivatives at the samples.
+fn sample_bits(surface: &LimitSurface, faces: &[u32], uvs: &[f64]) -> [Vec<[u64; 3]>; 3] {
+    let n = faces.len();
+    let (mut p, mut du, mut dv) = (
+        vec![DVec3::ZERO; n],
+        vec![DVec3::ZERO; n],
+        vec![DVec3::ZERO; n],
+    );
+    surface
+        .evaluate(faces, uvs, &mut p, Some(&mut du), Some(&mut dv))
+        .unwrap();
+    [p, du, dv].map(|values| {
+        values
+            .iter()
+            .map(|q| q.to_array().map(f64::to_bits))
+            .collect()
+    })
 }
