@@ -191,6 +191,30 @@ pub(crate) fn fill_by_offsets<T: Default + Clone + Send + Sync>(
     Ok(values)
 }
 
+/// For each item i, blocks of `block` items in parallel: `each(i, start,
+/// part)` fills item i's part of `values`, `values[offsets[i]..offsets[i +
+/// 1]]` counted from `offsets[0]` (`start` is `offsets[i]`), and returns
+/// `singles[i]`.
+pub(crate) fn fill_groups<T: Send, S: Send>(
+    values: &mut [T],
+    offsets: &[u32],
+    singles: &mut [S],
+    block: usize,
+    each: impl Fn(usize, usize, &mut [T]) -> S + Sync,
+) {
+    split_by_offsets(values, offsets, block)
+        .into_par_iter()
+        .zip(singles.par_chunks_mut(block))
+        .for_each(|((items, part), singles)| {
+            let base = offsets[items.start] as usize;
+            for (i, single) in items.zip(singles) {
+                let start = offsets[i] as usize;
+                let end = offsets[i + 1] as usize;
+                *single = each(i, start, &mut part[start - base..end - base]);
+            }
+        });
+}
+
 /// Splits `values` into the parts owned by each block of `block` items,
 /// item i owning `values[offsets[i]..offsets[i + 1]]`; each part comes with
 /// its items.

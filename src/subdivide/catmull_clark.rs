@@ -22,7 +22,7 @@ use super::gathers::{
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
-use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets};
+use crate::buffers::{fill_groups, fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -207,55 +207,46 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
     let face_base = parent_vertices + parent_edges;
     // Around parent face f: the faces made in it, then the point of its
     // own face point, whose ring are those faces.
-    split_by_offsets(face_points, &groups.face_faces, CHUNK)
-        .into_par_iter()
-        .zip(at_faces.par_chunks_mut(CHUNK))
-        .for_each(|((parents, face_points), vertex_points)| {
-            let first = groups.face_faces[parents.start] as usize;
-            for f in parents.clone() {
-                let faces = groups.face_faces[f] as usize..groups.face_faces[f + 1] as usize;
-                for g in faces {
-                    face_points[g - first] = grouped_face_point(level, points, g);
-                }
-                let u = face_base + f;
-                vertex_points[f - parents.start] =
-                    grouped_vertex_point(level, points, face_points, first, u);
+    fill_groups(
+        face_points,
+        &groups.face_faces,
+        at_faces,
+        CHUNK,
+        |f, first, face_points| {
+            for (k, out) in face_points.iter_mut().enumerate() {
+                *out = grouped_face_point(level, points, first + k);
             }
-        });
+            grouped_vertex_point(level, points, face_points, first, face_base + f)
+        },
+    );
     let face_points = &*face_points;
     // Around parent edge m: the edges inside its faces, then its point's point.
     let inside_base = 2 * parent_edges;
-    split_by_offsets(inside, &groups.edge_inside, CHUNK)
-        .into_par_iter()
-        .zip(at_edges.par_chunks_mut(CHUNK))
-        .for_each(|((parents, inside), vertex_points)| {
-            let first = groups.edge_inside[parents.start] as usize;
-            for m in parents.clone() {
-                let slots = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-                let outs = &mut inside[slots.start - first..slots.end - first];
-                edge_points_into(level, inside_base + slots.start, outs, |edge| {
-                    edge_point_of(edge, points, face_points)
-                });
-                vertex_points[m - parents.start] =
-                    grouped_vertex_point(level, points, face_points, 0, parent_vertices + m);
-            }
-        });
+    fill_groups(
+        inside,
+        &groups.edge_inside,
+        at_edges,
+        CHUNK,
+        |m, first, outs| {
+            edge_points_into(level, inside_base + first, outs, |edge| {
+                edge_point_of(edge, points, face_points)
+            });
+            grouped_vertex_point(level, points, face_points, 0, parent_vertices + m)
+        },
+    );
     // Around parent vertex v: the halves of its edges at v, then its point.
-    split_by_offsets(halves, &groups.vertex_halves, CHUNK)
-        .into_par_iter()
-        .zip(at_vertices.par_chunks_mut(CHUNK))
-        .for_each(|((parents, halves), vertex_points)| {
-            let first = groups.vertex_halves[parents.start] as usize;
-            for v in parents.clone() {
-                let slots = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-                let outs = &mut halves[slots.start - first..slots.end - first];
-                edge_points_into(level, slots.start, outs, |edge| {
-                    edge_point_of(edge, points, face_points)
-                });
-                vertex_points[v - parents.start] =
-                    grouped_vertex_point(level, points, face_points, 0, v);
-            }
-        });
+    fill_groups(
+        halves,
+        &groups.vertex_halves,
+        at_vertices,
+        CHUNK,
+        |v, first, outs| {
+            edge_points_into(level, first, outs, |edge| {
+                edge_point_of(edge, points, face_points)
+            });
+            grouped_vertex_point(level, points, face_points, 0, v)
+        },
+    );
 }
 
 /// A face point of [`apply_grouped`]: read straight from a plan.

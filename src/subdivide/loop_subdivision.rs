@@ -21,7 +21,7 @@ use super::gathers::{
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::{loop_smooth_weights, VertexRule};
-use crate::buffers::{fresh_zeroed, par_groups, split_by_offsets, try_vec};
+use crate::buffers::{fill_groups, fresh_zeroed, par_groups, try_vec};
 use crate::error::Result;
 
 const CHUNK: usize = 2048;
@@ -162,47 +162,34 @@ fn around_parents(
     let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
     let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
     let inside_base = 2 * parent_edges;
-    split_by_offsets(inside, edge_inside, CHUNK)
-        .into_par_iter()
-        .zip(at_edges.par_chunks_mut(CHUNK))
-        .for_each(|((parents, inside), vertex_points)| {
-            let first = edge_inside[parents.start] as usize;
-            for m in parents.clone() {
-                vertex_points[m - parents.start] =
-                    grouped_vertex_point(level, points, parent_vertices + m);
-                let slots = edge_inside[m] as usize..edge_inside[m + 1] as usize;
-                let outs = &mut inside[slots.start - first..slots.end - first];
-                edge_points_into(level, inside_base + slots.start, outs, |edge| {
-                    edge_point_of(edge, points)
-                });
-            }
+    fill_groups(inside, edge_inside, at_edges, CHUNK, |m, first, outs| {
+        edge_points_into(level, inside_base + first, outs, |edge| {
+            edge_point_of(edge, points)
         });
-    split_by_offsets(halves, vertex_halves, CHUNK)
-        .into_par_iter()
-        .zip(at_vertices.par_chunks_mut(CHUNK))
-        .for_each(|((parents, halves), vertex_points)| {
-            let first = vertex_halves[parents.start] as usize;
-            for v in parents.clone() {
-                let slots = vertex_halves[v] as usize..vertex_halves[v + 1] as usize;
-                let outs = &mut halves[slots.start - first..slots.end - first];
-                let walked = level.as_loop_refined().and_then(|refined| {
-                    let edges = refined.parent.connectivity.vertex_edges(v);
-                    Some((edges, refined.slot_wings(v)?))
-                });
-                match walked {
-                    Some((edges, wings)) => {
-                        let point = |e: u32| parent_vertices as u32 + e;
-                        for ((out, &e), [c, d]) in outs.iter_mut().zip(edges).zip(wings) {
-                            *out = edge_point_of([v as u32, point(e), c, d], points);
-                        }
+        grouped_vertex_point(level, points, parent_vertices + m)
+    });
+    fill_groups(
+        halves,
+        vertex_halves,
+        at_vertices,
+        CHUNK,
+        |v, first, outs| {
+            let walked = level.as_loop_refined().and_then(|refined| {
+                let edges = refined.parent.connectivity.vertex_edges(v);
+                Some((edges, refined.slot_wings(v)?))
+            });
+            match walked {
+                Some((edges, wings)) => {
+                    let point = |e: u32| parent_vertices as u32 + e;
+                    for ((out, &e), [c, d]) in outs.iter_mut().zip(edges).zip(wings) {
+                        *out = edge_point_of([v as u32, point(e), c, d], points);
                     }
-                    None => edge_points_into(level, slots.start, outs, |edge| {
-                        edge_point_of(edge, points)
-                    }),
                 }
-                vertex_points[v - parents.start] = grouped_vertex_point(level, points, v);
+                None => edge_points_into(level, first, outs, |edge| edge_point_of(edge, points)),
             }
-        });
+            grouped_vertex_point(level, points, v)
+        },
+    );
 }
 
 /// A vertex point of [`around_parents`]: read straight from a plan.
