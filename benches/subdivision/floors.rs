@@ -18,6 +18,12 @@ pub fn fresh(bytes: usize, huge_pages: bool) {
     black_box(&buffer);
 }
 
+/// A buffer of `bytes` already written once: memory in use, whose pages
+/// are faulted in.
+pub fn written(bytes: usize) -> Vec<u8> {
+    vec![1u8; bytes]
+}
+
 /// Writes `buffer` over, every byte, as a re-evaluation into a buffer the
 /// caller keeps writes its output.
 pub fn warm(buffer: &mut [u8]) {

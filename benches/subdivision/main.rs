@@ -125,6 +125,31 @@ fn threads() -> usize {
     std::thread::available_parallelism().map_or(1, |n| n.get())
 }
 
+/// A benchmark's setup, made the first time the benchmark runs and kept
+/// from sample to sample: criterion calls a benchmark's closure once per
+/// sample, so memory allocated inside it would be fresh (its pages faulted
+/// in again) in the first call of every sample. Made lazily, setups run
+/// only when the filter selects the benchmark.
+struct Kept<T, F: FnOnce() -> T> {
+    value: Option<T>,
+    make: Option<F>,
+}
+
+impl<T, F: FnOnce() -> T> Kept<T, F> {
+    fn new(make: F) -> Self {
+        Kept {
+            value: None,
+            make: Some(make),
+        }
+    }
+
+    fn get(&mut self) -> &mut T {
+        let make = &mut self.make;
+        self.value
+            .get_or_insert_with(|| (make.take().expect("made once"))())
+    }
+}
+
 type Group<'a> = criterion::BenchmarkGroup<'a, criterion::measurement::WallTime>;
 
 fn run_benchmarks(
@@ -150,14 +175,14 @@ fn run_benchmarks(
             group.bench_function(id(&format!("weft-{threads}t")), |b| {
                 b.iter(|| all.install(|| black_box(weft_one_shot(case, levels))))
             });
-            // A host's own buffers, kept from call to call.
-            let into = |b: &mut criterion::Bencher<'_>, pool: &ThreadPool| {
-                let is_loop = case.scheme == Scheme::Loop;
-                let mut buffers = abi::Buffers::new(&case.handle, is_loop, levels);
+            // A host's own buffers, kept from call to call (and from
+            // sample to sample: see `Kept`).
+            let is_loop = case.scheme == Scheme::Loop;
+            let mut buffers = Kept::new(|| abi::Buffers::new(&case.handle, is_loop, levels));
+            let mut into = |b: &mut criterion::Bencher<'_>, pool: &ThreadPool| {
+                let buffers = buffers.get();
                 b.iter(|| {
-                    pool.install(|| {
-                        abi::subdivide_into(&case.handle, is_loop, levels, &mut buffers)
-                    })
+                    pool.install(|| abi::subdivide_into(&case.handle, is_loop, levels, buffers))
                 })
             };
             group.bench_function(id("into-1t"), |b| into(b, one));
@@ -171,9 +196,10 @@ fn run_benchmarks(
             let bytes = weft_one_shot(case, levels).output_bytes();
             group.bench_function(id("floor-4k"), |b| b.iter(|| floors::fresh(bytes, false)));
             group.bench_function(id("floor-huge"), |b| b.iter(|| floors::fresh(bytes, true)));
+            let mut buffer = Kept::new(|| floors::written(bytes));
             group.bench_function(id("floor-warm"), |b| {
-                let mut buffer = vec![0u8; bytes];
-                b.iter(|| floors::warm(&mut buffer))
+                let buffer = buffer.get();
+                b.iter(|| floors::warm(buffer))
             });
         }
         if REEVALUATED.contains(&case.name) {
@@ -201,19 +227,24 @@ fn reevaluation(
     // Moved cage positions, as a slider would give; setups run only when
     // the filter selects the benchmark.
     let moved: Vec<DVec3> = case.mesh.positions().iter().map(|p| *p * 1.01).collect();
-    let evaluate = |b: &mut criterion::Bencher<'_>, pool: &ThreadPool| {
+    // The refiner and its output buffer, kept from sample to sample.
+    let mut refined = Kept::new(|| {
         let refiner = build(case);
-        let mut out = vec![DVec3::ZERO; refiner.vertex_count()];
-        b.iter(|| pool.install(|| refiner.evaluate(&moved, &mut out).unwrap()))
+        let out = vec![DVec3::ZERO; refiner.vertex_count()];
+        (refiner, out)
+    });
+    let mut evaluate = |b: &mut criterion::Bencher<'_>, pool: &ThreadPool| {
+        let (refiner, out) = refined.get();
+        b.iter(|| pool.install(|| refiner.evaluate(&moved, out).unwrap()))
     };
     group.bench_function(id("refiner-evaluate-1t"), |b| evaluate(b, &pool(1)));
     group.bench_function(id(&format!("refiner-evaluate-{threads}t")), |b| {
         evaluate(b, all)
     });
-    let positions_bytes = 24 * build(case).vertex_count();
+    let mut buffer = Kept::new(|| floors::written(24 * build(case).vertex_count()));
     group.bench_function(id("evaluate-floor-warm"), |b| {
-        let mut buffer = vec![0u8; positions_bytes];
-        b.iter(|| floors::warm(&mut buffer))
+        let buffer = buffer.get();
+        b.iter(|| floors::warm(buffer))
     });
     if !stencils {
         return;

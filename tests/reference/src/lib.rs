@@ -652,24 +652,53 @@ impl OsdRefiner {
         faces: &[u32],
         uvs: &[f64],
     ) -> Result<[Vec<f64>; 3], ReferenceError> {
+        let n = 3 * faces.len();
+        let (mut p, mut du, mut dv) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        self.bfr_evaluate_into(
+            cage_positions,
+            approx,
+            faces,
+            uvs,
+            [&mut p, &mut du, &mut dv],
+        )?;
+        Ok([p, du, dv])
+    }
+
+    /// [`OsdRefiner::bfr_evaluate`] into the caller's buffers (positions,
+    /// du, dv), as a host that evaluates again and again keeps them.
+    ///
+    /// # Errors
+    /// As [`OsdRefiner::bfr_evaluate`].
+    ///
+    /// # Panics
+    /// As [`OsdRefiner::bfr_evaluate`], and when a buffer does not hold 3
+    /// numbers per sample.
+    pub fn bfr_evaluate_into(
+        &self,
+        cage_positions: &[f64],
+        approx: (i32, i32),
+        faces: &[u32],
+        uvs: &[f64],
+        [p, du, dv]: [&mut [f64]; 3],
+    ) -> Result<(), ReferenceError> {
         assert_eq!(cage_positions.len(), 3 * self.cage_vertex_count);
         assert_eq!(uvs.len(), 2 * faces.len());
+        let n = 3 * faces.len();
+        assert!(p.len() == n && du.len() == n && dv.len() == n);
         if let Some(&f) = faces.iter().find(|&&f| f as usize >= self.cage_face_count) {
             return Err(ReferenceError(format!("face {f} is out of range")));
         }
-        let n = 3 * faces.len();
-        let (mut p, mut du, mut dv) = (vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         self.inner.bfr_evaluate(
             cage_positions,
             approx.0.clamp(0, 10),
             approx.1.clamp(0, 10),
             faces,
             uvs,
-            &mut p,
-            &mut du,
-            &mut dv,
+            p,
+            du,
+            dv,
         )?;
-        Ok([p, du, dv])
+        Ok(())
     }
 }
 
