@@ -313,16 +313,6 @@ fn planned_vertex_point(
 ) -> DVec3 {
     let ring = plan.ring(v);
     match plan.vertex_rules[v] {
-        // The regular vertex, unrolled: the same sums in the same order.
-        VertexRule::Smooth if ring.len() == 8 => {
-            let point = |u: u32| points[u as usize];
-            let face = |f: u32| face_points[f as usize - first_face];
-            let neighbours = DVec3::ZERO + point(ring[0]) + point(ring[1]);
-            let neighbours = neighbours + point(ring[2]) + point(ring[3]);
-            let faces = DVec3::ZERO + face(ring[4]) + face(ring[5]);
-            let faces = faces + face(ring[6]) + face(ring[7]);
-            smooth_vertex_point(points[v], neighbours, faces, 4)
-        }
         VertexRule::Smooth => {
             // Two sums side by side, each in ring order.
             let (neighbour_ring, face_ring) = ring.split_at(ring.len() / 2);

@@ -206,14 +206,6 @@ fn grouped_vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVe
 fn planned_vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
     let ring = plan.ring(v);
     match plan.vertex_rules[v] {
-        // The regular vertex, unrolled: the same sum in the same order.
-        VertexRule::Smooth if ring.len() == 6 => {
-            let point = |u: u32| points[u as usize];
-            let sum = DVec3::ZERO + point(ring[0]) + point(ring[1]) + point(ring[2]);
-            let sum = sum + point(ring[3]) + point(ring[4]) + point(ring[5]);
-            let (own, each) = loop_smooth_weights(6);
-            points[v] * own + sum * each
-        }
         VertexRule::Smooth => {
             let sum = ring
                 .iter()
