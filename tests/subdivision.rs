@@ -325,6 +325,62 @@ fn with_unused_vertices(cage: &Mesh, count: usize) -> Mesh {
     Mesh::from_polygons(positions, cage.faces()).unwrap()
 }
 
+/// `cage` with its vertices and faces numbered in a scrambled order (and
+/// each face's corners turned), so that no neighbourhood is numbered near
+/// its neighbours.
+fn scrambled(cage: &Mesh, seed: u64) -> Mesh {
+    let mut state = seed;
+    let mut next = move |n: usize| {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((state >> 33) % n as u64) as usize
+    };
+    let mut order: Vec<usize> = (0..cage.vertex_count()).collect();
+    for i in (1..order.len()).rev() {
+        order.swap(i, next(i + 1));
+    }
+    // Vertex `order[k]` becomes vertex k.
+    let mut renumbered = vec![0u32; order.len()];
+    for (k, &v) in order.iter().enumerate() {
+        renumbered[v] = k as u32;
+    }
+    let positions = order.iter().map(|&v| cage.positions()[v]).collect();
+    let mut faces: Vec<Vec<u32>> = cage
+        .faces()
+        .map(|face| face.iter().map(|&v| renumbered[v as usize]).collect())
+        .collect();
+    for i in (1..faces.len()).rev() {
+        let j = next(i + 1);
+        faces.swap(i, j);
+        let turn = next(faces[i].len());
+        faces[i].rotate_left(turn);
+    }
+    Mesh::from_polygons(positions, faces).unwrap()
+}
+
+#[test]
+fn refiner_evaluate_equals_one_shot_on_large_levels() {
+    // 4,608 quads: level 1 has 18,432 faces, enough for the refiner to
+    // make level 3 band by band; the seam's groups read the last band's
+    // face points, and in the scrambled copy most groups read far away.
+    let torus = shapes::torus(72, 64);
+    for cage in [torus.clone(), scrambled(&torus, 7)] {
+        let refiner = Refiner::new(&cage, Scheme::CatmullClark, 3, NakedEdges::Smooth).unwrap();
+        let moved: Vec<DVec3> = cage
+            .positions()
+            .iter()
+            .map(|p| *p * 1.5 + DVec3::new(p.y * p.z, 0.25, -p.x))
+            .collect();
+        let mut out = vec![DVec3::ZERO; refiner.vertex_count()];
+        refiner.evaluate(&moved, &mut out).unwrap();
+        let moved_cage = cage.with_positions(moved).unwrap();
+        let expected = subdivide(&moved_cage, Scheme::CatmullClark, 3, NakedEdges::Smooth).unwrap();
+        assert_eq!(out, expected.positions());
+        assert_eq!(refiner.face_indices(), expected.face_indices());
+    }
+}
+
 #[test]
 fn refiner_evaluate_equals_one_shot() {
     let cage = shapes::mixed_polygons();

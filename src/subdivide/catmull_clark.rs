@@ -22,7 +22,7 @@ use super::gathers::{
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
-use crate::buffers::{fill_groups, fresh_zeroed, par_groups, split_by_offsets};
+use crate::buffers::{fill_groups, fresh_zeroed, par_groups, par_map, split_by_offsets};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -196,7 +196,10 @@ fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
 /// [`apply_refined`], around the parent's faces, edges and vertices: each
 /// pass reads the points and face points near one parent element while
 /// they are in the cache, where a pass per kind of point reads them all
-/// again. The same gathers in the same order, so the same bits.
+/// again. A large plan goes band by band ([`plan_bands`]): the edge and
+/// vertex passes read the face points the face pass wrote tens of
+/// megabytes before, which a band reads back from the cache. The same
+/// gathers, so the same bits.
 fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
@@ -205,48 +208,262 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
     let (at_edges, at_faces) = rest.split_at_mut(parent_edges);
     let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
     let face_base = parent_vertices + parent_edges;
+    let inside_base = 2 * parent_edges;
     // Around parent face f: the faces made in it, then the point of its
     // own face point, whose ring are those faces.
-    fill_groups(
-        face_points,
-        &groups.face_faces,
-        at_faces,
-        CHUNK,
-        |f, first, face_points| {
-            for (k, out) in face_points.iter_mut().enumerate() {
-                *out = grouped_face_point(level, points, first + k);
-            }
-            grouped_vertex_point(level, points, face_points, first, face_base + f)
-        },
-    );
-    let face_points = &*face_points;
-    // Around parent edge m: the edges inside its faces, then its point's point.
-    let inside_base = 2 * parent_edges;
-    fill_groups(
-        inside,
-        &groups.edge_inside,
-        at_edges,
-        CHUNK,
-        |m, first, outs| {
-            edge_points_into(level, inside_base + first, outs, |edge| {
-                edge_point_of(edge, points, face_points)
-            });
-            grouped_vertex_point(level, points, face_points, 0, parent_vertices + m)
-        },
-    );
-    // Around parent vertex v: the halves of its edges at v, then its point.
-    fill_groups(
-        halves,
+    let around_face = |f: usize, first: usize, face_points: &mut [DVec3]| {
+        for (k, out) in face_points.iter_mut().enumerate() {
+            *out = grouped_face_point(level, points, first + k);
+        }
+        grouped_vertex_point(level, points, face_points, first, face_base + f)
+    };
+    let bands = level.as_plan().and_then(|plan| plan.bands.as_ref());
+    let Some(bands) = bands else {
+        fill_groups(
+            face_points,
+            &groups.face_faces,
+            at_faces,
+            CHUNK,
+            around_face,
+        );
+        let face_points = &*face_points;
+        // Around parent edge m: the edges inside its faces, then its point's point.
+        fill_groups(
+            inside,
+            &groups.edge_inside,
+            at_edges,
+            CHUNK,
+            |m, first, outs| {
+                around_edge(
+                    level,
+                    points,
+                    face_points,
+                    inside_base + first,
+                    outs,
+                    parent_vertices + m,
+                )
+            },
+        );
+        // Around parent vertex v: the halves of its edges at v, then its point.
+        fill_groups(
+            halves,
+            &groups.vertex_halves,
+            at_vertices,
+            CHUNK,
+            |v, first, outs| around_edge(level, points, face_points, first, outs, v),
+        );
+        return;
+    };
+    // Band by band: the face points of a band's parent faces, then the
+    // points around the parent edges and vertices whose reads they
+    // complete, while those face points are still in the cache.
+    let mut edge_runs = runs_of(&bands.edge_runs, &groups.edge_inside, inside, at_edges);
+    let mut vertex_runs = runs_of(
+        &bands.vertex_runs,
         &groups.vertex_halves,
+        halves,
         at_vertices,
-        CHUNK,
-        |v, first, outs| {
-            edge_points_into(level, first, outs, |edge| {
-                edge_point_of(edge, points, face_points)
-            });
-            grouped_vertex_point(level, points, face_points, 0, v)
-        },
     );
+    let mut faces_done = 0;
+    for (band, &faces_end) in bands.face_ends.iter().enumerate() {
+        let faces = faces_done..faces_end as usize;
+        let (values, singles) =
+            group_parts(&groups.face_faces, face_points, at_faces, faces.clone());
+        fill_groups(
+            values,
+            &groups.face_faces[faces.start..=faces.end],
+            singles,
+            CHUNK,
+            |i, first, part| around_face(faces.start + i, first, part),
+        );
+        faces_done = faces.end;
+        let face_points = &*face_points;
+        let (edges, vertices) = (
+            band_runs(&mut edge_runs, band),
+            band_runs(&mut vertex_runs, band),
+        );
+        let edge_tasks = edges.into_par_iter().map(|run| (run, true));
+        let vertex_tasks = vertices.into_par_iter().map(|run| (run, false));
+        edge_tasks.chain(vertex_tasks).for_each(|(run, at_edge)| {
+            let (offsets, base_edge, base_vertex) = match at_edge {
+                true => (&groups.edge_inside, inside_base, parent_vertices),
+                false => (&groups.vertex_halves, 0, 0),
+            };
+            let first_value = offsets[run.items.start] as usize;
+            for (i, single) in run.items.clone().zip(run.singles.iter_mut()) {
+                let values =
+                    offsets[i] as usize - first_value..offsets[i + 1] as usize - first_value;
+                *single = around_edge(
+                    level,
+                    points,
+                    face_points,
+                    base_edge + offsets[i] as usize,
+                    &mut run.values[values],
+                    base_vertex + i,
+                );
+            }
+        });
+    }
+}
+
+/// The edge points of a group of edges (from edge `first` of the level)
+/// and the vertex point of `v`, whose ring they surround.
+#[inline]
+fn around_edge(
+    level: &impl Gathers,
+    points: &[DVec3],
+    face_points: &[DVec3],
+    first: usize,
+    outs: &mut [DVec3],
+    v: usize,
+) -> DVec3 {
+    edge_points_into(level, first, outs, |edge| {
+        edge_point_of(edge, points, face_points)
+    });
+    grouped_vertex_point(level, points, face_points, 0, v)
+}
+
+/// The values and singles of the groups `items` (see [`fill_groups`]).
+fn group_parts<'a, T, S>(
+    offsets: &[u32],
+    values: &'a mut [T],
+    singles: &'a mut [S],
+    items: std::ops::Range<usize>,
+) -> (&'a mut [T], &'a mut [S]) {
+    let base = offsets[0] as usize;
+    let values =
+        &mut values[offsets[items.start] as usize - base..offsets[items.end] as usize - base];
+    (values, &mut singles[items])
+}
+
+/// A run of groups of one band, with the parts of the output they write.
+struct Run<'a> {
+    band: u32,
+    items: std::ops::Range<usize>,
+    values: &'a mut [DVec3],
+    singles: &'a mut [DVec3],
+}
+
+/// `runs` (see [`Bands`]) cut out of the groups' values and singles.
+fn runs_of<'a>(
+    runs: &[(u32, u32)],
+    offsets: &[u32],
+    mut values: &'a mut [DVec3],
+    mut singles: &'a mut [DVec3],
+) -> Vec<Option<Run<'a>>> {
+    let count = offsets.len() - 1;
+    let mut out = Vec::with_capacity(runs.len());
+    for (k, &(start, band)) in runs.iter().enumerate() {
+        let end = runs.get(k + 1).map_or(count, |&(next, _)| next as usize);
+        let items = start as usize..end;
+        let len = (offsets[end] - offsets[items.start]) as usize;
+        let (run_values, rest) = std::mem::take(&mut values).split_at_mut(len);
+        values = rest;
+        let (run_singles, rest) = std::mem::take(&mut singles).split_at_mut(items.len());
+        singles = rest;
+        out.push(Some(Run {
+            band,
+            items,
+            values: run_values,
+            singles: run_singles,
+        }));
+    }
+    out
+}
+
+/// The runs of `band`, taken out of `runs`.
+fn band_runs<'a>(runs: &mut [Option<Run<'a>>], band: usize) -> Vec<Run<'a>> {
+    runs.iter_mut()
+        .filter(|run| run.as_ref().is_some_and(|run| run.band as usize == band))
+        .filter_map(Option::take)
+        .collect()
+}
+
+/// Parent faces per band of [`apply_grouped`]: a band's face points and
+/// the points they read fill a few megabytes of the cache.
+const BAND_FACES: usize = 16_384;
+
+/// How a plan's [`apply_grouped`] goes band by band (see
+/// [`plan_bands`]).
+#[derive(Debug, Clone)]
+pub(crate) struct Bands {
+    /// The end of each band's parent faces.
+    face_ends: Vec<u32>,
+    /// The parent edges' groups in runs `(first group, band)`, in order,
+    /// each run one band's and at most [`CHUNK`] groups long.
+    edge_runs: Vec<(u32, u32)>,
+    /// The parent vertices' groups, the same way.
+    vertex_runs: Vec<(u32, u32)>,
+}
+
+/// The bands of a plan's [`apply_grouped`], for a level refined from
+/// more than [`BAND_FACES`] parent faces: the parent faces cut in bands,
+/// and each group around a parent edge or vertex in the first band whose
+/// face points hold every face point it reads.
+pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
+    let Some(groups) = &plan.parent else {
+        return Ok(None);
+    };
+    let (parent_vertices, parent_edges) = groups.parent_counts();
+    let parent_faces = groups.face_faces.len() - 1;
+    if parent_faces <= BAND_FACES {
+        return Ok(None);
+    }
+    let face_ends: Vec<u32> = (1..=parent_faces.div_ceil(BAND_FACES))
+        .map(|b| (b * BAND_FACES).min(parent_faces) as u32)
+        .collect();
+    let limits: Vec<u32> = face_ends
+        .iter()
+        .map(|&end| groups.face_faces[end as usize])
+        .collect();
+    // The band of a group that reads face points below `need`.
+    let band_of = |need: u32| limits.partition_point(|&limit| limit < need) as u32;
+    let ring_need = |v: usize| match plan.vertex_rules[v] {
+        VertexRule::Smooth => {
+            let ring = plan.ring(v);
+            ring[ring.len() / 2..]
+                .iter()
+                .map(|&f| f + 1)
+                .max()
+                .unwrap_or(0)
+        }
+        _ => 0,
+    };
+    let edges_need = |edges: &[[u32; 4]]| {
+        edges
+            .iter()
+            .filter(|edge| edge[2] != NONE)
+            .map(|edge| edge[2].max(edge[3]) + 1)
+            .max()
+            .unwrap_or(0)
+    };
+    let inside_base = 2 * parent_edges;
+    let edge_bands = par_map(parent_edges, "bands", |m| {
+        let inside = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
+        let edges = &plan.edges[inside_base + inside.start..inside_base + inside.end];
+        band_of(edges_need(edges).max(ring_need(parent_vertices + m)))
+    })?;
+    let vertex_bands = par_map(parent_vertices, "bands", |v| {
+        let halves = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
+        band_of(edges_need(&plan.edges[halves]).max(ring_need(v)))
+    })?;
+    Ok(Some(Bands {
+        face_ends,
+        edge_runs: runs(&edge_bands),
+        vertex_runs: runs(&vertex_bands),
+    }))
+}
+
+/// Consecutive groups of one band, at most [`CHUNK`] to a run.
+fn runs(bands: &[u32]) -> Vec<(u32, u32)> {
+    let mut runs: Vec<(u32, u32)> = Vec::new();
+    for (i, &band) in bands.iter().enumerate() {
+        match runs.last() {
+            Some(&(start, last)) if last == band && i - (start as usize) < CHUNK => {}
+            _ => runs.push((i as u32, band)),
+        }
+    }
+    runs
 }
 
 /// A face point of [`apply_grouped`]: read straight from a plan.
@@ -507,4 +724,39 @@ pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3
     let mut out = fresh_zeroed(v + e + f, "refined positions")?;
     apply(level, points, &mut out);
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::mesh::shapes;
+    use crate::subdivide::refiner::{plan_levels, Levels};
+    use crate::subdivide::{NakedEdges, Scheme};
+
+    #[test]
+    fn large_levels_go_band_by_band_and_the_seam_waits() {
+        // 4,608 quads: level 1 has 18,432 faces, more than a band's.
+        let cage = shapes::torus(72, 64);
+        let request = Levels {
+            cage: &cage,
+            scheme: Scheme::CatmullClark,
+            levels: 3,
+            naked_edges: NakedEdges::Smooth,
+        };
+        let mut plans = Vec::new();
+        plan_levels(request, |plan| plans.push(plan)).unwrap();
+        assert!(
+            plans[1].bands.is_none(),
+            "level 2 is refined from 4,608 faces"
+        );
+        let bands = plans[2].bands.as_ref().expect("level 3 goes by bands");
+        assert_eq!(bands.face_ends, [16_384, 18_432]);
+        for runs in [&bands.edge_runs, &bands.vertex_runs] {
+            assert!(runs.iter().all(|&(_, band)| band < 2));
+            // Both bands have groups; the first groups, at the seam, read
+            // the last faces and wait for the last band.
+            assert!(runs.iter().any(|&(_, band)| band == 0));
+            assert!(runs.windows(2).any(|pair| pair[0].1 > pair[1].1));
+            assert!(runs.windows(2).all(|pair| pair[0].0 < pair[1].0));
+        }
+    }
 }

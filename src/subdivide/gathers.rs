@@ -43,6 +43,9 @@ pub(crate) struct Plan {
     /// around the parent's, so that the plan is applied parent element by
     /// parent element, as one-shot subdivision makes its last level.
     pub(crate) parent: Option<ParentGroups>,
+    /// Catmull-Clark: how the passes around the parent's elements go band
+    /// by band (see `catmull_clark::plan_bands`), for a large level.
+    pub(crate) bands: Option<super::catmull_clark::Bands>,
 }
 
 /// How the elements of a level refined from a parent level group around
@@ -136,6 +139,7 @@ pub(crate) fn plan(
         vertex_ring_offsets: ring_offsets,
         vertex_ring: ring,
         parent: None,
+        bands: None,
     })
 }
 

@@ -349,6 +349,7 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         if scheme == Scheme::CatmullClark {
             plan.face_offsets = faces.offsets;
             plan.face_indices = faces.indices;
+            plan.bands = catmull_clark::plan_bands(&plan)?;
         }
         each(plan);
         faces = next_faces;
