@@ -16,13 +16,14 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
+use super::bands::{band_runs, runs_of};
 use super::gathers::{
     edge_points_into, planned_sharp_point, prefetch_at, sharp_vertex_point, Gathers, ParentGroups,
     Plan, RefinedGathers,
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
-use crate::buffers::{fill_groups, fresh_zeroed, par_groups, par_map, split_by_offsets};
+use crate::buffers::{fill_groups, fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -196,9 +197,9 @@ fn apply_refined(level: &RefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
 /// [`apply_refined`], around the parent's faces, edges and vertices: each
 /// pass reads the points and face points near one parent element while
 /// they are in the cache, where a pass per kind of point reads them all
-/// again. A large plan goes band by band ([`plan_bands`]): the edge and
-/// vertex passes read the face points the face pass wrote tens of
-/// megabytes before, which a band reads back from the cache. The same
+/// again. A large plan goes band by band (see [`super::bands`]): the
+/// edge and vertex passes read the face points the face pass wrote tens
+/// of megabytes before, which a band reads back from the cache. The same
 /// gathers, so the same bits.
 fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
@@ -334,136 +335,6 @@ fn group_parts<'a, T, S>(
     let values =
         &mut values[offsets[items.start] as usize - base..offsets[items.end] as usize - base];
     (values, &mut singles[items])
-}
-
-/// A run of groups of one band, with the parts of the output they write.
-struct Run<'a> {
-    band: u32,
-    items: std::ops::Range<usize>,
-    values: &'a mut [DVec3],
-    singles: &'a mut [DVec3],
-}
-
-/// `runs` (see [`Bands`]) cut out of the groups' values and singles.
-fn runs_of<'a>(
-    runs: &[(u32, u32)],
-    offsets: &[u32],
-    mut values: &'a mut [DVec3],
-    mut singles: &'a mut [DVec3],
-) -> Vec<Option<Run<'a>>> {
-    let count = offsets.len() - 1;
-    let mut out = Vec::with_capacity(runs.len());
-    for (k, &(start, band)) in runs.iter().enumerate() {
-        let end = runs.get(k + 1).map_or(count, |&(next, _)| next as usize);
-        let items = start as usize..end;
-        let len = (offsets[end] - offsets[items.start]) as usize;
-        let (run_values, rest) = std::mem::take(&mut values).split_at_mut(len);
-        values = rest;
-        let (run_singles, rest) = std::mem::take(&mut singles).split_at_mut(items.len());
-        singles = rest;
-        out.push(Some(Run {
-            band,
-            items,
-            values: run_values,
-            singles: run_singles,
-        }));
-    }
-    out
-}
-
-/// The runs of `band`, taken out of `runs`.
-fn band_runs<'a>(runs: &mut [Option<Run<'a>>], band: usize) -> Vec<Run<'a>> {
-    runs.iter_mut()
-        .filter(|run| run.as_ref().is_some_and(|run| run.band as usize == band))
-        .filter_map(Option::take)
-        .collect()
-}
-
-/// Parent faces per band of [`apply_grouped`]: a band's face points and
-/// the points they read fill a few megabytes of the cache.
-const BAND_FACES: usize = 16_384;
-
-/// How a plan's [`apply_grouped`] goes band by band (see
-/// [`plan_bands`]).
-#[derive(Debug, Clone)]
-pub(crate) struct Bands {
-    /// The end of each band's parent faces.
-    face_ends: Vec<u32>,
-    /// The parent edges' groups in runs `(first group, band)`, in order,
-    /// each run one band's and at most [`CHUNK`] groups long.
-    edge_runs: Vec<(u32, u32)>,
-    /// The parent vertices' groups, the same way.
-    vertex_runs: Vec<(u32, u32)>,
-}
-
-/// The bands of a plan's [`apply_grouped`], for a level refined from
-/// more than [`BAND_FACES`] parent faces: the parent faces cut in bands,
-/// and each group around a parent edge or vertex in the first band whose
-/// face points hold every face point it reads.
-pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
-    let Some(groups) = &plan.parent else {
-        return Ok(None);
-    };
-    let (parent_vertices, parent_edges) = groups.parent_counts();
-    let parent_faces = groups.face_faces.len() - 1;
-    if parent_faces <= BAND_FACES {
-        return Ok(None);
-    }
-    let face_ends: Vec<u32> = (1..=parent_faces.div_ceil(BAND_FACES))
-        .map(|b| (b * BAND_FACES).min(parent_faces) as u32)
-        .collect();
-    let limits: Vec<u32> = face_ends
-        .iter()
-        .map(|&end| groups.face_faces[end as usize])
-        .collect();
-    // The band of a group that reads face points below `need`.
-    let band_of = |need: u32| limits.partition_point(|&limit| limit < need) as u32;
-    let ring_need = |v: usize| match plan.vertex_rules[v] {
-        VertexRule::Smooth => {
-            let ring = plan.ring(v);
-            ring[ring.len() / 2..]
-                .iter()
-                .map(|&f| f + 1)
-                .max()
-                .unwrap_or(0)
-        }
-        _ => 0,
-    };
-    let edges_need = |edges: &[[u32; 4]]| {
-        edges
-            .iter()
-            .filter(|edge| edge[2] != NONE)
-            .map(|edge| edge[2].max(edge[3]) + 1)
-            .max()
-            .unwrap_or(0)
-    };
-    let inside_base = 2 * parent_edges;
-    let edge_bands = par_map(parent_edges, "bands", |m| {
-        let inside = groups.edge_inside[m] as usize..groups.edge_inside[m + 1] as usize;
-        let edges = &plan.edges[inside_base + inside.start..inside_base + inside.end];
-        band_of(edges_need(edges).max(ring_need(parent_vertices + m)))
-    })?;
-    let vertex_bands = par_map(parent_vertices, "bands", |v| {
-        let halves = groups.vertex_halves[v] as usize..groups.vertex_halves[v + 1] as usize;
-        band_of(edges_need(&plan.edges[halves]).max(ring_need(v)))
-    })?;
-    Ok(Some(Bands {
-        face_ends,
-        edge_runs: runs(&edge_bands),
-        vertex_runs: runs(&vertex_bands),
-    }))
-}
-
-/// Consecutive groups of one band, at most [`CHUNK`] to a run.
-fn runs(bands: &[u32]) -> Vec<(u32, u32)> {
-    let mut runs: Vec<(u32, u32)> = Vec::new();
-    for (i, &band) in bands.iter().enumerate() {
-        match runs.last() {
-            Some(&(start, last)) if last == band && i - (start as usize) < CHUNK => {}
-            _ => runs.push((i as u32, band)),
-        }
-    }
-    runs
 }
 
 /// A face point of [`apply_grouped`]: read straight from a plan.
@@ -724,39 +595,4 @@ pub(crate) fn points(level: &impl Gathers, points: &[DVec3]) -> Result<Vec<DVec3
     let mut out = fresh_zeroed(v + e + f, "refined positions")?;
     apply(level, points, &mut out);
     Ok(out)
-}
-
-#[cfg(test)]
-mod tests {
-    use crate::mesh::shapes;
-    use crate::subdivide::refiner::{plan_levels, Levels};
-    use crate::subdivide::{NakedEdges, Scheme};
-
-    #[test]
-    fn large_levels_go_band_by_band_and_the_seam_waits() {
-        // 4,608 quads: level 1 has 18,432 faces, more than a band's.
-        let cage = shapes::torus(72, 64);
-        let request = Levels {
-            cage: &cage,
-            scheme: Scheme::CatmullClark,
-            levels: 3,
-            naked_edges: NakedEdges::Smooth,
-        };
-        let mut plans = Vec::new();
-        plan_levels(request, |plan| plans.push(plan)).unwrap();
-        assert!(
-            plans[1].bands.is_none(),
-            "level 2 is refined from 4,608 faces"
-        );
-        let bands = plans[2].bands.as_ref().expect("level 3 goes by bands");
-        assert_eq!(bands.face_ends, [16_384, 18_432]);
-        for runs in [&bands.edge_runs, &bands.vertex_runs] {
-            assert!(runs.iter().all(|&(_, band)| band < 2));
-            // Both bands have groups; the first groups, at the seam, read
-            // the last faces and wait for the last band.
-            assert!(runs.iter().any(|&(_, band)| band == 0));
-            assert!(runs.windows(2).any(|pair| pair[0].1 > pair[1].1));
-            assert!(runs.windows(2).all(|pair| pair[0].0 < pair[1].0));
-        }
-    }
 }

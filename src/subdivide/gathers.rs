@@ -44,8 +44,8 @@ pub(crate) struct Plan {
     /// parent element, as one-shot subdivision makes its last level.
     pub(crate) parent: Option<ParentGroups>,
     /// Catmull-Clark: how the passes around the parent's elements go band
-    /// by band (see `catmull_clark::plan_bands`), for a large level.
-    pub(crate) bands: Option<super::catmull_clark::Bands>,
+    /// by band (see [`super::bands`]), for a large level.
+    pub(crate) bands: Option<super::bands::Bands>,
 }
 
 /// How the elements of a level refined from a parent level group around

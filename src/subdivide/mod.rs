@@ -51,6 +51,7 @@
 //! last level onto the limit surface ([`Limit`](crate::subdivide::Limit)). [`creases_from_mesh`](crate::subdivide::creases_from_mesh)
 //! turns unwelded seams and sharp folds into creases.
 
+mod bands;
 mod catmull_clark;
 mod creases;
 mod face_varying;

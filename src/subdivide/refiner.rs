@@ -16,7 +16,7 @@ use super::point_rules::{self, apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
 use super::scheme::{check_counts, NakedEdges, RefinedCounts, Scheme};
 use super::subdivider::Subdivider;
-use super::{catmull_clark, loop_subdivision, scale};
+use super::{bands, catmull_clark, loop_subdivision, scale};
 use crate::buffers::{fresh_zeroed, try_vec};
 use crate::error::{Error, Result};
 use crate::mesh::Mesh;
@@ -349,7 +349,7 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         if scheme == Scheme::CatmullClark {
             plan.face_offsets = faces.offsets;
             plan.face_indices = faces.indices;
-            plan.bands = catmull_clark::plan_bands(&plan)?;
+            plan.bands = bands::plan_bands(&plan)?;
         }
         each(plan);
         faces = next_faces;
