@@ -305,6 +305,8 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
             }
         });
     }
+    // Every group's band is one of the plan's bands, so every run was made.
+    debug_assert!(edge_runs.iter().chain(&vertex_runs).all(Option::is_none));
 }
 
 /// The edge points of a group of edges (from edge `first` of the level)
