@@ -205,14 +205,25 @@ pub(crate) fn fill_groups<T: Send, S: Send>(
     split_by_offsets(values, offsets, block)
         .into_par_iter()
         .zip(singles.par_chunks_mut(block))
-        .for_each(|((items, part), singles)| {
-            let base = offsets[items.start] as usize;
-            for (i, single) in items.zip(singles) {
-                let start = offsets[i] as usize;
-                let end = offsets[i + 1] as usize;
-                *single = each(i, start, &mut part[start - base..end - base]);
-            }
-        });
+        .for_each(|((items, part), singles)| fill_items(part, offsets, items, singles, &each));
+}
+
+/// [`fill_groups`] on one thread for the items `items`, whose values
+/// `part` starts at `offsets[items.start]` and whose singles are `singles`.
+#[inline]
+pub(crate) fn fill_items<T, S>(
+    part: &mut [T],
+    offsets: &[u32],
+    items: std::ops::Range<usize>,
+    singles: &mut [S],
+    each: &impl Fn(usize, usize, &mut [T]) -> S,
+) {
+    let base = offsets[items.start] as usize;
+    for (i, single) in items.zip(singles) {
+        let start = offsets[i] as usize;
+        let end = offsets[i + 1] as usize;
+        *single = each(i, start, &mut part[start - base..end - base]);
+    }
 }
 
 /// Splits `values` into the parts owned by each block of `block` items,

@@ -23,7 +23,7 @@ use super::gathers::{
 };
 use super::level::{Connectivity, Faces, NONE};
 use super::scheme::VertexRule;
-use crate::buffers::{fill_groups, fresh_zeroed, par_groups, split_by_offsets};
+use crate::buffers::{fill_groups, fill_items, fresh_zeroed, par_groups, split_by_offsets};
 use crate::error::Result;
 
 /// Items per rayon task: small enough to balance, large enough to amortise.
@@ -290,19 +290,16 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
                 true => (&groups.edge_inside, inside_base, parent_vertices),
                 false => (&groups.vertex_halves, 0, 0),
             };
-            let first_value = offsets[run.items.start] as usize;
-            for (i, single) in run.items.clone().zip(run.singles.iter_mut()) {
-                let values =
-                    offsets[i] as usize - first_value..offsets[i + 1] as usize - first_value;
-                *single = around_edge(
-                    level,
-                    points,
-                    face_points,
-                    base_edge + offsets[i] as usize,
-                    &mut run.values[values],
-                    base_vertex + i,
-                );
-            }
+            fill_items(
+                run.values,
+                offsets,
+                run.items,
+                run.singles,
+                &|i, first, outs: &mut [DVec3]| {
+                    let first = base_edge + first;
+                    around_edge(level, points, face_points, first, outs, base_vertex + i)
+                },
+            );
         });
     }
     // Every group's band is one of the plan's bands, so every run was made.
