@@ -48,7 +48,15 @@ for target in $(cargo fuzz list); do
     echo "fuzz $target: $execs runs in $((SECONDS - start))s (seed $seed), no crash"
     passed=$((passed + 1))
   else
-    echo "fuzz $target: FAILED (seed $seed)"; tail -n 40 "$scratch/$target.log"
+    echo "fuzz $target: FAILED (seed $seed)"
+    # From libFuzzer's report on (for running out of memory, the live
+    # allocations' stacks), else the run's last lines; the whole log is kept.
+    log="$scratch/$target.log"
+    report=$(grep -n -m1 -E '^==[0-9]+== ?ERROR' "$log" | cut -d: -f1 || true)
+    if [ -n "$report" ]; then tail -n +"$report" "$log" | head -n 200; else tail -n 40 "$log"; fi
+    mkdir -p "fuzz/artifacts/$target"
+    cp "$log" "fuzz/artifacts/$target/smoke-seed-$seed.log"
+    echo "whole log: fuzz/artifacts/$target/smoke-seed-$seed.log"
     failed=$((failed + 1))
   fi
 done
