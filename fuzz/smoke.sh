@@ -49,11 +49,13 @@ for target in $(cargo fuzz list); do
     passed=$((passed + 1))
   else
     echo "fuzz $target: FAILED (seed $seed)"
-    # From libFuzzer's report on (for running out of memory, the live
-    # allocations' stacks), else the run's last lines; the whole log is kept.
+    # From libFuzzer's report on (for running out of memory, the stacks of
+    # the allocations live then), else the run's last lines; the whole log
+    # is kept. One command each: no pipe for `pipefail` to end the script on.
     log="$scratch/$target.log"
-    report=$(grep -n -m1 -E '^==[0-9]+== ?ERROR' "$log" | cut -d: -f1 || true)
-    if [ -n "$report" ]; then tail -n +"$report" "$log" | head -n 200; else tail -n 40 "$log"; fi
+    report=$(grep -n -m1 -E '^==[0-9]+== ?ERROR' "$log" || true)
+    report=${report%%:*}
+    if [ -n "$report" ]; then sed -n "${report},$((report + 199))p" "$log"; else tail -n 40 "$log"; fi
     mkdir -p "fuzz/artifacts/$target"
     cp "$log" "fuzz/artifacts/$target/smoke-seed-$seed.log"
     echo "whole log: fuzz/artifacts/$target/smoke-seed-$seed.log"
