@@ -11,7 +11,7 @@
 
 use std::time::Instant;
 
-/// Rounds timed, after one of warm-up.
+/// Rounds timed; the untimed call before each timed one is its warm-up.
 pub const ROUNDS: usize = 8;
 
 /// The calls, by index: OpenSubdiv, Weft on one thread, Weft on all
@@ -31,9 +31,6 @@ impl InTurn {
     /// Times `calls` (in the order of [`OSD`] to [`FLOOR_HUGE`]) round after
     /// round, each right after an untimed call of itself.
     pub fn run(case: String, calls: [&dyn Fn(); 4]) -> InTurn {
-        for call in calls {
-            call();
-        }
         let rounds = (0..ROUNDS)
             .map(|_| {
                 calls.map(|call| {
