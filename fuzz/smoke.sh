@@ -59,6 +59,27 @@ for target in $(cargo fuzz list); do
     mkdir -p "fuzz/artifacts/$target"
     cp "$log" "fuzz/artifacts/$target/smoke-seed-$seed.log"
     echo "whole log: fuzz/artifacts/$target/smoke-seed-$seed.log"
+    if grep -q 'libFuzzer: out-of-memory' "$log"; then
+      # The sanitizer's allocator keeps what an input freed, so the input
+      # named above is seldom the one that took the memory: replay the
+      # inputs this run added, each in a process of its own.
+      echo "the largest peaks of the inputs this run added, replayed one by one:"
+      python3 - "fuzz/target/x86_64-unknown-linux-gnu/release/$target" "$scratch/$target" <<'PY' || true
+import os, subprocess, sys
+binary, folder = sys.argv[1], sys.argv[2]
+peaks = []
+for name in os.listdir(folder):
+    child = subprocess.Popen([binary, os.path.join(folder, name)],
+                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    _, _, usage = os.wait4(child.pid, 0)
+    peaks.append((usage.ru_maxrss // 1024, name))
+for megabytes, name in sorted(peaks, reverse=True)[:3]:
+    print(f"  {megabytes} MB  {name}")
+PY
+      mkdir -p "fuzz/artifacts/$target/added"
+      cp "$scratch/$target"/* "fuzz/artifacts/$target/added/" 2>/dev/null || true
+      echo "those inputs: fuzz/artifacts/$target/added/"
+    fi
     failed=$((failed + 1))
   fi
 done

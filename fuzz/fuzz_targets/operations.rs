@@ -668,10 +668,12 @@ unsafe fn extended_operation(op: u32, mesh: *mut WeftMesh, bytes: &mut Bytes, ou
         }
         9 => {
             // The limit surface as patches: isolation 0 to 3 (deeper ones need
-            // gigabytes on these cages), or past the cap; buffers of any room.
+            // gigabytes on these cages), or past the cap for every cage, as
+            // in `levels` (9 to 11 are within it for ten hexagons, whose
+            // patches' buffers alone take gigabytes).
             let options = options(mesh, bytes);
             let isolation = match bytes.byte() % 8 {
-                0 => 9 + bytes.small(3),
+                0 => 20 + bytes.small(30),
                 _ => bytes.small(4),
             };
             let (mut vertices, mut faces, mut indices) = (0, 0, 0);
