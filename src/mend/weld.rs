@@ -17,7 +17,9 @@ use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::buffers::{par_map, par_offsets, try_copy, try_vec, CHUNK};
+use crate::buffers::{
+    par_map, par_offsets, prefix_sum, split_by_offsets, try_copy, try_vec, CHUNK,
+};
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
@@ -378,6 +380,9 @@ fn clusters_by<K: CellKey>(
     tolerance: f64,
     cell_of: impl Fn(DVec3) -> K + Sync,
 ) -> Result<UnionFind> {
+    if positions.is_empty() {
+        return Ok(UnionFind::new(0));
+    }
     // By cell, then index (one parallel sort); each cell's vertices are then
     // put in order of exact position, so that duplicates become neighbours
     // with their lowest index first.
@@ -402,39 +407,66 @@ fn clusters_by<K: CellKey>(
             .then(a.cmp(&b))
     };
 
-    let mut clusters = UnionFind::new(positions.len());
-    // Distinct positions ("sites"), each standing for its exact duplicates.
-    let mut sites = try_vec::<u32>(positions.len(), "the weld sites")?;
-    // Sites of each occupied cell: cell_sites[cell_starts[k]..cell_starts[k + 1]].
-    // Room for a cell a vertex (only what is written is faulted in).
-    let mut cell_keys = try_vec::<K>(positions.len(), "the weld cells")?;
-    let mut cell_starts = try_vec::<u32>(positions.len() + 1, "the weld cells")?;
-    let mut start = 0;
-    while start < entries.len() {
-        let key = entries[start].0;
-        // Most cells hold a vertex or two: a scan, not a binary search
-        // that would miss the cache at every step.
-        let end = start + entries[start..].iter().take_while(|e| e.0 == key).count();
-        let group = &mut order[start..end];
-        match group.len() {
-            1 => {}
-            n if n < 1 << 16 => group.sort_unstable_by(by_position),
-            _ => group.par_sort_unstable_by(by_position),
-        }
-        cell_keys.push(key);
-        cell_starts.push(sites.len() as u32);
-        let first_site = sites.len();
-        for &v in group.iter() {
-            match sites[first_site..].last() {
-                Some(&site) if positions[site as usize] == positions[v as usize] => {
-                    clusters.union(site, v);
+    // The cells in pieces of whole cells, on all threads. Each piece finds
+    // its cells' distinct positions ("sites", each standing for its exact
+    // duplicates), writes each vertex's site over its entry's index, and
+    // counts its cells and sites.
+    let cuts = cell_pieces(&entries, 8 * rayon::current_num_threads());
+    let counts: Vec<(u32, u32)> = split_by_offsets(&mut entries, &cuts, 1)
+        .into_par_iter()
+        .zip(split_by_offsets(&mut order, &cuts, 1))
+        .map(|((_, entries), (_, order))| piece_sites(positions, entries, order, &by_position))
+        .collect();
+
+    // Sites of each occupied cell: sites[cell_starts[k]..cell_starts[k + 1]],
+    // each piece's written into its own part in one more pass, a stream
+    // over its entries (a vertex is a site when its entry names itself).
+    let running = |count: fn(&(u32, u32)) -> u32| {
+        let mut offsets: Vec<u32> = std::iter::once(0).chain(counts.iter().map(count)).collect();
+        prefix_sum(&mut offsets);
+        offsets
+    };
+    let (cell_offsets, site_offsets) = (running(|c| c.0), running(|c| c.1));
+    let (cell_count, site_count) = (
+        cell_offsets[counts.len()] as usize,
+        site_offsets[counts.len()],
+    );
+    let filler = entries[0].0;
+    let mut cell_keys = par_map(cell_count, "the weld cells", |_| filler)?;
+    let mut cell_starts = par_map(cell_count + 1, "the weld cells", |_| site_count)?;
+    let mut sites = par_map(site_count as usize, "the weld sites", |_| 0u32)?;
+    split_by_offsets(&mut cell_keys, &cell_offsets, 1)
+        .into_par_iter()
+        .zip(split_by_offsets(
+            &mut cell_starts[..cell_count],
+            &cell_offsets,
+            1,
+        ))
+        .zip(split_by_offsets(&mut sites, &site_offsets, 1))
+        .for_each(|(((pieces, keys), (_, starts)), (_, sites))| {
+            let piece = pieces.start;
+            let range = cuts[piece] as usize..cuts[piece + 1] as usize;
+            let (mut cell, mut site) = (0, 0);
+            for (&(key, site_of), &v) in entries[range.clone()].iter().zip(&order[range]) {
+                if cell == 0 || key != keys[cell - 1] {
+                    keys[cell] = key;
+                    starts[cell] = site_offsets[piece] + site as u32;
+                    cell += 1;
                 }
-                _ => sites.push(v),
+                if site_of == v {
+                    sites[site] = v;
+                    site += 1;
+                }
             }
+        });
+    // Each duplicate joins its site (every site is the lowest index of its
+    // position, so is the root of a new set).
+    let mut clusters = UnionFind::new(positions.len());
+    for (&(_, site), &v) in entries.iter().zip(&order) {
+        if site != v {
+            clusters.union(site, v);
         }
-        start = end;
     }
-    cell_starts.push(sites.len() as u32);
     drop((entries, order));
     if tolerance == 0.0 {
         return Ok(clusters);
@@ -526,6 +558,68 @@ fn clusters_by<K: CellKey>(
         clusters.union(a, b);
     }
     Ok(clusters)
+}
+
+/// Where to cut `entries`, sorted by cell, into about `count` pieces of
+/// whole cells: the first entry of each piece, then the length.
+fn cell_pieces<K: CellKey>(entries: &[(K, u32)], count: usize) -> Vec<u32> {
+    let step = entries.len().div_ceil(count.max(1)).max(1);
+    let mut cuts = vec![0];
+    let mut at = step;
+    while at < entries.len() {
+        // Forward to the start of the next cell.
+        let key = entries[at - 1].0;
+        at += entries[at..].iter().take_while(|e| e.0 == key).count();
+        if at < entries.len() {
+            cuts.push(at as u32);
+        }
+        at += step;
+    }
+    cuts.push(entries.len() as u32);
+    cuts
+}
+
+/// The sites of one piece of whole cells: each cell's vertices in `order`
+/// are put in order of exact position, so that duplicates become
+/// neighbours with their lowest index, the site, first; each entry's index
+/// is then overwritten with its vertex's site. Returns how many cells and
+/// sites the piece holds.
+fn piece_sites<K: CellKey>(
+    positions: &[DVec3],
+    entries: &mut [(K, u32)],
+    order: &mut [u32],
+    by_position: &(impl Fn(&u32, &u32) -> std::cmp::Ordering + Sync),
+) -> (u32, u32) {
+    let (mut cells, mut sites) = (0, 0);
+    let mut start = 0;
+    while start < entries.len() {
+        let key = entries[start].0;
+        // Most cells hold a vertex or two: a scan, not a binary search
+        // that would miss the cache at every step.
+        let end = start + entries[start..].iter().take_while(|e| e.0 == key).count();
+        let group = &mut order[start..end];
+        // A cell of copies of one position (an STL's corners) is in that
+        // order already: by index.
+        let first = positions[group[0] as usize];
+        match group.len() {
+            1 => {}
+            _ if group[1..].iter().all(|&v| positions[v as usize] == first) => {}
+            n if n < 1 << 16 => group.sort_unstable_by(by_position),
+            _ => group.par_sort_unstable_by(by_position),
+        }
+        cells += 1;
+        let mut site = group[0];
+        sites += 1;
+        for (k, &v) in group.iter().enumerate() {
+            if positions[v as usize] != positions[site as usize] {
+                site = v;
+                sites += 1;
+            }
+            entries[start + k].1 = site;
+        }
+        start = end;
+    }
+    (cells, sites)
 }
 
 /// The 13 of the 26 neighbouring cell offsets that come after (0, 0, 0) in

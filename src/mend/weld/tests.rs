@@ -391,3 +391,35 @@ fn faces_over_clusters_in_blocks_match_one_face_after_another() {
         );
     }
 }
+
+#[test]
+fn cell_pieces_cut_between_whole_cells_and_cover_every_entry() {
+    // Cells of 1 to 40 entries, one of them longer than a piece.
+    let mut entries = Vec::new();
+    for cell in 0..200u32 {
+        let size = if cell == 77 { 400 } else { 1 + cell % 40 };
+        let first = entries.len() as u32;
+        entries.extend((first..first + size).map(|v| (Cell([cell as i64, 0, 0]), v)));
+    }
+    for count in [1, 2, 7, 16, 1000, 100_000] {
+        let cuts: Vec<usize> = cell_pieces(&entries, count)
+            .iter()
+            .map(|&c| c as usize)
+            .collect();
+        assert_eq!((cuts[0], *cuts.last().unwrap()), (0, entries.len()));
+        assert!(cuts.windows(2).all(|w| w[0] < w[1]), "{count}: {cuts:?}");
+        for &cut in &cuts[1..cuts.len() - 1] {
+            assert_ne!(
+                entries[cut - 1].0,
+                entries[cut].0,
+                "{count}: cut inside a cell at {cut}"
+            );
+        }
+        assert!(
+            cuts.len() - 1 <= count.max(1),
+            "{count}: {} pieces",
+            cuts.len() - 1
+        );
+    }
+    assert_eq!(cell_pieces::<Cell>(&[], 4), vec![0, 0]);
+}
