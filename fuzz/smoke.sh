@@ -64,7 +64,8 @@ for target in $(cargo fuzz list); do
       # named above is seldom the one that took the memory: replay the
       # inputs this run added, each in a process of its own.
       echo "the largest peaks of the inputs this run added, replayed one by one:"
-      python3 - "fuzz/target/x86_64-unknown-linux-gnu/release/$target" "$scratch/$target" <<'PY' || true
+      host=$(rustc -vV | sed -n 's/^host: //p')
+      python3 - "fuzz/target/$host/release/$target" "$scratch/$target" <<'PY' || true
 import os, subprocess, sys
 binary, folder = sys.argv[1], sys.argv[2]
 peaks = []

@@ -568,8 +568,7 @@ fn cell_pieces<K: CellKey>(entries: &[(K, u32)], count: usize) -> Vec<u32> {
     let mut at = step;
     while at < entries.len() {
         // Forward to the start of the next cell.
-        let key = entries[at - 1].0;
-        at += entries[at..].iter().take_while(|e| e.0 == key).count();
+        at = cell_end(entries, at - 1);
         if at < entries.len() {
             cuts.push(at as u32);
         }
@@ -577,6 +576,14 @@ fn cell_pieces<K: CellKey>(entries: &[(K, u32)], count: usize) -> Vec<u32> {
     }
     cuts.push(entries.len() as u32);
     cuts
+}
+
+/// The end of the cell of `entries[at]`, `entries` sorted by cell. Most
+/// cells hold a vertex or two: a scan, not a binary search that would miss
+/// the cache at every step.
+fn cell_end<K: CellKey>(entries: &[(K, u32)], at: usize) -> usize {
+    let key = entries[at].0;
+    at + entries[at..].iter().take_while(|e| e.0 == key).count()
 }
 
 /// The sites of one piece of whole cells: each cell's vertices in `order`
@@ -593,10 +600,7 @@ fn piece_sites<K: CellKey>(
     let (mut cells, mut sites) = (0, 0);
     let mut start = 0;
     while start < entries.len() {
-        let key = entries[start].0;
-        // Most cells hold a vertex or two: a scan, not a binary search
-        // that would miss the cache at every step.
-        let end = start + entries[start..].iter().take_while(|e| e.0 == key).count();
+        let end = cell_end(entries, start);
         let group = &mut order[start..end];
         // A cell of copies of one position (an STL's corners) is in that
         // order already: by index.
