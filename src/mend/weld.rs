@@ -24,6 +24,9 @@ use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
 
+mod copies;
+use copies::Copies;
+
 /// The weld tolerance to use when the host gives none: 0.001 model units.
 ///
 /// It is Rhino's default absolute tolerance, the distance under which Rhino
@@ -114,6 +117,9 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 /// Clusters are found with a spatial hash of cells as wide as the tolerance:
 /// each vertex is compared with the vertices of the 27 cells around it, and
 /// exact duplicates are merged by sorting before any distance is measured.
+/// In a triangle soup, whose every position has several copies near each
+/// other in the vertex order, those copies are merged first, piece by piece
+/// through a hash table, and the cells sort only the distinct positions.
 /// A cell whose vertices all lie within the tolerance of each other merges
 /// without comparing them. The cost is linear in the vertex count unless
 /// many distinct vertices crowd into cells without all being that close.
@@ -152,8 +158,27 @@ struct Clusters {
 
 impl Clusters {
     fn of(positions: &[DVec3], tolerance: f64) -> Result<Clusters> {
+        Clusters::with_pieces(positions, tolerance, copies::PIECE)
+    }
+
+    /// [`Clusters::of`], the copies merged first in pieces of `piece`
+    /// vertices when that pays.
+    fn with_pieces(positions: &[DVec3], tolerance: f64, piece: usize) -> Result<Clusters> {
         check_tolerance(tolerance)?;
-        let (cluster_of, count) = vertex_clusters(positions, tolerance)?.into_labels();
+        let (cluster_of, count) = match copies::nearby_copies(positions, piece)? {
+            // The clusters of the distinct positions: each cluster's first
+            // vertex is the first copy of its position, so a site, and the
+            // sites keep the vertices' order.
+            Some(Copies { mut site_of, sites }) => {
+                let (site_cluster, count) = vertex_clusters(&sites, tolerance)?.into_labels();
+                site_of
+                    .par_iter_mut()
+                    .with_min_len(CHUNK)
+                    .for_each(|s| *s = site_cluster[*s as usize]);
+                (site_of, count)
+            }
+            None => vertex_clusters(positions, tolerance)?.into_labels(),
+        };
         Ok(Clusters { cluster_of, count })
     }
 

@@ -423,3 +423,53 @@ fn cell_pieces_cut_between_whole_cells_and_cover_every_entry() {
     }
     assert_eq!(cell_pieces::<Cell>(&[], 4), vec![0, 0]);
 }
+
+#[test]
+fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
+    // A soup of a torus's quads (each position four times, its copies near
+    // in order), some corners nudged within and some beyond the tolerance,
+    // and every seventh quad's corners written again far from their face.
+    let torus = shapes::torus(40, 30);
+    let mut state = 0x9e37_79b9_7f4a_7c15u64;
+    let mut unit = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut positions = Vec::new();
+    for f in 0..torus.face_count() {
+        for &v in torus.face(f) {
+            let p = torus.positions()[v as usize];
+            let roll = unit();
+            positions.push(match roll {
+                r if r < 0.1 => p + DVec3::X * 0.004 * unit(),
+                r if r < 0.15 => p + DVec3::Y * 0.02,
+                _ => p,
+            });
+        }
+    }
+    let again: Vec<DVec3> = positions.iter().step_by(7).copied().collect();
+    positions.extend(again);
+    for tolerance in [0.0, 0.005] {
+        let plain = {
+            let (labels, count) = vertex_clusters(&positions, tolerance)
+                .unwrap()
+                .into_labels();
+            Clusters {
+                cluster_of: labels,
+                count,
+            }
+        };
+        // Some vertices merged and some did not, so the comparison could fail.
+        assert!(plain.count > torus.vertex_count() && plain.count < positions.len() / 2);
+        // Pieces of 3 show too few copies to merge first: the plain path.
+        for piece in [3, 16, 64, 1000, 4096] {
+            let pieces = Clusters::with_pieces(&positions, tolerance, piece).unwrap();
+            let merged_first = copies::nearby_copies(&positions, piece).unwrap().is_some();
+            assert_eq!(merged_first, piece > 3);
+            assert_eq!(pieces.count, plain.count, "piece {piece}, tolerance {tolerance}");
+            assert_eq!(pieces.cluster_of, plain.cluster_of, "piece {piece}, tolerance {tolerance}");
+        }
+    }
+}

@@ -1,0 +1,155 @@
+//! Exact copies of a position that lie near each other in the vertex order.
+//!
+//! A triangle soup (an STL file's, a mesh whose faces each have corners of
+//! their own) holds every position about six times, and the copies of a
+//! position come from neighbouring faces, so from nearby places in the
+//! vertex order. Merging them piece by piece, each piece of the vertices
+//! through a hash table in the cache, leaves the weld's sort and cells a
+//! sixth of the vertices to handle. Copies in different pieces stay apart
+//! here and meet again as exact duplicates in the weld's cells.
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use crate::buffers::{fresh_zeroed, prefix_sum, split_by_offsets};
+use crate::error::Result;
+
+/// Vertices in a piece: 6 MB of positions and a 2 MB table, in the cache.
+pub(super) const PIECE: usize = 1 << 18;
+
+/// The vertices' distinct positions, piece by piece.
+pub(super) struct Copies {
+    /// Each vertex's site: where the first copy of its position in its
+    /// piece is in `sites`.
+    pub(super) site_of: Vec<u32>,
+    /// The first copy of each position in each piece, in vertex order.
+    pub(super) sites: Vec<DVec3>,
+}
+
+/// The copies in `positions`, pieces of `piece` vertices each, or `None`
+/// when the first piece shows them not worth merging first (fewer than a
+/// quarter of its vertices are copies: an indexed mesh's vertices, or a
+/// soup whose faces are in no spatial order) or there is only one piece.
+pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<Copies>> {
+    let piece = piece.max(1);
+    if positions.len() <= piece {
+        return Ok(None);
+    }
+    // Fresh pages, faulted in where the pieces write them, on all threads.
+    let mut site_of = fresh_zeroed::<u32>(positions.len(), "the weld's copies")?;
+    let mut table = Vec::new();
+    let first = piece_sites(&positions[..piece], &mut site_of[..piece], &mut table);
+    if first as usize * 4 > piece * 3 {
+        return Ok(None);
+    }
+    let mut counts = vec![0u32; 1];
+    counts.push(first);
+    counts.par_extend(
+        positions[piece..]
+            .par_chunks(piece)
+            .zip(site_of[piece..].par_chunks_mut(piece))
+            .map_init(Vec::new, |table, (positions, site_of)| {
+                piece_sites(positions, site_of, table)
+            }),
+    );
+    prefix_sum(&mut counts);
+    let site_count = *counts.last().unwrap_or(&0) as usize;
+    let mut sites = fresh_zeroed::<DVec3>(site_count, "the weld's sites")?;
+    // Each piece's sites into its part of `sites`, and its vertices' sites
+    // numbered among all pieces'.
+    split_by_offsets(&mut sites, &counts, 1)
+        .into_par_iter()
+        .zip(positions.par_chunks(piece))
+        .zip(site_of.par_chunks_mut(piece))
+        .for_each(|(((pieces, sites), positions), site_of)| {
+            let offset = counts[pieces.start];
+            let mut next = 0;
+            for (p, site) in positions.iter().zip(site_of) {
+                if *site == next {
+                    sites[next as usize] = *p;
+                    next += 1;
+                }
+                *site += offset;
+            }
+        });
+    Ok(Some(Copies { site_of, sites }))
+}
+
+/// Numbers the distinct positions of one piece in order of their first
+/// copy, writing each vertex's number into `site_of`; returns how many.
+/// Positions are one when they compare equal (-0 and +0 are one, a NaN is
+/// a position of its own), as in the weld's cells.
+fn piece_sites(positions: &[DVec3], site_of: &mut [u32], table: &mut Vec<u32>) -> u32 {
+    const EMPTY: u32 = u32::MAX;
+    // At most half full, so a probe ends within a few slots.
+    let bits = (2 * positions.len()).next_power_of_two().trailing_zeros();
+    table.clear();
+    table.resize(1 << bits, EMPTY);
+    let mask = (1 << bits) - 1;
+    let mut count = 0;
+    for (v, &p) in positions.iter().enumerate() {
+        let mut slot = slot_of(p, bits);
+        loop {
+            let there = table[slot];
+            if there == EMPTY {
+                table[slot] = v as u32;
+                site_of[v] = count;
+                count += 1;
+                break;
+            }
+            if positions[there as usize] == p {
+                site_of[v] = site_of[there as usize];
+                break;
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+    count
+}
+
+/// Where a position starts its probe in a table of `2^bits` slots.
+#[inline]
+fn slot_of(p: DVec3, bits: u32) -> usize {
+    // Adding 0 makes -0 and +0 one key: they are one position.
+    let [x, y, z] = (p + 0.0).to_array().map(f64::to_bits);
+    let h = x.wrapping_mul(0x9E37_79B9_7F4A_7C15)
+        ^ y.wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
+        ^ z.wrapping_mul(0x1656_67B1_9E37_79F9);
+    ((h ^ (h >> 32)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - bits)) as usize
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn copies_in_a_piece_share_its_first_copy_and_pieces_keep_their_own() {
+        let p = |x: f64| DVec3::new(x, 1.0, 2.0);
+        let positions = [
+            p(0.0),
+            p(1.0),
+            p(-0.0),
+            p(1.0),
+            // Second piece: a copy of the first piece's position, f64::NAN twice.
+            p(1.0),
+            p(f64::NAN),
+            p(f64::NAN),
+            p(1.0),
+        ];
+        let copies = nearby_copies(&positions, 4).unwrap().unwrap();
+        assert_eq!(copies.site_of, [0, 1, 0, 1, 2, 3, 4, 2]);
+        let sites = copies.sites;
+        assert_eq!(sites.len(), 5);
+        assert_eq!((sites[0], sites[1], sites[2]), (p(0.0), p(1.0), p(1.0)));
+        assert!(sites[3].x.is_nan() && sites[4].x.is_nan());
+    }
+
+    #[test]
+    fn a_first_piece_of_few_copies_or_a_single_piece_leaves_the_vertices_alone() {
+        let distinct: Vec<DVec3> = (0..16).map(|i| DVec3::splat(i as f64)).collect();
+        assert!(nearby_copies(&distinct, 8).unwrap().is_none());
+        let repeated = vec![DVec3::ONE; 8];
+        assert!(nearby_copies(&repeated, 8).unwrap().is_none());
+        assert!(nearby_copies(&repeated, 4).unwrap().is_some());
+    }
+}
