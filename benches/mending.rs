@@ -19,11 +19,26 @@ use weft_reference::{BoundaryInterpolation, OsdOptions, OsdRefiner, RefMesh, Sch
 /// moved by up to 0.0004 on every axis: 1,000,000 vertices that weld back to
 /// 251,001, the way separately meshed panels arrive from the host.
 fn loose_grid() -> Mesh {
+    grid_soup(|k| {
+        let jitter = ((k * 7919) % 9) as f64 * 0.5e-4;
+        DVec3::new(jitter, -jitter, jitter)
+    })
+}
+
+/// The same grid's faces each with four vertices of their own, exact
+/// copies of the grid's: a soup as STL files hold them, each position
+/// written as often as faces meet at it, the copies near in order.
+fn copied_grid() -> Mesh {
+    grid_soup(|_| DVec3::ZERO)
+}
+
+/// A 500 × 500 quad grid's faces each with four vertices of their own, the
+/// k-th corner's moved by `nudge(k)`.
+fn grid_soup(nudge: impl Fn(usize) -> DVec3) -> Mesh {
     let grid = shapes::quad_grid(500, 500);
     let mut positions = Vec::with_capacity(grid.index_count());
     for (k, &v) in grid.face_indices().iter().enumerate() {
-        let jitter = ((k * 7919) % 9) as f64 * 0.5e-4;
-        positions.push(grid.positions()[v as usize] + DVec3::new(jitter, -jitter, jitter));
+        positions.push(grid.positions()[v as usize] + nudge(k));
     }
     let indices: Vec<u32> = (0..grid.index_count() as u32).collect();
     Mesh::new(positions, grid.face_sizes().to_vec(), indices).unwrap()
@@ -39,6 +54,12 @@ fn mending(c: &mut Criterion) {
     assert_eq!(welded.vertex_count(), 501 * 501);
     group.bench_function("weld 1M vertices", |b| {
         b.iter(|| weld(black_box(&loose), DEFAULT_WELD_TOLERANCE).unwrap())
+    });
+    let copied = copied_grid();
+    let (welded, _) = weld(&copied, DEFAULT_WELD_TOLERANCE).unwrap();
+    assert_eq!(welded.vertex_count(), 501 * 501);
+    group.bench_function("weld 1M exact copies", |b| {
+        b.iter(|| weld(black_box(&copied), DEFAULT_WELD_TOLERANCE).unwrap())
     });
 
     let grid = shapes::quad_grid(1000, 1000);

@@ -17,6 +17,10 @@ use crate::error::Result;
 /// Vertices in a piece: 6 MB of positions and a 2 MB table, in the cache.
 pub(super) const PIECE: usize = 1 << 18;
 
+/// Vertices of the sample that decides whether to merge copies first: a
+/// few rows of a soup's faces, cheap beside a weld that gains nothing.
+const SAMPLE: usize = 1 << 14;
+
 /// The vertices' distinct positions, piece by piece.
 pub(super) struct Copies {
     /// Each vertex's site: where the first copy of its position in its
@@ -27,27 +31,27 @@ pub(super) struct Copies {
 }
 
 /// The copies in `positions`, pieces of `piece` vertices each, or `None`
-/// when the first piece shows them not worth merging first (fewer than a
-/// quarter of its vertices are copies: an indexed mesh's vertices, or a
-/// soup whose faces are in no spatial order) or there is only one piece.
+/// when there is only one piece or a sample from the front shows the
+/// copies not worth merging first (fewer than a quarter of its vertices
+/// are copies: an indexed mesh's vertices, or a soup whose faces are in no
+/// spatial order).
 pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<Copies>> {
     let piece = piece.max(1);
     if positions.len() <= piece {
         return Ok(None);
     }
-    // Fresh pages, faulted in where the pieces write them, on all threads.
-    let mut site_of = fresh_zeroed::<u32>(positions.len(), "the weld's copies")?;
-    let mut table = Vec::new();
-    let first = piece_sites(&positions[..piece], &mut site_of[..piece], &mut table);
-    if first as usize * 4 > piece * 3 {
+    let sample = &positions[..piece.min(SAMPLE)];
+    let sample_sites = piece_sites(sample, &mut vec![0; sample.len()], &mut Vec::new());
+    if sample_sites as usize * 4 > sample.len() * 3 {
         return Ok(None);
     }
-    let mut counts = vec![0u32; 1];
-    counts.push(first);
+    // Fresh pages, faulted in where the pieces write them, on all threads.
+    let mut site_of = fresh_zeroed::<u32>(positions.len(), "the weld's copies")?;
+    let mut counts = vec![0u32];
     counts.par_extend(
-        positions[piece..]
+        positions
             .par_chunks(piece)
-            .zip(site_of[piece..].par_chunks_mut(piece))
+            .zip(site_of.par_chunks_mut(piece))
             .map_init(Vec::new, |table, (positions, site_of)| {
                 piece_sites(positions, site_of, table)
             }),
