@@ -473,3 +473,33 @@ fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
         }
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// Any positions, any pieces, any tolerance: merging copies first
+    /// changes neither the clusters nor their numbering.
+    #[test]
+    fn copies_merged_first_never_change_the_clusters(
+        palette in proptest::collection::vec((0u8..6, 0u8..6, 0u8..3, 0u8..4), 1..40),
+        picks in proptest::collection::vec(0usize..1000, 2..400),
+        piece in 1usize..40,
+        tolerance in proptest::sample::select(vec![0.0, 0.05, 0.3, 1.0, 10.0]),
+    ) {
+        // Points of a coarse lattice, some nudged by 0.1 or 0.2 (within
+        // some tolerances, beyond others), -0 beside +0; each vertex one of
+        // a few of them, so that copies abound.
+        let palette: Vec<DVec3> = palette
+            .iter()
+            .map(|&(x, y, z, nudge)| {
+                let x = if x == 0 && nudge == 3 { -0.0 } else { f64::from(x) };
+                DVec3::new(x, f64::from(y) + 0.1 * f64::from(nudge % 3), f64::from(z))
+            })
+            .collect();
+        let positions: Vec<DVec3> = picks.iter().map(|&k| palette[k % palette.len()]).collect();
+        let (plain, plain_count) = vertex_clusters(&positions, tolerance).unwrap().into_labels();
+        let pieces = Clusters::with_pieces(&positions, tolerance, piece).unwrap();
+        proptest::prop_assert_eq!(pieces.count, plain_count);
+        proptest::prop_assert_eq!(pieces.cluster_of, plain);
+    }
+}
