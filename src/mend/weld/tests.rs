@@ -468,8 +468,14 @@ fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
             let pieces = Clusters::with_pieces(&positions, tolerance, piece).unwrap();
             let merged_first = copies::nearby_copies(&positions, piece).unwrap().is_some();
             assert_eq!(merged_first, piece > 3);
-            assert_eq!(pieces.count, plain.count, "piece {piece}, tolerance {tolerance}");
-            assert_eq!(pieces.cluster_of, plain.cluster_of, "piece {piece}, tolerance {tolerance}");
+            assert_eq!(
+                pieces.count, plain.count,
+                "piece {piece}, tolerance {tolerance}"
+            );
+            assert_eq!(
+                pieces.cluster_of, plain.cluster_of,
+                "piece {piece}, tolerance {tolerance}"
+            );
         }
     }
 }
