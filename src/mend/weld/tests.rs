@@ -219,17 +219,21 @@ fn a_face_soup_welds_back_to_its_mesh_in_order_of_first_use() {
     assert_eq!(report.removed_face_count, 0);
 }
 
-#[test]
-fn packed_cells_cluster_as_the_cells_themselves() {
-    // Near and exact duplicates on a jittered grid, many per cell and across
-    // cell borders, on both sides of the origin.
-    let mut state = 0x2545_f491_4f6c_dd1du64;
-    let mut unit = move || {
+/// Repeatable numbers in [0, 1) from `seed` (xorshift).
+fn units(mut state: u64) -> impl FnMut() -> f64 {
+    move || {
         state ^= state << 13;
         state ^= state >> 7;
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    }
+}
+
+#[test]
+fn packed_cells_cluster_as_the_cells_themselves() {
+    // Near and exact duplicates on a jittered grid, many per cell and across
+    // cell borders, on both sides of the origin.
+    let mut unit = units(0x2545_f491_4f6c_dd1d);
     let mut positions = Vec::new();
     for i in 0..20_000 {
         let p = DVec3::new(unit() * 40.0 - 20.0, unit() * 8.0 - 4.0, unit() * 2.0);
@@ -430,13 +434,7 @@ fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
     // in order), some corners nudged within and some beyond the tolerance,
     // and every seventh quad's corners written again far from their face.
     let torus = shapes::torus(40, 30);
-    let mut state = 0x9e37_79b9_7f4a_7c15u64;
-    let mut unit = move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut unit = units(0x9e37_79b9_7f4a_7c15);
     let mut positions = Vec::new();
     for f in 0..torus.face_count() {
         for &v in torus.face(f) {
@@ -468,12 +466,8 @@ fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
             let pieces = Clusters::with_pieces(&positions, tolerance, piece).unwrap();
             let merged_first = copies::nearby_copies(&positions, piece).unwrap().is_some();
             assert_eq!(merged_first, piece > 3);
-            assert_eq!(
-                pieces.count, plain.count,
-                "piece {piece}, tolerance {tolerance}"
-            );
-            assert_eq!(
-                pieces.cluster_of, plain.cluster_of,
+            assert!(
+                pieces.count == plain.count && pieces.cluster_of == plain.cluster_of,
                 "piece {piece}, tolerance {tolerance}"
             );
         }
