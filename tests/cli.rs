@@ -92,6 +92,39 @@ fn info_reports_counts_and_properties() {
 }
 
 #[test]
+fn info_of_faces_that_share_no_edge_suggests_weld() {
+    let dir = folder("info-soup");
+    io::write_mesh(dir.join("cube.stl"), &shapes::cube()).unwrap();
+    io::write_mesh(dir.join("cube.obj"), &shapes::cube()).unwrap();
+    let hint = "cube.stl: no two faces share an edge, as in an STL file: add --weld";
+
+    let o = weft(&dir, &["info", "cube.stl"]);
+    assert_exit(&o, 0);
+    assert_mentions(
+        &stdout(&o),
+        &["components            12", "naked edges           36"],
+    );
+    assert_mentions(&stderr(&o), &[hint]);
+    // The report on stdout stays one JSON object; the hint goes to stderr.
+    let o = weft(&dir, &["info", "cube.stl", "--json"]);
+    assert!(stdout(&o).trim().ends_with('}') && stderr(&o).contains(hint));
+
+    for args in [&["info", "cube.stl", "--weld"][..], &["info", "cube.obj"]] {
+        let o = weft(&dir, args);
+        assert_exit(&o, 0);
+        assert!(
+            !stderr(&o).contains("share an edge"),
+            "{args:?}: {}",
+            stderr(&o)
+        );
+    }
+    assert_mentions(
+        &succeeds(&dir, &["info", "cube.stl", "--weld"]),
+        &["components            1", "closed                yes"],
+    );
+}
+
+#[test]
 fn convert_keeps_the_mesh_and_welds_stl_on_request() {
     let dir = folder("convert");
     let cube = shapes::cube();

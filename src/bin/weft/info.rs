@@ -128,6 +128,12 @@ fn flag(label: &'static str, value: bool) -> Row {
 }
 
 impl Report {
+    /// Whether no two faces share an edge (each face a piece of its own
+    /// with only naked edges), as the faces of an STL file are read.
+    pub fn faces_share_no_edge(&self) -> bool {
+        self.faces > 1 && self.components == self.faces && self.naked_edges == self.edges
+    }
+
     fn rows(&self) -> Vec<Row> {
         let point = |p: [f64; 3]| format!("[{}, {}, {}]", p[0], p[1], p[2]);
         vec![

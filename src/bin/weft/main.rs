@@ -363,6 +363,12 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             } else {
                 print!("{}", report.text(input));
             }
+            if report.faces_share_no_edge() && !cli.weld {
+                eprintln!(
+                    "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
+                    input.display()
+                );
+            }
             Ok(())
         }
         Command::Render {
