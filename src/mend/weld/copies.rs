@@ -82,7 +82,9 @@ pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<
 /// Numbers the distinct positions of one piece in order of their first
 /// copy, writing each vertex's number into `site_of`; returns how many.
 /// Positions are one when they compare equal (-0 and +0 are one, a NaN is
-/// a position of its own), as in the weld's cells.
+/// a position of its own), as in the weld's cells. A position whose probe
+/// runs past [`MAX_PROBES`] slots (only positions made to share their hash
+/// get there) is a site of its own, and its copies meet it in the cells.
 fn piece_sites(positions: &[DVec3], site_of: &mut [u32], table: &mut Vec<u32>) -> u32 {
     const EMPTY: u32 = u32::MAX;
     // At most half full, so a probe ends within a few slots.
@@ -93,23 +95,33 @@ fn piece_sites(positions: &[DVec3], site_of: &mut [u32], table: &mut Vec<u32>) -
     let mut count = 0;
     for (v, &p) in positions.iter().enumerate() {
         let mut slot = slot_of(p, bits);
-        loop {
+        let mut copy_of = None;
+        for _ in 0..MAX_PROBES {
             let there = table[slot];
             if there == EMPTY {
                 table[slot] = v as u32;
-                site_of[v] = count;
-                count += 1;
                 break;
             }
             if positions[there as usize] == p {
-                site_of[v] = site_of[there as usize];
+                copy_of = Some(there);
                 break;
             }
             slot = (slot + 1) & mask;
         }
+        site_of[v] = match copy_of {
+            Some(there) => site_of[there as usize],
+            None => {
+                count += 1;
+                count - 1
+            }
+        };
     }
     count
 }
+
+/// The longest probe of [`piece_sites`]: it keeps a file crafted so that
+/// its positions share one hash from making the weld quadratic.
+const MAX_PROBES: usize = 64;
 
 /// Where a position starts its probe in a table of `2^bits` slots.
 #[inline]
@@ -146,6 +158,47 @@ mod tests {
         assert_eq!(sites.len(), 5);
         assert_eq!((sites[0], sites[1], sites[2]), (p(0.0), p(1.0), p(1.0)));
         assert!(sites[3].x.is_nan() && sites[4].x.is_nan());
+    }
+
+    #[test]
+    fn positions_that_share_one_hash_are_sites_of_their_own_past_the_longest_probe() {
+        // Distinct positions whose hashes are all equal, each twice in a
+        // row: the first MAX_PROBES fill the probe, and the rest, and
+        // their copies, cannot find one another.
+        let k1: u64 = 0x9E37_79B9_7F4A_7C15;
+        let k2_inverse = (0..6).fold(1u64, |inverse: u64, _| {
+            inverse.wrapping_mul(2u64.wrapping_sub(0xC2B2_AE3D_27D4_EB4Fu64.wrapping_mul(inverse)))
+        });
+        let colliding: Vec<DVec3> = (1..)
+            .map(|i| {
+                let x = f64::from(i);
+                let y = f64::from_bits((x.to_bits().wrapping_mul(k1)).wrapping_mul(k2_inverse));
+                DVec3::new(x, y, 0.0)
+            })
+            .filter(|p| p.y.is_finite() && p.y != 0.0)
+            .take(2 * MAX_PROBES)
+            .collect();
+        let bits = 10;
+        assert!(colliding
+            .iter()
+            .all(|&p| slot_of(p, bits) == slot_of(colliding[0], bits)));
+        let positions: Vec<DVec3> = colliding.iter().flat_map(|&p| [p, p]).collect();
+        let mut site_of = vec![0; positions.len()];
+        let sites = piece_sites(&positions, &mut site_of, &mut Vec::new());
+        // The first MAX_PROBES positions are found again by their copies.
+        for i in 0..MAX_PROBES {
+            assert_eq!(site_of[2 * i], site_of[2 * i + 1]);
+        }
+        // Past the probe, every vertex is a site.
+        assert_eq!(sites as usize, MAX_PROBES + 2 * MAX_PROBES);
+        assert!(site_of.windows(2).all(|w| w[1] >= w[0] && w[1] <= w[0] + 1));
+        // And the weld's clusters are those of the vertices one by one.
+        let (plain, count) = super::super::vertex_clusters(&positions, 0.0)
+            .unwrap()
+            .into_labels();
+        let pieces = super::super::Clusters::with_pieces(&positions, 0.0, 64).unwrap();
+        assert_eq!((pieces.cluster_of, pieces.count), (plain, count));
+        assert_eq!(count, 2 * MAX_PROBES);
     }
 
     #[test]
