@@ -740,14 +740,19 @@ impl Cell {
     }
 }
 
+/// Three words mixed into one by large odd multipliers, which spread
+/// neighbouring cells (and positions) over a table.
+#[inline]
+pub(crate) fn mix_words([x, y, z]: [u64; 3]) -> u64 {
+    x.wrapping_mul(0x9E37_79B9_7F4A_7C15)
+        ^ y.wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
+        ^ z.wrapping_mul(0x1656_67B1_9E37_79F9)
+}
+
 impl Hash for Cell {
     #[inline]
     fn hash<H: Hasher>(&self, state: &mut H) {
-        // Large odd multipliers spread neighbouring cells over the table.
-        let [x, y, z] = self.0;
-        let h = (x as u64).wrapping_mul(0x9E37_79B9_7F4A_7C15)
-            ^ (y as u64).wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-            ^ (z as u64).wrapping_mul(0x1656_67B1_9E37_79F9);
+        let h = mix_words(self.0.map(|c| c as u64));
         state.write_u64(h ^ (h >> 29));
     }
 }

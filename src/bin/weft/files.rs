@@ -118,6 +118,15 @@ pub fn report_written(path: &Path, mesh: &Mesh) {
     );
 }
 
+/// Says on stderr that no two faces of the mesh read from `path` share an
+/// edge, as an STL file's are read, and suggests `--weld`.
+pub fn suggest_weld(path: &Path) {
+    eprintln!(
+        "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
+        path.display()
+    );
+}
+
 /// Runs `work`; when it takes longer than half a second and stderr is a
 /// terminal, shows `label` and the time spent until it ends.
 pub fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {

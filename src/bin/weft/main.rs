@@ -24,7 +24,9 @@ use weft::io::render::{self, RenderOptions};
 use weft::io::{self, IoError};
 
 use args::{mesh_path, picture_size, png_path, tolerance, InOut};
-use files::{operation_failed, read_file, read_file_or_mesh, with_progress, write_file};
+use files::{
+    operation_failed, read_file, read_file_or_mesh, suggest_weld, with_progress, write_file,
+};
 
 #[derive(Parser)]
 #[command(
@@ -364,10 +366,7 @@ fn run(cli: &Cli) -> Result<(), Failure> {
                 print!("{}", report.text(input));
             }
             if report.faces_share_no_edge() && !cli.weld {
-                eprintln!(
-                    "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
-                    input.display()
-                );
+                suggest_weld(input);
             }
             Ok(())
         }

@@ -7,7 +7,7 @@ use weft::io;
 use weft::Mesh;
 
 use crate::args::InOut;
-use crate::files::{operation_failed, read, with_progress, write};
+use crate::files::{operation_failed, read, suggest_weld, with_progress, write};
 use crate::{Cli, Failure};
 
 /// Faces whose sides give the median edge length of the hint.
@@ -99,10 +99,7 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
             && report.open_pieces == mesh.face_count()
             && mesh.face_count() > 1
         {
-            eprintln!(
-                "{}: no two faces share an edge, as in an STL file: add --weld to join the corners first",
-                files.input.display()
-            );
+            suggest_weld(&files.input);
         }
         oriented
     } else if unify {

@@ -14,6 +14,8 @@ use rayon::prelude::*;
 use crate::buffers::{fresh_zeroed, prefix_sum, split_by_offsets};
 use crate::error::Result;
 
+use super::mix_words;
+
 /// Vertices in a piece: 6 MB of positions and a 2 MB table, in the cache.
 pub(super) const PIECE: usize = 1 << 18;
 
@@ -127,10 +129,7 @@ const MAX_PROBES: usize = 64;
 #[inline]
 fn slot_of(p: DVec3, bits: u32) -> usize {
     // Adding 0 makes -0 and +0 one key: they are one position.
-    let [x, y, z] = (p + 0.0).to_array().map(f64::to_bits);
-    let h = x.wrapping_mul(0x9E37_79B9_7F4A_7C15)
-        ^ y.wrapping_mul(0xC2B2_AE3D_27D4_EB4F)
-        ^ z.wrapping_mul(0x1656_67B1_9E37_79F9);
+    let h = mix_words((p + 0.0).to_array().map(f64::to_bits));
     ((h ^ (h >> 32)).wrapping_mul(0x9E37_79B9_7F4A_7C15) >> (64 - bits)) as usize
 }
 
