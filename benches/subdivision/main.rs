@@ -28,8 +28,10 @@
 //! - re-evaluation at level 3 of the 100k cases: `refiner-build`,
 //!   `refiner-evaluate` (into a buffer of the caller) beside OpenSubdiv's
 //!   stencils: `stencil-update` (`StencilTableReal<double>::UpdateValues`,
-//!   one thread) and `stencil-omp` (`Far::StencilTable` in single precision
-//!   evaluated by `Osd::OmpEvaluator` on all threads), and the warm floor of
+//!   one thread), `stencil-update-Nt` (the same table, each of all threads
+//!   updating a contiguous range), `stencil-omp-1t` and `stencil-omp-Nt`
+//!   (`Far::StencilTable` in single precision evaluated by
+//!   `Osd::OmpEvaluator` on one and on all threads), and the warm floor of
 //!   the evaluated positions.
 
 mod abi;
@@ -263,14 +265,23 @@ fn reevaluation(
     group.bench_function(id("stencil-update"), |b| {
         b.iter(|| table.update(&moved, &mut out))
     });
+    group.bench_function(id(&format!("stencil-update-{threads}t")), |b| {
+        b.iter(|| table.update_on_threads(&moved, &mut out, threads as u32))
+    });
     drop((table, out));
 
-    let parallel = OsdParallelStencils::new(&case.cage, &options, levels, threads as u32).unwrap();
+    let parallel = OsdParallelStencils::new(&case.cage, &options, levels).unwrap();
     let moved: Vec<f32> = moved.iter().map(|&x| x as f32).collect();
     let mut out = vec![0.0f32; 3 * parallel.vertex_count()];
-    group.bench_function(id(&format!("stencil-omp-{threads}t")), |b| {
-        b.iter(|| parallel.update(&moved, &mut out))
-    });
+    // One OpenMP thread beside all: Osd's kernel keeps every thread's sum
+    // in one small array, so two threads share its cache line.
+    let mut omp_thread_counts = vec![1, threads];
+    omp_thread_counts.dedup();
+    for omp_threads in omp_thread_counts {
+        group.bench_function(id(&format!("stencil-omp-{omp_threads}t")), |b| {
+            b.iter(|| parallel.update(&moved, &mut out, omp_threads as u32))
+        });
+    }
 }
 
 /// The target cases (level 3 of the 100k tori) timed in turn, those the

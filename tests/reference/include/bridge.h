@@ -60,6 +60,10 @@ public:
 
   std::size_t stencil_count() const;
   void update(rust::Slice<const double> cage_positions, rust::Slice<double> out) const;
+  // UpdateValues on `threads` std::threads, each over a contiguous range of
+  // stencils, as a host without TBB spreads Far's table over its cores.
+  void update_on_threads(rust::Slice<const double> cage_positions, rust::Slice<double> out,
+                         uint32_t threads) const;
 
 private:
   std::unique_ptr<const OpenSubdiv::Far::StencilTableReal<double>> table_;
@@ -71,18 +75,17 @@ std::unique_ptr<OsdStencils> osd_stencils_new(const OsdRefiner &refiner);
 // by Osd::OmpEvaluator::EvalStencils on `threads` OpenMP threads.
 class OsdParallelStencils {
 public:
-  OsdParallelStencils(std::unique_ptr<const OpenSubdiv::Far::StencilTable> table, int threads);
+  explicit OsdParallelStencils(std::unique_ptr<const OpenSubdiv::Far::StencilTable> table);
 
   std::size_t stencil_count() const;
-  void update(rust::Slice<const float> cage_positions, rust::Slice<float> out) const;
+  void update(rust::Slice<const float> cage_positions, rust::Slice<float> out,
+              uint32_t threads) const;
 
 private:
   std::unique_ptr<const OpenSubdiv::Far::StencilTable> table_;
-  int threads_;
 };
 
-std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner,
-                                                               uint32_t threads);
+std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner);
 
 OmMesh om_catmull_clark(rust::Slice<const double> positions, rust::Slice<const uint32_t> face_sizes,
                         rust::Slice<const uint32_t> face_indices, uint32_t levels);

@@ -23,6 +23,7 @@
 #include <mutex>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -342,14 +343,30 @@ void OsdStencils::update(rust::Slice<const double> cage_positions, rust::Slice<d
   table_->UpdateValues(src, dst);
 }
 
-OsdParallelStencils::OsdParallelStencils(std::unique_ptr<const Far::StencilTable> table,
-                                         int threads)
-    : table_(std::move(table)), threads_(threads) {}
+void OsdStencils::update_on_threads(rust::Slice<const double> cage_positions,
+                                    rust::Slice<double> out, uint32_t threads) const {
+  const int count = table_->GetNumStencils();
+  const int parts = int(std::max<uint32_t>(threads, 1));
+  std::vector<std::thread> workers;
+  workers.reserve(std::size_t(parts - 1));
+  auto run = [&](int part) {
+    auto src = rows<3>(cage_positions.data(), 3);
+    auto dst = rows<3>(out.data(), 3);
+    const int start = int(std::int64_t(count) * part / parts);
+    const int end = int(std::int64_t(count) * (part + 1) / parts);
+    if (start < end) table_->UpdateValues(src, dst, start, end);
+  };
+  for (int part = 1; part < parts; ++part) workers.emplace_back(run, part);
+  run(0);
+  for (auto &worker : workers) worker.join();
+}
 
-std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner,
-                                                               uint32_t threads) {
+OsdParallelStencils::OsdParallelStencils(std::unique_ptr<const Far::StencilTable> table)
+    : table_(std::move(table)) {}
+
+std::unique_ptr<OsdParallelStencils> osd_parallel_stencils_new(const OsdRefiner &refiner) {
   return std::make_unique<OsdParallelStencils>(
-      last_level_stencils<Far::StencilTableFactory, Far::StencilTable>(refiner), int(threads));
+      last_level_stencils<Far::StencilTableFactory, Far::StencilTable>(refiner));
 }
 
 std::size_t OsdParallelStencils::stencil_count() const {
@@ -357,9 +374,9 @@ std::size_t OsdParallelStencils::stencil_count() const {
 }
 
 void OsdParallelStencils::update(rust::Slice<const float> cage_positions,
-                                 rust::Slice<float> out) const {
+                                 rust::Slice<float> out, uint32_t threads) const {
   namespace Osd = OpenSubdiv::Osd;
-  Osd::OmpEvaluator::SetNumThreads(threads_);
+  Osd::OmpEvaluator::SetNumThreads(int(std::max<uint32_t>(threads, 1)));
   const Osd::BufferDescriptor desc(0, 3, 3);
   const bool ok = Osd::OmpEvaluator::EvalStencils(
       cage_positions.data(), desc, out.data(), desc, table_->GetSizes().data(),

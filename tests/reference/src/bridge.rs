@@ -95,6 +95,12 @@ pub(crate) mod ffi {
         fn osd_stencils_new(refiner: &OsdRefiner) -> Result<UniquePtr<OsdStencils>>;
         fn stencil_count(self: &OsdStencils) -> usize;
         fn update(self: &OsdStencils, cage_positions: &[f64], out: &mut [f64]);
+        fn update_on_threads(
+            self: &OsdStencils,
+            cage_positions: &[f64],
+            out: &mut [f64],
+            threads: u32,
+        );
 
         /// A `Far::StencilTable` (single precision, as Osd's evaluators
         /// take) for the last level, evaluated by `Osd::OmpEvaluator`.
@@ -102,13 +108,13 @@ pub(crate) mod ffi {
 
         fn osd_parallel_stencils_new(
             refiner: &OsdRefiner,
-            threads: u32,
         ) -> Result<UniquePtr<OsdParallelStencils>>;
         fn stencil_count(self: &OsdParallelStencils) -> usize;
         fn update(
             self: &OsdParallelStencils,
             cage_positions: &[f32],
             out: &mut [f32],
+            threads: u32,
         ) -> Result<()>;
 
         fn om_catmull_clark(

@@ -857,6 +857,22 @@ impl OsdStencils {
     /// # Panics
     /// When a buffer has the wrong length.
     pub fn update(&self, cage_positions: &[f64], out: &mut [f64]) {
+        self.check_lengths(cage_positions, out);
+        self.table.update(cage_positions, out);
+    }
+
+    /// [`OsdStencils::update`] spread over `threads` threads (at least one),
+    /// each calling `UpdateValues` on a contiguous range of the stencils:
+    /// Far's table on several cores without Osd's evaluators.
+    ///
+    /// # Panics
+    /// When a buffer has the wrong length.
+    pub fn update_on_threads(&self, cage_positions: &[f64], out: &mut [f64], threads: u32) {
+        self.check_lengths(cage_positions, out);
+        self.table.update_on_threads(cage_positions, out, threads);
+    }
+
+    fn check_lengths(&self, cage_positions: &[f64], out: &[f64]) {
         assert_eq!(
             cage_positions.len(),
             self.cage_vertex_count * 3,
@@ -869,7 +885,6 @@ impl OsdStencils {
             "out must hold xyz for {} vertices",
             self.vertex_count()
         );
-        self.table.update(cage_positions, out);
     }
 }
 
@@ -884,21 +899,16 @@ pub struct OsdParallelStencils {
 
 impl OsdParallelStencils {
     /// Refines `cage`'s topology `levels` times (1..=[`MAX_LEVELS`]) and
-    /// builds the stencils, to be evaluated on `threads` threads.
+    /// builds the stencils.
     ///
     /// # Errors
     /// As [`OsdRefiner::new`]; `levels` 0 is refused.
-    pub fn new(
-        cage: &RefMesh,
-        options: &OsdOptions,
-        levels: u32,
-        threads: u32,
-    ) -> Result<Self, ReferenceError> {
+    pub fn new(cage: &RefMesh, options: &OsdOptions, levels: u32) -> Result<Self, ReferenceError> {
         if levels == 0 {
             return refuse("stencils need at least one level".to_owned());
         }
         let refiner = OsdRefiner::new(cage, options, levels)?;
-        let table = ffi::osd_parallel_stencils_new(&refiner.inner, threads.max(1))?;
+        let table = ffi::osd_parallel_stencils_new(&refiner.inner)?;
         Ok(OsdParallelStencils {
             table,
             cage_vertex_count: cage.vertex_count(),
@@ -911,15 +921,16 @@ impl OsdParallelStencils {
     }
 
     /// Evaluates the stencils on `cage_positions` (xyz per cage vertex) into
-    /// `out` (xyz per refined vertex); allocates nothing.
+    /// `out` (xyz per refined vertex) on `threads` OpenMP threads (at least
+    /// one); allocates nothing.
     ///
     /// # Panics
     /// When a buffer has the wrong length, or OpenSubdiv's evaluator fails.
-    pub fn update(&self, cage_positions: &[f32], out: &mut [f32]) {
+    pub fn update(&self, cage_positions: &[f32], out: &mut [f32], threads: u32) {
         assert_eq!(cage_positions.len(), self.cage_vertex_count * 3);
         assert_eq!(out.len(), self.vertex_count() * 3);
         self.table
-            .update(cage_positions, out)
+            .update(cage_positions, out, threads)
             .expect("OmpEvaluator evaluates the stencils");
     }
 }

@@ -259,6 +259,44 @@ fn stencils_reproduce_refinement() {
     }
 }
 
+#[test]
+fn stencils_on_threads_write_what_one_thread_writes() {
+    // 98 stencils at level 2: 200 threads leave some ranges empty.
+    let cage = cube();
+    let stencils = OsdStencils::new(&cage, &catmark(), 2).unwrap();
+    let moved = skew(&cage);
+    let mut one = vec![f64::NAN; stencils.vertex_count() * 3];
+    stencils.update(&moved.positions, &mut one);
+    for threads in [0, 1, 2, 3, 7, 200] {
+        let mut spread = vec![f64::NAN; one.len()];
+        stencils.update_on_threads(&moved.positions, &mut spread, threads);
+        let bits = |v: &[f64]| v.iter().map(|x| x.to_bits()).collect::<Vec<_>>();
+        assert_eq!(bits(&spread), bits(&one), "{threads} threads");
+    }
+}
+
+#[test]
+fn openmp_stencils_agree_with_double_precision_on_any_thread_count() {
+    let cage = cube();
+    let stencils = OsdStencils::new(&cage, &catmark(), 2).unwrap();
+    let parallel = OsdParallelStencils::new(&cage, &catmark(), 2).unwrap();
+    assert_eq!(parallel.vertex_count(), stencils.vertex_count());
+    let moved = skew(&cage);
+    let mut exact = vec![0.0; stencils.vertex_count() * 3];
+    stencils.update(&moved.positions, &mut exact);
+    let single: Vec<f32> = moved.positions.iter().map(|&x| x as f32).collect();
+    for threads in [0, 1, 2] {
+        let mut out = vec![f32::NAN; exact.len()];
+        parallel.update(&single, &mut out, threads);
+        for (a, b) in out.iter().zip(&exact) {
+            assert!(
+                (f64::from(*a) - b).abs() < 1e-5,
+                "{a} vs {b}, {threads} threads"
+            );
+        }
+    }
+}
+
 fn skew(mesh: &RefMesh) -> RefMesh {
     let mut moved = mesh.clone();
     for (i, x) in moved.positions.iter_mut().enumerate() {
