@@ -425,6 +425,8 @@ template <class Mesh> OmMesh extract(const Mesh &mesh) {
     out.positions.push_back(p[2]);
   }
   out.face_sizes.reserve(mesh.n_faces());
+  // Every corner is a halfedge: room for all without regrowing.
+  out.face_indices.reserve(mesh.n_halfedges());
   for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
     uint32_t size = 0;
     for (auto v : mesh.fv_range(typename Mesh::FaceHandle(int(f)))) {
