@@ -356,7 +356,13 @@ void OsdStencils::update_on_threads(rust::Slice<const double> cage_positions,
     const int end = int(std::int64_t(count) * (part + 1) / parts);
     if (start < end) table_->UpdateValues(src, dst, start, end);
   };
-  for (int part = 1; part < parts; ++part) workers.emplace_back(run, part);
+  try {
+    for (int part = 1; part < parts; ++part) workers.emplace_back(run, part);
+  } catch (...) {
+    // No thread left running on `out` when the error reaches the caller.
+    for (auto &worker : workers) worker.join();
+    throw;
+  }
   run(0);
   for (auto &worker : workers) worker.join();
 }

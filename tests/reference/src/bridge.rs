@@ -100,7 +100,7 @@ pub(crate) mod ffi {
             cage_positions: &[f64],
             out: &mut [f64],
             threads: u32,
-        );
+        ) -> Result<()>;
 
         /// A `Far::StencilTable` (single precision, as Osd's evaluators
         /// take) for the last level, evaluated by `Osd::OmpEvaluator`.

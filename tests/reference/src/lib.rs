@@ -866,10 +866,12 @@ impl OsdStencils {
     /// Far's table on several cores without Osd's evaluators.
     ///
     /// # Panics
-    /// When a buffer has the wrong length.
+    /// When a buffer has the wrong length, or a thread cannot be started.
     pub fn update_on_threads(&self, cage_positions: &[f64], out: &mut [f64], threads: u32) {
         self.check_lengths(cage_positions, out);
-        self.table.update_on_threads(cage_positions, out, threads);
+        self.table
+            .update_on_threads(cage_positions, out, threads)
+            .expect("threads start to update the stencils");
     }
 
     fn check_lengths(&self, cage_positions: &[f64], out: &[f64]) {
