@@ -1238,6 +1238,15 @@ fn weld_joins_inputs_and_cull_removes_twins() {
     let boxes = io::read_mesh(dir.join("boxes.ply")).unwrap();
     // Two cubes sharing a face: 12 vertices; the STL cube came as 12 triangles.
     assert_eq!((boxes.vertex_count(), boxes.face_count()), (12, 6 + 12));
+    // The STL's 36 corners are counted as the file holds them, though its
+    // copies were merged while reading: 8 + 36 vertices, 32 merged.
+    assert_mentions(
+        &stderr(&o),
+        &[
+            "joined 2 meshes (44 vertices, 18 faces)",
+            "merged 32 vertices",
+        ],
+    );
 
     let o = weft(
         &dir,

@@ -236,6 +236,17 @@ pub fn read_mesh(path: impl AsRef<Path>) -> Result<Mesh, IoError> {
 pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<Mesh, IoError> {
     let path = path.as_ref();
     let format = Format::from_path(path)?;
+    if options.weld {
+        // The weld follows: a soup's copies merged while reading.
+        let read = read_mesh_to_weld(
+            path,
+            &ReadOptions {
+                weld: false,
+                ..*options
+            },
+        )?;
+        return weld_identical(path, read.mesh);
+    }
     let streamed = read_streamed(format, path)?;
     let mesh = match (format, streamed) {
         (_, Some(mesh)) => mesh,
@@ -246,11 +257,55 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
                 .map_err(|e| e.in_file(path))?
         }
     };
-    if options.weld {
-        weld_identical(path, mesh)
-    } else {
-        Ok(mesh)
+    Ok(mesh)
+}
+
+/// A mesh read for a weld to follow (see [`read_mesh_to_weld`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ReadToWeld {
+    /// The mesh, whose weld is the weld of the file's mesh.
+    pub mesh: Mesh,
+    /// Vertices of the file merged into an exact copy of their position
+    /// while reading: add them to the weld's count of merged vertices.
+    pub merged_copies: usize,
+}
+
+/// Reads a mesh file that is to be welded next, as [`read_mesh_with`]
+/// reads it (`options.weld` set, the weld at tolerance 0 included), but
+/// for binary STL: there, the exact copies of a position near each other
+/// in the file (each position of a soup, about six times) are merged while
+/// reading, a block of triangles at a time, so that a sixth of the corners'
+/// positions are held. The mesh's faces are the file's triangles, each
+/// with three distinct vertices (a triangle whose corners are copies of
+/// one another keeps them apart, for the weld to remove), and
+/// [`weld`](crate::mend::weld::weld) of it at any tolerance gives the mesh
+/// and the report it gives for the file's own corners, but for the copies
+/// merged here, counted in [`ReadToWeld::merged_copies`].
+///
+/// # Errors
+/// As [`read_mesh_with`]; [`IoError::Weld`] when memory runs out merging.
+pub fn read_mesh_to_weld(
+    path: impl AsRef<Path>,
+    options: &ReadOptions,
+) -> Result<ReadToWeld, IoError> {
+    let path = path.as_ref();
+    if Format::from_path(path)? == Format::Stl {
+        if let Some((mesh, merged_copies)) = stl::read_path_to_weld(path)? {
+            let mesh = match options.weld {
+                true => weld_identical(path, mesh)?,
+                false => mesh,
+            };
+            return Ok(ReadToWeld {
+                mesh,
+                merged_copies,
+            });
+        }
     }
+    let mesh = read_mesh_with(path, options)?;
+    Ok(ReadToWeld {
+        mesh,
+        merged_copies: 0,
+    })
 }
 
 /// Reads a mesh file with its colours, UVs and creases (what its format
@@ -262,6 +317,10 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
 pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<MeshFile, IoError> {
     let path = path.as_ref();
     let format = Format::from_path(path)?;
+    if options.weld && format == Format::Stl {
+        // STL holds no attributes: its copies merged while reading.
+        return read_mesh_with(path, options).map(MeshFile::new);
+    }
     let streamed = read_streamed(format, path)?;
     let file = match (format, streamed) {
         (_, Some(mesh)) => MeshFile::new(mesh),

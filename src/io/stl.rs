@@ -16,6 +16,7 @@ use rayon::prelude::*;
 
 use super::text::{show, Tokens};
 use super::{build_mesh, IoError, Location};
+use crate::error::MeshError;
 use crate::mesh::Mesh;
 
 const HEADER: usize = 80;
@@ -81,11 +82,71 @@ fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
 /// # Errors
 /// As [`parse`]; [`IoError::File`] when the file cannot be read.
 pub(crate) fn read_path(path: &Path) -> Result<Option<Mesh>, IoError> {
-    read_in_blocks(path, BLOCK_TRIANGLES)
+    read_in_blocks(path, BLOCK_TRIANGLES, Corners::Own).map(|read| read.map(|(mesh, _)| mesh))
 }
 
-/// [`read_path`], `block_triangles` at a time.
-fn read_in_blocks(path: &Path, block_triangles: usize) -> Result<Option<Mesh>, IoError> {
+/// [`read_path`] for a weld to follow: the exact copies of a position near
+/// each other in the file (a soup's every position, about six times) are
+/// merged while reading, so that the positions held are about a sixth of
+/// the corners (see `mend::weld::append_triangle_sites`); the weld of the
+/// mesh is the weld of the soup. Returns the mesh and how many corners were
+/// merged into a copy. Corners that are few copies of one another in the
+/// first block (triangles in no spatial order) are read as [`read_path`]
+/// reads them.
+///
+/// # Errors
+/// As [`read_path`].
+pub(crate) fn read_path_to_weld(path: &Path) -> Result<Option<(Mesh, usize)>, IoError> {
+    read_in_blocks(path, BLOCK_TRIANGLES, Corners::MergedIfCopies)
+}
+
+/// How [`read_in_blocks`] makes a block's corners vertices.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Corners {
+    /// Each corner a vertex of its own, as the file holds them.
+    Own,
+    /// The copies near each other merged, when the first block has many.
+    MergedIfCopies,
+}
+
+/// The vertices read so far: every corner's, or the merged copies' sites
+/// and each corner's site.
+enum Vertices {
+    Own(Vec<DVec3>),
+    Merged {
+        sites: Vec<DVec3>,
+        corner_sites: Vec<u32>,
+        corners: Vec<DVec3>,
+    },
+}
+
+impl Vertices {
+    fn push(&mut self, records: &[u8]) -> crate::error::Result<()> {
+        match self {
+            Vertices::Own(positions) => {
+                push_corners(positions, records);
+                Ok(())
+            }
+            Vertices::Merged {
+                sites,
+                corner_sites,
+                corners,
+            } => {
+                corners.clear();
+                push_corners(corners, records);
+                crate::mend::weld::append_triangle_sites(corners, sites, corner_sites)
+            }
+        }
+    }
+}
+
+/// [`read_path`], `block_triangles` at a time, the corners made vertices
+/// as `corners` says; with the mesh, how many corners were merged.
+fn read_in_blocks(
+    path: &Path,
+    block_triangles: usize,
+    corners: Corners,
+) -> Result<Option<(Mesh, usize)>, IoError> {
     let block_triangles = block_triangles.max(1);
     let failed = |source| IoError::File {
         path: path.to_path_buf(),
@@ -109,18 +170,48 @@ fn read_in_blocks(path: &Path, block_triangles: usize) -> Result<Option<Mesh>, I
     let mut filled = left.min(block_triangles) * RECORD;
     file.read_exact(&mut front[..filled]).map_err(failed)?;
     left -= filled / RECORD;
-    let mut positions = Vec::with_capacity(count * 3);
+    let merged = corners == Corners::MergedIfCopies && {
+        let mut first = Vec::new();
+        push_corners(&mut first, &front[..filled]);
+        crate::mend::weld::worth_merging(&first)
+    };
+    let mut vertices = if merged {
+        Vertices::Merged {
+            sites: Vec::new(),
+            corner_sites: Vec::with_capacity(count * 3),
+            corners: Vec::with_capacity(block / RECORD * 3),
+        }
+    } else {
+        Vertices::Own(Vec::with_capacity(count * 3))
+    };
+    let out_of_memory = |source| IoError::Weld {
+        path: path.to_path_buf(),
+        source,
+    };
     while filled > 0 {
         let next = left.min(block_triangles) * RECORD;
-        let ((), read) = rayon::join(
-            || push_corners(&mut positions, &front[..filled]),
+        let (pushed, read_next) = rayon::join(
+            || vertices.push(&front[..filled]),
             || file.read_exact(&mut back[..next]),
         );
-        read.map_err(failed)?;
+        pushed.map_err(out_of_memory)?;
+        read_next.map_err(failed)?;
         std::mem::swap(&mut front, &mut back);
         (filled, left) = (next, left - next / RECORD);
     }
-    soup(positions).map(Some).map_err(|e| e.in_file(path))
+    let (mesh, merged) = match vertices {
+        Vertices::Own(positions) => (soup(positions), 0),
+        Vertices::Merged {
+            sites,
+            corner_sites,
+            ..
+        } => {
+            let merged = corner_sites.len() - sites.len();
+            (merged_soup(sites, corner_sites), merged)
+        }
+    };
+    mesh.map(|mesh| Some((mesh, merged)))
+        .map_err(|e| e.in_file(path))
 }
 
 /// Triangles a block of [`read_path`] holds: 13 MB.
@@ -152,9 +243,47 @@ fn soup(positions: Vec<DVec3>) -> Result<Mesh, IoError> {
         positions,
         sizes,
         indices,
-        |v| Location::Byte(84 + v / 3 * RECORD + 12 + v % 3 * 12),
+        |v| Location::Byte(corner_byte(v)),
         |f| Location::Byte(84 + f * RECORD),
     )
+}
+
+/// The mesh of a binary file's corners merged into `sites`: a triangle
+/// every three corners, each naming its corner's site. A non-finite
+/// position is reported at its first corner, as [`soup`] reports it.
+fn merged_soup(sites: Vec<DVec3>, corner_sites: Vec<u32>) -> Result<Mesh, IoError> {
+    if crate::mesh::first_non_finite(&sites).is_some() {
+        let corner = corner_sites
+            .par_iter()
+            .position_first(|&s| !sites[s as usize].is_finite())
+            .unwrap_or(0);
+        let p = sites[corner_sites[corner] as usize];
+        return Err(IoError::InvalidMesh {
+            file: None,
+            location: Location::Byte(corner_byte(corner)),
+            source: MeshError::NonFiniteCoordinate {
+                vertex: corner,
+                x: p.x,
+                y: p.y,
+                z: p.z,
+            },
+        });
+    }
+    let count = corner_sites.len() / 3;
+    let mut sizes = Vec::with_capacity(count);
+    sizes.par_extend(rayon::iter::repeat_n(3u32, count).with_min_len(4096));
+    build_mesh(
+        sites,
+        sizes,
+        corner_sites,
+        |_| Location::Byte(0),
+        |f| Location::Byte(84 + f * RECORD),
+    )
+}
+
+/// Where corner `v` of a binary file starts.
+fn corner_byte(v: usize) -> usize {
+    84 + v / 3 * RECORD + 12 + v % 3 * 12
 }
 
 fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
@@ -338,9 +467,99 @@ mod tests {
     /// [`position_bits`].
     fn read_file(bytes: &[u8], block_triangles: usize) -> Option<(Mesh, Vec<[u64; 3]>)> {
         let file = Scratch::new(&format!("{}-{block_triangles}", bytes.len()), bytes);
-        let mesh = read_in_blocks(&file.0, block_triangles).unwrap()?;
+        let (mesh, merged) = read_in_blocks(&file.0, block_triangles, Corners::Own).unwrap()?;
+        assert_eq!(merged, 0);
         let bits = position_bits(&mesh);
         Some((mesh, bits))
+    }
+
+    /// A soup of `mesh`'s faces (fans of triangles) in a binary file's
+    /// bytes, with a triangle whose corners are two copies of one position
+    /// and one at a single position, in front and in the middle: welded,
+    /// each collapses.
+    fn soup_bytes(mesh: &Mesh) -> Vec<u8> {
+        let faces = binary(mesh);
+        let (p, q) = (mesh.positions()[0], mesh.positions()[1]);
+        let extra = Mesh::new(vec![p, q, p, p, p, p], vec![3, 3], vec![0, 1, 2, 3, 4, 5]);
+        let extra = binary(&extra.unwrap());
+        let middle = 84 + mesh.face_count() / 2 * RECORD;
+        let mut soup = faces[..84].to_vec();
+        for part in [
+            &extra[84..],
+            &faces[84..middle],
+            &extra[84..],
+            &faces[middle..],
+        ] {
+            soup.extend_from_slice(part);
+        }
+        let count = (soup.len() - 84) / RECORD;
+        soup[80..84].copy_from_slice(&(count as u32).to_le_bytes());
+        soup
+    }
+
+    #[test]
+    fn copies_merged_while_reading_weld_as_the_soup_does() {
+        // 80,000 triangles: two pieces of copies, and blocks of any size.
+        let mut torus = shapes::triangle_torus(200, 200);
+        torus.positions_mut()[0].x = -0.0;
+        let bytes = soup_bytes(&torus);
+        let soup = parse(&bytes).unwrap();
+        for block in [1, 999, 65_536, BLOCK_TRIANGLES] {
+            let file = Scratch::new(&format!("merged-{block}"), &bytes);
+            let (mesh, merged) = read_in_blocks(&file.0, block, Corners::MergedIfCopies)
+                .unwrap()
+                .unwrap();
+            assert_eq!(mesh.face_count(), soup.face_count());
+            assert_eq!(mesh.vertex_count() + merged, soup.vertex_count());
+            // A first block of one triangle shows no copies: read as the soup.
+            let merging = block > 1;
+            assert_eq!(
+                mesh.vertex_count() < soup.vertex_count() / 4,
+                merging,
+                "block of {block}"
+            );
+            // Every corner keeps its position, bit for bit.
+            let corner_bits = |m: &Mesh| -> Vec<[u64; 3]> {
+                let bits = position_bits(m);
+                m.face_indices().iter().map(|&v| bits[v as usize]).collect()
+            };
+            let same_corners = corner_bits(&mesh) == corner_bits(&soup);
+            assert!(same_corners, "block of {block}");
+            for tolerance in [0.0, 1e-9, 0.01, 0.3] {
+                let (welded, report) = crate::mend::weld::weld(&mesh, tolerance).unwrap();
+                let (expected, expected_report) =
+                    crate::mend::weld::weld(&soup, tolerance).unwrap();
+                let same = position_bits(&welded) == position_bits(&expected) && welded == expected;
+                assert!(same, "block of {block}, tolerance {tolerance}");
+                assert_eq!(
+                    report.merged_vertex_count + merged,
+                    expected_report.merged_vertex_count
+                );
+                assert_eq!(
+                    (report.removed_face_count, report.unused_vertex_count),
+                    (
+                        expected_report.removed_face_count,
+                        expected_report.unused_vertex_count
+                    )
+                );
+                assert!(report.removed_face_count >= 4);
+            }
+        }
+    }
+
+    #[test]
+    fn corners_with_few_copies_are_read_as_their_own_vertices() {
+        // Every triangle its own, far from the others: nothing to merge.
+        let triangles: Vec<DVec3> = (0..3000)
+            .map(|i| DVec3::new(i as f64, (i % 3) as f64, 0.5 * i as f64))
+            .collect();
+        let mesh = Mesh::new(triangles, vec![3; 1000], (0..3000).collect()).unwrap();
+        let bytes = binary(&mesh);
+        let file = Scratch::new("few-copies", &bytes);
+        let (read, merged) = read_in_blocks(&file.0, 100, Corners::MergedIfCopies)
+            .unwrap()
+            .unwrap();
+        assert_eq!((read, merged), (parse(&bytes).unwrap(), 0));
     }
 
     #[test]
@@ -389,9 +608,13 @@ mod tests {
         let at = 84 + RECORD + 12 + 2 * 12 + 4;
         bytes[at..at + 4].copy_from_slice(&f32::NAN.to_le_bytes());
         let file = Scratch::new("nan", &bytes);
-        let streamed = read_in_blocks(&file.0, 1).unwrap_err().to_string();
+        let streamed = read_in_blocks(&file.0, 1, Corners::Own);
+        let streamed = streamed.unwrap_err().to_string();
         let whole = parse(&bytes).unwrap_err().in_file(&file.0).to_string();
         assert_eq!(streamed, whole);
         assert!(streamed.contains(&format!("byte {}", at - 4)), "{streamed}");
+        // Merged while reading, named by the same corner.
+        let merged = read_in_blocks(&file.0, 12, Corners::MergedIfCopies);
+        assert_eq!(merged.unwrap_err().to_string(), whole);
     }
 }

@@ -41,6 +41,23 @@ pub fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
     Ok(file.mesh)
 }
 
+/// Reads a mesh that is welded next, as [`read`] does, but a binary STL
+/// file with the copies of each position merged while reading (see
+/// `io::read_mesh_to_weld`); with the mesh, how many vertices were merged.
+pub fn read_to_weld(cli: &Cli, path: &Path) -> Result<(Mesh, usize), Failure> {
+    if Format::from_path(path).ok() != Some(Format::Stl) {
+        return read(cli, path).map(|mesh| (mesh, 0));
+    }
+    let label = format!("reading {}", path.display());
+    let options = ReadOptions {
+        weld: cli.weld,
+        allow_repeated_vertices: cli.allow_repeated_vertices,
+    };
+    let read = with_progress(&label, || io::read_mesh_to_weld(path, &options))?;
+    require_faces(path, &read.mesh)?;
+    Ok((read.mesh, read.merged_copies))
+}
+
 /// As [`read_file`], but for a command that can do without colours, UVs
 /// and creases: when only those are malformed, says so on stderr and goes
 /// on with the mesh alone.

@@ -7,7 +7,7 @@ use weft::io;
 use weft::Mesh;
 
 use crate::args::InOut;
-use crate::files::{operation_failed, read, suggest_weld, with_progress, write};
+use crate::files::{operation_failed, read, read_to_weld, suggest_weld, with_progress, write};
 use crate::{Cli, Failure};
 
 /// Faces whose sides give the median edge length of the hint.
@@ -23,12 +23,13 @@ pub fn weld(
     tolerance: Option<f64>,
     allow_collapse: bool,
 ) -> Result<(), Failure> {
-    let meshes = inputs
-        .iter()
-        .map(|path| read(cli, path))
-        .collect::<Result<Vec<_>, _>>()?;
+    let (mut meshes, mut merged_copies) = (Vec::with_capacity(inputs.len()), 0);
+    for path in inputs {
+        let (mesh, merged) = read_to_weld(cli, path)?;
+        meshes.push(mesh);
+        merged_copies += merged;
+    }
     // One input is its own join: no copy of it.
-    let mut meshes = meshes;
     let joined = if meshes.len() == 1 {
         meshes.pop().unwrap_or_default()
     } else {
@@ -38,7 +39,8 @@ pub fn weld(
     };
     let input_count = inputs.len();
     let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&joined));
-    let (vertex_count, face_count) = (joined.vertex_count(), joined.face_count());
+    // The vertices of the files, copies merged while reading included.
+    let (vertex_count, face_count) = (joined.vertex_count() + merged_copies, joined.face_count());
     // Read before the weld takes the mesh: the hint if faces would collapse.
     let edge_length = weft::mesh::analysis::median_edge_length_sampled(&joined, EDGE_SAMPLES);
     let (welded, report) = with_progress("welding", || {
@@ -58,7 +60,7 @@ pub fn weld(
         input_count,
         vertex_count,
         face_count,
-        report.merged_vertex_count,
+        report.merged_vertex_count + merged_copies,
         report.removed_face_count,
         report.unused_vertex_count
     );

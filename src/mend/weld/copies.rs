@@ -39,12 +39,7 @@ pub(super) struct Copies {
 /// spatial order).
 pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<Copies>> {
     let piece = piece.max(1);
-    if positions.len() <= piece {
-        return Ok(None);
-    }
-    let sample = &positions[..piece.min(SAMPLE)];
-    let sample_sites = piece_sites(sample, &mut vec![0; sample.len()], &mut Vec::new());
-    if sample_sites as usize * 4 > sample.len() * 3 {
+    if positions.len() <= piece || !worth_merging(&positions[..piece.min(SAMPLE)]) {
         return Ok(None);
     }
     // Fresh pages, faulted in where the pieces write them, on all threads.
@@ -79,6 +74,99 @@ pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<
             }
         });
     Ok(Some(Copies { site_of, sites }))
+}
+
+/// Whether the copies in `sample`, the first vertices of a mesh, are worth
+/// merging before the cells: at least a quarter of them are copies.
+pub(crate) fn worth_merging(sample: &[DVec3]) -> bool {
+    let sample = &sample[..sample.len().min(SAMPLE)];
+    let sample_sites = piece_sites(sample, &mut vec![0; sample.len()], &mut Vec::new());
+    sample_sites as usize * 4 <= sample.len() * 3
+}
+
+/// Triangles' corners a piece of [`append_triangle_sites`] holds: whole
+/// triangles, 2^16 of them, near [`PIECE`] corners, so that a reader's
+/// block of 2^18 triangles is four pieces, as many for each of two or
+/// four threads.
+const TRIANGLE_PIECE: usize = 3 << 16;
+
+/// Appends the sites of `corners` (three a triangle) to `sites`, and each
+/// corner's site to `corner_sites`, as [`nearby_copies`] numbers them
+/// piece by piece, but for one thing: a triangle never names a site twice.
+/// A corner that is a copy of another corner of its own triangle gets a
+/// site of its own after its piece's, so the triangle stays a face of
+/// three distinct vertices and the weld that follows finds the copy and
+/// drops the face, as it would in the soup. Every site is the first copy
+/// of its position in its piece or such a corner, so each cluster the weld
+/// finds starts at the site of its first corner, and the clusters and
+/// their order are those of the soup.
+///
+/// # Errors
+/// [`crate::Error::OutOfMemory`].
+pub(crate) fn append_triangle_sites(
+    corners: &[DVec3],
+    sites: &mut Vec<DVec3>,
+    corner_sites: &mut Vec<u32>,
+) -> Result<()> {
+    let start = corner_sites.len();
+    let grow = |what: &str, needed: usize| {
+        crate::error::Error::OutOfMemory(format!("could not reserve {needed} more {what}"))
+    };
+    corner_sites
+        .try_reserve(corners.len())
+        .map_err(|_| grow("corners for the read's copies", corners.len()))?;
+    corner_sites.resize(start + corners.len(), 0);
+    let pieces = corner_sites[start..].par_chunks_mut(TRIANGLE_PIECE);
+    let mut counts = vec![0u32];
+    counts.par_extend(corners.par_chunks(TRIANGLE_PIECE).zip(pieces).map_init(
+        Vec::new,
+        |table, (corners, site_of)| {
+            let count = piece_sites(corners, site_of, table);
+            own_sites_for_triangle_copies(site_of, count)
+        },
+    ));
+    prefix_sum(&mut counts);
+    let base = sites.len();
+    let added = *counts.last().unwrap_or(&0) as usize;
+    sites
+        .try_reserve(added)
+        .map_err(|_| grow("positions for the read's copies", added))?;
+    sites.resize(base + added, DVec3::ZERO);
+    let base = base as u32;
+    split_by_offsets(&mut sites[base as usize..], &counts, 1)
+        .into_par_iter()
+        .zip(corners.par_chunks(TRIANGLE_PIECE))
+        .zip(corner_sites[start..].par_chunks_mut(TRIANGLE_PIECE))
+        .for_each(|(((pieces, sites), corners), site_of)| {
+            let offset = base + counts[pieces.start];
+            let mut next = 0;
+            for (p, site) in corners.iter().zip(site_of) {
+                // First copies come in order, a later copy below them; a
+                // triangle's own copies, numbered after every first copy
+                // and in order too, are never below.
+                if *site >= next {
+                    sites[*site as usize] = *p;
+                }
+                next += u32::from(*site == next);
+                *site += offset;
+            }
+        });
+    Ok(())
+}
+
+/// Gives each corner that repeats a site of its own triangle (three
+/// corners in a row) a new site after the piece's `count`; returns the
+/// piece's count with them.
+fn own_sites_for_triangle_copies(site_of: &mut [u32], mut count: u32) -> u32 {
+    for triangle in site_of.chunks_exact_mut(3) {
+        for k in 1..3 {
+            if triangle[..k].contains(&triangle[k]) {
+                triangle[k] = count;
+                count += 1;
+            }
+        }
+    }
+    count
 }
 
 /// Numbers the distinct positions of one piece in order of their first
