@@ -1247,6 +1247,16 @@ fn weld_joins_inputs_and_cull_removes_twins() {
             "merged 32 vertices",
         ],
     );
+    // With --weld the STL is welded as it is read, and counted so.
+    let o = weft(&dir, &["weld", "b.stl", "-o", "one.obj", "--weld"]);
+    assert_exit(&o, 0);
+    assert_mentions(
+        &stderr(&o),
+        &[
+            "joined 1 meshes (8 vertices, 12 faces)",
+            "merged 0 vertices",
+        ],
+    );
 
     let o = weft(
         &dir,

@@ -818,3 +818,51 @@ fn obj_face_lines_are_written_as_the_formatter_writes_them() {
         "f 1000001 999994 999987 999980 999973 999966 999959 999952 999945 999938 999931 999924\n"
     ));
 }
+
+#[test]
+fn stl_read_to_weld_welds_as_the_soup_and_counts_every_merge() {
+    let dir = temp_folder("read-to-weld");
+    for (name, mesh) in [
+        ("cube", shapes::cube()),
+        ("torus", shapes::triangle_torus(40, 30)),
+    ] {
+        let (stl, obj) = (
+            dir.join(format!("{name}.stl")),
+            dir.join(format!("{name}.obj")),
+        );
+        io::write_mesh(&stl, &mesh).unwrap();
+        io::write_mesh(&obj, &mesh).unwrap();
+        let soup = io::read_mesh(&stl).unwrap();
+        let read = io::read_mesh_to_weld(&stl, &io::ReadOptions::default()).unwrap();
+        assert!(read.merged_copies > 0, "{name}");
+        assert_eq!(
+            read.mesh.vertex_count() + read.merged_copies,
+            soup.vertex_count()
+        );
+        for tolerance in [0.0, 0.1] {
+            let (welded, report) = weld::weld(&read.mesh, tolerance).unwrap();
+            let (expected, expected_report) = weld::weld(&soup, tolerance).unwrap();
+            assert_eq!(welded, expected, "{name} at {tolerance}");
+            assert_eq!(
+                report.merged_vertex_count + read.merged_copies,
+                expected_report.merged_vertex_count
+            );
+        }
+        // With the weld at tolerance 0: the welded mesh, every merge counted.
+        let options = io::ReadOptions {
+            weld: true,
+            ..Default::default()
+        };
+        let welded = io::read_mesh_to_weld(&stl, &options).unwrap();
+        let (expected, report) = weld::weld(&soup, 0.0).unwrap();
+        assert_eq!(welded.mesh, expected);
+        assert_eq!(welded.merged_copies, report.merged_vertex_count);
+        assert_eq!(io::read_mesh_with(&stl, &options).unwrap(), expected);
+        // Other formats are read as they are, nothing merged.
+        let plain = io::read_mesh_to_weld(&obj, &io::ReadOptions::default()).unwrap();
+        assert_eq!(
+            (plain.mesh, plain.merged_copies),
+            (io::read_mesh(&obj).unwrap(), 0)
+        );
+    }
+}

@@ -238,14 +238,7 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
     let format = Format::from_path(path)?;
     if options.weld {
         // The weld follows: a soup's copies merged while reading.
-        let read = read_mesh_to_weld(
-            path,
-            &ReadOptions {
-                weld: false,
-                ..*options
-            },
-        )?;
-        return weld_identical(path, read.mesh);
+        return read_mesh_to_weld(path, options).map(|read| read.mesh);
     }
     let streamed = read_streamed(format, path)?;
     let mesh = match (format, streamed) {
@@ -266,7 +259,8 @@ pub struct ReadToWeld {
     /// The mesh, whose weld is the weld of the file's mesh.
     pub mesh: Mesh,
     /// Vertices of the file merged into an exact copy of their position
-    /// while reading: add them to the weld's count of merged vertices.
+    /// while reading (with `weld`, by the weld at tolerance 0 too): add them
+    /// to the count of merged vertices of the weld that follows.
     pub merged_copies: usize,
 }
 
@@ -290,21 +284,33 @@ pub fn read_mesh_to_weld(
 ) -> Result<ReadToWeld, IoError> {
     let path = path.as_ref();
     if Format::from_path(path)? == Format::Stl {
-        if let Some((mesh, merged_copies)) = stl::read_path_to_weld(path)? {
-            let mesh = match options.weld {
+        if let Some((mesh, copies)) = stl::read_path_to_weld(path)? {
+            let (mesh, merged) = match options.weld {
                 true => weld_identical(path, mesh)?,
-                false => mesh,
+                false => (mesh, 0),
             };
             return Ok(ReadToWeld {
                 mesh,
-                merged_copies,
+                merged_copies: copies + merged,
             });
         }
     }
-    let mesh = read_mesh_with(path, options)?;
+    let (mesh, merged_copies) = match options.weld {
+        true => weld_identical(
+            path,
+            read_mesh_with(
+                path,
+                &ReadOptions {
+                    weld: false,
+                    ..*options
+                },
+            )?,
+        )?,
+        false => (read_mesh_with(path, options)?, 0),
+    };
     Ok(ReadToWeld {
         mesh,
-        merged_copies: 0,
+        merged_copies,
     })
 }
 
@@ -331,7 +337,7 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         }
     };
     if options.weld {
-        Ok(MeshFile::new(weld_identical(path, file.mesh)?))
+        Ok(MeshFile::new(weld_identical(path, file.mesh)?.0))
     } else {
         Ok(file)
     }
@@ -357,10 +363,10 @@ pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, IoError> {
 
 /// The weld of [`ReadOptions::weld`]: the library's [`weld`](crate::mend::weld::weld) at tolerance 0,
 /// which merges vertices at identical positions and drops faces that
-/// collapse, written over the mesh read.
-fn weld_identical(path: &Path, mesh: Mesh) -> Result<Mesh, IoError> {
+/// collapse, written over the mesh read; with how many vertices it merged.
+fn weld_identical(path: &Path, mesh: Mesh) -> Result<(Mesh, usize), IoError> {
     weld_owned(mesh, 0.0)
-        .map(|(welded, _)| welded)
+        .map(|(welded, report)| (welded, report.merged_vertex_count))
         .map_err(|source| IoError::Weld {
             path: path.to_path_buf(),
             source,

@@ -45,12 +45,14 @@ pub fn read(cli: &Cli, path: &Path) -> Result<Mesh, Failure> {
 /// file with the copies of each position merged while reading (see
 /// `io::read_mesh_to_weld`); with the mesh, how many vertices were merged.
 pub fn read_to_weld(cli: &Cli, path: &Path) -> Result<(Mesh, usize), Failure> {
-    if Format::from_path(path).ok() != Some(Format::Stl) {
+    // With --weld the reading welds at tolerance 0 and the mesh is counted
+    // as read, as before; the copies are merged while reading all the same.
+    if cli.weld || Format::from_path(path).ok() != Some(Format::Stl) {
         return read(cli, path).map(|mesh| (mesh, 0));
     }
     let label = format!("reading {}", path.display());
     let options = ReadOptions {
-        weld: cli.weld,
+        weld: false,
         allow_repeated_vertices: cli.allow_repeated_vertices,
     };
     let read = with_progress(&label, || io::read_mesh_to_weld(path, &options))?;
