@@ -84,8 +84,8 @@ pub(crate) fn worth_merging(sample: &[DVec3]) -> bool {
     sample_sites as usize * 4 <= sample.len() * 3
 }
 
-/// Triangles' corners a piece of [`append_triangle_sites`] holds: whole
-/// triangles, 2^16 of them, near [`PIECE`] corners, so that a reader's
+/// Corners a piece of [`append_triangle_sites`] holds: 2^16 whole
+/// triangles (three quarters of [`PIECE`] corners), so that a reader's
 /// block of 2^18 triangles is four pieces, as many for each of two or
 /// four threads.
 const TRIANGLE_PIECE: usize = 3 << 16;
