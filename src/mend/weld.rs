@@ -26,7 +26,7 @@ use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
 
 mod copies;
 use copies::Copies;
-pub(crate) use copies::{append_triangle_sites, worth_merging};
+pub(crate) use copies::{append_triangle_sites, worth_merging, SAMPLE as COPIES_SAMPLE};
 
 /// The weld tolerance to use when the host gives none: 0.001 model units.
 ///

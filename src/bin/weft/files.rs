@@ -51,10 +51,7 @@ pub fn read_to_weld(cli: &Cli, path: &Path) -> Result<(Mesh, usize), Failure> {
         return read(cli, path).map(|mesh| (mesh, 0));
     }
     let label = format!("reading {}", path.display());
-    let options = ReadOptions {
-        weld: false,
-        allow_repeated_vertices: cli.allow_repeated_vertices,
-    };
+    let options = read_options(cli, false);
     let read = with_progress(&label, || io::read_mesh_to_weld(path, &options))?;
     require_faces(path, &read.mesh)?;
     Ok((read.mesh, read.merged_copies))
@@ -67,10 +64,8 @@ pub fn read_file_or_mesh(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
     match read_file(cli, path) {
         Ok(file) => Ok(file),
         Err(Failure::Failed(attribute_problem)) => {
-            let options = ReadOptions {
-                weld: cli.weld && Format::from_path(path).ok() == Some(Format::Stl),
-                allow_repeated_vertices: cli.allow_repeated_vertices,
-            };
+            let weld = cli.weld && Format::from_path(path).ok() == Some(Format::Stl);
+            let options = read_options(cli, weld);
             let mesh = io::read_mesh_with(path, &options)
                 .map_err(|_| Failure::Failed(attribute_problem.clone()))?;
             eprintln!("weft: {attribute_problem}; reading on with the mesh alone");
@@ -90,12 +85,17 @@ pub fn read_file(cli: &Cli, path: &Path) -> Result<MeshFile, Failure> {
 /// identical positions when `weld` (what `--weld` does for STL).
 pub fn read_file_welded(cli: &Cli, path: &Path, weld: bool) -> Result<MeshFile, Failure> {
     let label = format!("reading {}", path.display());
-    let options = ReadOptions {
-        weld,
-        allow_repeated_vertices: cli.allow_repeated_vertices,
-    };
+    let options = read_options(cli, weld);
     let file = with_progress(&label, || io::read_mesh_file(path, &options))?;
     Ok(file)
+}
+
+/// The reading options of the command line, welding STL corners when `weld`.
+fn read_options(cli: &Cli, weld: bool) -> ReadOptions {
+    ReadOptions {
+        weld,
+        allow_repeated_vertices: cli.allow_repeated_vertices,
+    }
 }
 
 /// Writes a mesh with what its format holds of its colours, UVs, normals

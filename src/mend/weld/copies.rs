@@ -21,7 +21,7 @@ pub(super) const PIECE: usize = 1 << 18;
 
 /// Vertices of the sample that decides whether to merge copies first: a
 /// few rows of a soup's faces, cheap beside a weld that gains nothing.
-const SAMPLE: usize = 1 << 14;
+pub(crate) const SAMPLE: usize = 1 << 14;
 
 /// The vertices' distinct positions, piece by piece.
 pub(super) struct Copies {
