@@ -20,8 +20,8 @@ pub(crate) fn push_u64(w: &mut Vec<u8>, value: u64) {
     push_fixed(w, &digits, count);
 }
 
-/// Writes `value` in decimal into `out` from `at`, which has room for 20
-/// digits; returns where the digits end.
+/// Writes `value` in decimal into `out` from `at`, which has room for its
+/// digits (20 at most); returns where the digits end.
 #[inline]
 pub(crate) fn put_u64(out: &mut [u8], at: usize, value: u64) -> usize {
     let count = value.checked_ilog10().unwrap_or(0) as usize + 1;

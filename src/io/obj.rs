@@ -644,17 +644,19 @@ fn resolve(value: i64, count: usize, line: usize, word: &[u8], what: &str) -> Re
 
 /// Writes `count` items (vertices, faces) through `format`, which appends
 /// the text of a range of them to a buffer: blocks of items are formatted
-/// on all threads, a round at a time into buffers used again for the next
-/// round, and written in order, so the text is the same as one thread's.
+/// on all threads, a round at a time, and written in order, so the text is
+/// the same as one thread's. Each round is formatted while the one before
+/// is handed to `w`, into the other of two sets of buffers.
 fn write_in_blocks(
     w: &mut dyn Write,
     count: usize,
     format: impl Fn(std::ops::Range<usize>, &mut Vec<u8>) -> std::io::Result<()> + Sync,
 ) -> std::io::Result<()> {
     const ITEMS: usize = 1 << 14;
-    let mut buffers = vec![Vec::new(); 4 * rayon::current_num_threads().max(1)];
-    let round = ITEMS * buffers.len();
-    for start in (0..count).step_by(round) {
+    let new_buffers = || vec![Vec::new(); 4 * rayon::current_num_threads().max(1)];
+    let (mut ready, mut next) = (new_buffers(), new_buffers());
+    let round = ITEMS * ready.len();
+    let format_round = |start: usize, buffers: &mut Vec<Vec<u8>>| {
         let end = (start + round).min(count);
         buffers
             .par_iter_mut()
@@ -666,12 +668,25 @@ fn write_in_blocks(
                     format(first..(first + ITEMS).min(end), buffer)?;
                 }
                 Ok::<(), std::io::Error>(())
-            })?;
-        for buffer in &buffers {
-            w.write_all(buffer)?;
-        }
+            })
+    };
+    if count == 0 {
+        return Ok(());
     }
-    Ok(())
+    format_round(0, &mut ready)?;
+    for start in (round..count).step_by(round) {
+        let mut formatted = Ok(());
+        // `w` need not be `Send`: it stays on this thread, the formatting
+        // goes to the pool.
+        let written = rayon::in_place_scope(|scope| {
+            scope.spawn(|_| formatted = format_round(start, &mut next));
+            ready.iter().try_for_each(|buffer| w.write_all(buffer))
+        });
+        written?;
+        formatted?;
+        std::mem::swap(&mut ready, &mut next);
+    }
+    ready.iter().try_for_each(|buffer| w.write_all(buffer))
 }
 
 /// Writes a mesh as OBJ.
@@ -800,32 +815,44 @@ fn write_with(w: &mut dyn Write, mesh: &Mesh, file: &MeshFile) -> std::io::Resul
 /// Faces with nothing but their vertices (`f 1 2 3`), each line put
 /// together on the stack and appended at once: most meshes' faces.
 fn write_plain_faces(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
-    // `f`, then a space and up to 20 digits a corner, and the line's end.
-    const CORNERS: usize = 8;
     write_in_blocks(w, mesh.face_count(), |faces, w| {
-        let mut line = [0u8; 2 + 21 * CORNERS];
+        // `f`, then a space and at most 10 digits a corner (a `u32` index
+        // plus one), and the line's end: triangles and quads in a line
+        // short enough to be appended by a few moves, up to octagons in a
+        // longer one.
+        let mut short = [0u8; 48];
+        let mut long = [0u8; 96];
         for f in faces {
             let face = mesh.face(f);
-            if face.len() > CORNERS {
-                w.push(b'f');
-                for &v in face {
-                    w.push(b' ');
-                    push_u64(w, v as u64 + 1);
+            match face.len() {
+                ..=4 => push_face_line(w, &mut short, face),
+                5..=8 => push_face_line(w, &mut long, face),
+                _ => {
+                    w.push(b'f');
+                    for &v in face {
+                        w.push(b' ');
+                        push_u64(w, v as u64 + 1);
+                    }
+                    w.push(b'\n');
                 }
-                w.push(b'\n');
-                continue;
             }
-            line[0] = b'f';
-            let mut end = 1;
-            for &v in face {
-                line[end] = b' ';
-                end = put_u64(&mut line, end + 1, v as u64 + 1);
-            }
-            line[end] = b'\n';
-            push_fixed(w, &line, end + 1);
         }
         Ok(())
     })
+}
+
+/// Appends the `f` line of `face`, put together in `line`, which has room
+/// for its corners.
+#[inline(always)]
+fn push_face_line<const N: usize>(w: &mut Vec<u8>, line: &mut [u8; N], face: &[u32]) {
+    line[0] = b'f';
+    let mut end = 1;
+    for &v in face {
+        line[end] = b' ';
+        end = put_u64(line, end + 1, v as u64 + 1);
+    }
+    line[end] = b'\n';
+    push_fixed(w, line, end + 1);
 }
 
 /// The creases, corners and holes of `file` as `l` and `t` lines.
