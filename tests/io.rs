@@ -790,21 +790,28 @@ fn render_on_two_threads_equals_one_thread() {
 #[test]
 fn obj_face_lines_are_written_as_the_formatter_writes_them() {
     // Indices of every digit count, and faces from 3 to 12 corners (past
-    // the 8 a line is put together for on the stack).
+    // the 8 a line is put together for on the stack), over many rounds of
+    // the parallel writer, vertices and faces.
     let positions: Vec<DVec3> = (0..1_000_001)
         .map(|i| DVec3::new(i as f64, 0.0, 1.0))
         .collect();
-    let faces: Vec<Vec<u32>> = vec![
+    let kinds: Vec<Vec<u32>> = vec![
         vec![0, 1, 2],
         vec![9, 10, 99, 100],
+        (0..5).map(|i| i * 200_000).collect(),
         vec![
             999, 1000, 9_999, 10_000, 99_999, 100_000, 999_999, 1_000_000,
         ],
         (0..9).map(|i| i * 111_111).collect(),
         (0..12).map(|i| 1_000_000 - i * 7).collect(),
     ];
+    let faces: Vec<Vec<u32>> = kinds.iter().cycle().take(6 * 50_000).cloned().collect();
     let mesh = Mesh::from_polygons(positions, faces.clone()).unwrap();
     let text = String::from_utf8(encode(Format::Obj, &mesh, &WriteOptions::default())).unwrap();
+    let vertices = text.lines().filter(|l| l.starts_with('v'));
+    assert!(vertices
+        .enumerate()
+        .all(|(i, line)| line == format!("v {i} 0 1")));
     let written: Vec<&str> = text.lines().filter(|l| l.starts_with('f')).collect();
     let expected: Vec<String> = faces
         .iter()
