@@ -155,7 +155,7 @@ fn error_at(format: Format, data: &[u8]) -> (Location, String) {
 #[test]
 fn malformed_text_names_the_line() {
     // The format, the text, the line the error names and words its message holds.
-    let cases: [(Format, &[u8], usize, &[&str]); 11] = [
+    let cases: [(Format, &[u8], usize, &[&str]); 15] = [
         (
             Format::Obj,
             b"v 0 0 0\nv 1 0 0\nv 0 one 0\nf 1 2 3\n",
@@ -197,6 +197,24 @@ fn malformed_text_names_the_line() {
             &[],
         ),
         (
+            Format::Off,
+            b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 x\n",
+            6,
+            &["index 2 of face 0", "\"x\""],
+        ),
+        (
+            Format::Off,
+            b"OFF\n3 1 0\n0 0 0\n1 o 0\n0 1 0\n3 0 1 2\n",
+            4,
+            &["coordinate y of vertex 1", "\"o\""],
+        ),
+        (
+            Format::Off,
+            b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\nthree 0 1 2\n",
+            6,
+            &["the corner count of face 0"],
+        ),
+        (
             Format::Ply,
             b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
               property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\
@@ -209,6 +227,14 @@ fn malformed_text_names_the_line() {
             b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n",
             3,
             &["x, y and z"],
+        ),
+        (
+            Format::Ply,
+            b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n\
+              property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\
+              0 0 0\n1 0 0\n0 1 0\n3 0 1\n",
+            14,
+            &["end of file", "entry 2 of property vertex_indices of face 0"],
         ),
         (
             Format::Stl,
@@ -824,6 +850,52 @@ fn obj_face_lines_are_written_as_the_formatter_writes_them() {
     assert!(text.ends_with(
         "f 1000001 999994 999987 999980 999973 999966 999959 999952 999945 999938 999931 999924\n"
     ));
+}
+
+#[test]
+fn off_is_written_as_the_formatter_writes_it() {
+    // Coordinates of every form the formatter writes (negative zero, tiny,
+    // huge, integers, long decimals) and faces of 3 to 12 corners, over
+    // many rounds of the parallel writer.
+    let values = [
+        -0.0,
+        1e-300,
+        5e-324,
+        1e21,
+        123456789.0,
+        -0.1,
+        1.0 / 3.0,
+        2.5,
+        -7.0,
+    ];
+    let positions: Vec<DVec3> = (0..200_000)
+        .map(|i| {
+            let v = |k: usize| values[(i * 7 + k) % values.len()] * (1 + i % 5) as f64;
+            DVec3::new(v(0), v(1), v(2))
+        })
+        .collect();
+    let faces: Vec<Vec<u32>> = (0..200_000u32)
+        .map(|f| {
+            (0..3 + f % 10)
+                .map(|k| (f * 13 + k * 1_009) % 200_000)
+                .collect()
+        })
+        .collect();
+    let mesh = Mesh::from_polygons(positions.clone(), faces.clone()).unwrap();
+    let text = String::from_utf8(encode(Format::Off, &mesh, &WriteOptions::default())).unwrap();
+    let mut expected = format!("OFF\n{} {} 0\n", positions.len(), faces.len());
+    for p in &positions {
+        expected += &format!("{} {} {}\n", p.x, p.y, p.z);
+    }
+    for face in &faces {
+        let corners: Vec<String> = face.iter().map(u32::to_string).collect();
+        expected += &format!("{} {}\n", face.len(), corners.join(" "));
+    }
+    assert!(
+        text == expected,
+        "the OFF text differs from the formatter's"
+    );
+    assert_eq!(io::parse_mesh(Format::Off, text.as_bytes()).unwrap(), mesh);
 }
 
 #[test]

@@ -37,6 +37,7 @@ pub use mesh_file::{
     check_creases, Colours, FileCorner, FileCrease, Materials, MeshFile, Uvs, NO_MATERIAL,
 };
 
+mod blocks;
 pub mod creases;
 mod decimal;
 mod disk_writer;

@@ -10,6 +10,8 @@ use std::io::Write;
 
 use glam::DVec3;
 
+use super::blocks::write_in_blocks;
+use super::decimal::{push_f64, push_u64};
 use super::text::{lines, parse_count, parse_f64, show, words};
 use super::{build_mesh_with, IoError, Location};
 use crate::mesh::{Mesh, MeshOptions};
@@ -28,7 +30,7 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
 pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
     let mut rows = lines(data).filter(|(_, text)| words(text).next().is_some());
     let mut last_line = 1;
-    let mut next_row = |what: &str| {
+    let mut next_row = |what: &dyn std::fmt::Display| {
         let row = rows.next();
         if let Some((line, _)) = row {
             last_line = line;
@@ -41,12 +43,12 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
         })
     };
 
-    let (mut line, text) = next_row("the OFF header")?;
+    let (mut line, text) = next_row(&"the OFF header")?;
     let mut header: Vec<&[u8]> = words(text).collect();
     if header[0].len() >= 3 && header[0][header[0].len() - 3..].eq_ignore_ascii_case(b"OFF") {
         header.remove(0);
         if header.is_empty() {
-            let (l, text) = next_row("the vertex, face and edge counts")?;
+            let (l, text) = next_row(&"the vertex, face and edge counts")?;
             line = l;
             header = words(text).collect();
         }
@@ -65,7 +67,7 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
     let mut positions = Vec::with_capacity(vertex_count.min(room));
     let mut vertex_lines = Vec::with_capacity(vertex_count.min(room));
     for v in 0..vertex_count {
-        let (line, text) = next_row(&format!("vertex {v} of {vertex_count}"))?;
+        let (line, text) = next_row(&format_args!("vertex {v} of {vertex_count}"))?;
         let mut w = words(text);
         let mut xyz = [0.0; 3];
         for (axis, value) in ["x", "y", "z"].iter().zip(&mut xyz) {
@@ -75,7 +77,7 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
                     format!("expected 3 coordinates for vertex {v}; {axis} is missing"),
                 )
             })?;
-            *value = parse_f64(word, line, &format!("coordinate {axis} of vertex {v}"))?;
+            *value = parse_f64(word, line, format_args!("coordinate {axis} of vertex {v}"))?;
         }
         positions.push(DVec3::from_array(xyz));
         vertex_lines.push(line);
@@ -85,10 +87,14 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
     let mut face_lines = Vec::with_capacity(face_count.min(room));
     let mut face_indices = Vec::new();
     for f in 0..face_count {
-        let (line, text) = next_row(&format!("face {f} of {face_count}"))?;
+        let (line, text) = next_row(&format_args!("face {f} of {face_count}"))?;
         let mut w = words(text);
         let size_word = w.next().unwrap_or_default();
-        let size = parse_count(size_word, line, &format!("the corner count of face {f}"))?;
+        let size = parse_count(
+            size_word,
+            line,
+            format_args!("the corner count of face {f}"),
+        )?;
         for corner in 0..size {
             let word = w.next().ok_or_else(|| {
                 IoError::parse(
@@ -96,7 +102,7 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
                     format!("face {f} should have {size} indices; index {corner} is missing"),
                 )
             })?;
-            let index = parse_count(word, line, &format!("index {corner} of face {f}"))?;
+            let index = parse_count(word, line, format_args!("index {corner} of face {f}"))?;
             let index = u32::try_from(index).map_err(|_| {
                 IoError::parse(
                     Location::Line(line),
@@ -123,15 +129,28 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
 pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
     writeln!(w, "OFF")?;
     writeln!(w, "{} {} 0", mesh.vertex_count(), mesh.face_count())?;
-    for p in mesh.positions() {
-        writeln!(w, "{} {} {}", p.x, p.y, p.z)?;
-    }
-    for face in mesh.faces() {
-        write!(w, "{}", face.len())?;
-        for &v in face {
-            write!(w, " {v}")?;
+    let positions = mesh.positions();
+    write_in_blocks(w, positions.len(), |vertices, w| {
+        for p in &positions[vertices] {
+            push_f64(w, p.x);
+            w.push(b' ');
+            push_f64(w, p.y);
+            w.push(b' ');
+            push_f64(w, p.z);
+            w.push(b'\n');
         }
-        w.write_all(b"\n")?;
-    }
-    Ok(())
+        Ok(())
+    })?;
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        for f in faces {
+            let face = mesh.face(f);
+            push_u64(w, face.len() as u64);
+            for &v in face {
+                w.push(b' ');
+                push_u64(w, v.into());
+            }
+            w.push(b'\n');
+        }
+        Ok(())
+    })
 }

@@ -1,6 +1,8 @@
 //! Reading text formats byte by byte: they need not be UTF-8 outside the
 //! numbers, and every token carries its line for error messages.
 
+use std::fmt::Display;
+
 use super::{IoError, Location};
 
 /// The lines of `data` with their 1-based numbers, `\r` and `#` comments removed.
@@ -59,6 +61,17 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
     1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
+
+/// What a reader expects, put into words only when an error names it: the
+/// readers pass `format_args!` or this, so that reading a value that is
+/// there costs no text. (`what` of the `parse_*` and `expect_*` helpers.)
+pub(crate) struct Lazy<F>(pub(crate) F);
+
+impl<F: Fn() -> String> Display for Lazy<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&(self.0)())
+    }
+}
 
 /// A floating-point number, exactly as `str::parse::<f64>` reads it
 /// (correctly rounded), or `None` where that fails.
@@ -146,7 +159,7 @@ pub(crate) fn i64_of(word: &[u8]) -> Option<i64> {
 }
 
 /// Parses a floating-point number.
-pub(crate) fn parse_f64(word: &[u8], line: usize, what: &str) -> Result<f64, IoError> {
+pub(crate) fn parse_f64(word: &[u8], line: usize, what: impl Display) -> Result<f64, IoError> {
     f64_of(word).ok_or_else(|| {
         IoError::parse(
             Location::Line(line),
@@ -156,7 +169,7 @@ pub(crate) fn parse_f64(word: &[u8], line: usize, what: &str) -> Result<f64, IoE
 }
 
 /// Parses a signed integer.
-pub(crate) fn parse_i64(word: &[u8], line: usize, what: &str) -> Result<i64, IoError> {
+pub(crate) fn parse_i64(word: &[u8], line: usize, what: impl Display) -> Result<i64, IoError> {
     i64_of(word).ok_or_else(|| {
         IoError::parse(
             Location::Line(line),
@@ -166,8 +179,8 @@ pub(crate) fn parse_i64(word: &[u8], line: usize, what: &str) -> Result<i64, IoE
 }
 
 /// Parses a count or index that must be non-negative.
-pub(crate) fn parse_count(word: &[u8], line: usize, what: &str) -> Result<usize, IoError> {
-    let value = parse_i64(word, line, what)?;
+pub(crate) fn parse_count(word: &[u8], line: usize, what: impl Display) -> Result<usize, IoError> {
+    let value = parse_i64(word, line, &what)?;
     usize::try_from(value).map_err(|_| {
         IoError::parse(
             Location::Line(line),
@@ -225,7 +238,7 @@ impl<'a> Tokens<'a> {
     }
 
     /// The next word, or an error saying `what` was expected.
-    pub(crate) fn expect_word(&mut self, what: &str) -> Result<(&'a [u8], usize), IoError> {
+    pub(crate) fn expect_word(&mut self, what: impl Display) -> Result<(&'a [u8], usize), IoError> {
         let line = self.line();
         self.next_word().ok_or_else(|| {
             IoError::parse(
@@ -237,7 +250,7 @@ impl<'a> Tokens<'a> {
 
     /// The next word, which must be `keyword`.
     pub(crate) fn expect_keyword(&mut self, keyword: &str) -> Result<usize, IoError> {
-        let (word, line) = self.expect_word(&format!("\"{keyword}\""))?;
+        let (word, line) = self.expect_word(format_args!("\"{keyword}\""))?;
         if word.eq_ignore_ascii_case(keyword.as_bytes()) {
             Ok(line)
         } else {
@@ -248,8 +261,8 @@ impl<'a> Tokens<'a> {
         }
     }
 
-    pub(crate) fn next_f64(&mut self, what: &str) -> Result<f64, IoError> {
-        let (word, line) = self.expect_word(what)?;
+    pub(crate) fn next_f64(&mut self, what: impl Display) -> Result<f64, IoError> {
+        let (word, line) = self.expect_word(&what)?;
         parse_f64(word, line, what)
     }
 

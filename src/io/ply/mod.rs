@@ -21,7 +21,7 @@ mod write;
 pub use write::{write, write_file};
 
 use super::mesh_file::{Colours, MeshFile, Uvs};
-use super::text::{show, words, Tokens};
+use super::text::{f64_of, i64_of, show, words, Lazy, Tokens};
 use super::{build_mesh_with, IoError, Location};
 use crate::mesh::{Mesh, MeshOptions};
 
@@ -114,14 +114,12 @@ struct Text<'a>(Tokens<'a>);
 
 impl Values for Text<'_> {
     fn read(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, IoError> {
-        let (word, line) = self.0.expect_word(&what())?;
-        let parsed = std::str::from_utf8(word).ok().and_then(|s| {
-            if ty.is_integer() {
-                s.parse::<i64>().ok().map(|i| i as f64)
-            } else {
-                s.parse::<f64>().ok()
-            }
-        });
+        let (word, line) = self.0.expect_word(Lazy(what))?;
+        let parsed = if ty.is_integer() {
+            i64_of(word).map(|i| i as f64)
+        } else {
+            f64_of(word)
+        };
         parsed.ok_or_else(|| {
             let kind = if ty.is_integer() {
                 "an integer"
