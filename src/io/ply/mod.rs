@@ -16,6 +16,7 @@
 
 use glam::DVec3;
 
+mod binary;
 mod write;
 
 pub use write::{write, write_file};
@@ -59,6 +60,28 @@ impl Scalar {
             Scalar::I16 | Scalar::U16 => 2,
             Scalar::I32 | Scalar::U32 | Scalar::F32 => 4,
             Scalar::F64 => 8,
+        }
+    }
+
+    /// The value `bytes` (exactly [`Scalar::size`] of them) hold, as `f64`
+    /// (exact for every PLY integer type).
+    #[inline]
+    fn value_of(self, bytes: &[u8], big_endian: bool) -> f64 {
+        let size = self.size();
+        let mut b = [0u8; 8];
+        b[..size].copy_from_slice(&bytes[..size]);
+        if big_endian {
+            b[..size].reverse();
+        }
+        match self {
+            Scalar::I8 => b[0] as i8 as f64,
+            Scalar::U8 => b[0] as f64,
+            Scalar::I16 => i16::from_le_bytes([b[0], b[1]]) as f64,
+            Scalar::U16 => u16::from_le_bytes([b[0], b[1]]) as f64,
+            Scalar::I32 => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::U32 => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::F32 => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
+            Scalar::F64 => f64::from_le_bytes(b),
         }
     }
 
@@ -163,21 +186,7 @@ impl Values for Binary<'_> {
             )
         })?;
         self.pos += size;
-        let mut b = [0u8; 8];
-        b[..size].copy_from_slice(bytes);
-        if self.big_endian {
-            b[..size].reverse();
-        }
-        Ok(match ty {
-            Scalar::I8 => b[0] as i8 as f64,
-            Scalar::U8 => b[0] as f64,
-            Scalar::I16 => i16::from_le_bytes([b[0], b[1]]) as f64,
-            Scalar::U16 => u16::from_le_bytes([b[0], b[1]]) as f64,
-            Scalar::I32 => i32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-            Scalar::U32 => u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-            Scalar::F32 => f32::from_le_bytes([b[0], b[1], b[2], b[3]]) as f64,
-            Scalar::F64 => f64::from_le_bytes(b),
-        })
+        Ok(ty.value_of(bytes, self.big_endian))
     }
 
     fn location(&mut self) -> Location {
@@ -225,6 +234,11 @@ pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<Me
         ),
         Encoding::Binary { big_endian } => {
             let offset = data.len() - body.len();
+            if let Some(read) =
+                binary::read_in_bulk(data, offset, big_endian, &elements, strict, options)
+            {
+                return read;
+            }
             let mut source = Binary {
                 data,
                 pos: offset,
@@ -356,63 +370,19 @@ fn read_body(
     let mut has_uvs = false;
     for element in elements {
         let is_vertex = element.name == b"vertex";
-        let is_face = element.name == b"face";
-        let mut axes = [None; 3];
-        // red, green, blue, alpha with their scale; s and t.
-        let mut channels: [Option<(usize, f64)>; 4] = [None; 4];
-        let mut uv_axes: [Option<usize>; 2] = [None; 2];
-        let mut index_list = None;
-        for (p, (name, property)) in element.properties.iter().enumerate() {
-            match (property, name.as_slice()) {
-                (Property::Scalar(_), b"x") if is_vertex => axes[0] = Some(p),
-                (Property::Scalar(_), b"y") if is_vertex => axes[1] = Some(p),
-                (Property::Scalar(_), b"z") if is_vertex => axes[2] = Some(p),
-                (Property::Scalar(ty), name) if is_vertex && colour_channel(name).is_some() => {
-                    channels[colour_channel(name).unwrap_or(0)] = Some((p, ty.colour_scale()));
-                }
-                (Property::Scalar(_), b"s" | b"u" | b"texture_u" | b"texture_s") if is_vertex => {
-                    uv_axes[0] = Some(p)
-                }
-                (Property::Scalar(_), b"t" | b"v" | b"texture_v" | b"texture_t") if is_vertex => {
-                    uv_axes[1] = Some(p)
-                }
-                (Property::List { item, .. }, b"vertex_indices" | b"vertex_index") if is_face => {
-                    if !item.is_integer() {
-                        return Err(header_error(
-                            element.line,
-                            "face indices must have an integer type",
-                        ));
-                    }
-                    index_list = Some(p);
-                }
-                _ => {}
-            }
-        }
-        if is_vertex && axes.iter().any(Option::is_none) {
-            return Err(header_error(
-                element.line,
-                "the vertex element needs properties x, y and z",
-            ));
-        }
+        let Roles {
+            axes,
+            channels,
+            uv_axes,
+            index_list,
+            colours: element_colours,
+            alpha,
+            uvs: element_uvs,
+        } = roles(element, strict)?;
         if is_vertex {
-            let rgb = channels[..3].iter().filter(|c| c.is_some()).count();
-            let incomplete = rgb != 0 && rgb != 3 || rgb == 0 && channels[3].is_some();
-            if incomplete && strict {
-                return Err(header_error(
-                    element.line,
-                    "a vertex colour needs the properties red, green and blue (alpha is optional)",
-                ));
-            }
-            let half_uv = uv_axes[0].is_some() != uv_axes[1].is_some();
-            if half_uv && strict {
-                return Err(header_error(
-                    element.line,
-                    "texture coordinates need two properties: s and t (or u and v)",
-                ));
-            }
-            has_colours = rgb == 3;
-            has_alpha = has_colours && channels[3].is_some();
-            has_uvs = !half_uv && uv_axes[0].is_some();
+            has_colours = element_colours;
+            has_alpha = alpha;
+            has_uvs = element_uvs;
         }
         let min_size: usize = element
             .properties
@@ -442,7 +412,7 @@ fn read_body(
         if is_vertex {
             positions.reserve(reserve);
             vertex_locations.reserve(reserve);
-        } else if is_face && index_list.is_some() {
+        } else if index_list.is_some() {
             face_sizes.reserve(reserve);
             face_locations.reserve(reserve);
         }
@@ -529,14 +499,114 @@ fn read_body(
         |v| vertex_locations[v],
         |f| face_locations[f],
     )?;
-    let uvs = has_uvs.then(|| Uvs::from_per_vertex(&mesh, uvs));
-    let mut file = MeshFile::new(mesh);
-    file.colours = has_colours.then_some(Colours {
+    let colours = has_colours.then_some(Colours {
         rgba: colours,
         alpha: has_alpha,
     });
+    Ok(file_of(mesh, colours, has_uvs.then_some(uvs)))
+}
+
+/// The file of a mesh read with its vertices' colours and texture
+/// coordinates.
+fn file_of(mesh: Mesh, colours: Option<Colours>, uvs: Option<Vec<[f64; 2]>>) -> MeshFile {
+    let uvs = uvs.map(|uvs| Uvs::from_per_vertex(&mesh, uvs));
+    let mut file = MeshFile::new(mesh);
+    file.colours = colours;
     file.uvs = uvs;
-    Ok(file)
+    file
+}
+
+/// What an element's properties are to the reader.
+#[derive(Debug, Clone, Copy)]
+struct Roles {
+    /// The properties `x`, `y` and `z` of a vertex.
+    axes: [Option<usize>; 3],
+    /// Red, green, blue and alpha, each with what it is divided by.
+    channels: [Option<(usize, f64)>; 4],
+    /// The two texture coordinates.
+    uv_axes: [Option<usize>; 2],
+    /// The list of a face's vertex indices.
+    index_list: Option<usize>,
+    /// A vertex element with red, green and blue; with alpha too.
+    colours: bool,
+    alpha: bool,
+    /// A vertex element with both texture coordinates.
+    uvs: bool,
+}
+
+/// The roles of `element`'s properties; an error for a vertex element
+/// without `x`, `y` and `z`, face indices that are not integers, and, when
+/// `strict`, incomplete colours or texture coordinates.
+fn roles(element: &Element, strict: bool) -> Result<Roles, IoError> {
+    let is_vertex = element.name == b"vertex";
+    let is_face = element.name == b"face";
+    let mut axes = [None; 3];
+    // red, green, blue, alpha with their scale; s and t.
+    let mut channels: [Option<(usize, f64)>; 4] = [None; 4];
+    let mut uv_axes: [Option<usize>; 2] = [None; 2];
+    let mut index_list = None;
+    for (p, (name, property)) in element.properties.iter().enumerate() {
+        match (property, name.as_slice()) {
+            (Property::Scalar(_), b"x") if is_vertex => axes[0] = Some(p),
+            (Property::Scalar(_), b"y") if is_vertex => axes[1] = Some(p),
+            (Property::Scalar(_), b"z") if is_vertex => axes[2] = Some(p),
+            (Property::Scalar(ty), name) if is_vertex && colour_channel(name).is_some() => {
+                channels[colour_channel(name).unwrap_or(0)] = Some((p, ty.colour_scale()));
+            }
+            (Property::Scalar(_), b"s" | b"u" | b"texture_u" | b"texture_s") if is_vertex => {
+                uv_axes[0] = Some(p)
+            }
+            (Property::Scalar(_), b"t" | b"v" | b"texture_v" | b"texture_t") if is_vertex => {
+                uv_axes[1] = Some(p)
+            }
+            (Property::List { item, .. }, b"vertex_indices" | b"vertex_index") if is_face => {
+                if !item.is_integer() {
+                    return Err(header_error(
+                        element.line,
+                        "face indices must have an integer type",
+                    ));
+                }
+                index_list = Some(p);
+            }
+            _ => {}
+        }
+    }
+    if is_vertex && axes.iter().any(Option::is_none) {
+        return Err(header_error(
+            element.line,
+            "the vertex element needs properties x, y and z",
+        ));
+    }
+    let (mut colours, mut alpha, mut uvs) = (false, false, false);
+    if is_vertex {
+        let rgb = channels[..3].iter().filter(|c| c.is_some()).count();
+        let incomplete = rgb != 0 && rgb != 3 || rgb == 0 && channels[3].is_some();
+        if incomplete && strict {
+            return Err(header_error(
+                element.line,
+                "a vertex colour needs the properties red, green and blue (alpha is optional)",
+            ));
+        }
+        let half_uv = uv_axes[0].is_some() != uv_axes[1].is_some();
+        if half_uv && strict {
+            return Err(header_error(
+                element.line,
+                "texture coordinates need two properties: s and t (or u and v)",
+            ));
+        }
+        colours = rgb == 3;
+        alpha = colours && channels[3].is_some();
+        uvs = !half_uv && uv_axes[0].is_some();
+    }
+    Ok(Roles {
+        axes,
+        channels,
+        uv_axes,
+        index_list,
+        colours,
+        alpha,
+        uvs,
+    })
 }
 
 /// Which colour channel (red 0, green 1, blue 2, alpha 3) a property names.
