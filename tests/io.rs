@@ -899,6 +899,151 @@ fn off_is_written_as_the_formatter_writes_it() {
 }
 
 #[test]
+fn ply_and_stl_are_written_as_the_formatter_and_byte_order_say() {
+    // 150,000 vertices with normals, colours with alpha and texture
+    // coordinates, and faces of 3 to 12 corners: many rounds of the
+    // parallel writer, checked against the plainest writing of each format.
+    let count = 150_000u32;
+    let positions: Vec<DVec3> = (0..count)
+        .map(|i| DVec3::new(i as f64 / 7.0, -(i as f64) * 1e-9, (i % 13) as f64 * 1e20))
+        .collect();
+    let faces: Vec<Vec<u32>> = (0..count)
+        .map(|f| (0..3 + f % 10).map(|k| (f + k * 11) % count).collect())
+        .collect();
+    let mesh = Mesh::from_polygons(positions.clone(), faces.clone()).unwrap();
+    let normals: Vec<DVec3> = (0..count)
+        .map(|i| DVec3::new(0.0, (i as f64).sin(), 1.0))
+        .collect();
+    let rgba: Vec<[f64; 4]> = (0..count)
+        .map(|i| [(i % 256) as f64 / 255.0, 0.5, 1.5, -0.25])
+        .collect();
+    let uvs: Vec<[f64; 2]> = (0..count).map(|i| [i as f64 / 3.0, 0.75]).collect();
+    let mut file = io::MeshFile::new(mesh.clone());
+    file.normals = Some(normals.clone());
+    file.colours = Some(io::Colours {
+        rgba: rgba.clone(),
+        alpha: true,
+    });
+    file.uvs = Some(io::Uvs::from_per_vertex(&mesh, uvs.clone()));
+    let byte = |c: f64| (c.clamp(0.0, 1.0) * 255.0).round() as u8;
+    for encoding in [
+        PlyEncoding::Ascii,
+        PlyEncoding::BinaryLittleEndian,
+        PlyEncoding::BinaryBigEndian,
+    ] {
+        let options = WriteOptions {
+            ply: encoding,
+            ..Default::default()
+        };
+        let mut written = Vec::new();
+        io::write_file_to(Format::Ply, &mut written, &file, &options).unwrap();
+        let body_at = written
+            .windows(11)
+            .position(|w| w == b"end_header\n")
+            .unwrap()
+            + 11;
+        let mut expected = Vec::new();
+        let big = encoding == PlyEncoding::BinaryBigEndian;
+        let double = |out: &mut Vec<u8>, x: f64| {
+            out.extend(if big {
+                x.to_be_bytes()
+            } else {
+                x.to_le_bytes()
+            })
+        };
+        for i in 0..count as usize {
+            let (p, n, [s, t]) = (positions[i], normals[i], uvs[i]);
+            let bytes = rgba[i].map(byte);
+            if encoding == PlyEncoding::Ascii {
+                let [r, g, b, a] = bytes;
+                expected.extend(
+                    format!(
+                        "{} {} {} {} {} {} {r} {g} {b} {a} {s} {t}\n",
+                        p.x, p.y, p.z, n.x, n.y, n.z
+                    )
+                    .bytes(),
+                );
+            } else {
+                p.to_array()
+                    .into_iter()
+                    .for_each(|c| double(&mut expected, c));
+                n.to_array()
+                    .into_iter()
+                    .for_each(|c| double(&mut expected, c));
+                expected.extend(bytes);
+                double(&mut expected, s);
+                double(&mut expected, t);
+            }
+        }
+        for face in &faces {
+            if encoding == PlyEncoding::Ascii {
+                let corners: Vec<String> = face.iter().map(u32::to_string).collect();
+                expected.extend(format!("{} {}\n", face.len(), corners.join(" ")).bytes());
+            } else {
+                expected.push(face.len() as u8);
+                for &v in face {
+                    expected.extend(if big {
+                        v.to_be_bytes()
+                    } else {
+                        v.to_le_bytes()
+                    });
+                }
+            }
+        }
+        assert!(written[body_at..] == expected[..], "{encoding:?}");
+    }
+    // STL: each face's fan, normal first, in `f32` or as text.
+    let triangles: Vec<[DVec3; 3]> = faces
+        .iter()
+        .flat_map(|face| {
+            let p = |k: usize| positions[face[k] as usize];
+            (1..face.len() - 1).map(move |k| [p(0), p(k), p(k + 1)])
+        })
+        .collect();
+    let normal = |[a, b, c]: [DVec3; 3]| (b - a).cross(c - a).normalize_or_zero();
+    let small = Mesh::from_polygons(
+        positions
+            .iter()
+            .map(|p| DVec3::new(p.x, p.y, p.z * 1e-20))
+            .collect(),
+        faces.clone(),
+    )
+    .unwrap();
+    let small_triangles: Vec<[DVec3; 3]> = triangles
+        .iter()
+        .map(|t| t.map(|p| DVec3::new(p.x, p.y, p.z * 1e-20)))
+        .collect();
+    let binary = encode(Format::Stl, &small, &WriteOptions::default());
+    let mut expected = Vec::new();
+    for &t in &small_triangles {
+        for v in std::iter::once(normal(t)).chain(t) {
+            v.to_array()
+                .into_iter()
+                .for_each(|c| expected.extend((c as f32).to_le_bytes()));
+        }
+        expected.extend([0, 0]);
+    }
+    assert_eq!(&binary[80..84], &(triangles.len() as u32).to_le_bytes());
+    assert!(binary[84..] == expected[..], "binary STL");
+    let options = WriteOptions {
+        stl_ascii: true,
+        ..Default::default()
+    };
+    let text = String::from_utf8(encode(Format::Stl, &mesh, &options)).unwrap();
+    let mut expected = String::from("solid weft\n");
+    for &t in &triangles {
+        let n = normal(t);
+        expected += &format!("  facet normal {} {} {}\n    outer loop\n", n.x, n.y, n.z);
+        for p in t {
+            expected += &format!("      vertex {} {} {}\n", p.x, p.y, p.z);
+        }
+        expected += "    endloop\n  endfacet\n";
+    }
+    expected += "endsolid weft\n";
+    assert!(text == expected, "text STL");
+}
+
+#[test]
 fn stl_read_to_weld_welds_as_the_soup_and_counts_every_merge() {
     let dir = temp_folder("read-to-weld");
     for (name, mesh) in [

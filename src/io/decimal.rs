@@ -39,6 +39,17 @@ pub(crate) fn put_u64(out: &mut [u8], at: usize, value: u64) -> usize {
     at + count
 }
 
+/// Appends the line of `face` as OFF and text PLY write it: its corner
+/// count, then its 0-based vertex indices.
+pub(crate) fn push_counted_face(w: &mut Vec<u8>, face: &[u32]) {
+    push_u64(w, face.len() as u64);
+    for &v in face {
+        w.push(b' ');
+        push_u64(w, v.into());
+    }
+    w.push(b'\n');
+}
+
 /// Appends the first `count` bytes of `bytes`: the whole array is copied
 /// and the rest cut off again, which the compiler does with a few wide
 /// moves instead of a call to copy a length it does not know.

@@ -11,7 +11,7 @@ use std::io::Write;
 use glam::DVec3;
 
 use super::blocks::write_in_blocks;
-use super::decimal::{push_f64, push_u64};
+use super::decimal::{push_counted_face, push_f64};
 use super::text::{lines, parse_count, parse_f64, show, words};
 use super::{build_mesh_with, IoError, Location};
 use crate::mesh::{Mesh, MeshOptions};
@@ -142,15 +142,7 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
         Ok(())
     })?;
     write_in_blocks(w, mesh.face_count(), |faces, w| {
-        for f in faces {
-            let face = mesh.face(f);
-            push_u64(w, face.len() as u64);
-            for &v in face {
-                w.push(b' ');
-                push_u64(w, v.into());
-            }
-            w.push(b'\n');
-        }
+        faces.for_each(|f| push_counted_face(w, mesh.face(f)));
         Ok(())
     })
 }

@@ -14,6 +14,8 @@ use std::path::Path;
 use glam::DVec3;
 use rayon::prelude::*;
 
+use super::blocks::write_in_blocks;
+use super::decimal::push_f64;
 use super::text::{show, Tokens};
 use super::{build_mesh, IoError, Location};
 use crate::error::MeshError;
@@ -356,11 +358,11 @@ fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
 }
 
 /// The triangles of a mesh: polygons as fans from their first corner.
-fn triangles(mesh: &Mesh) -> impl Iterator<Item = [DVec3; 3]> + '_ {
-    mesh.faces().flat_map(move |face| {
-        let p = |i: usize| mesh.positions()[face[i] as usize];
-        (1..face.len() - 1).map(move |i| [p(0), p(i), p(i + 1)])
-    })
+/// The triangles of face `f`, as a fan from its first corner.
+fn face_triangles(mesh: &Mesh, f: usize) -> impl Iterator<Item = [DVec3; 3]> + '_ {
+    let face = mesh.face(f);
+    let p = |i: usize| mesh.positions()[face[i] as usize];
+    (1..face.len() - 1).map(move |i| [p(0), p(i), p(i + 1)])
 }
 
 fn normal([a, b, c]: [DVec3; 3]) -> DVec3 {
@@ -378,16 +380,26 @@ fn normal([a, b, c]: [DVec3; 3]) -> DVec3 {
 pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()> {
     if ascii {
         writeln!(w, "solid weft")?;
-        for t in triangles(mesh) {
-            let n = normal(t);
-            writeln!(w, "  facet normal {} {} {}", n.x, n.y, n.z)?;
-            writeln!(w, "    outer loop")?;
-            for p in t {
-                writeln!(w, "      vertex {} {} {}", p.x, p.y, p.z)?;
+        write_in_blocks(w, mesh.face_count(), |faces, w| {
+            let push_point = |w: &mut Vec<u8>, lead: &[u8], p: DVec3| {
+                w.extend_from_slice(lead);
+                push_f64(w, p.x);
+                w.push(b' ');
+                push_f64(w, p.y);
+                w.push(b' ');
+                push_f64(w, p.z);
+                w.push(b'\n');
+            };
+            for t in faces.flat_map(|f| face_triangles(mesh, f)) {
+                push_point(w, b"  facet normal ", normal(t));
+                w.extend_from_slice(b"    outer loop\n");
+                for p in t {
+                    push_point(w, b"      vertex ", p);
+                }
+                w.extend_from_slice(b"    endloop\n  endfacet\n");
             }
-            writeln!(w, "    endloop")?;
-            writeln!(w, "  endfacet")?;
-        }
+            Ok(())
+        })?;
         writeln!(w, "endsolid weft")?;
         return Ok(());
     }
@@ -418,17 +430,19 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()>
     header[..title.len()].copy_from_slice(title.as_bytes());
     w.write_all(&header)?;
     w.write_all(&count.to_le_bytes())?;
-    for t in triangles(mesh) {
-        let mut record = [0u8; RECORD];
-        for (k, v) in std::iter::once(normal(t)).chain(t).enumerate() {
-            for (axis, c) in v.to_array().into_iter().enumerate() {
-                let at = k * 12 + axis * 4;
-                record[at..at + 4].copy_from_slice(&(c as f32).to_le_bytes());
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        for t in faces.flat_map(|f| face_triangles(mesh, f)) {
+            let mut record = [0u8; RECORD];
+            for (k, v) in std::iter::once(normal(t)).chain(t).enumerate() {
+                for (axis, c) in v.to_array().into_iter().enumerate() {
+                    let at = k * 12 + axis * 4;
+                    record[at..at + 4].copy_from_slice(&(c as f32).to_le_bytes());
+                }
             }
+            w.extend_from_slice(&record);
         }
-        w.write_all(&record)?;
-    }
-    Ok(())
+        Ok(())
+    })
 }
 
 #[cfg(test)]

@@ -3,6 +3,8 @@
 
 use std::io::Write;
 
+use crate::io::blocks::write_in_blocks;
+use crate::io::decimal::{push_counted_face, push_f64, push_u64};
 use crate::io::mesh_file::MeshFile;
 use crate::io::{check_attribute_sizes, PlyEncoding};
 use crate::mesh::Mesh;
@@ -71,87 +73,88 @@ fn write_with(
         if wide { "int" } else { "uchar" },
     ));
     w.write_all(header.as_bytes())?;
-    // Every number of vertex i after x y z, as doubles and bytes.
-    let extras = |i: usize| -> (Vec<f64>, Vec<u8>, Option<[f64; 2]>) {
-        let mut doubles = Vec::new();
-        let mut bytes = Vec::new();
-        if let Some(normals) = &file.normals {
-            doubles.extend(normals[i].to_array());
-        }
-        if let Some(colours) = &file.colours {
-            let channels = if colours.alpha { 4 } else { 3 };
-            bytes.extend(
-                colours.rgba[i][..channels]
-                    .iter()
-                    .map(|&c| (c.clamp(0.0, 1.0) * 255.0).round() as u8),
-            );
-        }
-        (doubles, bytes, uvs.as_ref().map(|uvs| uvs[i]))
-    };
-    match encoding {
-        PlyEncoding::Ascii => {
-            for (i, p) in mesh.positions().iter().enumerate() {
-                write!(w, "{} {} {}", p.x, p.y, p.z)?;
-                let (doubles, bytes, uv) = extras(i);
-                for d in doubles {
-                    write!(w, " {d}")?;
+    let positions = mesh.positions();
+    let colours = file
+        .colours
+        .as_ref()
+        .map(|c| (&c.rgba, if c.alpha { 4 } else { 3 }));
+    // A colour channel as the byte written.
+    let byte = |c: f64| (c.clamp(0.0, 1.0) * 255.0).round() as u8;
+    if encoding == PlyEncoding::Ascii {
+        write_in_blocks(w, positions.len(), |vertices, w| {
+            for i in vertices {
+                let p = positions[i];
+                push_f64(w, p.x);
+                for c in [p.y, p.z]
+                    .into_iter()
+                    .chain(file.normals.iter().flat_map(|n| n[i].to_array()))
+                {
+                    w.push(b' ');
+                    push_f64(w, c);
                 }
-                for b in bytes {
-                    write!(w, " {b}")?;
+                if let Some((rgba, channels)) = colours {
+                    for &c in &rgba[i][..channels] {
+                        w.push(b' ');
+                        push_u64(w, byte(c).into());
+                    }
                 }
-                if let Some([s, t]) = uv {
-                    write!(w, " {s} {t}")?;
+                for c in uvs.iter().flat_map(|uvs| uvs[i]) {
+                    w.push(b' ');
+                    push_f64(w, c);
                 }
-                w.write_all(b"\n")?;
+                w.push(b'\n');
             }
-            for face in mesh.faces() {
-                write!(w, "{}", face.len())?;
-                for &v in face {
-                    write!(w, " {v}")?;
-                }
-                w.write_all(b"\n")?;
-            }
-        }
-        PlyEncoding::BinaryLittleEndian | PlyEncoding::BinaryBigEndian => {
-            let big = encoding == PlyEncoding::BinaryBigEndian;
-            let f64_bytes = |x: f64| {
-                if big {
-                    x.to_be_bytes()
-                } else {
-                    x.to_le_bytes()
-                }
-            };
-            let u32_bytes = |x: u32| {
-                if big {
-                    x.to_be_bytes()
-                } else {
-                    x.to_le_bytes()
-                }
-            };
-            for (i, p) in mesh.positions().iter().enumerate() {
-                for c in p.to_array() {
-                    w.write_all(&f64_bytes(c))?;
-                }
-                let (doubles, bytes, uv) = extras(i);
-                for d in doubles {
-                    w.write_all(&f64_bytes(d))?;
-                }
-                w.write_all(&bytes)?;
-                for c in uv.into_iter().flatten() {
-                    w.write_all(&f64_bytes(c))?;
-                }
-            }
-            for face in mesh.faces() {
-                if wide {
-                    w.write_all(&u32_bytes(face.len() as u32))?;
-                } else {
-                    w.write_all(&[face.len() as u8])?;
-                }
-                for &v in face {
-                    w.write_all(&u32_bytes(v))?;
-                }
-            }
-        }
+            Ok(())
+        })?;
+        return write_in_blocks(w, mesh.face_count(), |faces, w| {
+            faces.for_each(|f| push_counted_face(w, mesh.face(f)));
+            Ok(())
+        });
     }
-    Ok(())
+    let big = encoding == PlyEncoding::BinaryBigEndian;
+    let push_double = |w: &mut Vec<u8>, x: f64| {
+        w.extend_from_slice(&if big {
+            x.to_be_bytes()
+        } else {
+            x.to_le_bytes()
+        });
+    };
+    let push_int = |w: &mut Vec<u8>, x: u32| {
+        w.extend_from_slice(&if big {
+            x.to_be_bytes()
+        } else {
+            x.to_le_bytes()
+        });
+    };
+    write_in_blocks(w, positions.len(), |vertices, w| {
+        for i in vertices {
+            for c in positions[i].to_array() {
+                push_double(w, c);
+            }
+            for c in file.normals.iter().flat_map(|n| n[i].to_array()) {
+                push_double(w, c);
+            }
+            if let Some((rgba, channels)) = colours {
+                w.extend(rgba[i][..channels].iter().map(|&c| byte(c)));
+            }
+            for c in uvs.iter().flat_map(|uvs| uvs[i]) {
+                push_double(w, c);
+            }
+        }
+        Ok(())
+    })?;
+    write_in_blocks(w, mesh.face_count(), |faces, w| {
+        for f in faces {
+            let face = mesh.face(f);
+            if wide {
+                push_int(w, face.len() as u32);
+            } else {
+                w.push(face.len() as u8);
+            }
+            for &v in face {
+                push_int(w, v);
+            }
+        }
+        Ok(())
+    })
 }
