@@ -1,5 +1,6 @@
-//! Text formatted on all threads and written in order: the writers of OBJ
-//! and OFF spend most of their time turning numbers into text.
+//! Files formatted on all threads and written in order: the writers of
+//! OBJ, OFF, PLY and STL spend most of their time turning numbers into text
+//! or bytes.
 
 use std::io::Write;
 

@@ -62,17 +62,6 @@ const EXACT_POWERS_OF_TEN: [f64; 23] = [
     1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
 ];
 
-/// What a reader expects, put into words only when an error names it: the
-/// readers pass `format_args!` or this, so that reading a value that is
-/// there costs no text. (`what` of the `parse_*` and `expect_*` helpers.)
-pub(crate) struct Lazy<F>(pub(crate) F);
-
-impl<F: Fn() -> String> Display for Lazy<F> {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&(self.0)())
-    }
-}
-
 /// A floating-point number, exactly as `str::parse::<f64>` reads it
 /// (correctly rounded), or `None` where that fails.
 ///
@@ -156,6 +145,17 @@ pub(crate) fn i64_of(word: &[u8]) -> Option<i64> {
         value = value * 10 + i64::from(b - b'0');
     }
     Some(if negative { -value } else { value })
+}
+
+/// What a reader expects, put into words only when an error names it: the
+/// readers pass `format_args!` or this, so that reading a value that is
+/// there costs no text. (`what` of the `parse_*` and `expect_*` helpers.)
+pub(crate) struct Lazy<F>(pub(crate) F);
+
+impl<F: Fn() -> String> Display for Lazy<F> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&(self.0)())
+    }
 }
 
 /// Parses a floating-point number.
