@@ -10,6 +10,8 @@ use std::io::Write;
 
 use glam::DVec3;
 
+mod fast;
+
 use super::blocks::write_in_blocks;
 use super::decimal::{push_counted_face, push_f64};
 use super::text::{lines, parse_count, parse_f64, show, words};
@@ -26,8 +28,17 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
     parse_with(data, MeshOptions::default())
 }
 
-/// As [`parse`], accepting what `options` allows.
+/// As [`parse`], accepting what `options` allows: on all threads, or row
+/// by row for a file that has something to report.
 pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
+    match fast::read(data, fast::PIECE, options) {
+        Some(mesh) => Ok(mesh),
+        None => parse_rows(data, options),
+    }
+}
+
+/// As [`parse_with`], row by row.
+fn parse_rows(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
     let mut rows = lines(data).filter(|(_, text)| words(text).next().is_some());
     let mut last_line = 1;
     let mut next_row = |what: &dyn std::fmt::Display| {
@@ -145,4 +156,62 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
         faces.for_each(|f| push_counted_face(w, mesh.face(f)));
         Ok(())
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Files the pieces must read as the rows do.
+    const READABLE: [&[u8]; 6] = [
+        b"OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n",
+        // Comments, blank lines, CRLF, tabs, colours after vertices and faces.
+        b"# made by hand\r\nCOFF # colours\r\n\r\n4\t2 0\r\n0 0 0 255 0 0 255\r\n# a comment row\r\n\
+          1 0 0 0 255 0 255\r\n   \r\n1 1 0 0 0 255 255\r\n0 1 0 9 9 9 9\r\n\
+          3 0 1 2 1 0 0\r\n3\t0 2 3   # last\r\nextra rows are not read\r\n",
+        // The counts on the keyword's line, and no keyword at all.
+        b"OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2",
+        b"3 1 0\n-0.5 1e3 .25\n1 0 0\n0 1 0\n3 0 1 2\n",
+        // A quad, a pentagon and a triangle, with numbers of every form.
+        b"NOFF\n7 3 0\n0 0 0\n+1 0 0\n1 1 0\n0 1 0\n-1 1 0\n2 0.5e0 0\n2 1.000000000000000000001 0\n\
+          4 0 1 2 3\n5 0 3 4 2 1\n3 1 5 6\n",
+        b"OFF\n0 0 0\n",
+    ];
+
+    /// Files the row-by-row reader must report, each with its line.
+    const BROKEN: [(&[u8], usize); 6] = [
+        (b"OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n", 4),
+        (b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 x\n", 6),
+        (b"OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", 6),
+        (b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 6),
+        (b"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n-3 0 1 2\n", 6),
+        (b"OFF\nthree 1 0\n", 2),
+    ];
+
+    #[test]
+    fn pieces_read_as_the_rows_do_wherever_the_cuts_fall() {
+        for text in READABLE {
+            let rows = parse_rows(text, MeshOptions::default()).unwrap();
+            for piece in [1, 2, 3, 5, 17, 100, fast::PIECE] {
+                let read = fast::read(text, piece, MeshOptions::default());
+                assert_eq!(
+                    read.as_ref(),
+                    Some(&rows),
+                    "{}",
+                    String::from_utf8_lossy(text)
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn what_the_rows_report_is_left_to_them() {
+        for (text, line) in BROKEN {
+            for piece in [1, 4, fast::PIECE] {
+                assert!(fast::read(text, piece, MeshOptions::default()).is_none());
+            }
+            let error = parse(text).unwrap_err();
+            assert_eq!(error.location(), Some(Location::Line(line)), "{error}");
+        }
+    }
 }

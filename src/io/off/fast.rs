@@ -1,0 +1,162 @@
+//! OFF read on all threads. A row is a line with a word once its `#`
+//! comment is cut, and a row's place (vertex v, face f) is its rank among
+//! the rows after the counts: the body is cut at line ends into pieces,
+//! each piece's rows counted on all threads, then each read knowing the
+//! rank of its first row. Anything the row-by-row reader would report (a
+//! malformed or missing number, too few rows, a mesh it refuses) makes the
+//! file go to that reader, so errors and their lines are its own.
+
+use glam::DVec3;
+use memchr::memchr;
+use rayon::prelude::*;
+
+use super::super::text::{f64_of, i64_of, lines, words};
+use super::super::{build_mesh_with, Location};
+use crate::mesh::{Mesh, MeshOptions};
+
+/// Bytes a piece holds at least (it ends at the next line end).
+pub(super) const PIECE: usize = 1 << 20;
+
+/// The mesh of `data`, read in pieces of `piece` bytes; `None` where the
+/// row-by-row reader must read it (see the module doc).
+pub(super) fn read(data: &[u8], piece: usize, options: MeshOptions) -> Option<Mesh> {
+    let (vertex_count, face_count, body) = counts(data)?;
+    let pieces = cut(&data[body..], piece.max(1));
+    let rows: Vec<usize> = pieces.par_iter().map(|p| rows_of(p).count()).collect();
+    if rows.iter().sum::<usize>() < vertex_count.checked_add(face_count)? {
+        return None;
+    }
+    let firsts: Vec<usize> = rows
+        .iter()
+        .scan(0, |rank, &n| {
+            let first = *rank;
+            *rank += n;
+            Some(first)
+        })
+        .collect();
+    let read: Vec<Option<Piece>> = pieces
+        .par_iter()
+        .zip(&firsts)
+        .map(|(text, &first)| read_piece(text, first, vertex_count, face_count))
+        .collect();
+    let mut positions = Vec::with_capacity(vertex_count);
+    let (mut sizes, mut indices) = (Vec::with_capacity(face_count), Vec::new());
+    for piece in read {
+        let piece = piece?;
+        positions.extend(piece.positions);
+        sizes.extend(piece.sizes);
+        indices.extend(piece.indices);
+    }
+    // Lines are not kept: a mesh refused is read again row by row, which
+    // names them.
+    build_mesh_with(
+        (positions, sizes, indices),
+        options,
+        |_| Location::Line(0),
+        |_| Location::Line(0),
+    )
+    .ok()
+}
+
+/// The vertex and face counts and where the rows after them start, read as
+/// the row-by-row reader reads them.
+fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
+    let mut rows = line_ends(data).filter(|&(_, text)| words(text).next().is_some());
+    let (mut end, text) = rows.next()?;
+    let mut header: Vec<&[u8]> = words(text).collect();
+    if header[0].len() >= 3 && header[0][header[0].len() - 3..].eq_ignore_ascii_case(b"OFF") {
+        header.remove(0);
+        if header.is_empty() {
+            let (counts_end, text) = rows.next()?;
+            end = counts_end;
+            header = words(text).collect();
+        }
+    }
+    let count = |word: Option<&&[u8]>| usize::try_from(i64_of(word?)?).ok();
+    Some((count(header.first())?, count(header.get(1))?, end))
+}
+
+/// The lines of `data` as [`lines`] gives them, each with where the next
+/// line starts instead of its number.
+fn line_ends(data: &[u8]) -> impl Iterator<Item = (usize, &[u8])> {
+    let mut start = 0;
+    lines(data).map(move |(_, text)| {
+        // `lines` cuts the comment off, never the start.
+        let line_end = data[start..]
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(data.len(), |at| start + at + 1);
+        start = line_end;
+        (line_end, text)
+    })
+}
+
+/// `text` cut into pieces of at least `piece` bytes, each ending at a line
+/// end (the last at the end of `text`).
+fn cut(text: &[u8], piece: usize) -> Vec<&[u8]> {
+    let mut pieces = Vec::new();
+    let mut rest = text;
+    while !rest.is_empty() {
+        let end = match rest.get(piece..) {
+            Some(after) => memchr(b'\n', after).map_or(rest.len(), |at| piece + at + 1),
+            None => rest.len(),
+        };
+        let (head, tail) = rest.split_at(end);
+        pieces.push(head);
+        rest = tail;
+    }
+    pieces
+}
+
+/// The rows of a piece, as [`lines`] and [`words`] find them: a line whose
+/// first byte that is not white space is there and not `#`, cut at its `#`.
+fn rows_of(text: &[u8]) -> impl Iterator<Item = &[u8]> {
+    let mut rest = text;
+    std::iter::from_fn(move || loop {
+        if rest.is_empty() {
+            return None;
+        }
+        let end = memchr(b'\n', rest).map_or(rest.len(), |at| at + 1);
+        let (line, tail) = rest.split_at(end);
+        rest = tail;
+        match line.iter().find(|b| !b.is_ascii_whitespace()) {
+            Some(b'#') | None => continue,
+            Some(_) => return Some(memchr(b'#', line).map_or(line, |at| &line[..at])),
+        }
+    })
+}
+
+/// What a piece holds: its vertices, then its faces' sizes and indices.
+struct Piece {
+    positions: Vec<DVec3>,
+    sizes: Vec<u32>,
+    indices: Vec<u32>,
+}
+
+/// Reads the rows of `text`, the first of rank `first`; `None` at the first
+/// row the row-by-row reader would report.
+fn read_piece(text: &[u8], first: usize, vertex_count: usize, face_count: usize) -> Option<Piece> {
+    let mut piece = Piece {
+        positions: Vec::new(),
+        sizes: Vec::new(),
+        indices: Vec::new(),
+    };
+    for (rank, row) in (first..vertex_count + face_count).zip(rows_of(text)) {
+        let mut w = words(row);
+        if rank < vertex_count {
+            let mut xyz = [0.0; 3];
+            for value in &mut xyz {
+                *value = f64_of(w.next()?)?;
+            }
+            piece.positions.push(DVec3::from_array(xyz));
+            continue;
+        }
+        let size = usize::try_from(i64_of(w.next()?)?).ok()?;
+        for _ in 0..size {
+            let index = usize::try_from(i64_of(w.next()?)?).ok()?;
+            piece.indices.push(u32::try_from(index).ok()?);
+        }
+        piece.sizes.push(u32::try_from(size).ok()?);
+    }
+    Some(piece)
+}
