@@ -25,6 +25,23 @@ fn shapes_to_test() -> Vec<(&'static str, Mesh)> {
     ]
 }
 
+/// Each PLY encoding with the options that write it.
+fn ply_encodings() -> impl Iterator<Item = (PlyEncoding, WriteOptions)> {
+    [
+        PlyEncoding::Ascii,
+        PlyEncoding::BinaryLittleEndian,
+        PlyEncoding::BinaryBigEndian,
+    ]
+    .into_iter()
+    .map(|ply| {
+        let options = WriteOptions {
+            ply,
+            ..WriteOptions::default()
+        };
+        (ply, options)
+    })
+}
+
 fn encode(format: Format, mesh: &Mesh, options: &WriteOptions) -> Vec<u8> {
     let mut bytes = Vec::new();
     io::write_to(format, &mut bytes, mesh, options).unwrap();
@@ -523,15 +540,7 @@ fn ply_round_trips_colours_and_per_vertex_uvs() {
         .collect();
     file.uvs = Some(io::Uvs::from_per_vertex(&file.mesh, per_vertex.clone()));
     assert!(file.dropped_by(Format::Ply).is_empty());
-    for encoding in [
-        PlyEncoding::Ascii,
-        PlyEncoding::BinaryLittleEndian,
-        PlyEncoding::BinaryBigEndian,
-    ] {
-        let options = WriteOptions {
-            ply: encoding,
-            ..WriteOptions::default()
-        };
+    for (encoding, options) in ply_encodings() {
         let mut bytes = Vec::new();
         io::write_file_to(Format::Ply, &mut bytes, &file, &options).unwrap();
         let read = io::parse_mesh_file(Format::Ply, &bytes).unwrap();
@@ -926,15 +935,7 @@ fn ply_and_stl_are_written_as_the_formatter_and_byte_order_say() {
     });
     file.uvs = Some(io::Uvs::from_per_vertex(&mesh, uvs.clone()));
     let byte = |c: f64| (c.clamp(0.0, 1.0) * 255.0).round() as u8;
-    for encoding in [
-        PlyEncoding::Ascii,
-        PlyEncoding::BinaryLittleEndian,
-        PlyEncoding::BinaryBigEndian,
-    ] {
-        let options = WriteOptions {
-            ply: encoding,
-            ..Default::default()
-        };
+    for (encoding, options) in ply_encodings() {
         let mut written = Vec::new();
         io::write_file_to(Format::Ply, &mut written, &file, &options).unwrap();
         let body_at = written

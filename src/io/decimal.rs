@@ -4,6 +4,8 @@
 
 use std::io::Write;
 
+use glam::DVec3;
+
 /// The two-digit numbers 00 to 99, written out.
 const PAIRS: &[u8; 200] = b"\
     0001020304050607080910111213141516171819\
@@ -37,6 +39,18 @@ pub(crate) fn put_u64(out: &mut [u8], at: usize, value: u64) -> usize {
         digits[0] = b'0' + rest as u8;
     }
     at + count
+}
+
+/// Appends `lead`, the coordinates of `p` between spaces, and the line's
+/// end, as OFF's vertices and text STL's points are written.
+pub(crate) fn push_point_line(w: &mut Vec<u8>, lead: &[u8], p: DVec3) {
+    w.extend_from_slice(lead);
+    push_f64(w, p.x);
+    w.push(b' ');
+    push_f64(w, p.y);
+    w.push(b' ');
+    push_f64(w, p.z);
+    w.push(b'\n');
 }
 
 /// Appends the line of `face` as OFF and text PLY write it: its corner

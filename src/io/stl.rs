@@ -15,7 +15,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use super::blocks::write_in_blocks;
-use super::decimal::push_f64;
+use super::decimal::push_point_line;
 use super::text::{show, Tokens};
 use super::{build_mesh, IoError, Location};
 use crate::error::MeshError;
@@ -381,20 +381,11 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh, ascii: bool) -> std::io::Result<()>
     if ascii {
         writeln!(w, "solid weft")?;
         write_in_blocks(w, mesh.face_count(), |faces, w| {
-            let push_point = |w: &mut Vec<u8>, lead: &[u8], p: DVec3| {
-                w.extend_from_slice(lead);
-                push_f64(w, p.x);
-                w.push(b' ');
-                push_f64(w, p.y);
-                w.push(b' ');
-                push_f64(w, p.z);
-                w.push(b'\n');
-            };
             for t in faces.flat_map(|f| face_triangles(mesh, f)) {
-                push_point(w, b"  facet normal ", normal(t));
+                push_point_line(w, b"  facet normal ", normal(t));
                 w.extend_from_slice(b"    outer loop\n");
                 for p in t {
-                    push_point(w, b"      vertex ", p);
+                    push_point_line(w, b"      vertex ", p);
                 }
                 w.extend_from_slice(b"    endloop\n  endfacet\n");
             }

@@ -13,7 +13,7 @@ use glam::DVec3;
 mod fast;
 
 use super::blocks::write_in_blocks;
-use super::decimal::{push_counted_face, push_f64};
+use super::decimal::{push_counted_face, push_point_line};
 use super::text::{lines, parse_count, parse_f64, show, words};
 use super::{build_mesh_with, IoError, Location};
 use crate::mesh::{Mesh, MeshOptions};
@@ -142,13 +142,8 @@ pub fn write(w: &mut dyn Write, mesh: &Mesh) -> std::io::Result<()> {
     writeln!(w, "{} {} 0", mesh.vertex_count(), mesh.face_count())?;
     let positions = mesh.positions();
     write_in_blocks(w, positions.len(), |vertices, w| {
-        for p in &positions[vertices] {
-            push_f64(w, p.x);
-            w.push(b' ');
-            push_f64(w, p.y);
-            w.push(b' ');
-            push_f64(w, p.z);
-            w.push(b'\n');
+        for &p in &positions[vertices] {
+            push_point_line(w, b"", p);
         }
         Ok(())
     })?;
