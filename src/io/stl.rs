@@ -357,7 +357,6 @@ fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
     )
 }
 
-/// The triangles of a mesh: polygons as fans from their first corner.
 /// The triangles of face `f`, as a fan from its first corner.
 fn face_triangles(mesh: &Mesh, f: usize) -> impl Iterator<Item = [DVec3; 3]> + '_ {
     let face = mesh.face(f);

@@ -10,7 +10,7 @@ use glam::DVec3;
 use memchr::memchr;
 use rayon::prelude::*;
 
-use super::super::text::{f64_of, i64_of, lines, words};
+use super::super::text::{f64_of, i64_of, words};
 use super::super::{build_mesh_with, Location};
 use crate::mesh::{Mesh, MeshOptions};
 
@@ -61,7 +61,7 @@ pub(super) fn read(data: &[u8], piece: usize, options: MeshOptions) -> Option<Me
 /// The vertex and face counts and where the rows after them start, read as
 /// the row-by-row reader reads them.
 fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
-    let mut rows = line_ends(data).filter(|&(_, text)| words(text).next().is_some());
+    let mut rows = rows_ending(data);
     let (mut end, text) = rows.next()?;
     let mut header: Vec<&[u8]> = words(text).collect();
     if header[0].len() >= 3 && header[0][header[0].len() - 3..].eq_ignore_ascii_case(b"OFF") {
@@ -74,21 +74,6 @@ fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
     }
     let count = |word: Option<&&[u8]>| usize::try_from(i64_of(word?)?).ok();
     Some((count(header.first())?, count(header.get(1))?, end))
-}
-
-/// The lines of `data` as [`lines`] gives them, each with where the next
-/// line starts instead of its number.
-fn line_ends(data: &[u8]) -> impl Iterator<Item = (usize, &[u8])> {
-    let mut start = 0;
-    lines(data).map(move |(_, text)| {
-        // `lines` cuts the comment off, never the start.
-        let line_end = data[start..]
-            .iter()
-            .position(|&b| b == b'\n')
-            .map_or(data.len(), |at| start + at + 1);
-        start = line_end;
-        (line_end, text)
-    })
 }
 
 /// `text` cut into pieces of at least `piece` bytes, each ending at a line
@@ -108,22 +93,25 @@ fn cut(text: &[u8], piece: usize) -> Vec<&[u8]> {
     pieces
 }
 
-/// The rows of a piece, as [`lines`] and [`words`] find them: a line whose
-/// first byte that is not white space is there and not `#`, cut at its `#`.
-fn rows_of(text: &[u8]) -> impl Iterator<Item = &[u8]> {
-    let mut rest = text;
+/// The rows of `text`, as `text::lines` and [`words`] find them: a line whose
+/// first byte that is not white space is there and not `#`, cut at its `#`;
+/// each with where the line after it starts.
+fn rows_ending(text: &[u8]) -> impl Iterator<Item = (usize, &[u8])> {
+    let mut start = 0;
     std::iter::from_fn(move || loop {
-        if rest.is_empty() {
-            return None;
-        }
-        let end = memchr(b'\n', rest).map_or(rest.len(), |at| at + 1);
-        let (line, tail) = rest.split_at(end);
-        rest = tail;
+        let rest = text.get(start..).filter(|rest| !rest.is_empty())?;
+        let line = &rest[..memchr(b'\n', rest).map_or(rest.len(), |at| at + 1)];
+        start += line.len();
         match line.iter().find(|b| !b.is_ascii_whitespace()) {
             Some(b'#') | None => continue,
-            Some(_) => return Some(memchr(b'#', line).map_or(line, |at| &line[..at])),
+            Some(_) => return Some((start, memchr(b'#', line).map_or(line, |at| &line[..at]))),
         }
     })
+}
+
+/// The rows of `text` (see [`rows_ending`]).
+fn rows_of(text: &[u8]) -> impl Iterator<Item = &[u8]> {
+    rows_ending(text).map(|(_, row)| row)
 }
 
 /// What a piece holds: its vertices, then its faces' sizes and indices.

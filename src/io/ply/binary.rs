@@ -71,11 +71,11 @@ pub(super) fn read_in_bulk(
     for element in elements {
         let roles = roles(element, strict).ok()?;
         if let (b"face", Some(list)) = (element.name.as_slice(), roles.index_list) {
-            let layout = face_layout(element, list)?;
-            let (starts, sizes, end) = face_records(data, at, element.count, &layout, big_endian)?;
             if faces.is_some() {
                 return None;
             }
+            let layout = face_layout(element, list)?;
+            let (starts, sizes, end) = face_records(data, at, element.count, &layout, big_endian)?;
             faces = Some(Faces {
                 layout,
                 starts,
