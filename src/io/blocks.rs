@@ -1,8 +1,10 @@
-//! Files formatted on all threads and written in order: the writers of
-//! OBJ, OFF, PLY and STL spend most of their time turning numbers into text
-//! or bytes.
+//! Files taken a block at a time. Written: formatted on all threads and
+//! written in order (the writers of OBJ, OFF, PLY and STL spend most of
+//! their time turning numbers into text or bytes). Read: through two
+//! buffers, one read on all threads while the other is filled, each cut
+//! where the format lets its pieces be read apart (OBJ and text STL).
 
-use std::io::Write;
+use std::io::{Read, Write};
 
 use rayon::prelude::*;
 
@@ -51,4 +53,75 @@ pub(crate) fn write_in_blocks(
         std::mem::swap(&mut ready, &mut next);
     }
     ready.iter().try_for_each(|buffer| w.write_all(buffer))
+}
+
+/// A buffer of a file's bytes: up to `cut`, what can be read without the
+/// bytes after it; then the start of what goes on in the next buffer.
+pub(crate) struct FileBlock {
+    bytes: Vec<u8>,
+    cut: usize,
+    end: usize,
+    /// Whether the file ended in this buffer.
+    pub(crate) at_end: bool,
+}
+
+impl FileBlock {
+    pub(crate) fn new(size: usize) -> FileBlock {
+        FileBlock {
+            bytes: vec![0; size.max(1)],
+            cut: 0,
+            end: 0,
+            at_end: false,
+        }
+    }
+
+    /// What can be read now.
+    pub(crate) fn ready(&self) -> &[u8] {
+        &self.bytes[..self.cut]
+    }
+
+    /// What the next buffer goes on with.
+    pub(crate) fn carried(&self) -> &[u8] {
+        &self.bytes[self.cut..self.end]
+    }
+
+    /// Fills the buffer from `source` after `carried` (what the last buffer
+    /// carried), and cuts it where `cut` says (all of it at the end of the
+    /// file), growing it while `cut` finds no place.
+    pub(crate) fn fill(
+        &mut self,
+        source: &mut impl Read,
+        carried: &[u8],
+        cut: impl Fn(&[u8]) -> Option<usize>,
+    ) -> std::io::Result<()> {
+        if self.bytes.len() <= carried.len() {
+            self.bytes.resize(2 * carried.len(), 0);
+        }
+        self.bytes[..carried.len()].copy_from_slice(carried);
+        let mut end = carried.len();
+        loop {
+            while end < self.bytes.len() {
+                match source.read(&mut self.bytes[end..]) {
+                    Ok(0) => break,
+                    Ok(n) => end += n,
+                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
+                    Err(e) => return Err(e),
+                }
+            }
+            self.end = end;
+            self.at_end = end < self.bytes.len();
+            if self.at_end {
+                self.cut = end;
+                return Ok(());
+            }
+            match cut(&self.bytes[..end]) {
+                Some(at) => {
+                    self.cut = at;
+                    return Ok(());
+                }
+                // Nothing to cut at in the buffer: read on into a larger one.
+                None => self.bytes.resize(2 * self.bytes.len(), 0),
+            }
+        }
+    }
 }

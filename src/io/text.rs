@@ -43,6 +43,51 @@ impl<'a> Iterator for Words<'a> {
     }
 }
 
+/// `text` cut into pieces of at least `piece` bytes (1 at least), each
+/// ending at a line end (the last at the end of `text`), for a reader that
+/// reads them on all threads.
+pub(crate) fn pieces_at_line_ends(text: &[u8], piece: usize) -> Vec<&[u8]> {
+    let piece = piece.max(1);
+    let mut pieces = Vec::new();
+    let mut rest = text;
+    while !rest.is_empty() {
+        let end = match rest.get(piece..) {
+            Some(after) => memchr::memchr(b'\n', after).map_or(rest.len(), |at| piece + at + 1),
+            None => rest.len(),
+        };
+        let (head, tail) = rest.split_at(end);
+        pieces.push(head);
+        rest = tail;
+    }
+    pieces
+}
+
+/// Reads `pieces` on all threads, a round of `round` at a time, handing
+/// each piece's reading to `append` in order before the next round is
+/// read, so that what the pieces hold on their own stays a round's worth;
+/// `None` at the first piece `read` gives up on. `read` is told each
+/// piece's index.
+pub(crate) fn read_in_rounds<T: Send>(
+    pieces: &[&[u8]],
+    round: usize,
+    read: impl Fn(usize, &[u8]) -> Option<T> + Sync,
+    mut append: impl FnMut(T),
+) -> Option<()> {
+    use rayon::prelude::*;
+    for (r, texts) in pieces.chunks(round.max(1)).enumerate() {
+        let first = r * round.max(1);
+        let read: Vec<Option<T>> = texts
+            .par_iter()
+            .enumerate()
+            .map(|(i, text)| read(first + i, text))
+            .collect();
+        for piece in read {
+            append(piece?);
+        }
+    }
+    Some(())
+}
+
 /// A word shown in an error message, shortened and made printable.
 pub(crate) fn show(word: &[u8]) -> String {
     let text = String::from_utf8_lossy(&word[..word.len().min(40)]);

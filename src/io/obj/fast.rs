@@ -21,6 +21,8 @@ use std::io::Read;
 
 use glam::DVec3;
 use memchr::{memchr, memrchr};
+
+use crate::io::blocks::FileBlock;
 use rayon::prelude::*;
 
 use super::{Collected, Statements};
@@ -532,68 +534,9 @@ pub(crate) fn read_bytes(data: &[u8], block: usize, piece: usize) -> Option<Mesh
     reader.join_block(&read).then(|| reader.finish())?
 }
 
-/// A buffer of a file's bytes: whole lines up to `cut`, then the start of
-/// the line that goes on in the next buffer.
-struct Lines {
-    bytes: Vec<u8>,
-    cut: usize,
-    end: usize,
-    /// Whether the file ended in this buffer.
-    at_end: bool,
-}
-
-impl Lines {
-    fn new(size: usize) -> Lines {
-        Lines {
-            bytes: vec![0; size.max(1)],
-            cut: 0,
-            end: 0,
-            at_end: false,
-        }
-    }
-
-    fn lines(&self) -> &[u8] {
-        &self.bytes[..self.cut]
-    }
-
-    /// The start of a line the next buffer finishes.
-    fn carried(&self) -> &[u8] {
-        &self.bytes[self.cut..self.end]
-    }
-
-    /// Fills the buffer from `source` after `carried`, the start of the
-    /// line the last buffer ended in, growing it for a line longer than it.
-    fn fill(&mut self, source: &mut impl Read, carried: &[u8]) -> std::io::Result<()> {
-        if self.bytes.len() <= carried.len() {
-            self.bytes.resize(2 * carried.len(), 0);
-        }
-        self.bytes[..carried.len()].copy_from_slice(carried);
-        let mut end = carried.len();
-        loop {
-            while end < self.bytes.len() {
-                match source.read(&mut self.bytes[end..]) {
-                    Ok(0) => break,
-                    Ok(n) => end += n,
-                    Err(e) if e.kind() == std::io::ErrorKind::Interrupted => {}
-                    Err(e) => return Err(e),
-                }
-            }
-            self.end = end;
-            self.at_end = end < self.bytes.len();
-            if self.at_end {
-                self.cut = end;
-                return Ok(());
-            }
-            match memrchr(b'\n', &self.bytes[..end]) {
-                Some(last) => {
-                    self.cut = last + 1;
-                    return Ok(());
-                }
-                // A line longer than the buffer: read on into a larger one.
-                None => self.bytes.resize(2 * self.bytes.len(), 0),
-            }
-        }
-    }
+/// Where the whole lines of `bytes` end: a block is cut there.
+fn after_last_line(bytes: &[u8]) -> Option<usize> {
+    memrchr(b'\n', bytes).map(|last| last + 1)
 }
 
 /// Reads an OBJ file from `source` through two buffers of `block` bytes
@@ -609,14 +552,16 @@ pub(crate) fn read_source(
 ) -> std::io::Result<Option<MeshFile>> {
     let mut reader = Reader::new(piece);
     let (mut reading, mut read) = (Block::default(), Block::default());
-    let mut front = Lines::new(block);
-    front.fill(&mut source, &[])?;
-    let mut back = Lines::new(block);
+    let mut front = FileBlock::new(block);
+    front.fill(&mut source, &[], after_last_line)?;
+    let mut back = FileBlock::new(block);
     loop {
         let (joined, filled) =
-            reader.overlap(&mut reading, front.lines(), &read, || match front.at_end {
+            reader.overlap(&mut reading, front.ready(), &read, || match front.at_end {
                 true => Ok(false),
-                false => back.fill(&mut source, front.carried()).map(|()| true),
+                false => back
+                    .fill(&mut source, front.carried(), after_last_line)
+                    .map(|()| true),
             });
         if !joined {
             return Ok(None);

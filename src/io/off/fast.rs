@@ -10,7 +10,7 @@ use glam::DVec3;
 use memchr::memchr;
 use rayon::prelude::*;
 
-use super::super::text::{f64_of, i64_of, words};
+use super::super::text::{f64_of, i64_of, pieces_at_line_ends, words};
 use super::super::{build_mesh_with, Location};
 use crate::mesh::{Mesh, MeshOptions};
 
@@ -21,7 +21,7 @@ pub(super) const PIECE: usize = 1 << 20;
 /// row-by-row reader must read it (see the module doc).
 pub(super) fn read(data: &[u8], piece: usize, options: MeshOptions) -> Option<Mesh> {
     let (vertex_count, face_count, body) = counts(data)?;
-    let pieces = cut(&data[body..], piece.max(1));
+    let pieces = pieces_at_line_ends(&data[body..], piece);
     let rows: Vec<usize> = pieces.par_iter().map(|p| rows_of(p).count()).collect();
     if rows.iter().sum::<usize>() < vertex_count.checked_add(face_count)? {
         return None;
@@ -74,23 +74,6 @@ fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
     }
     let count = |word: Option<&&[u8]>| usize::try_from(i64_of(word?)?).ok();
     Some((count(header.first())?, count(header.get(1))?, end))
-}
-
-/// `text` cut into pieces of at least `piece` bytes, each ending at a line
-/// end (the last at the end of `text`).
-fn cut(text: &[u8], piece: usize) -> Vec<&[u8]> {
-    let mut pieces = Vec::new();
-    let mut rest = text;
-    while !rest.is_empty() {
-        let end = match rest.get(piece..) {
-            Some(after) => memchr(b'\n', after).map_or(rest.len(), |at| piece + at + 1),
-            None => rest.len(),
-        };
-        let (head, tail) = rest.split_at(end);
-        pieces.push(head);
-        rest = tail;
-    }
-    pieces
 }
 
 /// The rows of `text`, as `text::lines` and [`words`] find them: a line whose

@@ -17,6 +17,7 @@
 use glam::DVec3;
 
 mod binary;
+mod fast_text;
 mod write;
 
 pub use write::{write, write_file};
@@ -85,6 +86,17 @@ impl Scalar {
         }
     }
 
+    /// The value of a word of text, read as `f64` (an integer type's as
+    /// an integer, exactly); `None` when the word is not one.
+    #[inline]
+    fn value_of_word(self, word: &[u8]) -> Option<f64> {
+        if self.is_integer() {
+            i64_of(word).map(|i| i as f64)
+        } else {
+            f64_of(word)
+        }
+    }
+
     fn is_integer(self) -> bool {
         !matches!(self, Scalar::F32 | Scalar::F64)
     }
@@ -138,12 +150,7 @@ struct Text<'a>(Tokens<'a>);
 impl Values for Text<'_> {
     fn read(&mut self, ty: Scalar, what: &dyn Fn() -> String) -> Result<f64, IoError> {
         let (word, line) = self.0.expect_word(Lazy(what))?;
-        let parsed = if ty.is_integer() {
-            i64_of(word).map(|i| i as f64)
-        } else {
-            f64_of(word)
-        };
-        parsed.ok_or_else(|| {
+        ty.value_of_word(word).ok_or_else(|| {
             let kind = if ty.is_integer() {
                 "an integer"
             } else {
@@ -226,12 +233,17 @@ pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
 pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<MeshFile, IoError> {
     let (encoding, elements, body, body_line) = parse_header(data)?;
     match encoding {
-        Encoding::Ascii => read_body(
-            &mut Text(Tokens::new(body, body_line)),
-            &elements,
-            strict,
-            options,
-        ),
+        Encoding::Ascii => {
+            match fast_text::read(body, &elements, strict, options, fast_text::PIECE) {
+                Some(file) => Ok(file),
+                None => read_body(
+                    &mut Text(Tokens::new(body, body_line)),
+                    &elements,
+                    strict,
+                    options,
+                ),
+            }
+        }
         Encoding::Binary { big_endian } => {
             let offset = data.len() - body.len();
             if let Some(read) =

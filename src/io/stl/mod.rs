@@ -14,6 +14,8 @@ use std::path::Path;
 use glam::DVec3;
 use rayon::prelude::*;
 
+mod fast_text;
+
 use super::blocks::write_in_blocks;
 use super::decimal::push_point_line;
 use super::text::{show, Tokens};
@@ -76,15 +78,27 @@ fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
     soup(positions)
 }
 
-/// Reads a binary STL file a block of triangles at a time, the next block
-/// read from the file while this one's corners are written, never holding
-/// all its bytes; `None` when the file is not one whose size is that of its
-/// triangle count (text, or truncated), which [`parse`] reads whole.
+/// Reads an STL file a block at a time, the next block read from the file
+/// while this one is read, never holding all its bytes: binary, a block of
+/// triangles at a time, and text, a block of facets at a time on all
+/// threads; `None` when the file is left to [`parse`], which reads it
+/// whole: a binary file whose size is not that of its triangle count
+/// (truncated, or text), and a text file with something to report or a
+/// rarer form (see `fast_text`).
 ///
 /// # Errors
 /// As [`parse`]; [`IoError::File`] when the file cannot be read.
 pub(crate) fn read_path(path: &Path) -> Result<Option<Mesh>, IoError> {
-    read_in_blocks(path, BLOCK_TRIANGLES, Corners::Own).map(|read| read.map(|(mesh, _)| mesh))
+    if let Some((mesh, _)) = read_in_blocks(path, BLOCK_TRIANGLES, Corners::Own)? {
+        return Ok(Some(mesh));
+    }
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    let file = File::open(path).map_err(failed)?;
+    fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE).map_err(failed)
 }
 
 /// [`read_path`] for a weld to follow: the exact copies of a position near
@@ -291,7 +305,17 @@ fn corner_byte(v: usize) -> usize {
     84 + v / 3 * RECORD + 12 + v % 3 * 12
 }
 
+/// A text file's mesh: on all threads, or word by word when the file has
+/// something to report or a form the pieces leave to it.
 fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
+    match fast_text::read(data, fast_text::PIECE) {
+        Some(mesh) => Ok(mesh),
+        None => parse_ascii_words(data),
+    }
+}
+
+/// [`parse_ascii`] word by word, each vertex and facet with its line.
+fn parse_ascii_words(data: &[u8]) -> Result<Mesh, IoError> {
     let mut tokens = Tokens::new(data, 1);
     let mut positions = Vec::new();
     let mut vertex_lines = Vec::new();
@@ -318,32 +342,7 @@ fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
                 format!("expected \"facet\" or \"endsolid\", found {}", show(word)),
             ));
         }
-        tokens.expect_keyword("normal")?;
-        for _ in 0..3 {
-            tokens.next_f64("a normal coordinate")?;
-        }
-        tokens.expect_keyword("outer")?;
-        tokens.expect_keyword("loop")?;
-        let mut size = 0u32;
-        loop {
-            let (word, line) = tokens.expect_word("\"vertex\" or \"endloop\"")?;
-            if word.eq_ignore_ascii_case(b"endloop") {
-                break;
-            }
-            if !word.eq_ignore_ascii_case(b"vertex") {
-                return Err(IoError::parse(
-                    Location::Line(line),
-                    format!("expected \"vertex\" or \"endloop\", found {}", show(word)),
-                ));
-            }
-            let x = tokens.next_f64("the x coordinate of a vertex")?;
-            let y = tokens.next_f64("the y coordinate of a vertex")?;
-            let z = tokens.next_f64("the z coordinate of a vertex")?;
-            positions.push(DVec3::new(x, y, z));
-            vertex_lines.push(line);
-            size += 1;
-        }
-        tokens.expect_keyword("endfacet")?;
+        let size = read_facet(&mut tokens, &mut positions, |line| vertex_lines.push(line))?;
         face_sizes.push(size);
         face_lines.push(line);
     }
@@ -355,6 +354,42 @@ fn parse_ascii(data: &[u8]) -> Result<Mesh, IoError> {
         |v| Location::Line(vertex_lines[v]),
         |f| Location::Line(face_lines[f]),
     )
+}
+
+/// Reads a facet after its word `facet`, through `endfacet`: pushes its
+/// corners (telling `corner_line` each one's line) and returns their count.
+fn read_facet(
+    tokens: &mut Tokens,
+    positions: &mut Vec<DVec3>,
+    mut corner_line: impl FnMut(usize),
+) -> Result<u32, IoError> {
+    tokens.expect_keyword("normal")?;
+    for _ in 0..3 {
+        tokens.next_f64("a normal coordinate")?;
+    }
+    tokens.expect_keyword("outer")?;
+    tokens.expect_keyword("loop")?;
+    let mut size = 0u32;
+    loop {
+        let (word, line) = tokens.expect_word("\"vertex\" or \"endloop\"")?;
+        if word.eq_ignore_ascii_case(b"endloop") {
+            break;
+        }
+        if !word.eq_ignore_ascii_case(b"vertex") {
+            return Err(IoError::parse(
+                Location::Line(line),
+                format!("expected \"vertex\" or \"endloop\", found {}", show(word)),
+            ));
+        }
+        let x = tokens.next_f64("the x coordinate of a vertex")?;
+        let y = tokens.next_f64("the y coordinate of a vertex")?;
+        let z = tokens.next_f64("the z coordinate of a vertex")?;
+        positions.push(DVec3::new(x, y, z));
+        corner_line(line);
+        size += 1;
+    }
+    tokens.expect_keyword("endfacet")?;
+    Ok(size)
 }
 
 /// The triangles of face `f`, as a fan from its first corner.
@@ -610,6 +645,22 @@ mod tests {
         let mut text = Vec::new();
         write(&mut text, &shapes::cube(), true).unwrap();
         assert!(read_file(&text, 3).is_none());
+    }
+
+    #[test]
+    fn text_files_are_read_in_blocks_or_left_to_the_whole_reading() {
+        let mut text = Vec::new();
+        write(&mut text, &torus_with_negative_zero(30, 20), true).unwrap();
+        let file = Scratch::new("text", &text);
+        let read = read_path(&file.0).unwrap().unwrap();
+        let whole = parse(&text).unwrap();
+        assert_eq!((&read, position_bits(&read)), (&whole, position_bits(&whole)));
+        // A broken facet: the whole reading names its line.
+        let broken = String::from_utf8(text).unwrap().replacen("endloop", "endlop", 7);
+        let file = Scratch::new("text-broken", broken.as_bytes());
+        assert!(read_path(&file.0).unwrap().is_none());
+        let error = crate::io::read_mesh(&file.0).unwrap_err().to_string();
+        assert!(error.contains("line 7:") && error.contains("\"endlop\""), "{error}");
     }
 
     #[test]
