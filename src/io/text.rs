@@ -328,6 +328,28 @@ impl<'a> Tokens<'a> {
     }
 }
 
+/// For tests of the readers: `bytes` with each of `edits` (a place, and a byte put there,
+/// inserted, or the byte there removed).
+#[cfg(test)]
+pub(crate) fn edited(bytes: &[u8], edits: &[(usize, u8, u8)]) -> Vec<u8> {
+    const BYTES: &[u8] = b" \n\r\t0189-.eE+xn#";
+    let mut out = bytes.to_vec();
+    for &(at, byte, how) in edits {
+        if out.is_empty() {
+            break;
+        }
+        let (at, byte) = (at % out.len(), BYTES[byte as usize % BYTES.len()]);
+        match how % 3 {
+            0 => out[at] = byte,
+            1 => out.insert(at, byte),
+            _ => {
+                out.remove(at);
+            }
+        }
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

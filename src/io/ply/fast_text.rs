@@ -407,4 +407,29 @@ mod tests {
             }
         }
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+        /// Bodies a few bytes away from well-formed ones: whatever the
+        /// pieces read, the values read the same.
+        #[test]
+        fn what_the_pieces_read_the_values_read_alike(
+            file in 0usize..5,
+            edits in proptest::collection::vec((0usize..100_000, 0u8..32, 0u8..3), 0..4),
+            piece in 1usize..300,
+            strict: bool,
+        ) {
+            let file = files()[file].clone();
+            let header_end = file.find("end_header").unwrap();
+            let (header, body) = file.split_at(header_end + file[header_end..].find('\n').unwrap() + 1);
+            let body = crate::io::text::edited(body.as_bytes(), &edits);
+            let bytes = [header.as_bytes(), &body].concat();
+            if let Some(read) = in_pieces(&bytes, strict, piece) {
+                let values = by_values(&bytes, strict);
+                proptest::prop_assert_eq!(Ok(read.clone()), values.clone());
+                proptest::prop_assert_eq!(bits(&read), bits(&values.unwrap()));
+            }
+        }
+    }
 }

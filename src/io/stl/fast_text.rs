@@ -346,4 +346,28 @@ mod tests {
             2 * shapes::cube().face_count() * 2
         );
     }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+        /// Files a few bytes away from well-formed ones: whatever the
+        /// pieces and blocks read, the words read the same.
+        #[test]
+        fn what_the_pieces_read_the_words_read_alike(
+            file in 0usize..6,
+            edits in proptest::collection::vec((0usize..100_000, 0u8..32, 0u8..3), 0..4),
+            piece in 1usize..300,
+            block in 1usize..600,
+        ) {
+            let bytes = crate::io::text::edited(&files()[file], &edits);
+            let words = parse_ascii_words(&bytes).ok();
+            for read in [read(&bytes, piece), read_source(bytes.as_slice(), block, piece).unwrap()] {
+                if let Some(mesh) = read {
+                    let words = words.as_ref().expect("the words read what the pieces read");
+                    proptest::prop_assert_eq!(&mesh, words);
+                    proptest::prop_assert_eq!(position_bits(&mesh), position_bits(words));
+                }
+            }
+        }
+    }
 }

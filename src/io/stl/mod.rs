@@ -654,13 +654,21 @@ mod tests {
         let file = Scratch::new("text", &text);
         let read = read_path(&file.0).unwrap().unwrap();
         let whole = parse(&text).unwrap();
-        assert_eq!((&read, position_bits(&read)), (&whole, position_bits(&whole)));
+        assert_eq!(
+            (&read, position_bits(&read)),
+            (&whole, position_bits(&whole))
+        );
         // A broken facet: the whole reading names its line.
-        let broken = String::from_utf8(text).unwrap().replacen("endloop", "endlop", 7);
+        let broken = String::from_utf8(text)
+            .unwrap()
+            .replacen("endloop", "endlop", 7);
         let file = Scratch::new("text-broken", broken.as_bytes());
         assert!(read_path(&file.0).unwrap().is_none());
         let error = crate::io::read_mesh(&file.0).unwrap_err().to_string();
-        assert!(error.contains("line 7:") && error.contains("\"endlop\""), "{error}");
+        assert!(
+            error.contains("line 7:") && error.contains("\"endlop\""),
+            "{error}"
+        );
     }
 
     #[test]
