@@ -125,3 +125,42 @@ impl FileBlock {
         }
     }
 }
+
+/// Where the whole lines of `bytes` end: where a format whose pieces are
+/// lines cuts a block.
+pub(crate) fn after_last_line(bytes: &[u8]) -> Option<usize> {
+    memchr::memrchr(b'\n', bytes).map(|last| last + 1)
+}
+
+/// Reads `source` through two buffers of `block` bytes, each cut where
+/// `cut` says: `read` is handed each buffer's text, and whether the file
+/// ends with it, while the next is filled. `Ok(None)` when `read` gives up.
+///
+/// # Errors
+/// Whatever `source` returns.
+pub(crate) fn read_blocks(
+    mut source: impl Read + Send,
+    block: usize,
+    cut: impl Fn(&[u8]) -> Option<usize> + Sync,
+    mut read: impl FnMut(&[u8], bool) -> Option<()> + Send,
+) -> std::io::Result<Option<()>> {
+    let mut front = FileBlock::new(block);
+    front.fill(&mut source, &[], &cut)?;
+    let mut back = FileBlock::new(block);
+    loop {
+        let (fine, filled) = rayon::join(
+            || read(front.ready(), front.at_end),
+            || match front.at_end {
+                true => Ok(false),
+                false => back.fill(&mut source, front.carried(), &cut).map(|()| true),
+            },
+        );
+        if fine.is_none() {
+            return Ok(None);
+        }
+        if !filled? {
+            return Ok(Some(()));
+        }
+        std::mem::swap(&mut front, &mut back);
+    }
+}

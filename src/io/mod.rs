@@ -241,9 +241,9 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         // The weld follows: a soup's copies merged while reading.
         return read_mesh_to_weld(path, options).map(|read| read.mesh);
     }
-    let streamed = read_streamed(format, path)?;
+    let streamed = read_streamed(format, path, options.mesh_options(), false)?;
     let mesh = match (format, streamed) {
-        (_, Some(mesh)) => mesh,
+        (_, Some(file)) => file.mesh,
         (Format::Obj, None) => obj::read_mesh_at(path, options.mesh_options())?,
         (format, None) => {
             parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), false)
@@ -328,9 +328,9 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         // STL holds no attributes: its copies merged while reading.
         return read_mesh_with(path, options).map(MeshFile::new);
     }
-    let streamed = read_streamed(format, path)?;
+    let streamed = read_streamed(format, path, options.mesh_options(), true)?;
     let file = match (format, streamed) {
-        (_, Some(mesh)) => MeshFile::new(mesh),
+        (_, Some(file)) => file,
         (Format::Obj, None) => obj::read_file_at(path, options.mesh_options())?,
         (format, None) => {
             parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), true)
@@ -344,12 +344,21 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
     }
 }
 
-/// A binary STL file read a block at a time (see [`stl::read_path`]);
-/// `None` for every other file, which is read whole.
-fn read_streamed(format: Format, path: &Path) -> Result<Option<Mesh>, IoError> {
+/// An STL, text PLY or OFF file read a block at a time (see
+/// [`stl::read_path`], [`ply::read_path`] and [`off::read_path`]), with its attributes (`attributes`: read
+/// strictly) where it has them; `None` for every other file, which is read
+/// whole (OBJ by its own reader).
+fn read_streamed(
+    format: Format,
+    path: &Path,
+    options: MeshOptions,
+    attributes: bool,
+) -> Result<Option<MeshFile>, IoError> {
     match format {
-        Format::Stl => stl::read_path(path),
-        _ => Ok(None),
+        Format::Stl => stl::read_path(path).map(|mesh| mesh.map(MeshFile::new)),
+        Format::Ply => ply::read_path(path, attributes, options),
+        Format::Off => off::read_path(path, options).map(|mesh| mesh.map(MeshFile::new)),
+        Format::Obj => Ok(None),
     }
 }
 

@@ -88,6 +88,35 @@ pub(crate) fn read_in_rounds<T: Send>(
     Some(())
 }
 
+/// Reads `text` in pieces of `piece` bytes cut at line ends, on all
+/// threads, each piece knowing the rank of its first row: `rows_in` counts
+/// a piece's rows, and ranks go on from `rank`, which is moved past
+/// `text`'s rows. `read` reads a piece from the rank of its first row;
+/// what it gives is appended in order (see [`read_in_rounds`]). `None` at
+/// the first piece `read` gives up on.
+pub(crate) fn read_ranked<T: Send>(
+    text: &[u8],
+    piece: usize,
+    rank: &mut usize,
+    rows_in: impl Fn(&[u8]) -> usize + Sync,
+    read: impl Fn(&[u8], usize) -> Option<T> + Sync,
+    append: impl FnMut(T),
+) -> Option<()> {
+    use rayon::prelude::*;
+    let pieces = pieces_at_line_ends(text, piece);
+    let rows: Vec<usize> = pieces.par_iter().map(|p| rows_in(p)).collect();
+    let firsts: Vec<usize> = rows
+        .iter()
+        .scan(*rank, |next, &n| {
+            let first = *next;
+            *next += n;
+            Some(first)
+        })
+        .collect();
+    *rank += rows.iter().sum::<usize>();
+    read_in_rounds(&pieces, 32, |i, text| read(text, firsts[i]), append)
+}
+
 /// A word shown in an error message, shortened and made printable.
 pub(crate) fn show(word: &[u8]) -> String {
     let text = String::from_utf8_lossy(&word[..word.len().min(40)]);

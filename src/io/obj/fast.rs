@@ -20,9 +20,9 @@
 use std::io::Read;
 
 use glam::DVec3;
-use memchr::{memchr, memrchr};
+use memchr::memchr;
 
-use crate::io::blocks::FileBlock;
+use crate::io::blocks::{after_last_line, FileBlock};
 use rayon::prelude::*;
 
 use super::{Collected, Statements};
@@ -532,11 +532,6 @@ pub(crate) fn read_bytes(data: &[u8], block: usize, piece: usize) -> Option<Mesh
         start = end;
     }
     reader.join_block(&read).then(|| reader.finish())?
-}
-
-/// Where the whole lines of `bytes` end: a block is cut there.
-fn after_last_line(bytes: &[u8]) -> Option<usize> {
-    memrchr(b'\n', bytes).map(|last| last + 1)
 }
 
 /// Reads an OBJ file from `source` through two buffers of `block` bytes

@@ -4,63 +4,129 @@
 //! each piece's rows counted on all threads, then each read knowing the
 //! rank of its first row. Anything the row-by-row reader would report (a
 //! malformed or missing number, too few rows, a mesh it refuses) makes the
-//! file go to that reader, so errors and their lines are its own.
+//! file go to that reader, so errors and their lines are its own. Read
+//! from a file, blocks cut at line ends go through two buffers, one read
+//! while the other is filled.
+
+use std::io::Read;
 
 use glam::DVec3;
 use memchr::memchr;
-use rayon::prelude::*;
 
-use super::super::text::{f64_of, i64_of, pieces_at_line_ends, words};
+use super::super::blocks::{after_last_line, read_blocks};
+use super::super::text::{f64_of, i64_of, read_ranked, words};
 use super::super::{build_mesh_with, Location};
 use crate::mesh::{Mesh, MeshOptions};
 
 /// Bytes a piece holds at least (it ends at the next line end).
 pub(super) const PIECE: usize = 1 << 20;
 
+/// Bytes read from a file at a time.
+pub(super) const BLOCK: usize = 16 << 20;
+
 /// The mesh of `data`, read in pieces of `piece` bytes; `None` where the
 /// row-by-row reader must read it (see the module doc).
 pub(super) fn read(data: &[u8], piece: usize, options: MeshOptions) -> Option<Mesh> {
     let (vertex_count, face_count, body) = counts(data)?;
-    let pieces = pieces_at_line_ends(&data[body..], piece);
-    let rows: Vec<usize> = pieces.par_iter().map(|p| rows_of(p).count()).collect();
-    if rows.iter().sum::<usize>() < vertex_count.checked_add(face_count)? {
-        return None;
+    let mut reader = Reader::new(vertex_count, face_count);
+    reader.read(&data[body..], piece)?;
+    reader.mesh(options)
+}
+
+/// Reads an OFF file from `source` through two buffers of `block` bytes
+/// cut at line ends, each read as [`read`] reads a body; `Ok(None)` where
+/// the row-by-row reader must read it.
+///
+/// # Errors
+/// Whatever `source` returns.
+pub(super) fn read_source(
+    source: impl Read + Send,
+    block: usize,
+    piece: usize,
+    options: MeshOptions,
+) -> std::io::Result<Option<Mesh>> {
+    let mut reader = None;
+    let read = read_blocks(source, block, after_last_line, |text, _| {
+        let body = match &mut reader {
+            Some(_) => text,
+            None => {
+                // Counts past the first block are read whole.
+                let (vertex_count, face_count, body) = counts(text)?;
+                reader = Some(Reader::new(vertex_count, face_count));
+                &text[body..]
+            }
+        };
+        reader.as_mut()?.read(body, piece)
+    })?;
+    Ok(read.and(reader).and_then(|reader| reader.mesh(options)))
+}
+
+/// The rows read so far.
+struct Reader {
+    vertex_count: usize,
+    face_count: usize,
+    /// Rows read so far.
+    rank: usize,
+    read: Piece,
+}
+
+impl Reader {
+    fn new(vertex_count: usize, face_count: usize) -> Reader {
+        Reader {
+            vertex_count,
+            face_count,
+            rank: 0,
+            read: Piece {
+                positions: Vec::new(),
+                sizes: Vec::new(),
+                indices: Vec::new(),
+            },
+        }
     }
-    let firsts: Vec<usize> = rows
-        .iter()
-        .scan(0, |rank, &n| {
-            let first = *rank;
-            *rank += n;
-            Some(first)
-        })
-        .collect();
-    let read: Vec<Option<Piece>> = pieces
-        .par_iter()
-        .zip(&firsts)
-        .map(|(text, &first)| read_piece(text, first, vertex_count, face_count))
-        .collect();
-    let mut positions = Vec::with_capacity(vertex_count);
-    let (mut sizes, mut indices) = (Vec::with_capacity(face_count), Vec::new());
-    for piece in read {
-        let piece = piece?;
-        positions.extend(piece.positions);
-        sizes.extend(piece.sizes);
-        indices.extend(piece.indices);
+
+    /// Reads `text`, whole lines, in pieces of `piece` bytes on all threads.
+    fn read(&mut self, text: &[u8], piece: usize) -> Option<()> {
+        let (vertex_count, face_count) = (self.vertex_count, self.face_count);
+        let all = &mut self.read;
+        read_ranked(
+            text,
+            piece,
+            &mut self.rank,
+            |p| rows_of(p).count(),
+            |text, first| read_piece(text, first, vertex_count, face_count),
+            |piece| {
+                all.positions.extend_from_slice(&piece.positions);
+                all.sizes.extend_from_slice(&piece.sizes);
+                all.indices.extend_from_slice(&piece.indices);
+            },
+        )
     }
-    // Lines are not kept: a mesh refused is read again row by row, which
-    // names them.
-    build_mesh_with(
-        (positions, sizes, indices),
-        options,
-        |_| Location::Line(0),
-        |_| Location::Line(0),
-    )
-    .ok()
+
+    /// The mesh read; `None` when rows are missing or the mesh is refused.
+    fn mesh(self, options: MeshOptions) -> Option<Mesh> {
+        if self.rank < self.vertex_count.checked_add(self.face_count)? {
+            return None;
+        }
+        let Piece {
+            positions,
+            sizes,
+            indices,
+        } = self.read;
+        // Lines are not kept: a mesh refused is read again row by row,
+        // which names them.
+        build_mesh_with(
+            (positions, sizes, indices),
+            options,
+            |_| Location::Line(0),
+            |_| Location::Line(0),
+        )
+        .ok()
+    }
 }
 
 /// The vertex and face counts and where the rows after them start, read as
 /// the row-by-row reader reads them.
-fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
+pub(super) fn counts(data: &[u8]) -> Option<(usize, usize, usize)> {
     let mut rows = rows_ending(data);
     let (mut end, text) = rows.next()?;
     let mut header: Vec<&[u8]> = words(text).collect();

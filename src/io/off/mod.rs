@@ -37,6 +37,25 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
     }
 }
 
+/// Reads an OFF file from disk a block at a time, never holding all its
+/// bytes, as [`parse_with`] reads it; `None` for a file with something to
+/// report, which [`parse_with`] reads whole.
+///
+/// # Errors
+/// [`IoError::File`] when the file cannot be read.
+pub(crate) fn read_path(
+    path: &std::path::Path,
+    options: MeshOptions,
+) -> Result<Option<Mesh>, IoError> {
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(failed)?;
+    fast::read_source(file, fast::BLOCK, fast::PIECE, options).map_err(failed)
+}
+
 /// As [`parse_with`], row by row.
 fn parse_rows(data: &[u8], options: MeshOptions) -> Result<Mesh, IoError> {
     let mut rows = lines(data).filter(|(_, text)| words(text).next().is_some());
@@ -200,13 +219,58 @@ mod tests {
     }
 
     #[test]
+    fn blocks_of_any_size_read_as_the_rows_do() {
+        let options = MeshOptions::default();
+        for text in READABLE {
+            let rows = parse_rows(text, options).unwrap();
+            // Blocks shorter than the counts' rows leave the file to the rows.
+            let counts = fast::counts(text).unwrap().2;
+            for block in [1, 2, 7, counts, 64, fast::BLOCK] {
+                for piece in [1, 3, 100, fast::PIECE] {
+                    let read = fast::read_source(text, block, piece, options).unwrap();
+                    match read {
+                        Some(read) => assert_eq!(read, rows),
+                        None => assert!(block < counts, "block {block}"),
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
     fn what_the_rows_report_is_left_to_them() {
         for (text, line) in BROKEN {
             for piece in [1, 4, fast::PIECE] {
                 assert!(fast::read(text, piece, MeshOptions::default()).is_none());
+                for block in [1, 5, fast::BLOCK] {
+                    let read = fast::read_source(text, block, piece, MeshOptions::default());
+                    assert!(read.unwrap().is_none());
+                }
             }
             let error = parse(text).unwrap_err();
             assert_eq!(error.location(), Some(Location::Line(line)), "{error}");
+        }
+    }
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+        /// Files a few bytes away from well-formed ones: whatever the
+        /// pieces and blocks read, the rows read the same.
+        #[test]
+        fn what_the_pieces_read_the_rows_read_alike(
+            file in 0usize..READABLE.len(),
+            edits in proptest::collection::vec((0usize..1000, 0u8..32, 0u8..3), 0..4),
+            piece in 1usize..40,
+            block in 1usize..200,
+        ) {
+            let options = MeshOptions::default();
+            let text = crate::io::text::edited(READABLE[file], &edits);
+            let rows = parse_rows(&text, options).ok();
+            let streamed = fast::read_source(text.as_slice(), block, piece, options).unwrap();
+            for read in [fast::read(&text, piece, options), streamed].into_iter().flatten() {
+                proptest::prop_assert_eq!(Some(&read), rows.as_ref());
+            }
         }
     }
 }

@@ -7,22 +7,24 @@
 //! value-by-value reader would report, and a mesh it refuses make the body
 //! go to that reader, so errors and their lines are its own.
 
+use std::io::Read;
+
 use glam::DVec3;
 use memchr::memchr;
-use rayon::prelude::*;
 
-use super::{file_of, roles, Element, Property, Roles};
+use super::{file_of, parse_header, roles, Element, Encoding, Property, Roles};
+use crate::io::blocks::{after_last_line, read_blocks};
 use crate::io::build_mesh_with;
 use crate::io::mesh_file::{Colours, MeshFile};
-use crate::io::text::{pieces_at_line_ends, read_in_rounds, words};
+use crate::io::text::{read_ranked, words};
 use crate::io::Location;
 use crate::mesh::MeshOptions;
 
 /// Bytes a piece holds at least (it ends at the next line end).
 pub(super) const PIECE: usize = 1 << 20;
 
-/// Pieces read at once (see [`read_in_rounds`]).
-const ROUND: usize = 32;
+/// Bytes read from a file at a time.
+pub(super) const BLOCK: usize = 16 << 20;
 
 /// What an element's lines are to the mesh.
 #[derive(Clone, Copy, PartialEq, Eq)]
@@ -35,8 +37,8 @@ enum Kind {
 }
 
 /// An element that has properties, and the ranks of its lines.
-struct Lines<'a> {
-    element: &'a Element,
+struct Lines {
+    element: Element,
     roles: Roles,
     kind: Kind,
     end: usize,
@@ -51,72 +53,135 @@ pub(super) fn read(
     options: MeshOptions,
     piece: usize,
 ) -> Option<MeshFile> {
-    let mut layout = Vec::new();
-    let mut total = 0usize;
-    for element in elements {
-        let roles = roles(element, strict).ok()?;
-        if element.properties.is_empty() {
-            continue;
-        }
-        let kind = match (element.name.as_slice(), roles.index_list) {
-            (b"vertex", _) => Kind::Vertices,
-            (_, Some(_)) => Kind::Faces,
-            _ => Kind::Other,
+    let mut reader = Reader::new(elements, strict)?;
+    reader.read(body, piece)?;
+    reader.file(options)
+}
+
+/// Reads a text PLY file from `source` through two buffers of `block`
+/// bytes cut at line ends, each read as [`read`] reads a body; `Ok(None)`
+/// for a binary file (read whole) and where the value-by-value reader must
+/// read it.
+///
+/// # Errors
+/// Whatever `source` returns.
+pub(super) fn read_source(
+    source: impl Read + Send,
+    block: usize,
+    piece: usize,
+    strict: bool,
+    options: MeshOptions,
+) -> std::io::Result<Option<MeshFile>> {
+    let mut reader = None;
+    let read = read_blocks(source, block, after_last_line, |text, _| {
+        let body = match &mut reader {
+            Some(_) => text,
+            None => {
+                // A header longer than a block is read whole.
+                let (encoding, elements, body, _) = parse_header(text).ok()?;
+                if encoding != Encoding::Ascii {
+                    return None;
+                }
+                reader = Some(Reader::new(&elements, strict)?);
+                body
+            }
         };
-        if kind != Kind::Other && layout.iter().any(|l: &Lines| l.kind == kind) {
+        reader.as_mut()?.read(body, piece)
+    })?;
+    Ok(read.and(reader).and_then(|reader| reader.file(options)))
+}
+
+/// A text body read so far.
+struct Reader {
+    layout: Vec<Lines>,
+    /// Lines the elements take.
+    total: usize,
+    /// Lines read so far.
+    rank: usize,
+    strict: bool,
+    read: Piece,
+}
+
+impl Reader {
+    /// A reader of `elements`; `None` for elements the value-by-value
+    /// reader refuses, and for two vertex or face elements.
+    fn new(elements: &[Element], strict: bool) -> Option<Reader> {
+        let mut layout: Vec<Lines> = Vec::new();
+        let mut total = 0usize;
+        for element in elements {
+            let roles = roles(element, strict).ok()?;
+            if element.properties.is_empty() {
+                continue;
+            }
+            let kind = match (element.name.as_slice(), roles.index_list) {
+                (b"vertex", _) => Kind::Vertices,
+                (_, Some(_)) => Kind::Faces,
+                _ => Kind::Other,
+            };
+            if kind != Kind::Other && layout.iter().any(|l| l.kind == kind) {
+                return None;
+            }
+            total = total.checked_add(element.count)?;
+            layout.push(Lines {
+                element: element.clone(),
+                roles,
+                kind,
+                end: total,
+            });
+        }
+        Some(Reader {
+            layout,
+            total,
+            rank: 0,
+            strict,
+            read: Piece::default(),
+        })
+    }
+
+    /// Reads `text`, whole lines, in pieces of `piece` bytes on all threads.
+    fn read(&mut self, text: &[u8], piece: usize) -> Option<()> {
+        let (layout, total, strict) = (&self.layout, self.total, self.strict);
+        let all = &mut self.read;
+        read_ranked(
+            text,
+            piece,
+            &mut self.rank,
+            |p| rows(p).count(),
+            |text, first| read_piece(text, first, layout, total, strict),
+            |piece| {
+                all.positions.extend_from_slice(&piece.positions);
+                all.colours.extend_from_slice(&piece.colours);
+                all.uvs.extend_from_slice(&piece.uvs);
+                all.sizes.extend_from_slice(&piece.sizes);
+                all.indices.extend_from_slice(&piece.indices);
+            },
+        )
+    }
+
+    /// The file read; `None` when lines are missing or the mesh is refused.
+    fn file(self, options: MeshOptions) -> Option<MeshFile> {
+        if self.rank < self.total {
             return None;
         }
-        total = total.checked_add(element.count)?;
-        layout.push(Lines {
-            element,
-            roles,
-            kind,
-            end: total,
+        let vertex_roles = self.layout.iter().find(|l| l.kind == Kind::Vertices);
+        let vertex_roles = vertex_roles.map(|l| l.roles);
+        let all = self.read;
+        // Lines are not kept: a mesh refused is read again value by value,
+        // which names them.
+        let mesh = build_mesh_with(
+            (all.positions, all.sizes, all.indices),
+            options,
+            |_| Location::Line(0),
+            |_| Location::Line(0),
+        )
+        .ok()?;
+        let colours = vertex_roles.filter(|r| r.colours).map(|r| Colours {
+            rgba: all.colours,
+            alpha: r.alpha,
         });
+        let uvs = vertex_roles.filter(|r| r.uvs).map(|_| all.uvs);
+        Some(file_of(mesh, colours, uvs))
     }
-    let pieces = pieces_at_line_ends(body, piece);
-    let counts: Vec<usize> = pieces.par_iter().map(|p| rows(p).count()).collect();
-    if counts.iter().sum::<usize>() < total {
-        return None;
-    }
-    let firsts: Vec<usize> = counts
-        .iter()
-        .scan(0, |rank, &n| {
-            let first = *rank;
-            *rank += n;
-            Some(first)
-        })
-        .collect();
-    let vertex_roles = layout.iter().find(|l| l.kind == Kind::Vertices);
-    let vertex_roles = vertex_roles.map(|l| l.roles);
-    let mut all = Piece::default();
-    read_in_rounds(
-        &pieces,
-        ROUND,
-        |i, text| read_piece(text, firsts[i], &layout, total, strict),
-        |piece| {
-            all.positions.extend_from_slice(&piece.positions);
-            all.colours.extend_from_slice(&piece.colours);
-            all.uvs.extend_from_slice(&piece.uvs);
-            all.sizes.extend_from_slice(&piece.sizes);
-            all.indices.extend_from_slice(&piece.indices);
-        },
-    )?;
-    // Lines are not kept: a mesh refused is read again value by value,
-    // which names them.
-    let mesh = build_mesh_with(
-        (all.positions, all.sizes, all.indices),
-        options,
-        |_| Location::Line(0),
-        |_| Location::Line(0),
-    )
-    .ok()?;
-    let colours = vertex_roles.filter(|r| r.colours).map(|r| Colours {
-        rgba: all.colours,
-        alpha: r.alpha,
-    });
-    let uvs = vertex_roles.filter(|r| r.uvs).map(|_| all.uvs);
-    Some(file_of(mesh, colours, uvs))
 }
 
 /// The lines of `text` that hold a word.
@@ -318,10 +383,44 @@ mod tests {
             .unwrap()
             .uvs
             .is_some());
+        // From a stream in blocks of any size: those shorter than the
+        // header leave the file to the values.
+        for (i, file) in files().iter().enumerate() {
+            let header = file.find("end_header").unwrap() + 12;
+            for strict in [false, true] {
+                let expected = by_values(file.as_bytes(), strict).unwrap();
+                for block in [1, 9, 100, header, 1000, BLOCK] {
+                    for piece in [1, 50, PIECE] {
+                        let options = MeshOptions::default();
+                        let read = read_source(file.as_bytes(), block, piece, strict, options);
+                        match read.unwrap() {
+                            Some(read) => {
+                                assert_eq!(read, expected, "file {i}, block {block}");
+                                assert_eq!(bits(&read), bits(&expected), "file {i}");
+                            }
+                            None => assert!(block < header, "file {i}, block {block}"),
+                        }
+                    }
+                }
+            }
+        }
+        // A binary file is left to the whole reading.
+        let mut binary = Vec::new();
+        write(
+            &mut binary,
+            &shapes::cube(),
+            PlyEncoding::BinaryLittleEndian,
+        )
+        .unwrap();
+        let options = MeshOptions::default();
+        assert!(read_source(binary.as_slice(), BLOCK, PIECE, true, options)
+            .unwrap()
+            .is_none());
         // More pieces than a round, in order.
         let bytes = text_ply(&shapes::torus(30, 20));
         let (_, elements, body, _) = parse_header(bytes.as_bytes()).unwrap();
-        assert!(body.len() / 100 > 2 * ROUND);
+        // More than a round of 32 pieces.
+        assert!(body.len() / 100 > 64);
         let read = read(body, &elements, true, MeshOptions::default(), 100).unwrap();
         assert_eq!(Ok(read), by_values(bytes.as_bytes(), true));
     }
@@ -332,6 +431,44 @@ mod tests {
         let mut lines: Vec<String> = body.lines().map(str::to_string).collect();
         lines[n] = with(&lines[n]);
         format!("{header}{}\n", lines.join("\n"))
+    }
+
+    #[test]
+    fn files_on_disk_are_read_in_blocks_or_left_to_the_whole_reading() {
+        let path = |name: &str| {
+            std::env::temp_dir().join(format!("weft-ply-{}-{name}.ply", std::process::id()))
+        };
+        let text = text_ply(&shapes::torus(12, 9));
+        let mut binary = Vec::new();
+        write(
+            &mut binary,
+            &shapes::torus(12, 9),
+            PlyEncoding::BinaryBigEndian,
+        )
+        .unwrap();
+        let broken = body_line(&text, 3, |_| "0 0 zero".into());
+        for (name, bytes) in [
+            ("text", text.as_bytes()),
+            ("binary", &binary),
+            ("broken", broken.as_bytes()),
+        ] {
+            std::fs::write(path(name), bytes).unwrap();
+        }
+        let read = |name| super::super::read_path(&path(name), true, MeshOptions::default());
+        let whole = super::super::read(text.as_bytes(), true, MeshOptions::default());
+        assert_eq!(read("text").unwrap(), Some(whole.unwrap()));
+        assert_eq!(read("binary").unwrap(), None);
+        assert_eq!(read("broken").unwrap(), None);
+        let error = crate::io::read_mesh(path("broken"))
+            .unwrap_err()
+            .to_string();
+        assert!(
+            error.contains("line 14:") && error.contains("\"zero\""),
+            "{error}"
+        );
+        for name in ["text", "binary", "broken"] {
+            std::fs::remove_file(path(name)).unwrap();
+        }
     }
 
     #[test]
@@ -418,6 +555,7 @@ mod tests {
             file in 0usize..5,
             edits in proptest::collection::vec((0usize..100_000, 0u8..32, 0u8..3), 0..4),
             piece in 1usize..300,
+            block in 1usize..2000,
             strict: bool,
         ) {
             let file = files()[file].clone();
@@ -425,7 +563,8 @@ mod tests {
             let (header, body) = file.split_at(header_end + file[header_end..].find('\n').unwrap() + 1);
             let body = crate::io::text::edited(body.as_bytes(), &edits);
             let bytes = [header.as_bytes(), &body].concat();
-            if let Some(read) = in_pieces(&bytes, strict, piece) {
+            let streamed = read_source(bytes.as_slice(), block, piece, strict, MeshOptions::default());
+            for read in [in_pieces(&bytes, strict, piece), streamed.unwrap()].into_iter().flatten() {
                 let values = by_values(&bytes, strict);
                 proptest::prop_assert_eq!(Ok(read.clone()), values.clone());
                 proptest::prop_assert_eq!(bits(&read), bits(&values.unwrap()));

@@ -261,6 +261,38 @@ pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<Me
     }
 }
 
+/// Reads a text PLY file from disk a block at a time, never holding all
+/// its bytes, as [`read`] reads it; `None` for a binary file, and for a
+/// text file with something to report, which [`read`] reads whole.
+///
+/// # Errors
+/// [`IoError::File`] when the file cannot be read.
+pub(crate) fn read_path(
+    path: &std::path::Path,
+    strict: bool,
+    options: MeshOptions,
+) -> Result<Option<MeshFile>, IoError> {
+    let failed = |source| IoError::File {
+        path: path.to_path_buf(),
+        action: "read",
+        source,
+    };
+    use std::io::{Read, Seek};
+    let mut file = std::fs::File::open(path).map_err(failed)?;
+    // A binary file is known by its header, before any block is read.
+    let mut head = Vec::new();
+    file.by_ref()
+        .take(1 << 16)
+        .read_to_end(&mut head)
+        .map_err(failed)?;
+    if parse_header(&head).is_ok_and(|(encoding, ..)| encoding != Encoding::Ascii) {
+        return Ok(None);
+    }
+    file.rewind().map_err(failed)?;
+    fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE, strict, options)
+        .map_err(failed)
+}
+
 fn header_error(line: usize, message: impl Into<String>) -> IoError {
     IoError::parse(Location::Line(line), message)
 }

@@ -17,7 +17,7 @@ use glam::DVec3;
 use memchr::{memchr, memrchr};
 use rayon::prelude::*;
 
-use super::super::blocks::FileBlock;
+use super::super::blocks::read_blocks;
 use super::super::text::{read_in_rounds, Tokens};
 use super::super::{build_mesh, Location};
 use super::read_facet;
@@ -48,38 +48,21 @@ pub(super) fn read(data: &[u8], piece: usize) -> Option<Mesh> {
 /// # Errors
 /// Whatever `source` returns.
 pub(super) fn read_source(
-    mut source: impl Read + Send,
+    source: impl Read + Send,
     block: usize,
     piece: usize,
 ) -> std::io::Result<Option<Mesh>> {
-    let mut front = FileBlock::new(block);
-    front.fill(&mut source, &[], after_last_facet)?;
-    // A buffer ends after an `endfacet` line, so past the header's line.
-    let Some(mut start) = header_end(front.ready()) else {
-        return Ok(None);
-    };
-    let mut back = FileBlock::new(block);
     let mut facets = Facets::default();
-    loop {
-        let (read, filled) = rayon::join(
-            || facets.read(&front.ready()[start..], piece, front.at_end),
-            || match front.at_end {
-                true => Ok(false),
-                false => back
-                    .fill(&mut source, front.carried(), after_last_facet)
-                    .map(|()| true),
-            },
-        );
-        if read.is_none() {
-            return Ok(None);
-        }
-        if !filled? {
-            break;
-        }
-        std::mem::swap(&mut front, &mut back);
-        start = 0;
-    }
-    Ok(facets.mesh())
+    let mut header = true;
+    let read = read_blocks(source, block, after_last_facet, |text, last| {
+        // A block ends after an `endfacet` line, so past the header's line.
+        let body = match std::mem::take(&mut header) {
+            true => &text[header_end(text)?..],
+            false => text,
+        };
+        facets.read(body, piece, last)
+    })?;
+    Ok(read.and_then(|()| facets.mesh()))
 }
 
 /// Where the body starts, after the line of `solid` and its name.
