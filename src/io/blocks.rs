@@ -133,23 +133,30 @@ pub(crate) fn after_last_line(bytes: &[u8]) -> Option<usize> {
 }
 
 /// Reads `source` through two buffers of `block` bytes, each cut where
-/// `cut` says: `read` is handed each buffer's text, and whether the file
-/// ends with it, while the next is filled. `Ok(None)` when `read` gives up.
+/// `cut` says: the first buffer's text goes to `header`, which makes the
+/// reader and says where the body starts; then `read` is handed the body
+/// of each buffer, and whether the file ends with it, while the next is
+/// filled. `Ok(None)` when `header` or `read` gives up (a header longer
+/// than a buffer among the reasons).
 ///
 /// # Errors
 /// Whatever `source` returns.
-pub(crate) fn read_blocks(
+pub(crate) fn read_blocks<R: Send>(
     mut source: impl Read + Send,
     block: usize,
     cut: impl Fn(&[u8]) -> Option<usize> + Sync,
-    mut read: impl FnMut(&[u8], bool) -> Option<()> + Send,
-) -> std::io::Result<Option<()>> {
+    header: impl FnOnce(&[u8]) -> Option<(R, usize)>,
+    read: impl Fn(&mut R, &[u8], bool) -> Option<()> + Sync,
+) -> std::io::Result<Option<R>> {
     let mut front = FileBlock::new(block);
     front.fill(&mut source, &[], &cut)?;
+    let Some((mut reader, mut start)) = header(front.ready()) else {
+        return Ok(None);
+    };
     let mut back = FileBlock::new(block);
     loop {
         let (fine, filled) = rayon::join(
-            || read(front.ready(), front.at_end),
+            || read(&mut reader, &front.ready()[start..], front.at_end),
             || match front.at_end {
                 true => Ok(false),
                 false => back.fill(&mut source, front.carried(), &cut).map(|()| true),
@@ -159,8 +166,9 @@ pub(crate) fn read_blocks(
             return Ok(None);
         }
         if !filled? {
-            return Ok(Some(()));
+            return Ok(Some(reader));
         }
         std::mem::swap(&mut front, &mut back);
+        start = 0;
     }
 }

@@ -362,13 +362,18 @@ fn read_streamed(
     }
 }
 
-/// The whole content of a file, or the error that names it.
-pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, IoError> {
-    fs::read(path).map_err(|source| IoError::File {
+/// What a failure to read `path` becomes.
+pub(crate) fn read_failed(path: &Path) -> impl Fn(std::io::Error) -> IoError + Copy + '_ {
+    move |source| IoError::File {
         path: path.to_path_buf(),
         action: "read",
         source,
-    })
+    }
+}
+
+/// The whole content of a file, or the error that names it.
+pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>, IoError> {
+    fs::read(path).map_err(read_failed(path))
 }
 
 /// The weld of [`ReadOptions::weld`]: the library's [`weld`](crate::mend::weld::weld) at tolerance 0,

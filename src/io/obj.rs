@@ -105,11 +105,7 @@ pub(crate) fn read_path(
     path: &Path,
     options: MeshOptions,
 ) -> Result<(MeshFile, Option<IoError>), IoError> {
-    let failed = |source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    };
+    let failed = super::read_failed(path);
     let file = std::fs::File::open(path).map_err(failed)?;
     match fast::read_source(file, fast::BLOCK, fast::PIECE).map_err(failed)? {
         Some(file) => Ok((file, None)),

@@ -45,20 +45,14 @@ pub(super) fn read_source(
     piece: usize,
     options: MeshOptions,
 ) -> std::io::Result<Option<Mesh>> {
-    let mut reader = None;
-    let read = read_blocks(source, block, after_last_line, |text, _| {
-        let body = match &mut reader {
-            Some(_) => text,
-            None => {
-                // Counts past the first block are read whole.
-                let (vertex_count, face_count, body) = counts(text)?;
-                reader = Some(Reader::new(vertex_count, face_count));
-                &text[body..]
-            }
-        };
-        reader.as_mut()?.read(body, piece)
-    })?;
-    Ok(read.and(reader).and_then(|reader| reader.mesh(options)))
+    // Counts past the first block leave the file to the rows.
+    let header = |text: &[u8]| {
+        let (vertex_count, face_count, body) = counts(text)?;
+        Some((Reader::new(vertex_count, face_count), body))
+    };
+    let read = |reader: &mut Reader, text: &[u8], _| reader.read(text, piece);
+    let reader = read_blocks(source, block, after_last_line, header, read)?;
+    Ok(reader.and_then(|reader| reader.mesh(options)))
 }
 
 /// The rows read so far.

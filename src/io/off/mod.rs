@@ -47,11 +47,7 @@ pub(crate) fn read_path(
     path: &std::path::Path,
     options: MeshOptions,
 ) -> Result<Option<Mesh>, IoError> {
-    let failed = |source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    };
+    let failed = super::read_failed(path);
     let file = std::fs::File::open(path).map_err(failed)?;
     fast::read_source(file, fast::BLOCK, fast::PIECE, options).map_err(failed)
 }

@@ -72,23 +72,15 @@ pub(super) fn read_source(
     strict: bool,
     options: MeshOptions,
 ) -> std::io::Result<Option<MeshFile>> {
-    let mut reader = None;
-    let read = read_blocks(source, block, after_last_line, |text, _| {
-        let body = match &mut reader {
-            Some(_) => text,
-            None => {
-                // A header longer than a block is read whole.
-                let (encoding, elements, body, _) = parse_header(text).ok()?;
-                if encoding != Encoding::Ascii {
-                    return None;
-                }
-                reader = Some(Reader::new(&elements, strict)?);
-                body
-            }
-        };
-        reader.as_mut()?.read(body, piece)
-    })?;
-    Ok(read.and(reader).and_then(|reader| reader.file(options)))
+    // A header longer than a block leaves the file to the whole reading.
+    let header = |text: &[u8]| {
+        let (encoding, elements, body, _) = parse_header(text).ok()?;
+        (encoding == Encoding::Ascii).then_some(())?;
+        Some((Reader::new(&elements, strict)?, text.len() - body.len()))
+    };
+    let read = |reader: &mut Reader, text: &[u8], _| reader.read(text, piece);
+    let reader = read_blocks(source, block, after_last_line, header, read)?;
+    Ok(reader.and_then(|reader| reader.file(options)))
 }
 
 /// A text body read so far.

@@ -272,12 +272,8 @@ pub(crate) fn read_path(
     strict: bool,
     options: MeshOptions,
 ) -> Result<Option<MeshFile>, IoError> {
-    let failed = |source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    };
     use std::io::{Read, Seek};
+    let failed = super::read_failed(path);
     let mut file = std::fs::File::open(path).map_err(failed)?;
     // A binary file is known by its header, before any block is read.
     let mut head = Vec::new();

@@ -52,17 +52,11 @@ pub(super) fn read_source(
     block: usize,
     piece: usize,
 ) -> std::io::Result<Option<Mesh>> {
-    let mut facets = Facets::default();
-    let mut header = true;
-    let read = read_blocks(source, block, after_last_facet, |text, last| {
-        // A block ends after an `endfacet` line, so past the header's line.
-        let body = match std::mem::take(&mut header) {
-            true => &text[header_end(text)?..],
-            false => text,
-        };
-        facets.read(body, piece, last)
-    })?;
-    Ok(read.and_then(|()| facets.mesh()))
+    // A block ends after an `endfacet` line, so past the header's line.
+    let header = |text: &[u8]| Some((Facets::default(), header_end(text)?));
+    let read = |facets: &mut Facets, text: &[u8], last| facets.read(text, piece, last);
+    let facets = read_blocks(source, block, after_last_facet, header, read)?;
+    Ok(facets.and_then(Facets::mesh))
 }
 
 /// Where the body starts, after the line of `solid` and its name.

@@ -92,11 +92,7 @@ pub(crate) fn read_path(path: &Path) -> Result<Option<Mesh>, IoError> {
     if let Some((mesh, _)) = read_in_blocks(path, BLOCK_TRIANGLES, Corners::Own)? {
         return Ok(Some(mesh));
     }
-    let failed = |source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    };
+    let failed = super::read_failed(path);
     let file = File::open(path).map_err(failed)?;
     fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE).map_err(failed)
 }
@@ -164,11 +160,7 @@ fn read_in_blocks(
     corners: Corners,
 ) -> Result<Option<(Mesh, usize)>, IoError> {
     let block_triangles = block_triangles.max(1);
-    let failed = |source| IoError::File {
-        path: path.to_path_buf(),
-        action: "read",
-        source,
-    };
+    let failed = super::read_failed(path);
     let mut file = File::open(path).map_err(failed)?;
     let size = file.metadata().map_err(failed)?.len();
     let mut head = [0u8; 84];
