@@ -2,7 +2,8 @@
 //! written in order (the writers of OBJ, OFF, PLY and STL spend most of
 //! their time turning numbers into text or bytes). Read: through two
 //! buffers, one read on all threads while the other is filled, each cut
-//! where the format lets its pieces be read apart (OBJ and text STL).
+//! where the format lets its pieces be read apart (OBJ, OFF, text PLY
+//! and text STL).
 
 use std::io::{Read, Write};
 

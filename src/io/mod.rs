@@ -241,17 +241,7 @@ pub fn read_mesh_with(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         // The weld follows: a soup's copies merged while reading.
         return read_mesh_to_weld(path, options).map(|read| read.mesh);
     }
-    let streamed = read_streamed(format, path, options.mesh_options(), false)?;
-    let mesh = match (format, streamed) {
-        (_, Some(file)) => file.mesh,
-        (Format::Obj, None) => obj::read_mesh_at(path, options.mesh_options())?,
-        (format, None) => {
-            parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), false)
-                .map(|file| file.mesh)
-                .map_err(|e| e.in_file(path))?
-        }
-    };
-    Ok(mesh)
+    read_path(format, path, options.mesh_options(), false).map(|file| file.mesh)
 }
 
 /// A mesh read for a weld to follow (see [`read_mesh_to_weld`]).
@@ -328,15 +318,7 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
         // STL holds no attributes: its copies merged while reading.
         return read_mesh_with(path, options).map(MeshFile::new);
     }
-    let streamed = read_streamed(format, path, options.mesh_options(), true)?;
-    let file = match (format, streamed) {
-        (_, Some(file)) => file,
-        (Format::Obj, None) => obj::read_file_at(path, options.mesh_options())?,
-        (format, None) => {
-            parse_mesh_file_with(format, &read_bytes(path)?, options.mesh_options(), true)
-                .map_err(|e| e.in_file(path))?
-        }
-    };
+    let file = read_path(format, path, options.mesh_options(), true)?;
     if options.weld {
         Ok(MeshFile::new(weld_identical(path, file.mesh)?.0))
     } else {
@@ -344,21 +326,21 @@ pub fn read_mesh_file(path: impl AsRef<Path>, options: &ReadOptions) -> Result<M
     }
 }
 
-/// An STL, text PLY or OFF file read a block at a time (see
-/// [`stl::read_path`], [`ply::read_path`] and [`off::read_path`]), with its attributes (`attributes`: read
-/// strictly) where it has them; `None` for every other file, which is read
-/// whole (OBJ by its own reader).
-fn read_streamed(
+/// A mesh file of `format` read from disk by its format's own reader: every
+/// one a block at a time but binary PLY, read whole; with its attributes
+/// (`attributes`: malformed ones refused) where it has them.
+fn read_path(
     format: Format,
     path: &Path,
     options: MeshOptions,
     attributes: bool,
-) -> Result<Option<MeshFile>, IoError> {
+) -> Result<MeshFile, IoError> {
     match format {
-        Format::Stl => stl::read_path(path).map(|mesh| mesh.map(MeshFile::new)),
+        Format::Obj if attributes => obj::read_file_at(path, options),
+        Format::Obj => obj::read_mesh_at(path, options).map(MeshFile::new),
         Format::Ply => ply::read_path(path, attributes, options),
-        Format::Off => off::read_path(path, options).map(|mesh| mesh.map(MeshFile::new)),
-        Format::Obj => Ok(None),
+        Format::Stl => stl::read_path(path).map(MeshFile::new),
+        Format::Off => off::read_path(path, options).map(MeshFile::new),
     }
 }
 

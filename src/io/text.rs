@@ -62,20 +62,21 @@ pub(crate) fn pieces_at_line_ends(text: &[u8], piece: usize) -> Vec<&[u8]> {
     pieces
 }
 
-/// Reads `pieces` on all threads, a round of `round` at a time, handing
-/// each piece's reading to `append` in order before the next round is
-/// read, so that what the pieces hold on their own stays a round's worth;
-/// `None` at the first piece `read` gives up on. `read` is told each
-/// piece's index.
+/// Pieces [`read_in_rounds`] reads at once.
+pub(crate) const ROUND: usize = 32;
+
+/// Reads `pieces` on all threads, a [`ROUND`] at a time, handing each
+/// piece's reading to `append` in order before the next round is read, so
+/// that what the pieces hold on their own stays a round's worth; `None` at
+/// the first piece `read` gives up on. `read` is told each piece's index.
 pub(crate) fn read_in_rounds<T: Send>(
     pieces: &[&[u8]],
-    round: usize,
     read: impl Fn(usize, &[u8]) -> Option<T> + Sync,
     mut append: impl FnMut(T),
 ) -> Option<()> {
     use rayon::prelude::*;
-    for (r, texts) in pieces.chunks(round.max(1)).enumerate() {
-        let first = r * round.max(1);
+    for (r, texts) in pieces.chunks(ROUND).enumerate() {
+        let first = r * ROUND;
         let read: Vec<Option<T>> = texts
             .par_iter()
             .enumerate()
@@ -114,7 +115,7 @@ pub(crate) fn read_ranked<T: Send>(
         })
         .collect();
     *rank += rows.iter().sum::<usize>();
-    read_in_rounds(&pieces, 32, |i, text| read(text, firsts[i]), append)
+    read_in_rounds(&pieces, |i, text| read(text, firsts[i]), append)
 }
 
 /// A word shown in an error message, shortened and made printable.

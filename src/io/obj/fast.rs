@@ -21,11 +21,10 @@ use std::io::Read;
 
 use glam::DVec3;
 use memchr::memchr;
-
-use crate::io::blocks::{after_last_line, FileBlock};
 use rayon::prelude::*;
 
 use super::{Collected, Statements};
+use crate::io::blocks::{after_last_line, FileBlock};
 use crate::io::mesh_file::MeshFile;
 use crate::io::text::{f64_at_start, f64_of, i64_of, words};
 use crate::mesh::MeshOptions;

@@ -38,18 +38,21 @@ pub(crate) fn parse_with(data: &[u8], options: MeshOptions) -> Result<Mesh, IoEr
 }
 
 /// Reads an OFF file from disk a block at a time, never holding all its
-/// bytes, as [`parse_with`] reads it; `None` for a file with something to
-/// report, which [`parse_with`] reads whole.
+/// bytes, as [`parse_with`] reads it; a file with something to report is
+/// read whole, row by row.
 ///
 /// # Errors
-/// [`IoError::File`] when the file cannot be read.
-pub(crate) fn read_path(
-    path: &std::path::Path,
-    options: MeshOptions,
-) -> Result<Option<Mesh>, IoError> {
+/// As [`parse`], naming the file; [`IoError::File`] when the file cannot be
+/// read.
+pub(crate) fn read_path(path: &std::path::Path, options: MeshOptions) -> Result<Mesh, IoError> {
     let failed = super::read_failed(path);
     let file = std::fs::File::open(path).map_err(failed)?;
-    fast::read_source(file, fast::BLOCK, fast::PIECE, options).map_err(failed)
+    let streamed = fast::read_source(file, fast::BLOCK, fast::PIECE, options);
+    if let Some(mesh) = streamed.map_err(failed)? {
+        return Ok(mesh);
+    }
+    // The pieces have given up: the rows, not the pieces again.
+    parse_rows(&super::read_bytes(path)?, options).map_err(|e| e.in_file(path))
 }
 
 /// As [`parse_with`], row by row.

@@ -231,18 +231,28 @@ pub fn parse_file(data: &[u8]) -> Result<MeshFile, IoError> {
 /// Reads a PLY file; `strict` refuses incomplete colours or UVs instead of
 /// ignoring them; the mesh accepts what `options` allows.
 pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<MeshFile, IoError> {
+    read_with(data, strict, options, true)
+}
+
+/// [`read`], a text body in pieces on all threads first when
+/// `text_in_pieces`, else value by value.
+fn read_with(
+    data: &[u8],
+    strict: bool,
+    options: MeshOptions,
+    text_in_pieces: bool,
+) -> Result<MeshFile, IoError> {
     let (encoding, elements, body, body_line) = parse_header(data)?;
     match encoding {
         Encoding::Ascii => {
-            match fast_text::read(body, &elements, strict, options, fast_text::PIECE) {
-                Some(file) => Ok(file),
-                None => read_body(
-                    &mut Text(Tokens::new(body, body_line)),
-                    &elements,
-                    strict,
-                    options,
-                ),
+            if text_in_pieces {
+                let read = fast_text::read(body, &elements, strict, options, fast_text::PIECE);
+                if let Some(file) = read {
+                    return Ok(file);
+                }
             }
+            let mut values = Text(Tokens::new(body, body_line));
+            read_body(&mut values, &elements, strict, options)
         }
         Encoding::Binary { big_endian } => {
             let offset = data.len() - body.len();
@@ -261,17 +271,18 @@ pub(crate) fn read(data: &[u8], strict: bool, options: MeshOptions) -> Result<Me
     }
 }
 
-/// Reads a text PLY file from disk a block at a time, never holding all
-/// its bytes, as [`read`] reads it; `None` for a binary file, and for a
-/// text file with something to report, which [`read`] reads whole.
+/// Reads a PLY file from disk: text a block at a time, never holding all
+/// its bytes, as [`read`] reads it; binary whole, as [`read`] reads it; a
+/// text file with something to report whole, value by value.
 ///
 /// # Errors
-/// [`IoError::File`] when the file cannot be read.
+/// As [`read`], naming the file; [`IoError::File`] when the file cannot be
+/// read.
 pub(crate) fn read_path(
     path: &std::path::Path,
     strict: bool,
     options: MeshOptions,
-) -> Result<Option<MeshFile>, IoError> {
+) -> Result<MeshFile, IoError> {
     use std::io::{Read, Seek};
     let failed = super::read_failed(path);
     let mut file = std::fs::File::open(path).map_err(failed)?;
@@ -281,12 +292,17 @@ pub(crate) fn read_path(
         .take(1 << 16)
         .read_to_end(&mut head)
         .map_err(failed)?;
-    if parse_header(&head).is_ok_and(|(encoding, ..)| encoding != Encoding::Ascii) {
-        return Ok(None);
+    let binary = parse_header(&head).is_ok_and(|(encoding, ..)| encoding != Encoding::Ascii);
+    if !binary {
+        file.rewind().map_err(failed)?;
+        let streamed =
+            fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE, strict, options);
+        if let Some(file) = streamed.map_err(failed)? {
+            return Ok(file);
+        }
     }
-    file.rewind().map_err(failed)?;
-    fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE, strict, options)
-        .map_err(failed)
+    // Binary, or the pieces have given up: not the pieces again.
+    read_with(&super::read_bytes(path)?, strict, options, false).map_err(|e| e.in_file(path))
 }
 
 fn header_error(line: usize, message: impl Into<String>) -> IoError {

@@ -26,9 +26,6 @@ use crate::mesh::Mesh;
 /// Bytes a piece holds at least (it ends after the next `endfacet` line).
 pub(super) const PIECE: usize = 1 << 20;
 
-/// Pieces read at once (see [`read_in_rounds`]).
-const ROUND: usize = 32;
-
 /// Bytes read from a file at a time.
 pub(super) const BLOCK: usize = 16 << 20;
 
@@ -82,7 +79,6 @@ impl Facets {
         let last_piece = pieces.len().saturating_sub(1);
         read_in_rounds(
             &pieces,
-            ROUND,
             |i, text| read_piece(text, last && i == last_piece),
             |piece| {
                 self.positions.extend_from_slice(&piece.positions);
@@ -256,7 +252,7 @@ mod tests {
         let torus = shapes::triangle_torus(40, 30);
         let bytes = text(&torus);
         let mesh = read(&bytes, 100).unwrap();
-        assert!(bytes.len() / 100 > 2 * ROUND);
+        assert!(bytes.len() / 100 > 2 * crate::io::text::ROUND);
         assert_eq!(mesh, parse_ascii_words(&bytes).unwrap());
     }
 

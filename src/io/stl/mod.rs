@@ -34,6 +34,14 @@ const RECORD: usize = 50;
 /// `facet normal … outer loop vertex … endloop endfacet`;
 /// [`IoError::InvalidMesh`] for a non-finite coordinate.
 pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
+    match is_binary(data) {
+        true => parse_binary(data),
+        false => parse_ascii(data),
+    }
+}
+
+/// Whether `data` is read as a binary file (see the module doc).
+fn is_binary(data: &[u8]) -> bool {
     let binary_size = data
         .get(HEADER..HEADER + 4)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as u64 * RECORD as u64 + 84);
@@ -44,11 +52,7 @@ pub fn parse(data: &[u8]) -> Result<Mesh, IoError> {
             .unwrap_or(0);
         data[start..].starts_with(b"solid")
     };
-    if binary_size == Some(data.len() as u64) || !starts_with_solid {
-        parse_binary(data)
-    } else {
-        parse_ascii(data)
-    }
+    binary_size == Some(data.len() as u64) || !starts_with_solid
 }
 
 fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
@@ -81,20 +85,30 @@ fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
 /// Reads an STL file a block at a time, the next block read from the file
 /// while this one is read, never holding all its bytes: binary, a block of
 /// triangles at a time, and text, a block of facets at a time on all
-/// threads; `None` when the file is left to [`parse`], which reads it
-/// whole: a binary file whose size is not that of its triangle count
+/// threads. A binary file whose size is not that of its triangle count
 /// (truncated, or text), and a text file with something to report or a
-/// rarer form (see `fast_text`).
+/// rarer form (see `fast_text`), are read whole, text word by word.
 ///
 /// # Errors
-/// As [`parse`]; [`IoError::File`] when the file cannot be read.
-pub(crate) fn read_path(path: &Path) -> Result<Option<Mesh>, IoError> {
+/// As [`parse`], naming the file; [`IoError::File`] when the file cannot be
+/// read.
+pub(crate) fn read_path(path: &Path) -> Result<Mesh, IoError> {
     if let Some((mesh, _)) = read_in_blocks(path, BLOCK_TRIANGLES, Corners::Own)? {
-        return Ok(Some(mesh));
+        return Ok(mesh);
     }
     let failed = super::read_failed(path);
     let file = File::open(path).map_err(failed)?;
-    fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE).map_err(failed)
+    let streamed = fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE);
+    if let Some(mesh) = streamed.map_err(failed)? {
+        return Ok(mesh);
+    }
+    // The pieces have given up: the words, not the pieces again.
+    let data = super::read_bytes(path)?;
+    let whole = match is_binary(&data) {
+        true => parse_binary(&data),
+        false => parse_ascii_words(&data),
+    };
+    whole.map_err(|e| e.in_file(path))
 }
 
 /// [`read_path`] for a weld to follow: the exact copies of a position near
@@ -640,11 +654,11 @@ mod tests {
     }
 
     #[test]
-    fn text_files_are_read_in_blocks_or_left_to_the_whole_reading() {
+    fn text_files_read_from_disk_as_their_bytes_parse() {
         let mut text = Vec::new();
         write(&mut text, &torus_with_negative_zero(30, 20), true).unwrap();
         let file = Scratch::new("text", &text);
-        let read = read_path(&file.0).unwrap().unwrap();
+        let read = read_path(&file.0).unwrap();
         let whole = parse(&text).unwrap();
         assert_eq!(
             (&read, position_bits(&read)),
@@ -655,8 +669,14 @@ mod tests {
             .unwrap()
             .replacen("endloop", "endlop", 7);
         let file = Scratch::new("text-broken", broken.as_bytes());
-        assert!(read_path(&file.0).unwrap().is_none());
-        let error = crate::io::read_mesh(&file.0).unwrap_err().to_string();
+        let error = read_path(&file.0).unwrap_err().to_string();
+        assert_eq!(
+            error,
+            parse(broken.as_bytes())
+                .unwrap_err()
+                .in_file(&file.0)
+                .to_string()
+        );
         assert!(
             error.contains("line 7:") && error.contains("\"endlop\""),
             "{error}"
