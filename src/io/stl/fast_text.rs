@@ -189,6 +189,7 @@ fn read_piece(text: &[u8], last: bool) -> Option<Piece> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::position_bits;
     use super::super::{parse_ascii_words, write};
     use super::*;
     use crate::mesh::shapes;
@@ -197,12 +198,6 @@ mod tests {
         let mut bytes = Vec::new();
         write(&mut bytes, mesh, true).unwrap();
         bytes
-    }
-
-    /// Each position's bits (so -0 and 0 differ).
-    fn position_bits(mesh: &Mesh) -> Vec<[u64; 3]> {
-        let positions = mesh.positions().iter();
-        positions.map(|p| p.to_array().map(f64::to_bits)).collect()
     }
 
     /// Text files as other programs write them: upper case, CRLF, tabs,

@@ -506,7 +506,7 @@ mod tests {
     }
 
     /// Each position's bits (so -0 and 0 differ).
-    fn position_bits(mesh: &Mesh) -> Vec<[u64; 3]> {
+    pub(super) fn position_bits(mesh: &Mesh) -> Vec<[u64; 3]> {
         let positions = mesh.positions().iter();
         positions.map(|p| p.to_array().map(f64::to_bits)).collect()
     }
