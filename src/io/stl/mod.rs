@@ -8,7 +8,7 @@
 //! with `solid`, and binary otherwise.
 
 use std::fs::File;
-use std::io::{Read, Write};
+use std::io::{Read, Seek, Write};
 use std::path::Path;
 
 use glam::DVec3;
@@ -45,14 +45,16 @@ fn is_binary(data: &[u8]) -> bool {
     let binary_size = data
         .get(HEADER..HEADER + 4)
         .map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]]) as u64 * RECORD as u64 + 84);
-    let starts_with_solid = {
-        let start = data
-            .iter()
-            .position(|b| !b.is_ascii_whitespace())
-            .unwrap_or(0);
-        data[start..].starts_with(b"solid")
-    };
-    binary_size == Some(data.len() as u64) || !starts_with_solid
+    binary_size == Some(data.len() as u64) || !starts_with_solid(data)
+}
+
+/// Whether `data`'s first word starts with `solid`, as a text file's does.
+fn starts_with_solid(data: &[u8]) -> bool {
+    let start = data
+        .iter()
+        .position(|b| !b.is_ascii_whitespace())
+        .unwrap_or(0);
+    data[start..].starts_with(b"solid")
 }
 
 fn parse_binary(data: &[u8]) -> Result<Mesh, IoError> {
@@ -97,12 +99,22 @@ pub(crate) fn read_path(path: &Path) -> Result<Mesh, IoError> {
         return Ok(mesh);
     }
     let failed = super::read_failed(path);
-    let file = File::open(path).map_err(failed)?;
-    let streamed = fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE);
-    if let Some(mesh) = streamed.map_err(failed)? {
-        return Ok(mesh);
+    let mut file = File::open(path).map_err(failed)?;
+    // A truncated binary file is known by its start, before any block is
+    // read (one holds no `endfacet` line to cut a block at).
+    let mut head = Vec::new();
+    Read::by_ref(&mut file)
+        .take(1 << 16)
+        .read_to_end(&mut head)
+        .map_err(failed)?;
+    if starts_with_solid(&head) {
+        file.rewind().map_err(failed)?;
+        let streamed = fast_text::read_source(file, fast_text::BLOCK, fast_text::PIECE);
+        if let Some(mesh) = streamed.map_err(failed)? {
+            return Ok(mesh);
+        }
     }
-    // The pieces have given up: the words, not the pieces again.
+    // Binary, or the pieces have given up: the words, not the pieces again.
     let data = super::read_bytes(path)?;
     let whole = match is_binary(&data) {
         true => parse_binary(&data),
@@ -681,6 +693,15 @@ mod tests {
             error.contains("line 7:") && error.contains("\"endlop\""),
             "{error}"
         );
+        // A truncated binary file: the whole reading names where it ends.
+        let truncated = &binary(&shapes::cube())[..84 + 5 * RECORD + 7];
+        let file = Scratch::new("truncated", truncated);
+        let error = read_path(&file.0).unwrap_err().to_string();
+        assert_eq!(
+            error,
+            parse(truncated).unwrap_err().in_file(&file.0).to_string()
+        );
+        assert!(error.contains("truncated"), "{error}");
     }
 
     #[test]
