@@ -7,7 +7,7 @@ use crate::ffi::boundary::{
     check_room, guard, input_slice, last_error_ptr, make_mesh, out_param, output_slice, required,
     Failure, WeftStatus,
 };
-use crate::mesh::topology::Topology;
+use crate::mesh::topology::MeshInfo;
 use crate::mesh::{check_element_counts, Mesh, MeshOptions};
 
 /// Major version of the library this header belongs to.
@@ -523,7 +523,7 @@ pub unsafe extern "C" fn weft_mesh_info(
         guard(|| {
             let out = out_param(out_info, "out_info")?;
             let mesh = mesh_ref(mesh, "mesh")?;
-            let info = Topology::new(mesh).info(mesh);
+            let info = MeshInfo::of(mesh);
             *out = WeftMeshInfo {
                 vertex_count: info.vertex_count,
                 edge_count: info.edge_count,

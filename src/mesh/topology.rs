@@ -122,6 +122,54 @@ pub struct MeshInfo {
     pub is_oriented: bool,
 }
 
+impl MeshInfo {
+    /// The counts and flags of `mesh`, as [`Topology::info`] finds them.
+    /// When no two corners name one vertex (an STL file read as it is
+    /// stored, each triangle with corners of its own) the answer is known
+    /// without finding the edges: every corner starts an edge of its own,
+    /// naked, and every face is a piece of its own.
+    ///
+    /// # Panics
+    /// As [`Topology::new`], when memory for its arrays runs out.
+    pub fn of(mesh: &Mesh) -> MeshInfo {
+        if !corners_share_no_vertex(mesh) {
+            return Topology::new(mesh).info(mesh);
+        }
+        let faces = mesh.face_count();
+        MeshInfo {
+            vertex_count: mesh.vertex_count(),
+            edge_count: mesh.index_count(),
+            face_count: faces,
+            naked_edge_count: mesh.index_count(),
+            non_manifold_edge_count: 0,
+            non_manifold_vertex_count: 0,
+            component_count: faces,
+            // A face of three or more corners on distinct vertices has a
+            // naked edge: closed only without faces, and then not either.
+            is_closed: false,
+            is_orientable: true,
+            is_oriented: true,
+        }
+    }
+}
+
+/// Whether no vertex is named by two corners (of one face or of two). Stops
+/// at the first vertex named twice, which a mesh with shared vertices
+/// meets within its first faces.
+fn corners_share_no_vertex(mesh: &Mesh) -> bool {
+    let indices = mesh.face_indices();
+    if indices.len() > mesh.vertex_count() {
+        return false;
+    }
+    let mut named = vec![0u64; mesh.vertex_count().div_ceil(64)];
+    indices.iter().all(|&v| {
+        let (word, bit) = (v as usize / 64, 1u64 << (v % 64));
+        let fresh = named[word] & bit == 0;
+        named[word] |= bit;
+        fresh
+    })
+}
+
 /// A consistent winding of each component, as far as one exists.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct Orientation {
@@ -771,5 +819,66 @@ mod tests {
             assert_eq!(topology.edge_faces(e).len(), 2);
         }
         assert_eq!(topology.find_edge(0, 7), None);
+    }
+
+    /// A soup of `sizes.len()` faces whose corners name the vertices of
+    /// `order` (a shuffle of `0..vertices`) one after another; with
+    /// `shared`, corner 0 of the last face names the first corner's vertex.
+    fn soup(sizes: &[u32], extra: usize, seed: u64, shared: bool) -> Mesh {
+        let corners: usize = sizes.iter().map(|&s| s as usize).sum();
+        let vertices = corners + extra;
+        let mut order: Vec<u32> = (0..vertices as u32).collect();
+        // A fixed shuffle (xorshift) so the vertices are named out of order.
+        let mut state = seed | 1;
+        for i in (1..order.len()).rev() {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            order.swap(i, (state % (i as u64 + 1)) as usize);
+        }
+        let mut indices = order[..corners].to_vec();
+        if shared && sizes.len() > 1 {
+            let last = corners - *sizes.last().unwrap() as usize;
+            indices[last] = indices[0];
+        }
+        let positions = (0..vertices)
+            .map(|v| glam::DVec3::new(v as f64, (v * v % 7) as f64, (v % 3) as f64))
+            .collect();
+        Mesh::new(positions, sizes.to_vec(), indices).unwrap()
+    }
+
+    #[test]
+    fn soup_info_is_known_without_the_edges() {
+        let sizes = [3, 3, 4, 5, 3, 6];
+        let info = MeshInfo::of(&soup(&sizes, 2, 9, false));
+        assert_eq!(
+            (info.vertex_count, info.edge_count, info.face_count),
+            (26, 24, 6)
+        );
+        assert_eq!((info.naked_edge_count, info.component_count), (24, 6));
+        assert!(!info.is_closed && info.is_orientable && info.is_oriented);
+        // One vertex named twice, found through the edges: a bow tie, which
+        // joins no pieces (pieces are joined through edges).
+        let bow_tie = soup(&sizes, 2, 9, true);
+        let info = MeshInfo::of(&bow_tie);
+        assert_eq!(
+            (info.component_count, info.non_manifold_vertex_count),
+            (6, 1)
+        );
+        let empty = Mesh::empty();
+        assert_eq!(MeshInfo::of(&empty), Topology::new(&empty).info(&empty));
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn mesh_info_is_the_topology_s_info(
+            sizes in proptest::collection::vec(3u32..7, 0..40),
+            extra in 0usize..5,
+            seed: u64,
+            shared: bool,
+        ) {
+            let mesh = soup(&sizes, extra, seed, shared);
+            proptest::prop_assert_eq!(MeshInfo::of(&mesh), Topology::new(&mesh).info(&mesh));
+        }
     }
 }

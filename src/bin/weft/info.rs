@@ -4,7 +4,7 @@
 use std::path::Path;
 
 use rayon::prelude::*;
-use weft::{Mesh, Topology};
+use weft::{Mesh, MeshInfo};
 
 /// What `weft info` reports.
 pub struct Report {
@@ -37,7 +37,7 @@ pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
     // The topology beside the per-face and per-vertex counts; each side
     // splits its own work over the threads rayon has free.
     let (info, ((max_planarity_deviation, non_planar_faces), unused_vertices)) = rayon::join(
-        || Topology::new(mesh).info(mesh),
+        || MeshInfo::of(mesh),
         || {
             rayon::join(
                 || planarity(mesh, planarity_tolerance),
