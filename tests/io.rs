@@ -172,7 +172,7 @@ fn error_at(format: Format, data: &[u8]) -> (Location, String) {
 #[test]
 fn malformed_text_names_the_line() {
     // The format, the text, the line the error names and words its message holds.
-    let cases: [(Format, &[u8], usize, &[&str]); 15] = [
+    let cases: [(Format, &[u8], usize, &[&str]); 16] = [
         (
             Format::Obj,
             b"v 0 0 0\nv 1 0 0\nv 0 one 0\nf 1 2 3\n",
@@ -244,6 +244,17 @@ fn malformed_text_names_the_line() {
             b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\n",
             3,
             &["x, y and z"],
+        ),
+        (
+            // Two vertex elements, one with colours: refused, not read as
+            // one list of vertices with colours for half of them.
+            Format::Ply,
+            b"ply\nformat binary_little_endian 1.0\nelement vertex 1\nproperty float x\n\
+              property float y\nproperty float z\nelement vertex 1\nproperty float x\n\
+              property float y\nproperty float z\nproperty uchar red\nproperty uchar green\n\
+              property uchar blue\nend_header\n",
+            7,
+            &["a second element \"vertex\" (the first is on line 3)"],
         ),
         (
             Format::Ply,

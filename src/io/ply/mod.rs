@@ -357,6 +357,18 @@ fn parse_header(data: &[u8]) -> Result<Header<'_>, IoError> {
                     return Err(header_error(line, "expected \"element NAME COUNT\""));
                 };
                 let count = super::text::parse_count(count, line, "the element count")?;
+                // Two elements of one name would both be read as it (two
+                // vertex lists, one with colours): the file is refused.
+                if let Some(first) = elements.iter().find(|e| e.name == *name) {
+                    return Err(header_error(
+                        line,
+                        format!(
+                            "a second element {} (the first is on line {})",
+                            show(name),
+                            first.line
+                        ),
+                    ));
+                }
                 elements.push(Element {
                     name: name.to_vec(),
                     count,
