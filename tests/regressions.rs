@@ -439,3 +439,27 @@ fn loop_counts_of_triangles_on_the_same_vertices_match_the_subdivision() {
         21
     );
 }
+
+/// The readers' fuzz target (`fuzz/corpus/readers/ply-two-vertex-elements`):
+/// a binary PLY header declaring `element vertex` twice, the second time
+/// with colours, was read as one list of eight vertices with colours for
+/// four of them, and writing that file failed. A second element of one
+/// name is now refused, naming its line and the first one's.
+#[test]
+fn ply_with_two_vertex_elements_is_refused() {
+    use weft::io::{parse_mesh, parse_mesh_file, Format, Location};
+    // The fuzzer's input after its first byte (which picks the format).
+    let input = include_bytes!("../fuzz/corpus/readers/ply-two-vertex-elements");
+    for error in [
+        parse_mesh(Format::Ply, &input[1..]).unwrap_err(),
+        parse_mesh_file(Format::Ply, &input[1..]).unwrap_err(),
+    ] {
+        assert_eq!(error.location(), Some(Location::Line(12)), "{error}");
+        assert!(
+            error
+                .to_string()
+                .contains("a second element \"vertex\" (the first is on line 3)"),
+            "{error}"
+        );
+    }
+}
