@@ -11,17 +11,23 @@
 //!
 //! The naked edges are registered in the cells of a uniform grid that they
 //! pass through (a 3-D digital differential analyser, Amanatides & Woo 1987),
-//! and each boundary vertex is tested against the edges of the 27 cells
-//! around it only.
+//! and each boundary vertex is tested against the edges of the cells within
+//! the tolerance of it only (its own, and of its 26 neighbours those whose
+//! side is that close), on all threads.
 
 use glam::DVec3;
+use rayon::prelude::*;
 
-use crate::buffers::try_vec;
+use crate::buffers::{try_vec, CHUNK};
 use crate::error::Result;
 use crate::mend::weld::{within, Cell, CellGrid, CellMap};
 use crate::mesh::check_tolerance;
-use crate::mesh::topology::Topology;
+use crate::mesh::corners::CornerFaces;
+use crate::mesh::topology::Edges;
 use crate::mesh::Mesh;
+
+/// Naked edges whose cells one task finds.
+const SEGMENTS_A_PART: usize = 1 << 16;
 
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -106,44 +112,46 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
 /// The T-nodes with the corner whose edge each lies on, sorted by corner and parameter.
 fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
     check_tolerance(tolerance)?;
-    let topology = Topology::try_new(mesh)?;
-    let naked: Vec<u32> = topology.naked_edges();
-    if naked.is_empty() {
+    // A naked edge has one corner: which corners those are is all the
+    // search needs of the topology.
+    let (corners, naked) =
+        rayon::join(|| CornerFaces::of_mesh(mesh), || Edges::naked_corners(mesh));
+    let (corners, naked) = (corners?, naked?);
+    let naked_corner: Vec<u32> = (0..naked.len() as u32)
+        .into_par_iter()
+        .with_min_len(CHUNK)
+        .filter(|&c| naked[c as usize])
+        .collect();
+    drop(naked);
+    if naked_corner.is_empty() {
         return Ok(Vec::new());
     }
     let positions = mesh.positions();
-    let corner_vertices = topology.corner_vertices();
-    let corner_next = topology.corner_next();
-
-    // The corner (and so the direction) of each naked edge.
-    let naked_corner: Vec<u32> = naked
-        .iter()
-        .map(|&e| topology.edge_corners(e as usize)[0])
-        .collect();
+    let corner_vertices = mesh.face_indices();
     let segment = |k: usize| {
         let c = naked_corner[k] as usize;
         (
             positions[corner_vertices[c] as usize],
-            positions[corner_vertices[corner_next[c] as usize] as usize],
+            positions[corner_vertices[corners.next(c)] as usize],
         )
     };
     // Cells about as long as the naked edges, so that each edge passes
     // through a few cells and each cell holds a few edges.
-    let mean_length = (0..naked.len())
+    let mean_length = (0..naked_corner.len())
         .map(|k| {
             let (a, b) = segment(k);
             a.distance(b)
         })
         .sum::<f64>()
-        / naked.len() as f64;
+        / naked_corner.len() as f64;
     // The mean can underflow to 0 (coordinates near 1e-300 square to 0) or
     // come out far too small; coarsen until the edges pass through a number
     // of cells linear in their count, so the cell lists stay small.
-    let cell_limit = 8 * naked.len() as u64 + 64;
+    let cell_limit = 8 * naked_corner.len() as u64 + 64;
     let mut size = mean_length.max(tolerance);
     let grid = loop {
         let grid = CellGrid::new(positions.iter().copied(), size);
-        let cell_count = (0..naked.len()).fold(0u64, |total, k| {
+        let cell_count = (0..naked_corner.len()).fold(0u64, |total, k| {
             let (a, b) = segment(k);
             total.saturating_add(1 + grid.cell(a).steps_to(grid.cell(b)))
         });
@@ -153,14 +161,29 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
         size = grid.size * 2.0;
     };
 
-    let mut entries: Vec<(Cell, u32)> = Vec::new();
-    let mut cells = Vec::new();
-    for k in 0..naked.len() {
-        let (a, b) = segment(k);
-        cells_on_segment(&grid, a, b, &mut cells);
-        entries.extend(cells.iter().map(|&cell| (cell, k as u32)));
+    // Every naked edge under each cell it passes through, sorted by cell:
+    // on all threads, as a mesh read from STL has nothing but naked edges.
+    let parts: Vec<Vec<(Cell, u32)>> = (0..naked_corner.len().div_ceil(SEGMENTS_A_PART))
+        .into_par_iter()
+        .map(|part| {
+            let ks = part * SEGMENTS_A_PART..((part + 1) * SEGMENTS_A_PART).min(naked_corner.len());
+            let (mut entries, mut cells) = (Vec::with_capacity(3 * ks.len()), Vec::new());
+            for k in ks {
+                let (a, b) = segment(k);
+                cells_on_segment(&grid, a, b, &mut cells);
+                entries.extend(cells.iter().map(|&cell| (cell, k as u32)));
+            }
+            entries
+        })
+        .collect();
+    let mut entries = try_vec(
+        parts.iter().map(Vec::len).sum(),
+        "the T-node search's cells",
+    )?;
+    for part in parts {
+        entries.extend(part);
     }
-    entries.sort_unstable();
+    entries.par_sort_unstable();
     entries.dedup();
     let mut cell_ranges: CellMap<(u32, u32)> = CellMap::default();
     let mut start = 0;
@@ -172,40 +195,38 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
     }
 
     let mut on_boundary = vec![false; mesh.vertex_count()];
-    for &e in &naked {
-        let [a, b] = topology.edges()[e as usize];
-        on_boundary[a as usize] = true;
-        on_boundary[b as usize] = true;
+    for &c in &naked_corner {
+        on_boundary[corner_vertices[c as usize] as usize] = true;
+        on_boundary[corner_vertices[corners.next(c as usize)] as usize] = true;
     }
-    let corner_faces = topology.corner_faces();
-    let mut found = Vec::new();
-    let mut candidates: Vec<u32> = Vec::new();
-    for v in (0..mesh.vertex_count()).filter(|&v| on_boundary[v]) {
+    // The T-nodes at vertex v, among the edges of the cells within
+    // `tolerance` of it.
+    let nodes_at = |v: usize, candidates: &mut Vec<u32>, found: &mut Vec<(u32, TNode)>| {
         let p = positions[v];
-        let home = grid.cell(p);
         candidates.clear();
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    if let Some(&(s, e)) = cell_ranges.get(&home.offset([dx, dy, dz])) {
-                        candidates.extend(entries[s as usize..e as usize].iter().map(|x| x.1));
-                    }
-                }
+        for cell in cells_near(&grid, p, tolerance) {
+            if let Some(&(s, e)) = cell_ranges.get(&cell) {
+                candidates.extend(entries[s as usize..e as usize].iter().map(|x| x.1));
             }
         }
         candidates.sort_unstable();
         candidates.dedup();
-        for &k in &candidates {
+        for &k in candidates.iter() {
             let c = naked_corner[k as usize] as usize;
-            let (va, vb) = (corner_vertices[c], corner_vertices[corner_next[c] as usize]);
-            let face = corner_faces[c];
+            let (va, vb) = (corner_vertices[c], corner_vertices[corners.next(c)]);
+            let (a, b) = (positions[va as usize], positions[vb as usize]);
+            // At an end (a copy of v, as STL stores every corner): a matter
+            // for welding, as below, found without arithmetic.
+            if p == a || p == b {
+                continue;
+            }
+            let face = corners.face(c) as u32;
             if va as usize == v
                 || vb as usize == v
                 || mesh.face(face as usize).contains(&(v as u32))
             {
                 continue;
             }
-            let (a, b) = (positions[va as usize], positions[vb as usize]);
             // Measured in units of the edge's largest coordinate difference,
             // so squares neither underflow (coordinates near 1e-300) nor
             // overflow (near 1e300).
@@ -231,13 +252,53 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
                 ));
             }
         }
-    }
-    found.sort_by(|x, y| {
+    };
+    let mut found: Vec<(u32, TNode)> = (0..mesh.vertex_count())
+        .into_par_iter()
+        .with_min_len(CHUNK)
+        .filter(|&v| on_boundary[v])
+        .fold(
+            || (Vec::new(), Vec::new()),
+            |(mut candidates, mut found), v| {
+                nodes_at(v, &mut candidates, &mut found);
+                (candidates, found)
+            },
+        )
+        .map(|(_, found)| found)
+        .reduce(Vec::new, |mut a, mut b| {
+            a.append(&mut b);
+            a
+        });
+    found.par_sort_unstable_by(|x, y| {
         x.0.cmp(&y.0)
             .then(x.1.parameter.total_cmp(&y.1.parameter))
             .then(x.1.vertex.cmp(&y.1.vertex))
     });
     Ok(found)
+}
+
+/// The cells of `grid` within `tolerance` of `p` (the cell of `p` and
+/// those of its 26 neighbours whose side is that close), which hold every
+/// edge passing within `tolerance` of `p`: cells are never narrower than
+/// `tolerance`. A margin of 2^-10 of a cell covers the round-off of placing
+/// `p` and the edges in cells, which stays below 2^-12 of a cell (see
+/// [`CellGrid::with_reach`]).
+fn cells_near(grid: &CellGrid, p: DVec3, tolerance: f64) -> impl Iterator<Item = Cell> {
+    let home = grid.cell(p);
+    let reach = tolerance / grid.size + 1.0 / 1024.0;
+    let steps = |axis: usize| {
+        let t = p[axis] / grid.size;
+        let inside = t - home.0[axis] as f64;
+        let low = (inside <= reach) as i64;
+        let high = (1.0 - inside <= reach) as i64;
+        -low..=high
+    };
+    let (xs, ys, zs) = (steps(0), steps(1), steps(2));
+    xs.flat_map(move |dx| {
+        let zs = zs.clone();
+        ys.clone()
+            .flat_map(move |dy| zs.clone().map(move |dz| home.offset([dx, dy, dz])))
+    })
 }
 
 /// The cells the segment from `a` to `b` passes through, in order
@@ -286,6 +347,7 @@ fn cells_on_segment(grid: &CellGrid, a: DVec3, b: DVec3, cells: &mut Vec<Cell>) 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::mesh::topology::Topology;
 
     #[test]
     fn segment_cells_are_connected_and_reach_the_end() {
@@ -331,5 +393,108 @@ mod tests {
         let topology = Topology::new(&repaired);
         let shared = topology.find_edge(4, 2).unwrap();
         assert_eq!(topology.edge_face_count(shared), 2);
+    }
+
+    /// Every boundary vertex against every naked edge of another face, with
+    /// the tests of the search: what the grid may only make faster.
+    fn every_pair(mesh: &Mesh, tolerance: f64) -> Vec<(u32, TNode)> {
+        let topology = Topology::new(mesh);
+        let positions = mesh.positions();
+        let naked: Vec<u32> = topology
+            .naked_edges()
+            .iter()
+            .map(|&e| topology.edge_corners(e as usize)[0])
+            .collect();
+        let mut boundary: Vec<u32> = naked
+            .iter()
+            .flat_map(|&c| {
+                let next = topology.corner_next()[c as usize];
+                [
+                    topology.corner_vertices()[c as usize],
+                    topology.corner_vertices()[next as usize],
+                ]
+            })
+            .collect();
+        boundary.sort_unstable();
+        boundary.dedup();
+        let mut found = Vec::new();
+        for &v in &boundary {
+            let p = positions[v as usize];
+            for &c in &naked {
+                let va = topology.corner_vertices()[c as usize];
+                let vb = topology.corner_vertices()[topology.corner_next()[c as usize] as usize];
+                let face = topology.corner_faces()[c as usize];
+                if mesh.face(face as usize).contains(&v) {
+                    continue;
+                }
+                let (a, b) = (positions[va as usize], positions[vb as usize]);
+                let unit = (b - a).abs().max_element();
+                let d = (b - a) / unit;
+                let t = ((p - a) / unit).dot(d) / d.length_squared();
+                let near_end = within(p, a, tolerance) || within(p, b, tolerance);
+                if t > 0.0 && t < 1.0 && !near_end && within(p, a.lerp(b, t), tolerance) {
+                    let node = TNode {
+                        vertex: v,
+                        edge: [va, vb],
+                        face,
+                        parameter: t,
+                    };
+                    found.push((c, node));
+                }
+            }
+        }
+        found.sort_by(|x, y| {
+            x.0.cmp(&y.0)
+                .then(x.1.parameter.total_cmp(&y.1.parameter))
+                .then(x.1.vertex.cmp(&y.1.vertex))
+        });
+        found
+    }
+
+    proptest::proptest! {
+        /// Strips of quads side by side, each with its own number of
+        /// divisions along the shared seams, the strips' vertices apart
+        /// (as read from STL) or shared within a strip; points put on the
+        /// seams' grid lines and cell sides included, where the cells near
+        /// a vertex are chosen.
+        #[test]
+        fn the_grid_finds_what_every_pair_finds(
+            divisions in proptest::collection::vec(1u32..7, 2..5),
+            scale in proptest::sample::select(vec![1.0, 0.01, 3.0e4]),
+            soup: bool,
+            tolerance in proptest::sample::select(vec![1e-9, 1e-3, 0.05]),
+        ) {
+            let mut positions = Vec::new();
+            let mut faces: Vec<Vec<u32>> = Vec::new();
+            for (strip, &n) in divisions.iter().enumerate() {
+                let x = strip as f64;
+                let first = positions.len() as u32;
+                for i in 0..=n {
+                    let y = i as f64 / n as f64;
+                    positions.push(DVec3::new(x, y, 0.0) * scale);
+                    positions.push(DVec3::new(x + 1.0, y, 0.0) * scale);
+                }
+                for i in 0..n {
+                    let q = first + 2 * i;
+                    faces.push(vec![q, q + 1, q + 3, q + 2]);
+                }
+            }
+            if soup {
+                let mut apart = Vec::new();
+                for face in &mut faces {
+                    for v in face.iter_mut() {
+                        apart.push(positions[*v as usize]);
+                        *v = apart.len() as u32 - 1;
+                    }
+                }
+                positions = apart;
+            }
+            let mesh = Mesh::from_polygons(positions, faces).unwrap();
+            let tolerance = tolerance * scale;
+            proptest::prop_assert_eq!(
+                find_with_corners(&mesh, tolerance).unwrap(),
+                every_pair(&mesh, tolerance)
+            );
+        }
     }
 }
