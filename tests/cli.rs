@@ -92,6 +92,33 @@ fn info_reports_counts_and_properties() {
 }
 
 #[test]
+fn mending_faces_that_share_no_vertex_suggests_weld() {
+    // Twin faces, T-nodes and a consistent winding are all found through
+    // shared vertices: an STL file's triangles have none until welded.
+    let dir = folder("mend-soup");
+    io::write_mesh(dir.join("cube.stl"), &shapes::cube()).unwrap();
+    let hint = "cube.stl: no two faces share an edge, as in an STL file: add --weld";
+    let commands: [&[&str]; 3] = [
+        &["cull-adjacent", "cube.stl", "culled.obj"],
+        &["t-nodes", "cube.stl"],
+        &["flip", "--unify", "cube.stl", "unified.obj"],
+    ];
+    for args in commands {
+        let o = weft(&dir, args);
+        assert_exit(&o, 0);
+        assert!(stderr(&o).contains(hint), "{args:?}: {}", stderr(&o));
+        let welded = [args, &["--weld"]].concat();
+        let o = weft(&dir, &welded);
+        assert_exit(&o, 0);
+        assert!(
+            !stderr(&o).contains("share an edge"),
+            "{welded:?}: {}",
+            stderr(&o)
+        );
+    }
+}
+
+#[test]
 fn info_of_faces_that_share_no_edge_suggests_weld() {
     let dir = folder("info-soup");
     io::write_mesh(dir.join("cube.stl"), &shapes::cube()).unwrap();

@@ -426,6 +426,24 @@ impl Mesh {
         self.faces.uniform.map(|size| size as usize)
     }
 
+    /// Whether no vertex is named by two corners, of one face or of two: a
+    /// mesh as STL stores it, each triangle with corners of its own, whose
+    /// faces share no edge until welded. Stops at the first vertex named
+    /// twice, which a mesh with shared vertices meets within its first faces.
+    pub fn corners_share_no_vertex(&self) -> bool {
+        let indices = self.face_indices();
+        if indices.len() > self.vertex_count() {
+            return false;
+        }
+        let mut named = vec![0u64; self.vertex_count().div_ceil(64)];
+        indices.iter().all(|&v| {
+            let (word, bit) = (v as usize / 64, 1u64 << (v % 64));
+            let fresh = named[word] & bit == 0;
+            named[word] |= bit;
+            fresh
+        })
+    }
+
     /// Whether every face is a triangle (true for the empty mesh).
     pub fn is_triangle_mesh(&self) -> bool {
         self.face_count() == 0 || self.faces.uniform == Some(3)

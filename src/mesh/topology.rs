@@ -132,7 +132,7 @@ impl MeshInfo {
     /// # Panics
     /// As [`Topology::new`], when memory for its arrays runs out.
     pub fn of(mesh: &Mesh) -> MeshInfo {
-        if !corners_share_no_vertex(mesh) {
+        if !mesh.corners_share_no_vertex() {
             return Topology::new(mesh).info(mesh);
         }
         let faces = mesh.face_count();
@@ -151,23 +151,6 @@ impl MeshInfo {
             is_oriented: true,
         }
     }
-}
-
-/// Whether no vertex is named by two corners (of one face or of two). Stops
-/// at the first vertex named twice, which a mesh with shared vertices
-/// meets within its first faces.
-fn corners_share_no_vertex(mesh: &Mesh) -> bool {
-    let indices = mesh.face_indices();
-    if indices.len() > mesh.vertex_count() {
-        return false;
-    }
-    let mut named = vec![0u64; mesh.vertex_count().div_ceil(64)];
-    indices.iter().all(|&v| {
-        let (word, bit) = (v as usize / 64, 1u64 << (v % 64));
-        let fresh = named[word] & bit == 0;
-        named[word] |= bit;
-        fresh
-    })
 }
 
 /// A consistent winding of each component, as far as one exists.

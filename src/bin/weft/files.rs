@@ -146,6 +146,15 @@ pub fn suggest_weld(path: &Path) {
     );
 }
 
+/// [`suggest_weld`] when the mesh read from `path` without `--weld` has
+/// faces whose corners name no vertex twice (an STL file as stored): a
+/// command that looks for shared edges or vertices finds none there.
+pub fn suggest_weld_if_apart(cli: &Cli, path: &Path, mesh: &Mesh) {
+    if !cli.weld && mesh.face_count() > 1 && mesh.corners_share_no_vertex() {
+        suggest_weld(path);
+    }
+}
+
 /// Runs `work`; when it takes longer than half a second and stderr is a
 /// terminal, shows `label` and the time spent until it ends.
 pub fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {

@@ -7,7 +7,9 @@ use weft::io;
 use weft::Mesh;
 
 use crate::args::InOut;
-use crate::files::{operation_failed, read, read_to_weld, suggest_weld, with_progress, write};
+use crate::files::{
+    operation_failed, read, read_to_weld, suggest_weld, suggest_weld_if_apart, with_progress, write,
+};
 use crate::{Cli, Failure};
 
 /// Faces whose sides give the median edge length of the hint.
@@ -70,6 +72,7 @@ pub fn weld(
 /// Removes every face that has a twin.
 pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
     let mesh = read(cli, &files.input)?;
+    suggest_weld_if_apart(cli, &files.input, &mesh);
     let (culled, removed) = with_progress("culling", || weft::mend::cull::cull_adjacent(&mesh));
     // The culled faces' vertices go with them; bare vertices of the input too.
     let (culled, unused) = weft::mend::weld::remove_unused_vertices(&culled);
@@ -105,18 +108,22 @@ pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), 
         }
         oriented
     } else if unify {
-        let (unified, count) =
-            with_progress("unifying", || weft::mend::orient::unify_orientation(&mesh));
+        // Unifying turns closed pieces outward too: `orient_outward`, whose
+        // report says whether every piece could be oriented.
+        let (unified, report) =
+            with_progress("unifying", || weft::mend::orient::orient_outward(&mesh));
         eprintln!(
-            "{}: flipped {count} of {} faces to unify the orientation{}",
+            "{}: flipped {} of {} faces to unify the orientation{}",
             files.input.display(),
+            report.flipped_faces,
             mesh.face_count(),
-            if weft::mend::orient::is_orientable(&mesh) {
+            if report.non_orientable_pieces == 0 {
                 ""
             } else {
                 " (the mesh is not orientable: some edges still disagree)"
             }
         );
+        suggest_weld_if_apart(cli, &files.input, &mesh);
         unified
     } else {
         weft::mend::orient::flip(&mesh)
@@ -132,6 +139,7 @@ pub fn t_nodes(
     tolerance: Option<f64>,
 ) -> Result<(), Failure> {
     let mesh = read(cli, input)?;
+    suggest_weld_if_apart(cli, input, &mesh);
     let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&mesh));
     let found = with_progress("searching", || {
         weft::mend::t_nodes::find_t_nodes(&mesh, tolerance)
