@@ -281,8 +281,8 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
 /// those of its 26 neighbours whose side is that close), which hold every
 /// edge passing within `tolerance` of `p`: cells are never narrower than
 /// `tolerance`. A margin of 2^-10 of a cell covers the round-off of placing
-/// `p` and the edges in cells, which stays below 2^-12 of a cell (see
-/// [`CellGrid::with_reach`]).
+/// `p` and the edges in cells: cell numbers stay below 2^41 (see
+/// [`CellGrid::with_reach`]), where a double's step is 2^-12.
 fn cells_near(grid: &CellGrid, p: DVec3, tolerance: f64) -> impl Iterator<Item = Cell> {
     let home = grid.cell(p);
     let reach = tolerance / grid.size + 1.0 / 1024.0;

@@ -471,7 +471,6 @@ mod tests {
         let float_red = coloured
             .replacen("property uchar red", "property float red", 1)
             .replacen("0.1 -0 3 255", "0.1 -0 3 inf", 1);
-        let second_faces = "element face 0\nproperty list uchar int vertex_indices\nend_header";
         // (case, file, left to the values only when strict)
         let cases = [
             // An element over two lines, or two on one: read alike by the
@@ -512,13 +511,16 @@ mod tests {
                 body_line(ours, face, |_| "3 0 1 9999".into()),
                 false,
             ),
-            (
-                "two face elements",
-                ours.replacen("end_header", second_faces, 1),
-                false,
-            ),
             ("non-finite colour", float_red, true),
         ];
+        // Two elements of one name: refused by the header, before either reader.
+        let second_faces = "element face 0\nproperty list uchar int vertex_indices\nend_header";
+        let two_face_elements = ours.replacen("end_header", second_faces, 1);
+        let refused = parse_header(two_face_elements.as_bytes()).unwrap_err();
+        assert!(
+            refused.to_string().contains("a second element \"face\""),
+            "{refused}"
+        );
         for (name, file, strict_only) in &cases {
             for strict in [false, true] {
                 let values = by_values(file.as_bytes(), strict);
