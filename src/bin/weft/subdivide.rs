@@ -131,7 +131,11 @@ pub fn read_cage(
     } = cage;
     let mut file = read_file(cli, input)?;
     require_faces(input, &file.mesh)?;
-    if crease_angle.is_some() && !file.has_attributes() && corners_split_by_format(&file.mesh) {
+    if crease_angle.is_some()
+        && !file.has_attributes()
+        && file.mesh.face_count() > 1
+        && file.mesh.corners_share_no_vertex()
+    {
         // Every corner its own vertex (STL, an unwelded OBJ): every edge
         // would be a seam, and so a crease. Joined first, as --weld does.
         let before = file.mesh.vertex_count();
@@ -212,15 +216,4 @@ pub fn read_cage(
         ..SubdivisionOptions::default()
     };
     Ok((file, options))
-}
-
-/// Whether no vertex is shared by two faces, as STL and some OBJ writers
-/// store a mesh (every triangle with corners of its own).
-fn corners_split_by_format(mesh: &weft::Mesh) -> bool {
-    let mut used = vec![false; mesh.vertex_count()];
-    mesh.face_count() > 1
-        && mesh
-            .face_indices()
-            .iter()
-            .all(|&v| !std::mem::replace(&mut used[v as usize], true))
 }
