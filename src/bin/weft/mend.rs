@@ -87,48 +87,40 @@ pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
 /// Flips every face, or with `unify` the fewest for one orientation.
 pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), Failure> {
     let mesh = read(cli, &files.input)?;
-    let flipped = if outward {
-        let (oriented, report) =
-            with_progress("orienting", || weft::mend::orient::orient_outward(&mesh));
+    if !(unify || outward) {
+        let flipped = weft::mend::orient::flip(&mesh);
+        return write(&files.output, &flipped, &io::WriteOptions::default());
+    }
+    // Unifying turns closed pieces outward too: both are `orient_outward`,
+    // whose report says what each piece was.
+    let label = if outward { "orienting" } else { "unifying" };
+    let (oriented, report) = with_progress(label, || weft::mend::orient::orient_outward(&mesh));
+    let (input, faces) = (files.input.display(), mesh.face_count());
+    if outward {
         eprintln!(
-            "{}: {} pieces: turned {} closed ones outward, {} open (unified only), {} not orientable; flipped {} of {} faces",
-            files.input.display(),
+            "{input}: {} pieces: turned {} closed ones outward, {} open (unified only), {} not orientable; flipped {} of {faces} faces",
             report.pieces,
             report.turned_outward,
             report.open_pieces,
             report.non_orientable_pieces,
             report.flipped_faces,
-            mesh.face_count()
         );
-        if report.open_pieces > 0
-            && report.open_pieces == mesh.face_count()
-            && mesh.face_count() > 1
-        {
-            suggest_weld(&files.input);
-        }
-        oriented
-    } else if unify {
-        // Unifying turns closed pieces outward too: `orient_outward`, whose
-        // report says whether every piece could be oriented.
-        let (unified, report) =
-            with_progress("unifying", || weft::mend::orient::orient_outward(&mesh));
+    } else {
         eprintln!(
-            "{}: flipped {} of {} faces to unify the orientation{}",
-            files.input.display(),
+            "{input}: flipped {} of {faces} faces to unify the orientation{}",
             report.flipped_faces,
-            mesh.face_count(),
             if report.non_orientable_pieces == 0 {
                 ""
             } else {
                 " (the mesh is not orientable: some edges still disagree)"
             }
         );
-        suggest_weld_if_apart(cli, &files.input, &mesh);
-        unified
-    } else {
-        weft::mend::orient::flip(&mesh)
-    };
-    write(&files.output, &flipped, &io::WriteOptions::default())
+    }
+    // Every face an open piece of its own: no two faces share an edge.
+    if report.open_pieces == faces && faces > 1 {
+        suggest_weld(&files.input);
+    }
+    write(&files.output, &oriented, &io::WriteOptions::default())
 }
 
 /// Lists the T-nodes, and with `repair` writes them inserted into their edges.
