@@ -216,7 +216,7 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
             let (va, vb) = (corner_vertices[c], corner_vertices[corners.next(c)]);
             let (a, b) = (positions[va as usize], positions[vb as usize]);
             // At an end (a copy of v, as STL stores every corner): a matter
-            // for welding, as below, found without arithmetic.
+            // for welding, as `parameter_inside` finds, without arithmetic.
             if p == a || p == b {
                 continue;
             }
@@ -227,20 +227,7 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
             {
                 continue;
             }
-            // Measured in units of the edge's largest coordinate difference,
-            // so squares neither underflow (coordinates near 1e-300) nor
-            // overflow (near 1e300).
-            let unit = (b - a).abs().max_element();
-            if unit == 0.0 || !unit.is_finite() {
-                continue;
-            }
-            let d = (b - a) / unit;
-            let t = ((p - a) / unit).dot(d) / d.length_squared();
-            if !(t > 0.0 && t < 1.0) {
-                continue;
-            }
-            let near_end = within(p, a, tolerance) || within(p, b, tolerance);
-            if !near_end && within(p, a.lerp(b, t), tolerance) {
+            if let Some(t) = parameter_inside(p, a, b, tolerance) {
                 found.push((
                     c as u32,
                     TNode {
@@ -275,6 +262,26 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
             .then(x.1.vertex.cmp(&y.1.vertex))
     });
     Ok(found)
+}
+
+/// Where `p` lies along the edge from `a` to `b` (0 at `a`, 1 at `b`) when
+/// it is within `tolerance` of the edge's inside and further than that from
+/// both ends (closer, it is a matter for welding).
+fn parameter_inside(p: DVec3, a: DVec3, b: DVec3, tolerance: f64) -> Option<f64> {
+    // Measured in units of the edge's largest coordinate difference, so
+    // squares neither underflow (coordinates near 1e-300) nor overflow
+    // (near 1e300).
+    let unit = (b - a).abs().max_element();
+    if unit == 0.0 || !unit.is_finite() {
+        return None;
+    }
+    let d = (b - a) / unit;
+    let t = ((p - a) / unit).dot(d) / d.length_squared();
+    if !(t > 0.0 && t < 1.0) {
+        return None;
+    }
+    let near_end = within(p, a, tolerance) || within(p, b, tolerance);
+    (!near_end && within(p, a.lerp(b, t), tolerance)).then_some(t)
 }
 
 /// The cells of `grid` within `tolerance` of `p` (the cell of `p` and
@@ -396,7 +403,7 @@ mod tests {
     }
 
     /// Every boundary vertex against every naked edge of another face, with
-    /// the tests of the search: what the grid may only make faster.
+    /// the search's own test of a pair: what the grid may only make faster.
     fn every_pair(mesh: &Mesh, tolerance: f64) -> Vec<(u32, TNode)> {
         let topology = Topology::new(mesh);
         let positions = mesh.positions();
@@ -428,11 +435,7 @@ mod tests {
                     continue;
                 }
                 let (a, b) = (positions[va as usize], positions[vb as usize]);
-                let unit = (b - a).abs().max_element();
-                let d = (b - a) / unit;
-                let t = ((p - a) / unit).dot(d) / d.length_squared();
-                let near_end = within(p, a, tolerance) || within(p, b, tolerance);
-                if t > 0.0 && t < 1.0 && !near_end && within(p, a.lerp(b, t), tolerance) {
+                if let Some(t) = parameter_inside(p, a, b, tolerance) {
                     let node = TNode {
                         vertex: v,
                         edge: [va, vb],
