@@ -23,6 +23,33 @@ use crate::mesh::Mesh;
 /// that the indices stay those of the input; [`crate::mend::weld::remove_unused_vertices`]
 /// leaves the unused ones out.
 pub fn cull_adjacent(mesh: &Mesh) -> (Mesh, usize) {
+    match twins_of(mesh) {
+        Some((remove, removed)) => (without_faces(mesh, &remove, removed), removed),
+        None => (mesh.clone(), 0),
+    }
+}
+
+/// [`cull_adjacent`] on a mesh the caller gives up: when no face has a twin
+/// it comes back as it is, with no copy made.
+pub fn cull_adjacent_owned(mesh: Mesh) -> (Mesh, usize) {
+    match twins_of(&mesh) {
+        Some((remove, removed)) => (without_faces(&mesh, &remove, removed), removed),
+        None => (mesh, 0),
+    }
+}
+
+/// Which faces have a twin, and how many; `None` when none has.
+fn twins_of(mesh: &Mesh) -> Option<(Vec<bool>, usize)> {
+    // Twins share their vertices; faces whose corners all have vertices of
+    // their own (STL as stored) share none, and need no sort to say so.
+    if mesh.corners_share_no_vertex() {
+        return None;
+    }
+    faces_with_a_twin(mesh)
+}
+
+/// [`twins_of`] by sorting the faces by their sorted corners.
+fn faces_with_a_twin(mesh: &Mesh) -> Option<(Vec<bool>, usize)> {
     let face_count = mesh.face_count();
     let offsets = mesh.face_offsets();
     // Each face's corners sorted, and the faces sorted by them, on all
@@ -56,10 +83,12 @@ pub fn cull_adjacent(mesh: &Mesh) -> (Mesh, usize) {
         }
     }
     let removed = remove.iter().filter(|&&r| r).count();
-    if removed == 0 {
-        return (mesh.clone(), 0);
-    }
-    let mut face_sizes = Vec::with_capacity(face_count - removed);
+    (removed > 0).then_some((remove, removed))
+}
+
+/// The mesh without the `removed` faces `remove` marks; every vertex kept.
+fn without_faces(mesh: &Mesh, remove: &[bool], removed: usize) -> Mesh {
+    let mut face_sizes = Vec::with_capacity(mesh.face_count() - removed);
     let mut face_indices = Vec::with_capacity(mesh.index_count());
     for (f, face) in mesh.faces().enumerate() {
         if !remove[f] {
@@ -67,10 +96,7 @@ pub fn cull_adjacent(mesh: &Mesh) -> (Mesh, usize) {
             face_indices.extend_from_slice(face);
         }
     }
-    (
-        Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices),
-        removed,
-    )
+    Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices)
 }
 
 #[cfg(test)]
@@ -104,5 +130,31 @@ mod tests {
     fn nothing_to_cull_returns_the_mesh() {
         let cube = crate::mesh::shapes::cube();
         assert_eq!(cull_adjacent(&cube), (cube, 0));
+    }
+
+    #[test]
+    fn owned_cull_is_the_borrowed_cull() {
+        let mesh = crate::mesh::shapes::cube();
+        let (welded, _) =
+            crate::mend::weld::weld(&crate::mend::weld::join(&[&mesh, &mesh]).unwrap(), 0.0)
+                .unwrap();
+        assert_eq!(cull_adjacent_owned(welded.clone()), cull_adjacent(&welded));
+        assert_eq!(cull_adjacent_owned(welded.clone()).1, 12);
+        assert_eq!(cull_adjacent_owned(mesh.clone()), (mesh, 0));
+    }
+
+    proptest::proptest! {
+        /// Faces whose corners share no vertex have no twin, as the sort
+        /// would find.
+        #[test]
+        fn a_soup_has_twins_only_where_the_sort_finds_them(
+            sizes in proptest::collection::vec(3u32..7, 0..40),
+            extra in 0usize..5,
+            seed: u64,
+            shared: bool,
+        ) {
+            let mesh = crate::mesh::shapes::soup(&sizes, extra, seed, shared);
+            proptest::prop_assert_eq!(twins_of(&mesh), faces_with_a_twin(&mesh));
+        }
     }
 }

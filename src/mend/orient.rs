@@ -10,7 +10,7 @@ use glam::DVec3;
 
 use rayon::prelude::*;
 
-use crate::buffers::fill_by_offsets;
+use crate::buffers::{split_by_offsets, CHUNK};
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
 
@@ -60,6 +60,31 @@ pub struct OrientReport {
 /// cannot be oriented. A mesh read from STL must be welded first, or every
 /// triangle is a piece of its own.
 pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
+    orient_outward_owned(mesh.clone())
+}
+
+/// [`orient_outward`] on a mesh the caller gives up: its faces are reversed
+/// where they are, so a command that reads a mesh only to orient it needs
+/// no second copy of its positions and faces.
+pub fn orient_outward_owned(mut mesh: Mesh) -> (Mesh, OrientReport) {
+    if mesh.corners_share_no_vertex() {
+        // STL as stored: no face has a neighbour, so each is an open piece
+        // of its own, wound as it is.
+        let faces = mesh.face_count();
+        let report = OrientReport {
+            pieces: faces,
+            open_pieces: faces,
+            ..OrientReport::default()
+        };
+        return (mesh, report);
+    }
+    let (reversed, report) = faces_to_reverse(&mesh);
+    reverse_in_place(&mut mesh, |f| reversed[f]);
+    (mesh, report)
+}
+
+/// Which faces [`orient_outward`] reverses, and its report.
+fn faces_to_reverse(mesh: &Mesh) -> (Vec<bool>, OrientReport) {
     let topology = Topology::new(mesh);
     let orientation = topology.orientation();
     let component_count = orientation.component_orientable.len();
@@ -112,19 +137,13 @@ pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
         }
     }
 
-    report.flipped_faces = (0..mesh.face_count())
+    let reversed: Vec<bool> = (0..mesh.face_count())
         .into_par_iter()
-        .filter(|&f| reversed_face(f, &invert))
-        .count();
-    let face_indices = faces_written(mesh, |f| reversed_face(f, &invert));
-    (
-        Mesh::from_valid_parts(
-            mesh.positions().to_vec(),
-            mesh.face_sizes().to_vec(),
-            face_indices,
-        ),
-        report,
-    )
+        .with_min_len(CHUNK)
+        .map(|f| reversed_face(f, &invert))
+        .collect();
+    report.flipped_faces = reversed.par_iter().filter(|&&r| r).count();
+    (reversed, report)
 }
 
 /// Reverses every face. Each face keeps its first corner first and lists
@@ -132,12 +151,13 @@ pub fn orient_outward(mesh: &Mesh) -> (Mesh, OrientReport) {
 /// first corner is where its subdivided children start, so this keeps that
 /// anchor where it was and flipping twice gives the input back.
 pub fn flip(mesh: &Mesh) -> Mesh {
-    let face_indices = faces_written(mesh, |_| true);
-    Mesh::from_valid_parts(
-        mesh.positions().to_vec(),
-        mesh.face_sizes().to_vec(),
-        face_indices,
-    )
+    flip_owned(mesh.clone())
+}
+
+/// [`flip`] on a mesh the caller gives up, its faces reversed where they are.
+pub fn flip_owned(mut mesh: Mesh) -> Mesh {
+    reverse_in_place(&mut mesh, |_| true);
+    mesh
 }
 
 /// The signed volume a mesh encloses (positive when closed and facing out;
@@ -165,21 +185,18 @@ fn signed_volume_of_face(mesh: &Mesh, f: usize, origin: DVec3) -> f64 {
         / 6.0
 }
 
-/// The mesh's face indices with the faces `reversed` says reversed (first
-/// corner first, the others backwards), written face by face in parallel.
-fn faces_written(mesh: &Mesh, reversed: impl Fn(usize) -> bool + Sync + Send) -> Vec<u32> {
-    fill_by_offsets(mesh.face_offsets(), "the flipped face indices", |f, out| {
-        let face = mesh.face(f);
-        if reversed(f) {
-            out[0] = face[0];
-            for (slot, &v) in out[1..].iter_mut().zip(face[1..].iter().rev()) {
-                *slot = v;
+/// Reverses the faces `reversed` says, in place: first corner first, the
+/// others backwards. Blocks of faces in parallel.
+fn reverse_in_place(mesh: &mut Mesh, reversed: impl Fn(usize) -> bool + Sync + Send) {
+    let (offsets, indices) = mesh.offsets_and_face_indices_mut();
+    split_by_offsets(indices, offsets, CHUNK)
+        .into_par_iter()
+        .for_each(|(faces, corners)| {
+            let base = offsets[faces.start] as usize;
+            for f in faces.filter(|&f| reversed(f)) {
+                corners[offsets[f] as usize - base + 1..offsets[f + 1] as usize - base].reverse();
             }
-        } else {
-            out.copy_from_slice(face);
-        }
-    })
-    .unwrap_or_else(|error| panic!("{error}"))
+        });
 }
 
 #[cfg(test)]
@@ -213,5 +230,31 @@ mod tests {
         assert_eq!(flipped, 1);
         assert!(Topology::new(&fixed).info(&fixed).is_oriented);
         assert_eq!(fixed.face(1), grid.face(1));
+    }
+
+    #[test]
+    fn owned_flip_is_the_borrowed_flip() {
+        let mesh = shapes::mixed_polygons();
+        assert_eq!(flip_owned(mesh.clone()), flip(&mesh));
+    }
+
+    proptest::proptest! {
+        /// A mesh whose corners share no vertex is oriented without its
+        /// edges; the edges would say the same.
+        #[test]
+        fn a_soup_is_oriented_as_its_topology_says(
+            sizes in proptest::collection::vec(3u32..7, 0..40),
+            extra in 0usize..5,
+            seed: u64,
+            shared: bool,
+        ) {
+            let mesh = shapes::soup(&sizes, extra, seed, shared);
+            let (oriented, report) = orient_outward(&mesh);
+            let (reversed, expected) = faces_to_reverse(&mesh);
+            proptest::prop_assert_eq!(report, expected);
+            let mut by_topology = mesh.clone();
+            reverse_in_place(&mut by_topology, |f| reversed[f]);
+            proptest::prop_assert_eq!(oriented, by_topology);
+        }
     }
 }

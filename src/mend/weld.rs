@@ -339,23 +339,42 @@ fn compact_faces(sizes: &mut [u32], indices: &mut [u32], cluster_of: &[u32]) -> 
 
 /// How many vertices no face uses.
 pub fn unused_vertex_count(mesh: &Mesh) -> usize {
-    let mut used = vec![false; mesh.vertex_count()];
-    for &v in mesh.face_indices() {
-        used[v as usize] = true;
-    }
-    used.iter().filter(|&&u| !u).count()
+    used_vertices(mesh).map_or(0, |used| used.iter().filter(|&&u| !u).count())
 }
 
 /// Leaves out the vertices no face uses; the others keep their order.
 /// Returns the compacted mesh and how many vertices were left out.
 pub fn remove_unused_vertices(mesh: &Mesh) -> (Mesh, usize) {
-    let mut new_index = vec![u32::MAX; mesh.vertex_count()];
-    for &v in mesh.face_indices() {
-        new_index[v as usize] = 0;
+    match used_vertices(mesh) {
+        Some(used) => without_unused(mesh, &used),
+        None => (mesh.clone(), 0),
     }
+}
+
+/// [`remove_unused_vertices`] on a mesh the caller gives up: when every
+/// vertex is used it comes back as it is, with no copy made.
+pub fn remove_unused_vertices_owned(mesh: Mesh) -> (Mesh, usize) {
+    match used_vertices(&mesh) {
+        Some(used) => without_unused(&mesh, &used),
+        None => (mesh, 0),
+    }
+}
+
+/// Which vertices a face uses; `None` when every one is.
+fn used_vertices(mesh: &Mesh) -> Option<Vec<bool>> {
+    let mut used = vec![false; mesh.vertex_count()];
+    for &v in mesh.face_indices() {
+        used[v as usize] = true;
+    }
+    used.contains(&false).then_some(used)
+}
+
+/// The mesh with only the vertices `used` marks, renumbered in order.
+fn without_unused(mesh: &Mesh, used: &[bool]) -> (Mesh, usize) {
+    let mut new_index = vec![u32::MAX; mesh.vertex_count()];
     let mut positions = Vec::with_capacity(mesh.vertex_count());
     for (v, slot) in new_index.iter_mut().enumerate() {
-        if *slot == 0 {
+        if used[v] {
             *slot = positions.len() as u32;
             positions.push(mesh.positions()[v]);
         }

@@ -498,6 +498,13 @@ impl Mesh {
         self.positions.to_mut()
     }
 
+    /// The face offsets beside mutable face indices. The caller only
+    /// reorders corners within a face, so every face keeps its vertices
+    /// (what `flip` and `orient_outward` do in place).
+    pub(crate) fn offsets_and_face_indices_mut(&mut self) -> (&[u32], &mut [u32]) {
+        (self.faces.offsets(), self.face_indices.to_mut())
+    }
+
     /// A copy of the face sizes, reserved fallibly. Sizes the mesh finds by
     /// arithmetic (every face of one size) are written for the copy only,
     /// not kept in the mesh as [`Mesh::face_sizes`] keeps them.

@@ -251,6 +251,34 @@ fn split_quads(mesh: &Mesh) -> Mesh {
     Mesh::from_polygons(mesh.positions().to_vec(), faces).expect("split keeps validity")
 }
 
+/// A soup of `sizes.len()` faces whose corners name the vertices of a
+/// shuffle of `0..vertices` one after another, `extra` vertices named by
+/// none; with `shared`, corner 0 of the last face names the first corner's
+/// vertex.
+#[cfg(test)]
+pub(crate) fn soup(sizes: &[u32], extra: usize, seed: u64, shared: bool) -> Mesh {
+    let corners: usize = sizes.iter().map(|&s| s as usize).sum();
+    let vertices = corners + extra;
+    let mut order: Vec<u32> = (0..vertices as u32).collect();
+    // A fixed shuffle (xorshift) so the vertices are named out of order.
+    let mut state = seed | 1;
+    for i in (1..order.len()).rev() {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        order.swap(i, (state % (i as u64 + 1)) as usize);
+    }
+    let mut indices = order[..corners].to_vec();
+    if shared && sizes.len() > 1 {
+        let last = corners - *sizes.last().unwrap() as usize;
+        indices[last] = indices[0];
+    }
+    let positions = (0..vertices)
+        .map(|v| DVec3::new(v as f64, (v * v % 7) as f64, (v % 3) as f64))
+        .collect();
+    Mesh::new(positions, sizes.to_vec(), indices).unwrap()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -804,36 +804,10 @@ mod tests {
         assert_eq!(topology.find_edge(0, 7), None);
     }
 
-    /// A soup of `sizes.len()` faces whose corners name the vertices of
-    /// `order` (a shuffle of `0..vertices`) one after another; with
-    /// `shared`, corner 0 of the last face names the first corner's vertex.
-    fn soup(sizes: &[u32], extra: usize, seed: u64, shared: bool) -> Mesh {
-        let corners: usize = sizes.iter().map(|&s| s as usize).sum();
-        let vertices = corners + extra;
-        let mut order: Vec<u32> = (0..vertices as u32).collect();
-        // A fixed shuffle (xorshift) so the vertices are named out of order.
-        let mut state = seed | 1;
-        for i in (1..order.len()).rev() {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            order.swap(i, (state % (i as u64 + 1)) as usize);
-        }
-        let mut indices = order[..corners].to_vec();
-        if shared && sizes.len() > 1 {
-            let last = corners - *sizes.last().unwrap() as usize;
-            indices[last] = indices[0];
-        }
-        let positions = (0..vertices)
-            .map(|v| glam::DVec3::new(v as f64, (v * v % 7) as f64, (v % 3) as f64))
-            .collect();
-        Mesh::new(positions, sizes.to_vec(), indices).unwrap()
-    }
-
     #[test]
     fn soup_info_is_known_without_the_edges() {
         let sizes = [3, 3, 4, 5, 3, 6];
-        let info = MeshInfo::of(&soup(&sizes, 2, 9, false));
+        let info = MeshInfo::of(&shapes::soup(&sizes, 2, 9, false));
         assert_eq!(
             (info.vertex_count, info.edge_count, info.face_count),
             (26, 24, 6)
@@ -842,7 +816,7 @@ mod tests {
         assert!(!info.is_closed && info.is_orientable && info.is_oriented);
         // One vertex named twice, found through the edges: a bow tie, which
         // joins no pieces (pieces are joined through edges).
-        let bow_tie = soup(&sizes, 2, 9, true);
+        let bow_tie = shapes::soup(&sizes, 2, 9, true);
         let info = MeshInfo::of(&bow_tie);
         assert_eq!(
             (info.component_count, info.non_manifold_vertex_count),
@@ -860,7 +834,7 @@ mod tests {
             seed: u64,
             shared: bool,
         ) {
-            let mesh = soup(&sizes, extra, seed, shared);
+            let mesh = shapes::soup(&sizes, extra, seed, shared);
             proptest::prop_assert_eq!(MeshInfo::of(&mesh), Topology::new(&mesh).info(&mesh));
         }
     }

@@ -73,13 +73,14 @@ pub fn weld(
 pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
     let mesh = read(cli, &files.input)?;
     suggest_weld_if_apart(cli, &files.input, &mesh);
-    let (culled, removed) = with_progress("culling", || weft::mend::cull::cull_adjacent(&mesh));
+    let faces = mesh.face_count();
+    let (culled, removed) =
+        with_progress("culling", || weft::mend::cull::cull_adjacent_owned(mesh));
     // The culled faces' vertices go with them; bare vertices of the input too.
-    let (culled, unused) = weft::mend::weld::remove_unused_vertices(&culled);
+    let (culled, unused) = weft::mend::weld::remove_unused_vertices_owned(culled);
     eprintln!(
-        "{}: removed {removed} of {} faces that had a twin, and {unused} vertices no face uses",
+        "{}: removed {removed} of {faces} faces that had a twin, and {unused} vertices no face uses",
         files.input.display(),
-        mesh.face_count()
     );
     write(&files.output, &culled, &io::WriteOptions::default())
 }
@@ -88,14 +89,15 @@ pub fn cull_adjacent(cli: &Cli, files: &InOut) -> Result<(), Failure> {
 pub fn flip(cli: &Cli, files: &InOut, unify: bool, outward: bool) -> Result<(), Failure> {
     let mesh = read(cli, &files.input)?;
     if !(unify || outward) {
-        let flipped = weft::mend::orient::flip(&mesh);
+        let flipped = weft::mend::orient::flip_owned(mesh);
         return write(&files.output, &flipped, &io::WriteOptions::default());
     }
     // Unifying turns closed pieces outward too: both are `orient_outward`,
     // whose report says what each piece was.
     let label = if outward { "orienting" } else { "unifying" };
-    let (oriented, report) = with_progress(label, || weft::mend::orient::orient_outward(&mesh));
     let (input, faces) = (files.input.display(), mesh.face_count());
+    let (oriented, report) =
+        with_progress(label, || weft::mend::orient::orient_outward_owned(mesh));
     if outward {
         eprintln!(
             "{input}: {} pieces: turned {} closed ones outward, {} open (unified only), {} not orientable; flipped {} of {faces} faces",

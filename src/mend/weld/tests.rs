@@ -101,7 +101,16 @@ fn unused_vertices_are_left_out_and_counted() {
     assert_eq!(welded.positions()[0], DVec3::ZERO);
     assert_eq!(welded.face(0), &[0, 1, 2]);
     let (compact, removed) = remove_unused_vertices(&m);
-    assert_eq!((compact, removed), (welded, 1));
+    assert_eq!((&compact, removed), (&welded, 1));
+    assert_eq!(remove_unused_vertices_owned(m.clone()), (welded, 1));
+    // Every vertex used: the mesh comes back as it was.
+    assert_eq!(remove_unused_vertices(&compact), (compact.clone(), 0));
+    assert_eq!(
+        remove_unused_vertices_owned(compact.clone()),
+        (compact.clone(), 0)
+    );
+    assert_eq!(unused_vertex_count(&m), 1);
+    assert_eq!(unused_vertex_count(&compact), 0);
 }
 
 #[test]
