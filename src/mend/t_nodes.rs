@@ -9,24 +9,32 @@
 //! into that edge, so the face becomes an n-gon and both sides share every
 //! seam edge.
 //!
-//! The naked edges are registered in the cells of a uniform grid that they
-//! pass through (a 3-D digital differential analyser, Amanatides & Woo 1987),
-//! and each boundary vertex is tested against the edges of the cells within
-//! the tolerance of it only (its own, and of its 26 neighbours those whose
-//! side is that close), on all threads.
+//! The boundary vertices' positions (each once, however many copies an STL
+//! file holds of it) are filed in the cells of a uniform grid within the
+//! tolerance of them (their own, and of its 26 neighbours those whose side
+//! is that close). Each naked edge walks the cells it passes through (a 3-D
+//! digital differential analyser, Amanatides & Woo 1987) and is tested
+//! against the positions filed there only, on all threads.
 
-use glam::DVec3;
+use std::collections::HashMap;
+use std::hash::{BuildHasherDefault, Hash, Hasher};
+use std::ops::Range;
+use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
+
+use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
-use crate::buffers::{try_vec, CHUNK};
-use crate::error::Result;
-use crate::mend::weld::{within, Cell, CellGrid, CellMap};
-use crate::mesh::check_tolerance;
+use crate::buffers::{fill_by_offsets, fresh_zeroed, prefix_sum, try_vec, CHUNK};
+use crate::error::{Error, Result};
+use crate::mend::weld::{
+    mix_words, nearby_copies, within, Cell, CellGrid, CellHasher, Copies, PackedCell, COPIES_PIECE,
+};
 use crate::mesh::corners::CornerFaces;
 use crate::mesh::topology::Edges;
 use crate::mesh::Mesh;
+use crate::mesh::{bounding_box_of, check_tolerance};
 
-/// Naked edges whose cells one task finds.
+/// Naked edges one task sums the lengths of.
 const SEGMENTS_A_PART: usize = 1 << 16;
 
 /// A vertex lying inside a naked edge of a face it does not belong to.
@@ -111,12 +119,22 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
 
 /// The T-nodes with the corner whose edge each lies on, sorted by corner and parameter.
 fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
+    find_with_copies_in_pieces(mesh, tolerance, COPIES_PIECE)
+}
+
+/// [`find_with_corners`], copies of a position merged among `piece`
+/// vertices at a time.
+fn find_with_copies_in_pieces(
+    mesh: &Mesh,
+    tolerance: f64,
+    piece: usize,
+) -> Result<Vec<(u32, TNode)>> {
     check_tolerance(tolerance)?;
+    let piece = piece.max(1);
     // A naked edge has one corner: which corners those are is all the
     // search needs of the topology.
-    let (corners, naked) =
-        rayon::join(|| CornerFaces::of_mesh(mesh), || Edges::naked_corners(mesh));
-    let (corners, naked) = (corners?, naked?);
+    let corners = CornerFaces::of_mesh(mesh)?;
+    let naked = Edges::naked_corners_with(mesh, &corners)?;
     let naked_corner: Vec<u32> = (0..naked.len() as u32)
         .into_par_iter()
         .with_min_len(CHUNK)
@@ -128,140 +146,501 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
     }
     let positions = mesh.positions();
     let corner_vertices = mesh.face_indices();
-    let segment = |k: usize| {
-        let c = naked_corner[k] as usize;
+    let segment = |c: u32| {
+        let c = c as usize;
         (
             positions[corner_vertices[c] as usize],
             positions[corner_vertices[corners.next(c)] as usize],
         )
     };
+    // Sums over fixed blocks of edges, so that they do not depend on how the
+    // threads share the work.
+    let sum_over_edges = |term: &(dyn Fn(DVec3, DVec3) -> DVec2 + Sync)| -> DVec2 {
+        let blocks: Vec<DVec2> = naked_corner
+            .par_chunks(SEGMENTS_A_PART)
+            .map(|block| {
+                block
+                    .iter()
+                    .map(|&c| {
+                        let (a, b) = segment(c);
+                        term(a, b)
+                    })
+                    .sum()
+            })
+            .collect();
+        blocks.iter().sum()
+    };
+    // The edges' lengths, and the sums of their lengths along each axis.
+    let sums = sum_over_edges(&|a, b| DVec2::new(a.distance(b), (b - a).abs().element_sum()));
+    let edge_count = naked_corner.len() as f64;
     // Cells about as long as the naked edges, so that each edge passes
     // through a few cells and each cell holds a few edges.
-    let mean_length = (0..naked_corner.len())
-        .map(|k| {
-            let (a, b) = segment(k);
-            a.distance(b)
-        })
-        .sum::<f64>()
-        / naked_corner.len() as f64;
+    let mean_length = sums.x / edge_count;
     // The mean can underflow to 0 (coordinates near 1e-300 square to 0) or
     // come out far too small; coarsen until the edges pass through a number
     // of cells linear in their count, so the cell lists stay small.
-    let cell_limit = 8 * naked_corner.len() as u64 + 64;
+    let cell_limit = 8.0 * edge_count + 64.0;
+    let (lo, hi) = bounding_box_of(positions).expect("a mesh with naked edges has vertices");
+    let reach = lo.abs().max(hi.abs()).max_element();
     let mut size = mean_length.max(tolerance);
     let grid = loop {
-        let grid = CellGrid::new(positions.iter().copied(), size);
-        let cell_count = (0..naked_corner.len()).fold(0u64, |total, k| {
-            let (a, b) = segment(k);
-            total.saturating_add(1 + grid.cell(a).steps_to(grid.cell(b)))
-        });
-        if cell_count <= cell_limit || !grid.size.is_finite() {
+        let grid = CellGrid::with_reach(reach, size);
+        // An edge passes through at most 1 + (|d| / size + 1) cells along
+        // each axis of its difference d: no count is needed when that bound
+        // is within the limit (cells as long as the edges, on most meshes).
+        let bound = 4.0 * edge_count + sums.y / grid.size;
+        let within_limit = bound <= cell_limit || {
+            let count = sum_over_edges(&|a, b| {
+                DVec2::new(1.0 + grid.cell(a).steps_to(grid.cell(b)) as f64, 0.0)
+            });
+            count.x <= cell_limit
+        };
+        if within_limit || !grid.size.is_finite() {
             break grid;
         }
         size = grid.size * 2.0;
     };
+    let search = Search {
+        mesh,
+        corners: &corners,
+        naked_corner: &naked_corner,
+        grid,
+        tolerance,
+        piece,
+    };
+    // Cells numbered in one word when the mesh spans few enough of them:
+    // half the bytes to sort and compare.
+    match PackedCell::origin(grid.cell(lo), grid.cell(hi)) {
+        Some(origin) => search.run(|cell| NarrowKey::of(cell, origin)),
+        None => search.run(WideKey::of),
+    }
+}
 
-    // Every naked edge under each cell it passes through, sorted by cell:
-    // on all threads, as a mesh read from STL has nothing but naked edges.
-    let parts: Vec<Vec<(Cell, u32)>> = (0..naked_corner.len().div_ceil(SEGMENTS_A_PART))
-        .into_par_iter()
-        .map(|part| {
-            let ks = part * SEGMENTS_A_PART..((part + 1) * SEGMENTS_A_PART).min(naked_corner.len());
-            let (mut entries, mut cells) = (Vec::with_capacity(3 * ks.len()), Vec::new());
-            for k in ks {
-                let (a, b) = segment(k);
-                cells_on_segment(&grid, a, b, &mut cells);
-                entries.extend(cells.iter().map(|&cell| (cell, k as u32)));
+/// What the search for T-nodes works on: the naked edges (by their corners)
+/// and the grid of cells they are filed in.
+struct Search<'a> {
+    mesh: &'a Mesh,
+    corners: &'a CornerFaces,
+    naked_corner: &'a [u32],
+    grid: CellGrid,
+    tolerance: f64,
+    /// Vertices among which copies of a position are merged.
+    piece: usize,
+}
+
+impl Search<'_> {
+    /// Which vertices are on a naked edge.
+    fn boundary_vertices(&self) -> Vec<bool> {
+        let on_boundary: Vec<AtomicBool> = (0..self.mesh.vertex_count())
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(|_| AtomicBool::new(false))
+            .collect();
+        self.naked_corner.par_chunks(CHUNK).for_each(|corners| {
+            for &c in corners {
+                let (va, vb) = self.ends(c);
+                on_boundary[va as usize].store(true, Relaxed);
+                on_boundary[vb as usize].store(true, Relaxed);
             }
-            entries
-        })
-        .collect();
-    let mut entries = try_vec(
-        parts.iter().map(Vec::len).sum(),
-        "the T-node search's cells",
-    )?;
-    for part in parts {
-        entries.extend(part);
-    }
-    entries.par_sort_unstable();
-    entries.dedup();
-    let mut cell_ranges: CellMap<(u32, u32)> = CellMap::default();
-    let mut start = 0;
-    for i in 1..=entries.len() {
-        if i == entries.len() || entries[i].0 != entries[start].0 {
-            cell_ranges.insert(entries[start].0, (start as u32, i as u32));
-            start = i;
-        }
+        });
+        on_boundary
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .map(AtomicBool::into_inner)
+            .collect()
     }
 
-    let mut on_boundary = vec![false; mesh.vertex_count()];
-    for &c in &naked_corner {
-        on_boundary[corner_vertices[c as usize] as usize] = true;
-        on_boundary[corner_vertices[corners.next(c as usize)] as usize] = true;
+    /// The vertices of corner `c`'s edge.
+    fn ends(&self, c: u32) -> (u32, u32) {
+        let corner_vertices = self.mesh.face_indices();
+        let c = c as usize;
+        (corner_vertices[c], corner_vertices[self.corners.next(c)])
     }
-    // The T-nodes at vertex v, among the edges of the cells within
-    // `tolerance` of it.
-    let nodes_at = |v: usize, candidates: &mut Vec<u32>, found: &mut Vec<(u32, TNode)>| {
-        let p = positions[v];
-        candidates.clear();
-        for cell in cells_near(&grid, p, tolerance) {
-            if let Some(&(s, e)) = cell_ranges.get(&cell) {
-                candidates.extend(entries[s as usize..e as usize].iter().map(|x| x.1));
-            }
+
+    /// The T-nodes, with the cells numbered by `key`.
+    fn run<K: BlockKey>(&self, key: impl Fn(Cell) -> K + Sync) -> Result<Vec<(u32, TNode)>> {
+        let sites = BoundarySites::of(self)?;
+        // Each site under every cell within the tolerance of it, sorted by
+        // cell: an edge meets the sites near it in the cells it passes
+        // through.
+        let near = |s: u32| {
+            // A position whose copies are all inside the surface is in no cell.
+            let filed = !sites.vertices(s).is_empty();
+            cells_near(&self.grid, sites.positions[s as usize], self.tolerance)
+                .filter(move |_| filed)
+        };
+        let mut offsets: Vec<u32> = Vec::with_capacity(sites.count() + 1);
+        offsets.push(0);
+        offsets.par_extend(
+            (0..sites.count() as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .map(|s| near(s).count() as u32),
+        );
+        let total: u64 = offsets.par_iter().map(|&n| n as u64).sum();
+        if total > u32::MAX as u64 {
+            return Err(Error::ResultTooLarge(format!(
+                "the T-node search files the boundary's {} positions under {total} cells, \
+                 more than 2^32; give a smaller tolerance",
+                sites.count()
+            )));
         }
-        candidates.sort_unstable();
-        candidates.dedup();
-        for &k in candidates.iter() {
-            let c = naked_corner[k as usize] as usize;
-            let (va, vb) = (corner_vertices[c], corner_vertices[corners.next(c)]);
-            let (a, b) = (positions[va as usize], positions[vb as usize]);
-            // At an end (a copy of v, as STL stores every corner): a matter
-            // for welding, as `parameter_inside` finds, without arithmetic.
+        prefix_sum(&mut offsets);
+        let mut entries = fill_by_offsets(&offsets, "the T-node search's cells", |s, out| {
+            for (slot, cell) in out.iter_mut().zip(near(s as u32)) {
+                *slot = (key(cell), s as u32);
+            }
+        })?;
+        entries.par_sort_unstable();
+        let index = CellIndex::of(entries);
+        // Edge by edge, in the order of their corners: blocks of edges on
+        // all threads, each block's T-nodes in corner order.
+        let blocks: Vec<Vec<(u32, TNode)>> = self
+            .naked_corner
+            .par_chunks(CHUNK)
+            .map_init(
+                || (Vec::new(), Vec::new(), RecentCells::default()),
+                |(cells_on, candidates, recent), block| {
+                    let mut found = Vec::new();
+                    for &c in block {
+                        cells_on_segment(
+                            &self.grid,
+                            self.position(c),
+                            self.position(self.corners.next(c as usize) as u32),
+                            cells_on,
+                        );
+                        candidates.clear();
+                        for &cell in cells_on.iter() {
+                            let (start, end) = recent.range(&index, key(cell));
+                            candidates.extend(
+                                index.entries[start as usize..end as usize]
+                                    .iter()
+                                    .map(|&(_, s)| s),
+                            );
+                        }
+                        // A site near a cell's side is under both cells.
+                        if cells_on.len() > 1 {
+                            candidates.sort_unstable();
+                            candidates.dedup();
+                        }
+                        self.nodes_on_edge(c, &sites, candidates, &mut found);
+                    }
+                    found
+                },
+            )
+            .collect();
+        let mut found = try_vec(blocks.iter().map(Vec::len).sum(), "the T-nodes")?;
+        for block in blocks {
+            found.extend(block);
+        }
+        Ok(found)
+    }
+
+    /// The position of corner `c`'s vertex.
+    fn position(&self, c: u32) -> DVec3 {
+        self.mesh.positions()[self.mesh.face_indices()[c as usize] as usize]
+    }
+
+    /// The T-nodes on the naked edge of corner `c` among the `candidates`
+    /// (sites), sorted by parameter and vertex, appended to `found`.
+    fn nodes_on_edge(
+        &self,
+        c: u32,
+        sites: &BoundarySites,
+        candidates: &[u32],
+        found: &mut Vec<(u32, TNode)>,
+    ) {
+        let positions = self.mesh.positions();
+        let (va, vb) = self.ends(c);
+        let (a, b) = (positions[va as usize], positions[vb as usize]);
+        let first = found.len();
+        let face = self.corners.face(c as usize);
+        let face_vertices = self.mesh.face(face);
+        for &s in candidates.iter() {
+            let p = sites.positions[s as usize];
+            // At an end (a copy of a or b, as STL stores every corner): a
+            // matter for welding, as `parameter_inside` finds, without
+            // arithmetic.
             if p == a || p == b {
                 continue;
             }
-            let face = corners.face(c) as u32;
-            if va as usize == v
-                || vb as usize == v
-                || mesh.face(face as usize).contains(&(v as u32))
-            {
+            let Some(t) = parameter_inside(p, a, b, self.tolerance) else {
                 continue;
-            }
-            if let Some(t) = parameter_inside(p, a, b, tolerance) {
+            };
+            for &v in sites.vertices(s) {
+                // Not on an edge of one of its own faces.
+                if face_vertices.contains(&v) {
+                    continue;
+                }
                 found.push((
-                    c as u32,
+                    c,
                     TNode {
-                        vertex: v as u32,
+                        vertex: v,
                         edge: [va, vb],
-                        face,
+                        face: face as u32,
                         parameter: t,
                     },
                 ));
             }
         }
-    };
-    let mut found: Vec<(u32, TNode)> = (0..mesh.vertex_count())
-        .into_par_iter()
-        .with_min_len(CHUNK)
-        .filter(|&v| on_boundary[v])
-        .fold(
-            || (Vec::new(), Vec::new()),
-            |(mut candidates, mut found), v| {
-                nodes_at(v, &mut candidates, &mut found);
-                (candidates, found)
-            },
-        )
-        .map(|(_, found)| found)
-        .reduce(Vec::new, |mut a, mut b| {
-            a.append(&mut b);
-            a
+        found[first..].sort_unstable_by(|x, y| {
+            x.1.parameter
+                .total_cmp(&y.1.parameter)
+                .then(x.1.vertex.cmp(&y.1.vertex))
         });
-    found.par_sort_unstable_by(|x, y| {
-        x.0.cmp(&y.0)
-            .then(x.1.parameter.total_cmp(&y.1.parameter))
-            .then(x.1.vertex.cmp(&y.1.vertex))
-    });
-    Ok(found)
+    }
+}
+
+/// The boundary vertices' distinct positions (sites), each with the
+/// boundary vertices at it. A mesh as STL stores it has about six copies of
+/// each position; each site is tested against an edge once for all of them.
+/// Copies are merged among nearby vertices only (see
+/// [`crate::mend::weld::nearby_copies`]): copies left apart are sites of
+/// their own, found the same way.
+struct BoundarySites {
+    positions: Vec<DVec3>,
+    /// Site s's vertices are `members[offsets[s]..offsets[s + 1]]`, in order.
+    offsets: Vec<u32>,
+    members: Vec<u32>,
+}
+
+impl BoundarySites {
+    fn of(search: &Search) -> Result<BoundarySites> {
+        let mesh = search.mesh;
+        let on_boundary = search.boundary_vertices();
+        let Some(Copies { site_of, sites }) = nearby_copies(mesh.positions(), search.piece)? else {
+            // Every boundary vertex a site of its own.
+            let members: Vec<u32> = (0..mesh.vertex_count() as u32)
+                .into_par_iter()
+                .with_min_len(CHUNK)
+                .filter(|&v| on_boundary[v as usize])
+                .collect();
+            return Ok(BoundarySites {
+                positions: members
+                    .par_iter()
+                    .map(|&v| mesh.positions()[v as usize])
+                    .collect(),
+                offsets: (0..=members.len() as u32).collect(),
+                members,
+            });
+        };
+        // A piece's vertices name only its own sites, which follow those of
+        // the pieces before (its first vertex is its first site): each
+        // piece counts and files its members on its own thread.
+        let pieces: Vec<(Range<usize>, Range<usize>)> = (0..site_of.len())
+            .step_by(search.piece)
+            .map(|first| {
+                let end = (first + search.piece).min(site_of.len());
+                let sites_end = site_of.get(end).map_or(sites.len(), |&s| s as usize);
+                (first..end, site_of[first] as usize..sites_end)
+            })
+            .collect();
+        let mut counts = fresh_zeroed::<u32>(sites.len() + 1, "the boundary's sites")?;
+        let count_parts = split_at_ranges(&mut counts[1..], pieces.iter().map(|(_, s)| s.len()));
+        pieces
+            .par_iter()
+            .zip(count_parts)
+            .for_each(|((vertices, piece_sites), counts)| {
+                for v in vertices.clone() {
+                    counts[site_of[v] as usize - piece_sites.start] += on_boundary[v] as u32;
+                }
+            });
+        prefix_sum(&mut counts);
+        let offsets = counts;
+        let mut members = fresh_zeroed::<u32>(
+            *offsets.last().unwrap_or(&0) as usize,
+            "the boundary's vertices",
+        )?;
+        let member_parts = split_at_ranges(
+            &mut members,
+            pieces
+                .iter()
+                .map(|(_, s)| (offsets[s.end] - offsets[s.start]) as usize),
+        );
+        pieces
+            .par_iter()
+            .zip(member_parts)
+            .for_each(|((vertices, piece_sites), members)| {
+                let base = offsets[piece_sites.start];
+                let mut next: Vec<u32> = offsets[piece_sites.clone()]
+                    .iter()
+                    .map(|&o| o - base)
+                    .collect();
+                for v in vertices.clone() {
+                    if on_boundary[v] {
+                        let slot = &mut next[site_of[v] as usize - piece_sites.start];
+                        members[*slot as usize] = v as u32;
+                        *slot += 1;
+                    }
+                }
+            });
+        Ok(BoundarySites {
+            positions: sites,
+            offsets,
+            members,
+        })
+    }
+
+    fn count(&self) -> usize {
+        self.positions.len()
+    }
+
+    fn vertices(&self, s: u32) -> &[u32] {
+        &self.members[self.offsets[s as usize] as usize..self.offsets[s as usize + 1] as usize]
+    }
+}
+
+/// A cell's number in the search's sort, which puts the cells of each
+/// block of 8 × 8 × 8 together: the cells an edge passes through are then
+/// found among the few of its block, which the edges before it have
+/// brought into the cache, not across a table of every cell.
+trait BlockKey: Copy + Default + Ord + Send + Sync {
+    /// The block's own key.
+    type Block: Copy + Eq + Hash + Send + Sync;
+    fn block(self) -> Self::Block;
+}
+
+/// A cell counted from an origin, for a mesh spanning fewer than 2^21 cells
+/// in each axis: its block's coordinates (18 bits each), then its own
+/// place in the block (3 bits each).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord)]
+struct NarrowKey(u64);
+
+impl NarrowKey {
+    fn of(cell: Cell, origin: [i64; 3]) -> NarrowKey {
+        let [x, y, z] = [0, 1, 2].map(|i| (cell.0[i] - origin[i]) as u64);
+        NarrowKey(
+            (x >> 3) << 45 | (y >> 3) << 27 | (z >> 3) << 9 | (x & 7) << 6 | (y & 7) << 3 | (z & 7),
+        )
+    }
+}
+
+/// A [`NarrowKey`]'s block, hashed as a word whose bits are mixed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+struct NarrowBlock(u64);
+
+impl Hash for NarrowBlock {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        let h = mix_words([self.0, 0, 0]);
+        state.write_u64(h ^ (h >> 29));
+    }
+}
+
+impl BlockKey for NarrowKey {
+    type Block = NarrowBlock;
+    fn block(self) -> NarrowBlock {
+        NarrowBlock(self.0 >> 9)
+    }
+}
+
+/// A cell of a mesh spanning more cells than a [`NarrowKey`] counts: its
+/// block, then its place in the block.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord)]
+struct WideKey {
+    block: Cell,
+    place: u16,
+}
+
+impl WideKey {
+    fn of(cell: Cell) -> WideKey {
+        let [x, y, z] = cell.0;
+        WideKey {
+            block: Cell(cell.0.map(|c| c >> 3)),
+            place: ((x & 7) << 6 | (y & 7) << 3 | (z & 7)) as u16,
+        }
+    }
+}
+
+impl BlockKey for WideKey {
+    type Block = Cell;
+    fn block(self) -> Cell {
+        self.block
+    }
+}
+
+/// The sites filed under each cell, sorted by cell, with where each cell's
+/// and each block's part starts.
+struct CellIndex<K: BlockKey> {
+    entries: Vec<(K, u32)>,
+    /// Each cell in order with where its entries start; one more at the
+    /// end, where the last one's end.
+    cells: Vec<(K, u32)>,
+    /// Where each block's cells are in `cells`.
+    blocks: HashMap<K::Block, (u32, u32), BuildHasherDefault<CellHasher>>,
+}
+
+impl<K: BlockKey> CellIndex<K> {
+    /// The index of `entries`, sorted by cell; fewer than 2^32 of them.
+    fn of(entries: Vec<(K, u32)>) -> CellIndex<K> {
+        let mut cells: Vec<(K, u32)> = (0..entries.len())
+            .into_par_iter()
+            .with_min_len(CHUNK)
+            .filter(|&i| i == 0 || entries[i].0 != entries[i - 1].0)
+            .map(|i| (entries[i].0, i as u32))
+            .collect();
+        cells.push((K::default(), entries.len() as u32));
+        let mut blocks = HashMap::default();
+        let mut start = 0;
+        for i in 1..cells.len() {
+            if i == cells.len() - 1 || cells[i].0.block() != cells[start].0.block() {
+                blocks.insert(cells[start].0.block(), (start as u32, i as u32));
+                start = i;
+            }
+        }
+        CellIndex {
+            entries,
+            cells,
+            blocks,
+        }
+    }
+
+    /// Where the entries of `cell` are in `entries`.
+    fn range(&self, cell: K) -> (u32, u32) {
+        let Some(&(first, end)) = self.blocks.get(&cell.block()) else {
+            return (0, 0);
+        };
+        let block = &self.cells[first as usize..end as usize];
+        match block.binary_search_by(|&(k, _)| k.cmp(&cell)) {
+            Ok(i) => {
+                let i = first as usize + i;
+                (self.cells[i].1, self.cells[i + 1].1)
+            }
+            Err(_) => (0, 0),
+        }
+    }
+}
+
+/// The cells one thread looked up last, with where their entries are: an
+/// edge most often starts in a cell the edges just before it passed
+/// through (a triangle's next edge starts where the last one ended).
+struct RecentCells<K> {
+    cells: [(K, u32, u32); 8],
+    filled: usize,
+    next: usize,
+}
+
+impl<K: BlockKey> Default for RecentCells<K> {
+    fn default() -> RecentCells<K> {
+        RecentCells {
+            cells: [(K::default(), 0, 0); 8],
+            filled: 0,
+            next: 0,
+        }
+    }
+}
+
+impl<K: BlockKey> RecentCells<K> {
+    /// [`CellIndex::range`], remembered.
+    fn range(&mut self, index: &CellIndex<K>, cell: K) -> (u32, u32) {
+        if let Some(&(_, start, end)) = self.cells[..self.filled].iter().find(|x| x.0 == cell) {
+            return (start, end);
+        }
+        let (start, end) = index.range(cell);
+        self.cells[self.next] = (cell, start, end);
+        self.next = (self.next + 1) % self.cells.len();
+        self.filled = (self.filled + 1).min(self.cells.len());
+        (start, end)
+    }
 }
 
 /// Where `p` lies along the edge from `a` to `b` (0 at `a`, 1 at `b`) when
@@ -349,6 +728,17 @@ fn cells_on_segment(grid: &CellGrid, a: DVec3, b: DVec3, cells: &mut Vec<Cell>) 
     if cell != end {
         cells.push(end);
     }
+}
+
+/// `values` cut into consecutive parts of the given lengths.
+fn split_at_ranges<T>(mut values: &mut [T], lengths: impl Iterator<Item = usize>) -> Vec<&mut [T]> {
+    lengths
+        .map(|len| {
+            let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
+            values = rest;
+            part
+        })
+        .collect()
 }
 
 #[cfg(test)]
@@ -459,18 +849,23 @@ mod tests {
         /// divisions along the shared seams, the strips' vertices apart
         /// (as read from STL) or shared within a strip; points put on the
         /// seams' grid lines and cell sides included, where the cells near
-        /// a vertex are chosen.
+        /// a vertex are chosen. Copies of a position are merged among a
+        /// few vertices at a time or among all; with `far`, the last strip
+        /// lies so far away that cells are numbered by wide keys.
         #[test]
         fn the_grid_finds_what_every_pair_finds(
             divisions in proptest::collection::vec(1u32..7, 2..5),
             scale in proptest::sample::select(vec![1.0, 0.01, 3.0e4]),
             soup: bool,
             tolerance in proptest::sample::select(vec![1e-9, 1e-3, 0.05]),
+            piece in proptest::sample::select(vec![5usize, 16, 1 << 18]),
+            far: bool,
         ) {
             let mut positions = Vec::new();
             let mut faces: Vec<Vec<u32>> = Vec::new();
             for (strip, &n) in divisions.iter().enumerate() {
-                let x = strip as f64;
+                let last = strip + 1 == divisions.len();
+                let x = strip as f64 + if far && last { 1.0e7 } else { 0.0 };
                 let first = positions.len() as u32;
                 for i in 0..=n {
                     let y = i as f64 / n as f64;
@@ -495,7 +890,7 @@ mod tests {
             let mesh = Mesh::from_polygons(positions, faces).unwrap();
             let tolerance = tolerance * scale;
             proptest::prop_assert_eq!(
-                find_with_corners(&mesh, tolerance).unwrap(),
+                find_with_copies_in_pieces(&mesh, tolerance, piece).unwrap(),
                 every_pair(&mesh, tolerance)
             );
         }

@@ -25,8 +25,10 @@ use crate::mesh::topology::UnionFind;
 use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
 
 mod copies;
-use copies::Copies;
-pub(crate) use copies::{append_triangle_sites, worth_merging, SAMPLE as COPIES_SAMPLE};
+pub(crate) use copies::{
+    append_triangle_sites, nearby_copies, worth_merging, Copies, PIECE as COPIES_PIECE,
+    SAMPLE as COPIES_SAMPLE,
+};
 
 /// The weld tolerance to use when the host gives none: 0.001 model units.
 ///
@@ -707,14 +709,14 @@ impl CellKey for Cell {
 /// in the coordinates' order, so they sort and step alike, and a sort of
 /// them moves half the bytes.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
-struct PackedCell(u64);
+pub(crate) struct PackedCell(u64);
 
 impl PackedCell {
     const BITS: u32 = 21;
 
     /// Where the numbering starts, when the cells from `first` to `last`
     /// (the lowest and highest in each axis) and their neighbours fit.
-    fn origin(first: Cell, last: Cell) -> Option<[i64; 3]> {
+    pub(crate) fn origin(first: Cell, last: Cell) -> Option<[i64; 3]> {
         let fits = (0..3).all(|i| {
             last.0[i]
                 .checked_sub(first.0[i])
@@ -742,7 +744,7 @@ impl CellKey for PackedCell {
 }
 
 /// A cell of a uniform grid, by its integer coordinates.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, PartialOrd, Ord)]
 pub(crate) struct Cell(pub(crate) [i64; 3]);
 
 impl Cell {

@@ -62,7 +62,16 @@ impl Edges {
     /// # Errors
     /// [`crate::Error::OutOfMemory`] when the arrays cannot be reserved.
     pub(crate) fn naked_corners(mesh: &Mesh) -> Result<Vec<bool>> {
-        let corners = CornerFaces::of_mesh(mesh)?;
+        Edges::naked_corners_with(mesh, &CornerFaces::of_mesh(mesh)?)
+    }
+
+    /// [`Edges::naked_corners`] with the mesh's corners already found.
+    pub(crate) fn naked_corners_with(mesh: &Mesh, corners: &CornerFaces) -> Result<Vec<bool>> {
+        // No vertex named twice (STL as stored): no two corners start the
+        // same edge, so every edge is naked.
+        if mesh.corners_share_no_vertex() {
+            return Ok(vec![true; mesh.index_count()]);
+        }
         Adjacency::naked_corners(
             mesh.vertex_count(),
             mesh.face_indices(),

@@ -17,19 +17,19 @@ use crate::error::Result;
 use super::mix_words;
 
 /// Vertices in a piece: 6 MB of positions and a 2 MB table, in the cache.
-pub(super) const PIECE: usize = 1 << 18;
+pub(crate) const PIECE: usize = 1 << 18;
 
 /// Vertices of the sample that decides whether to merge copies first: a
 /// few rows of a soup's faces, cheap beside a weld that gains nothing.
 pub(crate) const SAMPLE: usize = 1 << 14;
 
 /// The vertices' distinct positions, piece by piece.
-pub(super) struct Copies {
+pub(crate) struct Copies {
     /// Each vertex's site: where the first copy of its position in its
     /// piece is in `sites`.
-    pub(super) site_of: Vec<u32>,
+    pub(crate) site_of: Vec<u32>,
     /// The first copy of each position in each piece, in vertex order.
-    pub(super) sites: Vec<DVec3>,
+    pub(crate) sites: Vec<DVec3>,
 }
 
 /// The copies in `positions`, pieces of `piece` vertices each, or `None`
@@ -37,7 +37,7 @@ pub(super) struct Copies {
 /// copies not worth merging first (fewer than a quarter of its vertices
 /// are copies: an indexed mesh's vertices, or a soup whose faces are in no
 /// spatial order).
-pub(super) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<Copies>> {
+pub(crate) fn nearby_copies(positions: &[DVec3], piece: usize) -> Result<Option<Copies>> {
     let piece = piece.max(1);
     if positions.len() <= piece || !worth_merging(&positions[..piece.min(SAMPLE)]) {
         return Ok(None);
