@@ -21,7 +21,7 @@ use std::hash::{BuildHasherDefault, Hash, Hasher};
 use std::ops::Range;
 use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 
-use glam::{DVec2, DVec3};
+use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::buffers::{fill_by_offsets, fresh_zeroed, prefix_sum, try_vec, CHUNK};
@@ -155,8 +155,8 @@ fn find_with_copies_in_pieces(
     };
     // Sums over fixed blocks of edges, so that they do not depend on how the
     // threads share the work.
-    let sum_over_edges = |term: &(dyn Fn(DVec3, DVec3) -> DVec2 + Sync)| -> DVec2 {
-        let blocks: Vec<DVec2> = naked_corner
+    let sum_over_edges = |term: &(dyn Fn(DVec3, DVec3) -> DVec3 + Sync)| -> DVec3 {
+        let blocks: Vec<DVec3> = naked_corner
             .par_chunks(SEGMENTS_A_PART)
             .map(|block| {
                 block
@@ -170,12 +170,25 @@ fn find_with_copies_in_pieces(
             .collect();
         blocks.iter().sum()
     };
-    // The edges' lengths, and the sums of their lengths along each axis.
-    let sums = sum_over_edges(&|a, b| DVec2::new(a.distance(b), (b - a).abs().element_sum()));
+    // The logarithms of the edges' lengths (of those whose length is not
+    // 0, as it is where coordinates near 1e-300 square to 0), how many
+    // those are, and the sums of the lengths along each axis.
+    let sums = sum_over_edges(&|a, b| {
+        let length = a.distance(b);
+        let measured = length > 0.0 && length.is_finite();
+        let log = if measured { length.ln() } else { 0.0 };
+        DVec3::new(log, measured as u32 as f64, (b - a).abs().element_sum())
+    });
     let edge_count = naked_corner.len() as f64;
     // Cells about as long as the naked edges, so that each edge passes
-    // through a few cells and each cell holds a few edges.
-    let mean_length = sums.x / edge_count;
+    // through a few cells and each cell holds a few positions. The
+    // geometric mean: on long thin triangles the long edges would make
+    // cells that hold hundreds of the short edges' positions.
+    let mean_length = if sums.y > 0.0 {
+        (sums.x / sums.y).exp()
+    } else {
+        0.0
+    };
     // The mean can underflow to 0 (coordinates near 1e-300 square to 0) or
     // come out far too small; coarsen until the edges pass through a number
     // of cells linear in their count, so the cell lists stay small.
@@ -188,10 +201,10 @@ fn find_with_copies_in_pieces(
         // An edge passes through at most 1 + (|d| / size + 1) cells along
         // each axis of its difference d: no count is needed when that bound
         // is within the limit (cells as long as the edges, on most meshes).
-        let bound = 4.0 * edge_count + sums.y / grid.size;
+        let bound = 4.0 * edge_count + sums.z / grid.size;
         let within_limit = bound <= cell_limit || {
             let count = sum_over_edges(&|a, b| {
-                DVec2::new(1.0 + grid.cell(a).steps_to(grid.cell(b)) as f64, 0.0)
+                DVec3::new(1.0 + grid.cell(a).steps_to(grid.cell(b)) as f64, 0.0, 0.0)
             });
             count.x <= cell_limit
         };
