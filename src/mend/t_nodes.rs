@@ -62,12 +62,14 @@ pub struct TNode {
 ///
 /// Distances are measured without squaring coordinates, so the search works
 /// the same for coordinates near 1e-300 or 1e300, and the grid of cells the
-/// edges are filed in coarsens until they cross a number of cells linear in
-/// their count: time and memory stay linear whatever the scale.
+/// edges walk coarsens until they cross a number of cells linear in their
+/// count, whatever the scale.
 ///
 /// # Errors
 /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when `tolerance`
-/// is negative, NaN or infinite; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+/// is negative, NaN or infinite; [`Error::ResultTooLarge`](crate::Error::ResultTooLarge)
+/// when a tolerance as wide as the cells files the positions under more than
+/// 2^32 cells; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
 pub fn find_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<Vec<TNode>> {
     Ok(find_with_corners(mesh, tolerance)?
         .into_iter()
