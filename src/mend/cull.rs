@@ -147,13 +147,7 @@ mod tests {
         /// Faces whose corners share no vertex have no twin, as the sort
         /// would find.
         #[test]
-        fn a_soup_has_twins_only_where_the_sort_finds_them(
-            sizes in proptest::collection::vec(3u32..7, 0..40),
-            extra in 0usize..5,
-            seed: u64,
-            shared: bool,
-        ) {
-            let mesh = crate::mesh::shapes::soup(&sizes, extra, seed, shared);
+        fn a_soup_has_twins_only_where_the_sort_finds_them(mesh in crate::mesh::shapes::soups()) {
             proptest::prop_assert_eq!(twins_of(&mesh), faces_with_a_twin(&mesh));
         }
     }

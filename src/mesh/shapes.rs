@@ -279,6 +279,20 @@ pub(crate) fn soup(sizes: &[u32], extra: usize, seed: u64, shared: bool) -> Mesh
     Mesh::new(positions, sizes.to_vec(), indices).unwrap()
 }
 
+/// Random [`soup`]s: up to 40 faces of 3 to 6 corners, some with a vertex
+/// shared.
+#[cfg(test)]
+pub(crate) fn soups() -> impl proptest::strategy::Strategy<Value = Mesh> {
+    use proptest::prelude::*;
+    (
+        proptest::collection::vec(3u32..7, 0..40),
+        0usize..5,
+        any::<u64>(),
+        any::<bool>(),
+    )
+        .prop_map(|(sizes, extra, seed, shared)| soup(&sizes, extra, seed, shared))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -837,13 +837,7 @@ mod tests {
 
     proptest::proptest! {
         #[test]
-        fn mesh_info_is_the_topology_s_info(
-            sizes in proptest::collection::vec(3u32..7, 0..40),
-            extra in 0usize..5,
-            seed: u64,
-            shared: bool,
-        ) {
-            let mesh = shapes::soup(&sizes, extra, seed, shared);
+        fn mesh_info_is_the_topology_s_info(mesh in shapes::soups()) {
             proptest::prop_assert_eq!(MeshInfo::of(&mesh), Topology::new(&mesh).info(&mesh));
         }
     }
