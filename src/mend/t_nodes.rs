@@ -24,7 +24,7 @@ use std::sync::atomic::{AtomicBool, Ordering::Relaxed};
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::buffers::{fill_by_offsets, fresh_zeroed, prefix_sum, try_vec, CHUNK};
+use crate::buffers::{fill_by_offsets, fresh_zeroed, prefix_sum, split_by_offsets, try_vec, CHUNK};
 use crate::error::{Error, Result};
 use crate::mend::weld::{
     mix_words, nearby_copies, within, Cell, CellGrid, CellHasher, Copies, PackedCell, COPIES_PIECE,
@@ -318,12 +318,10 @@ impl Search<'_> {
                 |(cells_on, candidates, recent), block| {
                     let mut found = Vec::new();
                     for &c in block {
-                        cells_on_segment(
-                            &self.grid,
-                            self.position(c),
-                            self.position(self.corners.next(c as usize) as u32),
-                            cells_on,
-                        );
+                        let ends = self.ends(c);
+                        let positions = self.mesh.positions();
+                        let (a, b) = (positions[ends.0 as usize], positions[ends.1 as usize]);
+                        cells_on_segment(&self.grid, a, b, cells_on);
                         candidates.clear();
                         for &cell in cells_on.iter() {
                             let (start, end) = recent.range(&index, key(cell));
@@ -338,7 +336,7 @@ impl Search<'_> {
                             candidates.sort_unstable();
                             candidates.dedup();
                         }
-                        self.nodes_on_edge(c, &sites, candidates, &mut found);
+                        self.nodes_on_edge(c, ends, &sites, candidates, &mut found);
                     }
                     found
                 },
@@ -351,22 +349,18 @@ impl Search<'_> {
         Ok(found)
     }
 
-    /// The position of corner `c`'s vertex.
-    fn position(&self, c: u32) -> DVec3 {
-        self.mesh.positions()[self.mesh.face_indices()[c as usize] as usize]
-    }
-
-    /// The T-nodes on the naked edge of corner `c` among the `candidates`
-    /// (sites), sorted by parameter and vertex, appended to `found`.
+    /// The T-nodes on the naked edge of corner `c`, from vertex `va` to
+    /// `vb`, among the `candidates` (sites), sorted by parameter and vertex,
+    /// appended to `found`.
     fn nodes_on_edge(
         &self,
         c: u32,
+        (va, vb): (u32, u32),
         sites: &BoundarySites,
         candidates: &[u32],
         found: &mut Vec<(u32, TNode)>,
     ) {
         let positions = self.mesh.positions();
-        let (va, vb) = self.ends(c);
         let (a, b) = (positions[va as usize], positions[vb as usize]);
         let first = found.len();
         let face = self.corners.face(c as usize);
@@ -442,22 +436,23 @@ impl BoundarySites {
         // A piece's vertices name only its own sites, which follow those of
         // the pieces before (its first vertex is its first site): each
         // piece counts and files its members on its own thread.
-        let pieces: Vec<(Range<usize>, Range<usize>)> = (0..site_of.len())
+        let pieces: Vec<Range<usize>> = (0..site_of.len())
             .step_by(search.piece)
-            .map(|first| {
-                let end = (first + search.piece).min(site_of.len());
-                let sites_end = site_of.get(end).map_or(sites.len(), |&s| s as usize);
-                (first..end, site_of[first] as usize..sites_end)
-            })
+            .map(|first| first..(first + search.piece).min(site_of.len()))
+            .collect();
+        // Where each piece's sites start, and where the last one's end.
+        let site_starts: Vec<u32> = pieces
+            .iter()
+            .map(|vertices| site_of[vertices.start])
+            .chain([sites.len() as u32])
             .collect();
         let mut counts = fresh_zeroed::<u32>(sites.len() + 1, "the boundary's sites")?;
-        let count_parts = split_at_ranges(&mut counts[1..], pieces.iter().map(|(_, s)| s.len()));
-        pieces
-            .par_iter()
-            .zip(count_parts)
-            .for_each(|((vertices, piece_sites), counts)| {
-                for v in vertices.clone() {
-                    counts[site_of[v] as usize - piece_sites.start] += on_boundary[v] as u32;
+        split_by_offsets(&mut counts[1..], &site_starts, 1)
+            .into_par_iter()
+            .for_each(|(piece, counts)| {
+                let first_site = site_starts[piece.start] as usize;
+                for v in pieces[piece.start].clone() {
+                    counts[site_of[v] as usize - first_site] += on_boundary[v] as u32;
                 }
             });
         prefix_sum(&mut counts);
@@ -466,22 +461,18 @@ impl BoundarySites {
             *offsets.last().unwrap_or(&0) as usize,
             "the boundary's vertices",
         )?;
-        let member_parts = split_at_ranges(
-            &mut members,
-            pieces
-                .iter()
-                .map(|(_, s)| (offsets[s.end] - offsets[s.start]) as usize),
-        );
-        pieces
-            .par_iter()
-            .zip(member_parts)
-            .for_each(|((vertices, piece_sites), members)| {
-                let base = offsets[piece_sites.start];
+        let member_starts: Vec<u32> = site_starts.iter().map(|&s| offsets[s as usize]).collect();
+        split_by_offsets(&mut members, &member_starts, 1)
+            .into_par_iter()
+            .for_each(|(piece, members)| {
+                let piece_sites =
+                    site_starts[piece.start] as usize..site_starts[piece.end] as usize;
+                let base = member_starts[piece.start];
                 let mut next: Vec<u32> = offsets[piece_sites.clone()]
                     .iter()
                     .map(|&o| o - base)
                     .collect();
-                for v in vertices.clone() {
+                for v in pieces[piece.start].clone() {
                     if on_boundary[v] {
                         let slot = &mut next[site_of[v] as usize - piece_sites.start];
                         members[*slot as usize] = v as u32;
@@ -743,17 +734,6 @@ fn cells_on_segment(grid: &CellGrid, a: DVec3, b: DVec3, cells: &mut Vec<Cell>) 
     if cell != end {
         cells.push(end);
     }
-}
-
-/// `values` cut into consecutive parts of the given lengths.
-fn split_at_ranges<T>(mut values: &mut [T], lengths: impl Iterator<Item = usize>) -> Vec<&mut [T]> {
-    lengths
-        .map(|len| {
-            let (part, rest) = std::mem::take(&mut values).split_at_mut(len);
-            values = rest;
-            part
-        })
-        .collect()
 }
 
 #[cfg(test)]
