@@ -1,7 +1,7 @@
 //! `weft evaluate`: points of a cage's limit surface at given face
 //! parameters, with the surface's normals, one line per sample.
 
-use std::io::{BufWriter, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use weft::subdivide::{LimitSurface, Scheme};
@@ -9,7 +9,7 @@ use weft::DVec3;
 
 use crate::args::mesh_path;
 use crate::carry::with_file_tags;
-use crate::files::with_progress;
+use crate::files::{with_progress, write_stdout};
 use crate::subdivide::{read_cage, Cage};
 use crate::{Cli, Failure};
 
@@ -70,13 +70,7 @@ pub fn run(cli: &Cli, args: &Evaluate) -> Result<(), Failure> {
     };
     match output {
         Some(path) => weft::io::write_atomically(path, |w| write(w))?,
-        None => {
-            let stdout = std::io::stdout();
-            let mut out = BufWriter::new(stdout.lock());
-            write(&mut out)
-                .and_then(|()| out.flush())
-                .map_err(|e| Failure::Failed(format!("cannot write to standard output: {e}")))?;
-        }
+        None => write_stdout(write)?,
     }
     Ok(())
 }

@@ -1,6 +1,7 @@
 //! Reading and writing mesh files for the commands: STL welding on
 //! `--weld`, what an output drops said on stderr, progress on long steps.
 
+use std::io::{BufWriter, Write};
 use std::path::Path;
 
 use weft::io::{self, Format, MeshFile, ReadOptions};
@@ -159,4 +160,17 @@ pub fn suggest_weld_if_apart(cli: &Cli, path: &Path, mesh: &Mesh) {
 /// terminal, shows `label` and the time spent until it ends.
 pub fn with_progress<T>(label: &str, work: impl FnOnce() -> T) -> T {
     progress::with_spinner(label, work)
+}
+
+/// Writes a listing to standard output through one buffer: a line each
+/// would be a write each. A closed pipe (`| head`) is a failure named as
+/// such, not a panic.
+pub fn write_stdout(
+    write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+) -> Result<(), Failure> {
+    let stdout = std::io::stdout();
+    let mut out = BufWriter::new(stdout.lock());
+    write(&mut out)
+        .and_then(|()| out.flush())
+        .map_err(|e| Failure::Failed(format!("cannot write to standard output: {e}")))
 }

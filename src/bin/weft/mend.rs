@@ -8,7 +8,8 @@ use weft::Mesh;
 
 use crate::args::InOut;
 use crate::files::{
-    operation_failed, read, read_to_weld, suggest_weld, suggest_weld_if_apart, with_progress, write,
+    operation_failed, read, read_to_weld, suggest_weld, suggest_weld_if_apart, with_progress,
+    write, write_stdout,
 };
 use crate::{Cli, Failure};
 
@@ -139,17 +140,22 @@ pub fn t_nodes(
         weft::mend::t_nodes::find_t_nodes(&mesh, tolerance)
     })
     .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
-    println!(
-        "{}: {} T-nodes within {tolerance}",
-        input.display(),
-        found.len()
-    );
-    for t in &found {
-        println!(
-            "  vertex {} lies on edge {}-{} of face {} at {:.4} of its length",
-            t.vertex, t.edge[0], t.edge[1], t.face, t.parameter
-        );
-    }
+    write_stdout(|out| {
+        writeln!(
+            out,
+            "{}: {} T-nodes within {tolerance}",
+            input.display(),
+            found.len()
+        )?;
+        for t in &found {
+            writeln!(
+                out,
+                "  vertex {} lies on edge {}-{} of face {} at {:.4} of its length",
+                t.vertex, t.edge[0], t.edge[1], t.face, t.parameter
+            )?;
+        }
+        Ok(())
+    })?;
     if let Some(output) = repair {
         let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&mesh, tolerance)
             .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
