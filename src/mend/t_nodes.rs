@@ -90,6 +90,56 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
     if nodes.is_empty() {
         return Ok((mesh.clone(), 0));
     }
+    let (face_sizes, face_indices, inserted) = faces_with_nodes_inserted(mesh, &nodes)?;
+    Ok((
+        Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices),
+        inserted,
+    ))
+}
+
+/// A repair and the T-nodes it inserted, as [`repair_t_nodes_owned`] gives them.
+#[derive(Debug, Clone)]
+pub struct TNodeRepair {
+    /// The mesh with every T-node inserted into its edge.
+    pub mesh: Mesh,
+    /// How many vertices were inserted into faces.
+    pub inserted: usize,
+    /// The T-nodes as [`find_t_nodes`] lists them.
+    pub t_nodes: Vec<TNode>,
+}
+
+/// [`repair_t_nodes`] on a mesh the caller gives up, with the list
+/// [`find_t_nodes`] gives: one search serves both, and the positions are
+/// moved into the repaired mesh, not copied. A mesh without T-nodes comes
+/// back as it is.
+///
+/// # Errors
+/// As [`find_t_nodes`].
+pub fn repair_t_nodes_owned(mesh: Mesh, tolerance: f64) -> Result<TNodeRepair> {
+    let nodes = find_with_corners(&mesh, tolerance)?;
+    let (mesh, inserted) = if nodes.is_empty() {
+        (mesh, 0)
+    } else {
+        let (face_sizes, face_indices, inserted) = faces_with_nodes_inserted(&mesh, &nodes)?;
+        let (positions, _, _) = mesh.into_parts();
+        (
+            Mesh::from_valid_parts(positions, face_sizes, face_indices),
+            inserted,
+        )
+    };
+    Ok(TNodeRepair {
+        mesh,
+        inserted,
+        t_nodes: nodes.into_iter().map(|(_, node)| node).collect(),
+    })
+}
+
+/// The face sizes and corners of `mesh` with each of `nodes` (sorted by
+/// corner and parameter) inserted after its corner, and how many were.
+fn faces_with_nodes_inserted(
+    mesh: &Mesh,
+    nodes: &[(u32, TNode)],
+) -> Result<(Vec<u32>, Vec<u32>, usize)> {
     let corners = mesh.face_indices();
     let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the repaired face sizes")?;
     let mut face_indices =
@@ -113,10 +163,7 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
         }
         face_sizes.push((face_indices.len() - start) as u32);
     }
-    Ok((
-        Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices),
-        inserted,
-    ))
+    Ok((face_sizes, face_indices, inserted))
 }
 
 /// The T-nodes with the corner whose edge each lies on, sorted by corner and parameter.
@@ -888,6 +935,12 @@ mod tests {
                 find_with_copies_in_pieces(&mesh, tolerance, piece).unwrap(),
                 every_pair(&mesh, tolerance)
             );
+            // One search for the list and the repair gives what two do.
+            let repair = repair_t_nodes_owned(mesh.clone(), tolerance).unwrap();
+            let (repaired, inserted) = repair_t_nodes(&mesh, tolerance).unwrap();
+            proptest::prop_assert_eq!(repair.t_nodes, find_t_nodes(&mesh, tolerance).unwrap());
+            proptest::prop_assert_eq!(repair.inserted, inserted);
+            proptest::prop_assert_eq!(repair.mesh, repaired);
         }
     }
 }

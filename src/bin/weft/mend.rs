@@ -136,10 +136,23 @@ pub fn t_nodes(
     let mesh = read(cli, input)?;
     suggest_weld_if_apart(cli, input, &mesh);
     let tolerance = tolerance.unwrap_or_else(|| weft::mend::weld::relative_tolerance(&mesh));
-    let found = with_progress("searching", || {
-        weft::mend::t_nodes::find_t_nodes(&mesh, tolerance)
-    })
-    .map_err(|e| operation_failed(input, "search for T-nodes", e))?;
+    // With --repair, one search gives both the list and the repaired mesh.
+    let (found, repaired) = match repair {
+        Some(_) => {
+            let repair = with_progress("searching", || {
+                weft::mend::t_nodes::repair_t_nodes_owned(mesh, tolerance)
+            })
+            .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
+            (repair.t_nodes, Some((repair.mesh, repair.inserted)))
+        }
+        None => (
+            with_progress("searching", || {
+                weft::mend::t_nodes::find_t_nodes(&mesh, tolerance)
+            })
+            .map_err(|e| operation_failed(input, "search for T-nodes", e))?,
+            None,
+        ),
+    };
     write_stdout(|out| {
         writeln!(
             out,
@@ -156,9 +169,7 @@ pub fn t_nodes(
         }
         Ok(())
     })?;
-    if let Some(output) = repair {
-        let (repaired, inserted) = weft::mend::t_nodes::repair_t_nodes(&mesh, tolerance)
-            .map_err(|e| operation_failed(input, "repair T-nodes", e))?;
+    if let (Some(output), Some((repaired, inserted))) = (repair, repaired) {
         eprintln!("inserted {inserted} vertices into edges");
         write(output, &repaired, &io::WriteOptions::default())?;
     }
