@@ -1,19 +1,15 @@
 //! The `weft` command, run as a program: each command's success path, and
 //! its failures with their exit codes and messages.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, Output};
 
 use weft::io;
 use weft::mesh::shapes;
 
-/// A fresh folder for one test under the system's temporary folder.
-fn folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("weft-cli-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
+#[path = "support/folder.rs"]
+mod folder;
+use folder::folder;
 
 fn weft(dir: &Path, args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_weft"))
@@ -1407,6 +1403,52 @@ fn t_nodes_are_listed_and_repaired() {
     assert!(stdout(&o).contains("0 T-nodes"), "{}", stdout(&o));
     let o = weft(&dir, &["t-nodes", "t.obj", "--tolerance", "nan"]);
     assert_exit(&o, 2);
+}
+
+/// Runs `weft` in `dir` with its standard output a pipe whose reading end
+/// is closed before it writes.
+fn weft_into_closed_pipe(dir: &Path, args: &[&str]) -> Output {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_weft"))
+        .current_dir(dir)
+        .args(args)
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the weft binary runs");
+    drop(child.stdout.take());
+    child.wait_with_output().unwrap()
+}
+
+#[test]
+fn listings_into_a_closed_pipe_fail_by_name_without_a_panic() {
+    let dir = folder("closed-pipe");
+    // One tall quad beside a column of `rows` quads: rows - 1 T-nodes,
+    // a listing far longer than a pipe's buffer.
+    let rows = 4000;
+    let mut obj = format!("v 0 0 0\nv 0 {rows} 0\n");
+    for i in 0..=rows {
+        obj += &format!("v 1 {i} 0\nv 2 {i} 0\n");
+    }
+    obj += &format!("f 1 3 {} 2\n", 3 + 2 * rows);
+    for i in 0..rows {
+        let (a, b) = (3 + 2 * i, 5 + 2 * i);
+        obj += &format!("f {a} {} {} {b}\n", a + 1, b + 1);
+    }
+    std::fs::write(dir.join("column.obj"), obj).unwrap();
+    let listed = succeeds(&dir, &["t-nodes", "column.obj"]);
+    assert!(listed.contains(&format!("{} T-nodes", rows - 1)), "{listed}");
+    assert!(listed.len() > 1 << 17);
+    let samples: String = (0..rows).map(|i| format!("{} 0.5 0.5\n", i + 1)).collect();
+    std::fs::write(dir.join("uv.txt"), samples).unwrap();
+    for args in [
+        &["t-nodes", "column.obj"][..],
+        &["evaluate", "column.obj", "--samples", "uv.txt"],
+    ] {
+        let o = weft_into_closed_pipe(&dir, args);
+        assert_exit(&o, 1);
+        assert_mentions(&stderr(&o), &["cannot write to standard output"]);
+        assert!(!stderr(&o).contains("panicked"), "{}", stderr(&o));
+    }
 }
 
 #[test]

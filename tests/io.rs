@@ -2,12 +2,15 @@
 //! files that must name their line or byte offset, and arbitrary bytes that
 //! must not panic.
 
-use std::path::PathBuf;
 
 use weft::io::{self, Format, IoError, Location, PlyEncoding, WriteOptions};
 use weft::mend::weld;
 use weft::mesh::shapes;
 use weft::{DVec3, Mesh};
+
+#[path = "support/folder.rs"]
+mod folder;
+use folder::folder;
 
 fn shapes_to_test() -> Vec<(&'static str, Mesh)> {
     let mut far = shapes::cube();
@@ -405,16 +408,10 @@ fn arbitrary_bytes_never_panic() {
     }
 }
 
-fn temp_folder(name: &str) -> PathBuf {
-    let dir = std::env::temp_dir().join(format!("weft-io-{}-{name}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 #[test]
 fn files_are_chosen_by_extension_and_written_whole() {
-    let dir = temp_folder("files");
+    let dir = folder("files");
     let mesh = shapes::torus(6, 4);
     for name in ["a.obj", "b.PLY", "c.Off", "d.stl"] {
         let path = dir.join(name);
@@ -451,7 +448,6 @@ fn files_are_chosen_by_extension_and_written_whole() {
     let err = io::read_mesh(dir.join("bad.obj")).unwrap_err();
     let msg = err.to_string();
     assert!(msg.contains("bad.obj") && msg.contains("line 2"), "{msg}");
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 /// A cube with a colour per vertex, UVs with a seam, normals, creases and corners.
@@ -1057,7 +1053,7 @@ fn ply_and_stl_are_written_as_the_formatter_and_byte_order_say() {
 
 #[test]
 fn stl_read_to_weld_welds_as_the_soup_and_counts_every_merge() {
-    let dir = temp_folder("read-to-weld");
+    let dir = folder("read-to-weld");
     for (name, mesh) in [
         ("cube", shapes::cube()),
         ("torus", shapes::triangle_torus(40, 30)),

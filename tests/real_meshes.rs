@@ -7,6 +7,10 @@ use weft::mend::weld::{relative_tolerance, weld, DEFAULT_WELD_TOLERANCE};
 use weft::mesh::shapes;
 use weft::{DVec3, Mesh};
 
+#[path = "support/folder.rs"]
+mod folder;
+use folder::folder;
+
 #[test]
 fn the_relative_tolerance_keeps_every_face_of_a_small_dense_sphere() {
     // A 5 cm sphere of 2048 faces: near its poles, vertices lie closer than
@@ -212,8 +216,7 @@ fn obj_materials_are_read_and_written_back() {
 
 #[test]
 fn subdivided_and_triangulated_faces_keep_their_parents_materials() {
-    let dir = std::env::temp_dir().join(format!("weft-materials-{}", std::process::id()));
-    std::fs::create_dir_all(&dir).unwrap();
+    let dir = folder("materials");
     let input = dir.join("panels.obj");
     std::fs::write(&input, MATERIAL_OBJ).unwrap();
     let weft = env!("CARGO_BIN_EXE_weft");
@@ -251,7 +254,6 @@ fn subdivided_and_triangulated_faces_keep_their_parents_materials() {
         .materials
         .expect("triangulate keeps the materials");
     assert_eq!(m.face_materials, [NO_MATERIAL, NO_MATERIAL, 0, 0, 1, 1]);
-    std::fs::remove_dir_all(&dir).unwrap();
 }
 
 fn violet_pixels(image: &weft::io::render::Image) -> usize {
@@ -317,12 +319,6 @@ fn weft_in(dir: &std::path::Path, args: &[&str]) -> (i32, String) {
     )
 }
 
-fn scratch(name: &str) -> std::path::PathBuf {
-    let dir = std::env::temp_dir().join(format!("weft-real-{name}-{}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
 
 fn write_obj(path: &std::path::Path, mesh: &Mesh) {
     weft::io::write_mesh(path, mesh).unwrap();
@@ -330,7 +326,7 @@ fn write_obj(path: &std::path::Path, mesh: &Mesh) {
 
 #[test]
 fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
-    let dir = scratch("weld");
+    let dir = folder("weld");
     write_obj(&dir.join("sphere.obj"), &uv_sphere(0.025, 64, 32).unwrap());
     let (code, err) = weft_in(&dir, &["weld", "sphere.obj", "-o", "welded.obj"]);
     assert_eq!(code, 0, "{err}");
@@ -382,7 +378,7 @@ fn weld_by_default_keeps_a_small_sphere_and_refuses_to_collapse_faces() {
 
 #[test]
 fn info_counts_unused_vertices_and_cull_adjacent_drops_them() {
-    let dir = scratch("unused");
+    let dir = folder("unused");
     std::fs::write(dir.join("panels.obj"), MATERIAL_OBJ).unwrap();
     let out = std::process::Command::new(env!("CARGO_BIN_EXE_weft"))
         .current_dir(&dir)
@@ -423,7 +419,7 @@ fn info_counts_unused_vertices_and_cull_adjacent_drops_them() {
 #[test]
 fn flip_outward_turns_welded_stl_boxes_outward() {
     use weft::mend::orient::signed_volume;
-    let dir = scratch("outward");
+    let dir = folder("outward");
     let stl = boxes_as_stl_triangles(6);
     weft::io::write_mesh(dir.join("boxes.stl"), &stl).unwrap();
     let (code, err) = weft_in(&dir, &["flip", "boxes.stl", "plain.obj", "--outward"]);
@@ -448,7 +444,7 @@ fn flip_outward_turns_welded_stl_boxes_outward() {
 
 #[test]
 fn odd_input_gets_a_clear_answer() {
-    let dir = scratch("odd");
+    let dir = folder("odd");
     let subdivide_once = |input: &str| {
         let args = [
             "subdivide",
@@ -506,7 +502,7 @@ fn odd_input_gets_a_clear_answer() {
 
 #[test]
 fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
-    let dir = scratch("crease-angle");
+    let dir = folder("crease-angle");
     let cube = weft::mesh::triangulate::triangulate(&shapes::cube())
         .unwrap()
         .mesh;
@@ -541,7 +537,7 @@ fn crease_angle_on_an_stl_creases_folds_not_every_seam() {
 
 #[test]
 fn smoothing_and_rerouting_keep_the_faces_materials() {
-    let dir = scratch("toolbar-materials");
+    let dir = folder("toolbar-materials");
     std::fs::write(dir.join("panels.obj"), MATERIAL_OBJ).unwrap();
     for (out, args) in [
         (
