@@ -1436,7 +1436,10 @@ fn listings_into_a_closed_pipe_fail_by_name_without_a_panic() {
     }
     std::fs::write(dir.join("column.obj"), obj).unwrap();
     let listed = succeeds(&dir, &["t-nodes", "column.obj"]);
-    assert!(listed.contains(&format!("{} T-nodes", rows - 1)), "{listed}");
+    assert!(
+        listed.contains(&format!("{} T-nodes", rows - 1)),
+        "{listed}"
+    );
     assert!(listed.len() > 1 << 17);
     let samples: String = (0..rows).map(|i| format!("{} 0.5 0.5\n", i + 1)).collect();
     std::fs::write(dir.join("uv.txt"), samples).unwrap();

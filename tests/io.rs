@@ -2,7 +2,6 @@
 //! files that must name their line or byte offset, and arbitrary bytes that
 //! must not panic.
 
-
 use weft::io::{self, Format, IoError, Location, PlyEncoding, WriteOptions};
 use weft::mend::weld;
 use weft::mesh::shapes;
@@ -407,7 +406,6 @@ fn arbitrary_bytes_never_panic() {
         let _ = format;
     }
 }
-
 
 #[test]
 fn files_are_chosen_by_extension_and_written_whole() {

@@ -319,7 +319,6 @@ fn weft_in(dir: &std::path::Path, args: &[&str]) -> (i32, String) {
     )
 }
 
-
 fn write_obj(path: &std::path::Path, mesh: &Mesh) {
     weft::io::write_mesh(path, mesh).unwrap();
 }

@@ -37,6 +37,27 @@ use crate::mesh::{bounding_box_of, check_tolerance};
 /// Naked edges one task sums the lengths of.
 const SEGMENTS_A_PART: usize = 1 << 16;
 
+/// Cells holding more sites than this are sorted along the axis their
+/// sites spread most, so that an edge tests only those within its own
+/// extent along it: on long thin triangles the cells fit the long edges
+/// and hold hundreds of the short edges' positions.
+const CROWDED_CELL: usize = 32;
+
+/// How the search divides its work; the tests choose other values so that
+/// small meshes take every path.
+#[derive(Debug, Clone, Copy)]
+struct Tuning {
+    /// Vertices among which copies of a position are merged.
+    copies_piece: usize,
+    /// Sites a cell holds before it is sorted along an axis.
+    crowded_cell: usize,
+}
+
+const TUNING: Tuning = Tuning {
+    copies_piece: COPIES_PIECE,
+    crowded_cell: CROWDED_CELL,
+};
+
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TNode {
@@ -168,18 +189,13 @@ fn faces_with_nodes_inserted(
 
 /// The T-nodes with the corner whose edge each lies on, sorted by corner and parameter.
 fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
-    find_with_copies_in_pieces(mesh, tolerance, COPIES_PIECE)
+    find_tuned(mesh, tolerance, TUNING)
 }
 
-/// [`find_with_corners`], copies of a position merged among `piece`
-/// vertices at a time.
-fn find_with_copies_in_pieces(
-    mesh: &Mesh,
-    tolerance: f64,
-    piece: usize,
-) -> Result<Vec<(u32, TNode)>> {
+/// [`find_with_corners`], its work divided as `tuning` says.
+fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, TNode)>> {
     check_tolerance(tolerance)?;
-    let piece = piece.max(1);
+    let piece = tuning.copies_piece.max(1);
     // A naked edge has one corner: which corners those are is all the
     // search needs of the topology.
     let corners = CornerFaces::of_mesh(mesh)?;
@@ -269,6 +285,7 @@ fn find_with_copies_in_pieces(
         grid,
         tolerance,
         piece,
+        crowded_cell: tuning.crowded_cell,
     };
     // Cells numbered in one word when the mesh spans few enough of them:
     // half the bytes to sort and compare.
@@ -288,6 +305,8 @@ struct Search<'a> {
     tolerance: f64,
     /// Vertices among which copies of a position are merged.
     piece: usize,
+    /// Sites a cell holds before it is sorted along an axis.
+    crowded_cell: usize,
 }
 
 impl Search<'_> {
@@ -310,6 +329,20 @@ impl Search<'_> {
             .with_min_len(CHUNK)
             .map(AtomicBool::into_inner)
             .collect()
+    }
+
+    /// Where a site within the tolerance of the segment from `a` to `b`
+    /// can lie along `axis`, when the segment meets it in `cell`: the
+    /// segment's extent within the cell's, widened by the tolerance and by
+    /// the round-off margin of [`cells_near`].
+    fn extent_in_cell(&self, a: DVec3, b: DVec3, cell: Cell, axis: usize) -> (f64, f64) {
+        let size = self.grid.size;
+        let cell_start = cell.0[axis] as f64 * size;
+        let margin = self.tolerance + size / 1024.0;
+        (
+            a[axis].min(b[axis]).max(cell_start) - margin,
+            a[axis].max(b[axis]).min(cell_start + size) + margin,
+        )
     }
 
     /// The vertices of corner `c`'s edge.
@@ -354,7 +387,7 @@ impl Search<'_> {
             }
         })?;
         entries.par_sort_unstable();
-        let index = CellIndex::of(entries);
+        let index = CellIndex::of(entries, &sites.positions, self.crowded_cell)?;
         // Edge by edge, in the order of their corners: blocks of edges on
         // all threads, each block's T-nodes in corner order.
         let blocks: Vec<Vec<(u32, TNode)>> = self
@@ -371,12 +404,17 @@ impl Search<'_> {
                         cells_on_segment(&self.grid, a, b, cells_on);
                         candidates.clear();
                         for &cell in cells_on.iter() {
-                            let (start, end) = recent.range(&index, key(cell));
-                            candidates.extend(
-                                index.entries[start as usize..end as usize]
-                                    .iter()
-                                    .map(|&(_, s)| s),
-                            );
+                            let (start, end, axis) = recent.range(&index, key(cell));
+                            let part = start as usize..end as usize;
+                            let filed = &index.entries[part.clone()];
+                            let near = match axis {
+                                Some(axis) => {
+                                    let along = self.extent_in_cell(a, b, cell, axis as usize);
+                                    within_extent(filed, &index.coordinates[part], along)
+                                }
+                                None => filed,
+                            };
+                            candidates.extend(near.iter().map(|&(_, s)| s));
                         }
                         // A site near a cell's side is under both cells.
                         if cells_on.len() > 1 {
@@ -612,19 +650,27 @@ impl BlockKey for WideKey {
 }
 
 /// The sites filed under each cell, sorted by cell, with where each cell's
-/// and each block's part starts.
+/// and each block's part starts. A crowded cell's sites are sorted along
+/// an axis.
 struct CellIndex<K: BlockKey> {
     entries: Vec<(K, u32)>,
     /// Each cell in order with where its entries start; one more at the
     /// end, where the last one's end.
     cells: Vec<(K, u32)>,
+    /// The axis each cell's sites are sorted along, if they are.
+    axes: Vec<Option<u8>>,
+    /// Each entry's site's coordinate along its cell's axis, for the cells
+    /// sorted along one: searched without a look at the sites.
+    coordinates: Vec<f64>,
     /// Where each block's cells are in `cells`.
     blocks: HashMap<K::Block, (u32, u32), BuildHasherDefault<CellHasher>>,
 }
 
 impl<K: BlockKey> CellIndex<K> {
-    /// The index of `entries`, sorted by cell; fewer than 2^32 of them.
-    fn of(entries: Vec<(K, u32)>) -> CellIndex<K> {
+    /// The index of `entries` (cell and site), sorted by cell; fewer than
+    /// 2^32 of them. The sites of each cell holding more than `crowded`
+    /// are sorted along the axis of `positions` they spread most.
+    fn of(mut entries: Vec<(K, u32)>, positions: &[DVec3], crowded: usize) -> Result<CellIndex<K>> {
         let mut cells: Vec<(K, u32)> = (0..entries.len())
             .into_par_iter()
             .with_min_len(CHUNK)
@@ -640,34 +686,91 @@ impl<K: BlockKey> CellIndex<K> {
                 start = i;
             }
         }
-        CellIndex {
+        let starts: Vec<u32> = cells.iter().map(|&(_, start)| start).collect();
+        let mut axes = vec![None; cells.len()];
+        // Pages of cells not crowded are never touched.
+        let mut coordinates = fresh_zeroed::<f64>(entries.len(), "the T-node search's cells")?;
+        split_by_offsets(&mut entries, &starts, CHUNK)
+            .into_par_iter()
+            .zip(split_by_offsets(&mut coordinates, &starts, CHUNK))
+            .zip(axes.par_chunks_mut(CHUNK))
+            .for_each(|(((cells, entries), (_, coordinates)), axes)| {
+                let base = starts[cells.start] as usize;
+                for (cell, axis) in cells.zip(axes) {
+                    let part = starts[cell] as usize - base..starts[cell + 1] as usize - base;
+                    let filed = &mut entries[part.clone()];
+                    if filed.len() > crowded {
+                        let along = sort_along_widest_axis(filed, positions);
+                        for (x, &(_, s)) in coordinates[part].iter_mut().zip(filed.iter()) {
+                            *x = positions[s as usize][along as usize];
+                        }
+                        *axis = Some(along);
+                    }
+                }
+            });
+        Ok(CellIndex {
             entries,
             cells,
+            axes,
+            coordinates,
             blocks,
-        }
+        })
     }
 
-    /// Where the entries of `cell` are in `entries`.
-    fn range(&self, cell: K) -> (u32, u32) {
+    /// Where the entries of `cell` are in `entries`, and the axis they are
+    /// sorted along if they are.
+    fn range(&self, cell: K) -> (u32, u32, Option<u8>) {
         let Some(&(first, end)) = self.blocks.get(&cell.block()) else {
-            return (0, 0);
+            return (0, 0, None);
         };
         let block = &self.cells[first as usize..end as usize];
         match block.binary_search_by(|&(k, _)| k.cmp(&cell)) {
             Ok(i) => {
                 let i = first as usize + i;
-                (self.cells[i].1, self.cells[i + 1].1)
+                (self.cells[i].1, self.cells[i + 1].1, self.axes[i])
             }
-            Err(_) => (0, 0),
+            Err(_) => (0, 0, None),
         }
     }
+}
+
+/// Sorts one cell's entries by their sites' coordinate along the axis
+/// they spread most, and gives that axis.
+fn sort_along_widest_axis<K>(filed: &mut [(K, u32)], positions: &[DVec3]) -> u8 {
+    let at = |&(_, s): &(K, u32)| positions[s as usize];
+    let (lo, hi) = filed.iter().fold(
+        (DVec3::splat(f64::INFINITY), DVec3::splat(f64::NEG_INFINITY)),
+        |(lo, hi), entry| (lo.min(at(entry)), hi.max(at(entry))),
+    );
+    let spread = hi - lo;
+    let axis = if spread.x >= spread.y && spread.x >= spread.z {
+        0
+    } else if spread.y >= spread.z {
+        1
+    } else {
+        2
+    };
+    filed.sort_unstable_by(|x, y| at(x)[axis].total_cmp(&at(y)[axis]).then(x.1.cmp(&y.1)));
+    axis as u8
+}
+
+/// The entries of a cell, sorted along an axis where they lie at
+/// `coordinates`, that lie within `extent` along it.
+fn within_extent<'a, K>(
+    filed: &'a [(K, u32)],
+    coordinates: &[f64],
+    (low, high): (f64, f64),
+) -> &'a [(K, u32)] {
+    let first = coordinates.partition_point(|&x| x < low);
+    let count = coordinates[first..].partition_point(|&x| x <= high);
+    &filed[first..first + count]
 }
 
 /// The cells one thread looked up last, with where their entries are: an
 /// edge most often starts in a cell the edges just before it passed
 /// through (a triangle's next edge starts where the last one ended).
 struct RecentCells<K> {
-    cells: [(K, u32, u32); 8],
+    cells: [(K, u32, u32, Option<u8>); 8],
     filled: usize,
     next: usize,
 }
@@ -675,7 +778,7 @@ struct RecentCells<K> {
 impl<K: BlockKey> Default for RecentCells<K> {
     fn default() -> RecentCells<K> {
         RecentCells {
-            cells: [(K::default(), 0, 0); 8],
+            cells: [(K::default(), 0, 0, None); 8],
             filled: 0,
             next: 0,
         }
@@ -684,15 +787,16 @@ impl<K: BlockKey> Default for RecentCells<K> {
 
 impl<K: BlockKey> RecentCells<K> {
     /// [`CellIndex::range`], remembered.
-    fn range(&mut self, index: &CellIndex<K>, cell: K) -> (u32, u32) {
-        if let Some(&(_, start, end)) = self.cells[..self.filled].iter().find(|x| x.0 == cell) {
-            return (start, end);
+    fn range(&mut self, index: &CellIndex<K>, cell: K) -> (u32, u32, Option<u8>) {
+        if let Some(&(_, start, end, axis)) = self.cells[..self.filled].iter().find(|x| x.0 == cell)
+        {
+            return (start, end, axis);
         }
-        let (start, end) = index.range(cell);
-        self.cells[self.next] = (cell, start, end);
+        let (start, end, axis) = index.range(cell);
+        self.cells[self.next] = (cell, start, end, axis);
         self.next = (self.next + 1) % self.cells.len();
         self.filled = (self.filled + 1).min(self.cells.len());
-        (start, end)
+        (start, end, axis)
     }
 }
 
@@ -892,8 +996,11 @@ mod tests {
         /// (as read from STL) or shared within a strip; points put on the
         /// seams' grid lines and cell sides included, where the cells near
         /// a vertex are chosen. Copies of a position are merged among a
-        /// few vertices at a time or among all; with `far`, the last strip
-        /// lies so far away that cells are numbered by wide keys.
+        /// few vertices at a time or among all; cells are sorted along an
+        /// axis from 0 or 2 sites on, or as in use; with `far`, the last
+        /// strip lies so far away that cells are numbered by wide keys;
+        /// with `off_seam`, every other strip is moved off the seams by
+        /// two thirds of the tolerance, across the plane and out of it.
         #[test]
         fn the_grid_finds_what_every_pair_finds(
             divisions in proptest::collection::vec(1u32..7, 2..5),
@@ -901,18 +1008,25 @@ mod tests {
             soup: bool,
             tolerance in proptest::sample::select(vec![1e-9, 1e-3, 0.05]),
             piece in proptest::sample::select(vec![5usize, 16, 1 << 18]),
+            crowded_cell in proptest::sample::select(vec![0usize, 2, CROWDED_CELL]),
             far: bool,
+            off_seam: bool,
         ) {
             let mut positions = Vec::new();
             let mut faces: Vec<Vec<u32>> = Vec::new();
             for (strip, &n) in divisions.iter().enumerate() {
                 let last = strip + 1 == divisions.len();
                 let x = strip as f64 + if far && last { 1.0e7 } else { 0.0 };
+                let moved = if off_seam && strip % 2 == 1 {
+                    DVec3::new(0.6, 0.0, 0.3) * tolerance
+                } else {
+                    DVec3::ZERO
+                };
                 let first = positions.len() as u32;
                 for i in 0..=n {
                     let y = i as f64 / n as f64;
-                    positions.push(DVec3::new(x, y, 0.0) * scale);
-                    positions.push(DVec3::new(x + 1.0, y, 0.0) * scale);
+                    positions.push((DVec3::new(x, y, 0.0) + moved) * scale);
+                    positions.push((DVec3::new(x + 1.0, y, 0.0) + moved) * scale);
                 }
                 for i in 0..n {
                     let q = first + 2 * i;
@@ -932,7 +1046,7 @@ mod tests {
             let mesh = Mesh::from_polygons(positions, faces).unwrap();
             let tolerance = tolerance * scale;
             proptest::prop_assert_eq!(
-                find_with_copies_in_pieces(&mesh, tolerance, piece).unwrap(),
+                find_tuned(&mesh, tolerance, Tuning { copies_piece: piece, crowded_cell }).unwrap(),
                 every_pair(&mesh, tolerance)
             );
             // One search for the list and the repair gives what two do.
