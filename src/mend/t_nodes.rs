@@ -14,7 +14,11 @@
 //! tolerance of them (their own, and of its 26 neighbours those whose side
 //! is that close). Each naked edge walks the cells it passes through (a 3-D
 //! digital differential analyser, Amanatides & Woo 1987) and is tested
-//! against the positions filed there only, on all threads.
+//! against the positions filed there only, on all threads. A cell holding
+//! many positions (on long thin triangles the cells fit the long edges,
+//! and the short edges' positions crowd them) has them sorted along the
+//! axis they spread most: an edge tests only those within its own extent
+//! along it.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
