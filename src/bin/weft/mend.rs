@@ -194,12 +194,12 @@ impl std::fmt::Display for FourDecimals {
         if !(0.0..=10_000.0).contains(&scaled) || near_tie {
             return write!(f, "{:.4}", self.0);
         }
-        let tenths_of_thousandths = scaled.round() as u32;
+        let ten_thousandths = scaled.round() as u32;
         write!(
             f,
             "{}.{:04}",
-            tenths_of_thousandths / 10_000,
-            tenths_of_thousandths % 10_000
+            ten_thousandths / 10_000,
+            ten_thousandths % 10_000
         )
     }
 }
@@ -215,8 +215,10 @@ mod tests {
             tie in 0u32..20_000,
             ulps in -3i64..=3,
         ) {
-            // Ties and their neighbours: (2k + 1) / 20000, exact where 5^4 divides 2k + 1.
-            let near_tie = f64::from_bits(((2 * tie + 1) as f64 / 20_000.0).to_bits().wrapping_add_signed(ulps));
+            // Ties and their neighbours: (2k + 1) / 20000, exact where 5^4
+            // divides 2k + 1.
+            let tie = (2 * tie + 1) as f64 / 20_000.0;
+            let near_tie = f64::from_bits(tie.to_bits().wrapping_add_signed(ulps));
             for x in [t, near_tie, 0.03125, 0.09375, 0.0, 1.0, 0.99995, 0.00005] {
                 proptest::prop_assert_eq!(FourDecimals(x).to_string(), format!("{x:.4}"));
             }
