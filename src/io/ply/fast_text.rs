@@ -426,9 +426,11 @@ mod tests {
 
     #[test]
     fn files_on_disk_read_as_their_bytes_do() {
-        let path = |name: &str| {
-            std::env::temp_dir().join(format!("weft-ply-{}-{name}.ply", std::process::id()))
-        };
+        let dir = tempfile::Builder::new()
+            .prefix("weft-ply-")
+            .tempdir()
+            .unwrap();
+        let path = |name: &str| dir.path().join(format!("{name}.ply"));
         let text = text_ply(&shapes::torus(12, 9));
         let mut binary = Vec::new();
         write(
@@ -458,9 +460,6 @@ mod tests {
             error.contains("line 14:") && error.contains("\"zero\""),
             "{error}"
         );
-        for name in ["text", "binary", "broken"] {
-            std::fs::remove_file(path(name)).unwrap();
-        }
     }
 
     #[test]

@@ -500,20 +500,17 @@ mod tests {
     }
 
     /// A file of `bytes` under a name of its own, removed when dropped.
-    struct Scratch(std::path::PathBuf);
+    struct Scratch(tempfile::TempPath);
 
     impl Scratch {
         fn new(name: &str, bytes: &[u8]) -> Scratch {
-            let path =
-                std::env::temp_dir().join(format!("weft-stl-{}-{name}.stl", std::process::id()));
-            std::fs::write(&path, bytes).unwrap();
-            Scratch(path)
-        }
-    }
-
-    impl Drop for Scratch {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_file(&self.0);
+            let mut file = tempfile::Builder::new()
+                .prefix(&format!("weft-stl-{name}-"))
+                .suffix(".stl")
+                .tempfile()
+                .unwrap();
+            std::io::Write::write_all(&mut file, bytes).unwrap();
+            Scratch(file.into_temp_path())
         }
     }
 
