@@ -942,6 +942,28 @@ mod tests {
         assert_eq!(topology.edge_face_count(shared), 2);
     }
 
+    #[test]
+    fn an_owned_repair_moves_the_positions_rather_than_copying_them() {
+        let p = vec![
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.0, 0.0),
+            DVec3::new(2.0, 2.0, 0.0),
+            DVec3::new(4.0, 0.0, 0.0),
+            DVec3::new(2.0, 0.5, 0.0),
+        ];
+        let with_node = Mesh::from_polygons(p.clone(), [[0u32, 1, 2], [4, 3, 2]]).unwrap();
+        let without = Mesh::from_polygons(p, [[0u32, 1, 2], [1, 3, 2]]).unwrap();
+        for (mesh, expected) in [(with_node, 1), (without, 0)] {
+            let buffer = mesh.positions().as_ptr();
+            let repair = repair_t_nodes_owned(mesh, 1e-6).unwrap();
+            assert_eq!(
+                (repair.inserted, repair.t_nodes.len()),
+                (expected, expected)
+            );
+            assert_eq!(repair.mesh.positions().as_ptr(), buffer);
+        }
+    }
+
     /// Every boundary vertex against every naked edge of another face, with
     /// the search's own test of a pair: what the grid may only make faster.
     fn every_pair(mesh: &Mesh, tolerance: f64) -> Vec<(u32, TNode)> {
