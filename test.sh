@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Runs every test of Weft, start to end: formatting, lints, the Rust tests
+# Runs every test of Weft, start to end: formatting, lints, the API
+# documentation's links, the Rust tests
 # (with the OpenSubdiv and OpenMesh comparisons and the header check), the C
 # tests (also under AddressSanitizer and UndefinedBehaviorSanitizer), the C#
 # wrapper's tests on Mono, the Grasshopper compile check and replay, the
@@ -23,6 +24,7 @@ suite() { # name, command...
 
 suite "cargo fmt --check" cargo fmt --all --check
 suite "cargo clippy" cargo clippy --workspace --all-targets --quiet -- -D warnings
+suite "cargo doc" env RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib --quiet
 suite "cargo test" cargo test --workspace
 suite "C tests" tests/c/run.sh
 for script in dotnet/test.sh grasshopper/check.sh python/test.sh tests/install/run.sh tests/step/run.sh fuzz/smoke.sh; do

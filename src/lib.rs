@@ -41,19 +41,12 @@
 #![deny(unsafe_op_in_unsafe_fn)]
 
 mod buffers;
-/// cbindgen:ignore
 pub mod error;
-/// cbindgen:ignore
 pub mod io;
-/// cbindgen:ignore
 pub mod make;
-/// cbindgen:ignore
 pub mod mend;
-/// cbindgen:ignore
 pub mod mesh;
-/// cbindgen:ignore
 pub mod subdivide;
-/// cbindgen:ignore
 pub mod toolbar;
 
 #[allow(unsafe_code)]

@@ -3,9 +3,9 @@
 //! Two surface meshes with different U/V counts meet along a seam where the
 //! vertices of one fall between the vertices of the other. Welding cannot
 //! join them (no two vertices coincide); the seam stays open and subdivision
-//! pulls it apart. [`find_t_nodes`](crate::mend::t_nodes::find_t_nodes) reports
+//! pulls it apart. [`find_t_nodes`] reports
 //! each such vertex with the edge and the parameter along it;
-//! [`repair_t_nodes`](crate::mend::t_nodes::repair_t_nodes) inserts the vertex
+//! [`repair_t_nodes`] inserts the vertex
 //! into that edge, so the face becomes an n-gon and both sides share every
 //! seam edge.
 //!
@@ -91,10 +91,10 @@ pub struct TNode {
 /// count, whatever the scale.
 ///
 /// # Errors
-/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when `tolerance`
-/// is negative, NaN or infinite; [`Error::ResultTooLarge`](crate::Error::ResultTooLarge)
+/// [`Error::InvalidArgument`] when `tolerance`
+/// is negative, NaN or infinite; [`Error::ResultTooLarge`]
 /// when a tolerance as wide as the cells files the positions under more than
-/// 2^32 cells; [`Error::OutOfMemory`](crate::Error::OutOfMemory).
+/// 2^32 cells; [`Error::OutOfMemory`].
 pub fn find_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<Vec<TNode>> {
     Ok(find_with_corners(mesh, tolerance)?
         .into_iter()

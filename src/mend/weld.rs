@@ -1,7 +1,7 @@
 //! Join meshes and weld their vertices.
 //!
-//! [`join`](crate::mend::weld::join) concatenates meshes;
-//! [`weld`](crate::mend::weld::weld) merges vertices that lie within a tolerance
+//! [`join`] concatenates meshes;
+//! [`weld`] merges vertices that lie within a tolerance
 //! of each other, in transitive clusters found through a spatial
 //! hash (cells as wide as the tolerance, each vertex compared only with the
 //! 27 cells around its own), so a million vertices weld in a fraction of a

@@ -2,7 +2,7 @@
 //!
 //! Everything is flat index arrays built by bucketing, never by hashing
 //! pairs or comparing all faces: the edges come from the one builder in
-//! [`crate::mesh::adjacency`], which the subdivision's levels share, so a
+//! `mesh/adjacency.rs`, which the subdivision's levels share, so a
 //! mesh of a million faces takes a few tens of milliseconds.
 //!
 //! Names used throughout: a *corner* is a position in [`Mesh::face_indices`];

@@ -43,12 +43,12 @@
 //! corners — as OpenSubdiv does. No face is ever dropped.
 //!
 //! # Creases, carried data and the limit
-//! [`Subdivider`](crate::subdivide::Subdivider) (and [`subdivide_with`](crate::subdivide::subdivide_with), [`Refiner::with_options`](crate::subdivide::Refiner::with_options)) takes
-//! [`SubdivisionOptions`](crate::subdivide::SubdivisionOptions): semi-sharp and infinite edge creases and vertex
+//! [`Subdivider`] (and [`subdivide_with`], [`Refiner::with_options`]) takes
+//! [`SubdivisionOptions`]: semi-sharp and infinite edge creases and vertex
 //! corners with Uniform or Chaikin creasing, as OpenSubdiv's
 //! `TopologyDescriptor` and `Sdc::Options`; it carries per-vertex data of any
-//! width and face-varying values ([`FaceVaryingLinear`](crate::subdivide::FaceVaryingLinear)), and projects the
-//! last level onto the limit surface ([`Limit`](crate::subdivide::Limit)). [`creases_from_mesh`](crate::subdivide::creases_from_mesh)
+//! width and face-varying values ([`FaceVaryingLinear`]), and projects the
+//! last level onto the limit surface ([`Limit`]). [`creases_from_mesh`]
 //! turns unwelded seams and sharp folds into creases.
 
 mod bands;
