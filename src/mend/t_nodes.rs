@@ -916,9 +916,9 @@ mod tests {
         }
     }
 
-    #[test]
-    fn vertex_on_a_neighbours_edge_is_found_and_inserted() {
-        // Two triangles; vertex 4 lies in the middle of the first one's edge 1-2.
+    /// Two triangles where vertex 4 lies a quarter along the first one's
+    /// edge 1-2 (with `t_node`), or two sharing that edge (without).
+    fn two_triangles(t_node: bool) -> Mesh {
         let p = vec![
             DVec3::new(0.0, 0.0, 0.0),
             DVec3::new(2.0, 0.0, 0.0),
@@ -926,7 +926,13 @@ mod tests {
             DVec3::new(4.0, 0.0, 0.0),
             DVec3::new(2.0, 0.5, 0.0),
         ];
-        let mesh = Mesh::from_polygons(p, [[0u32, 1, 2], [4, 3, 2]]).unwrap();
+        let second = if t_node { [4u32, 3, 2] } else { [1, 3, 2] };
+        Mesh::from_polygons(p, [[0u32, 1, 2], second]).unwrap()
+    }
+
+    #[test]
+    fn vertex_on_a_neighbours_edge_is_found_and_inserted() {
+        let mesh = two_triangles(true);
         let nodes = find_t_nodes(&mesh, 1e-6).unwrap();
         assert_eq!(nodes.len(), 1);
         assert_eq!(nodes[0].vertex, 4);
@@ -944,16 +950,7 @@ mod tests {
 
     #[test]
     fn an_owned_repair_moves_the_positions_rather_than_copying_them() {
-        let p = vec![
-            DVec3::new(0.0, 0.0, 0.0),
-            DVec3::new(2.0, 0.0, 0.0),
-            DVec3::new(2.0, 2.0, 0.0),
-            DVec3::new(4.0, 0.0, 0.0),
-            DVec3::new(2.0, 0.5, 0.0),
-        ];
-        let with_node = Mesh::from_polygons(p.clone(), [[0u32, 1, 2], [4, 3, 2]]).unwrap();
-        let without = Mesh::from_polygons(p, [[0u32, 1, 2], [1, 3, 2]]).unwrap();
-        for (mesh, expected) in [(with_node, 1), (without, 0)] {
+        for (mesh, expected) in [(two_triangles(true), 1), (two_triangles(false), 0)] {
             let buffer = mesh.positions().as_ptr();
             let repair = repair_t_nodes_owned(mesh, 1e-6).unwrap();
             assert_eq!(
