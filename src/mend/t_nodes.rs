@@ -57,6 +57,11 @@ struct Tuning {
     crowded_cell: usize,
 }
 
+/// The share of a cell that covers the round-off of placing points and
+/// edges in cells: cell numbers stay below 2^41 (see
+/// [`CellGrid::with_reach`]), where a double's step is 2^-12 of a cell.
+const ROUND_OFF: f64 = 1.0 / 1024.0;
+
 const TUNING: Tuning = Tuning {
     copies_piece: COPIES_PIECE,
     crowded_cell: CROWDED_CELL,
@@ -199,7 +204,6 @@ fn find_with_corners(mesh: &Mesh, tolerance: f64) -> Result<Vec<(u32, TNode)>> {
 /// [`find_with_corners`], its work divided as `tuning` says.
 fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, TNode)>> {
     check_tolerance(tolerance)?;
-    let piece = tuning.copies_piece.max(1);
     // A naked edge has one corner: which corners those are is all the
     // search needs of the topology.
     let corners = CornerFaces::of_mesh(mesh)?;
@@ -288,8 +292,10 @@ fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, T
         naked_corner: &naked_corner,
         grid,
         tolerance,
-        piece,
-        crowded_cell: tuning.crowded_cell,
+        tuning: Tuning {
+            copies_piece: tuning.copies_piece.max(1),
+            ..tuning
+        },
     };
     // Cells numbered in one word when the mesh spans few enough of them:
     // half the bytes to sort and compare.
@@ -307,10 +313,7 @@ struct Search<'a> {
     naked_corner: &'a [u32],
     grid: CellGrid,
     tolerance: f64,
-    /// Vertices among which copies of a position are merged.
-    piece: usize,
-    /// Sites a cell holds before it is sorted along an axis.
-    crowded_cell: usize,
+    tuning: Tuning,
 }
 
 impl Search<'_> {
@@ -338,11 +341,11 @@ impl Search<'_> {
     /// Where a site within the tolerance of the segment from `a` to `b`
     /// can lie along `axis`, when the segment meets it in `cell`: the
     /// segment's extent within the cell's, widened by the tolerance and by
-    /// the round-off margin of [`cells_near`].
+    /// the [`ROUND_OFF`] margin the cells near a site are filed with.
     fn extent_in_cell(&self, a: DVec3, b: DVec3, cell: Cell, axis: usize) -> (f64, f64) {
         let size = self.grid.size;
         let cell_start = cell.0[axis] as f64 * size;
-        let margin = self.tolerance + size / 1024.0;
+        let margin = self.tolerance + size * ROUND_OFF;
         (
             a[axis].min(b[axis]).max(cell_start) - margin,
             a[axis].max(b[axis]).min(cell_start + size) + margin,
@@ -391,7 +394,7 @@ impl Search<'_> {
             }
         })?;
         entries.par_sort_unstable();
-        let index = CellIndex::of(entries, &sites.positions, self.crowded_cell)?;
+        let index = CellIndex::of(entries, &sites.positions, self.tuning.crowded_cell)?;
         // Edge by edge, in the order of their corners: blocks of edges on
         // all threads, each block's T-nodes in corner order.
         let blocks: Vec<Vec<(u32, TNode)>> = self
@@ -506,7 +509,8 @@ impl BoundarySites {
     fn of(search: &Search) -> Result<BoundarySites> {
         let mesh = search.mesh;
         let on_boundary = search.boundary_vertices();
-        let Some(Copies { site_of, sites }) = nearby_copies(mesh.positions(), search.piece)? else {
+        let piece = search.tuning.copies_piece;
+        let Some(Copies { site_of, sites }) = nearby_copies(mesh.positions(), piece)? else {
             // Every boundary vertex a site of its own.
             let members: Vec<u32> = (0..mesh.vertex_count() as u32)
                 .into_par_iter()
@@ -526,8 +530,8 @@ impl BoundarySites {
         // the pieces before (its first vertex is its first site): each
         // piece counts and files its members on its own thread.
         let pieces: Vec<Range<usize>> = (0..site_of.len())
-            .step_by(search.piece)
-            .map(|first| first..(first + search.piece).min(site_of.len()))
+            .step_by(piece)
+            .map(|first| first..(first + piece).min(site_of.len()))
             .collect();
         // Where each piece's sites start, and where the last one's end.
         let site_starts: Vec<u32> = pieces
@@ -827,12 +831,10 @@ fn parameter_inside(p: DVec3, a: DVec3, b: DVec3, tolerance: f64) -> Option<f64>
 /// The cells of `grid` within `tolerance` of `p` (the cell of `p` and
 /// those of its 26 neighbours whose side is that close), which hold every
 /// edge passing within `tolerance` of `p`: cells are never narrower than
-/// `tolerance`. A margin of 2^-10 of a cell covers the round-off of placing
-/// `p` and the edges in cells: cell numbers stay below 2^41 (see
-/// [`CellGrid::with_reach`]), where a double's step is 2^-12.
+/// `tolerance`, and a margin of [`ROUND_OFF`] of a cell more.
 fn cells_near(grid: &CellGrid, p: DVec3, tolerance: f64) -> impl Iterator<Item = Cell> {
     let home = grid.cell(p);
-    let reach = tolerance / grid.size + 1.0 / 1024.0;
+    let reach = tolerance / grid.size + ROUND_OFF;
     let steps = |axis: usize| {
         let t = p[axis] / grid.size;
         let inside = t - home.0[axis] as f64;
