@@ -131,21 +131,15 @@ pub(crate) fn show(word: &[u8]) -> String {
     format!("\"{shown}\"")
 }
 
-/// Powers of ten that a double holds exactly.
-const EXACT_POWERS_OF_TEN: [f64; 23] = [
-    1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16,
-    1e17, 1e18, 1e19, 1e20, 1e21, 1e22,
-];
-
 /// A floating-point number, exactly as `str::parse::<f64>` reads it
 /// (correctly rounded), or `None` where that fails.
 ///
-/// The common plain decimals (`-4.25`, `0.1`, `12`) of at most 2^53 in
-/// their digits and 22 decimals are read directly: the digits and the power
-/// of ten are both exact doubles, so their quotient is rounded once, as
-/// correctly rounded parsing requires (Clinger's fast path, which the
-/// standard library takes for them too). Anything else (exponents, more
-/// digits, `inf`, a `+` sign, malformed words) goes to the standard library.
+/// Words that `fast_float2` reads whole to a finite number are taken from
+/// it: both it and the standard library (whose parser is the same
+/// algorithm) round correctly, so they give the same bits, and it reads the
+/// digits eight at a time without first checking the word is UTF-8.
+/// Anything else (`inf`, `NaN`, malformed words, numbers beyond the range
+/// of a double) goes to the standard library, which decides.
 #[inline]
 pub(crate) fn f64_of(word: &[u8]) -> Option<f64> {
     // A word holds no white space; a slice that does is no number, as for
@@ -161,41 +155,20 @@ fn parsed_f64(word: &[u8]) -> Option<f64> {
 }
 
 /// The number the word at the start of `text` holds, read as [`f64_of`]
-/// describes, and the word's length. Plain decimals are read in the same
-/// pass that finds the word's end.
+/// describes, and the word's length. A number is read in the same pass
+/// that finds the word's end.
 #[inline]
 pub(crate) fn f64_at_start(text: &[u8]) -> Option<(f64, usize)> {
-    let negative = text.first() == Some(&b'-');
-    let mut end = usize::from(negative);
-    let (mut mantissa, mut digits, mut decimals, mut point) = (0u64, 0usize, 0usize, false);
-    while let Some(&b) = text.get(end) {
-        match b {
-            b'0'..=b'9' => {
-                // Past 19 digits the value is not used: the word goes to the
-                // standard library.
-                mantissa = mantissa.wrapping_mul(10).wrapping_add(u64::from(b - b'0'));
-                digits += 1;
-                decimals += usize::from(point);
-            }
-            b'.' if !point => point = true,
-            _ => break,
+    if let Ok((value, end)) = fast_float2::parse_partial::<f64, _>(text) {
+        let word_ends = text.get(end).is_none_or(u8::is_ascii_whitespace);
+        if word_ends && value.is_finite() {
+            return Some((value, end));
         }
-        end += 1;
     }
-    let word_ends = text.get(end).is_none_or(u8::is_ascii_whitespace);
-    if word_ends
-        && (1..=19).contains(&digits)
-        && mantissa <= 1 << 53
-        && decimals < EXACT_POWERS_OF_TEN.len()
-    {
-        let value = mantissa as f64 / EXACT_POWERS_OF_TEN[decimals];
-        return Some((if negative { -value } else { value }, end));
-    }
-    let end = end
-        + text[end..]
-            .iter()
-            .position(u8::is_ascii_whitespace)
-            .unwrap_or(text.len() - end);
+    let end = text
+        .iter()
+        .position(u8::is_ascii_whitespace)
+        .unwrap_or(text.len());
     parsed_f64(&text[..end]).map(|value| (value, end))
 }
 
@@ -460,9 +433,67 @@ mod tests {
             }
             words.push(word);
         }
+        // Words of number-like bytes: exponents, signs and points anywhere,
+        // the special words and their near misses, and the edges of a
+        // double's range.
+        const PIECES: [&str; 22] = [
+            "0", "1", "5", "9", "12345678", "99999999", ".", "e", "E", "+", "-", "e-", "e+", "inf",
+            "nan", "NaN", "infinity", "INF", "i", "308", "324", "x",
+        ];
+        for _ in 0..200_000 {
+            let pieces = 1 + next() % 6;
+            let word: String = (0..pieces)
+                .map(|_| PIECES[(next() % PIECES.len() as u64) as usize])
+                .collect();
+            words.push(word);
+        }
+        words.extend(
+            [
+                "1e308",
+                "1.7976931348623157e308",
+                "1.7976931348623158e308",
+                "1.8e308",
+                "1e309",
+                "-1e309",
+                "4.9e-324",
+                "2.4703282292062328e-324",
+                "2.4703282292062327e-324",
+                "1e-400",
+                "-1e-400",
+                "2.2250738585072011e-308",
+                "2.2250738585072014e-308",
+                "+inf",
+                "-NaN",
+                "+nan",
+                "Infinity",
+                "-infinity",
+                "infinit",
+                "1e",
+                "1e+",
+                "1.e5",
+                ".e5",
+                "-.e5",
+                "1.5E+3",
+                "1.5e-3",
+                "7.2057594037927933e16",
+                "9007199254740993.0000000000000000000001",
+            ]
+            .map(String::from),
+        );
+        words.push(format!("0.{}1", "0".repeat(400)));
+        words.push(format!("{}.5", "9".repeat(320)));
+        words.push(format!("1{}e-300", "0".repeat(300)));
         for word in &words {
             let float = word.parse::<f64>().ok().map(f64::to_bits);
             assert_eq!(f64_of(word.as_bytes()).map(f64::to_bits), float, "{word:?}");
+            // At the start of a line: the same number, and the word's end.
+            let line = format!("{word} 7\n");
+            let at_start = f64_at_start(line.as_bytes()).map(|(x, end)| (x.to_bits(), end));
+            let expected = match word.contains(char::is_whitespace) {
+                true => at_start,
+                false => float.map(|bits| (bits, word.len())),
+            };
+            assert_eq!(at_start, expected, "{word:?}");
             assert_eq!(
                 i64_of(word.as_bytes()),
                 word.parse::<i64>().ok(),
