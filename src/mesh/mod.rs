@@ -435,6 +435,21 @@ impl Mesh {
         if indices.len() > self.vertex_count() {
             return false;
         }
+        // As an STL file is read: corner k names vertex k. Checked in
+        // blocks, which vectorise, before the general walk.
+        let numbered_in_order = indices
+            .par_chunks(1 << 16)
+            .enumerate()
+            .all(|(block, chunk)| {
+                let first = (block << 16) as u32;
+                chunk
+                    .iter()
+                    .zip(first..)
+                    .fold(true, |all, (&v, k)| all & (v == k))
+            });
+        if numbered_in_order {
+            return true;
+        }
         let mut named = vec![0u64; self.vertex_count().div_ceil(64)];
         indices.iter().all(|&v| {
             let (word, bit) = (v as usize / 64, 1u64 << (v % 64));
@@ -801,6 +816,31 @@ mod tests {
         let coordinates = bytemuck::cast_slice(torus.positions()).to_vec();
         let (_, sizes, indices) = torus.into_parts();
         (coordinates, sizes, indices)
+    }
+
+    #[test]
+    fn corners_share_no_vertex_in_order_out_of_order_or_after_many_blocks() {
+        // Triangles over 3n vertices, corner k naming `order(k)`; long
+        // enough for several of the in-order check's blocks.
+        let soup = |n: usize, order: &dyn Fn(usize) -> u32| {
+            let positions = (0..3 * n).map(|k| DVec3::splat(k as f64)).collect();
+            let indices = (0..3 * n).map(order).collect();
+            Mesh::new(positions, vec![3; n], indices).unwrap()
+        };
+        let n = 100_000;
+        assert!(soup(n, &|k| k as u32).corners_share_no_vertex());
+        // Each triangle's corners turned: no vertex named twice, not in order.
+        let turned = |k: usize| (k - k % 3 + (k + 1) % 3) as u32;
+        assert!(soup(n, &turned).corners_share_no_vertex());
+        // In order but for the last triangle, which names the first vertex
+        // (its own third vertex is unused).
+        let last = 3 * n - 1;
+        let repeat_at_end = |k: usize| if k == last { 0 } else { k as u32 };
+        assert!(!soup(n, &repeat_at_end).corners_share_no_vertex());
+        // A shared vertex in the second block only.
+        let shared = |k: usize| if k == 70_000 { 69_998 } else { k as u32 };
+        assert!(!soup(n, &shared).corners_share_no_vertex());
+        assert!(!shapes::cube().corners_share_no_vertex());
     }
 
     #[test]
