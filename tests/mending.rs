@@ -6,7 +6,9 @@ use weft::mend::matching::{match_lines_to_edges, match_points_to_vertices};
 use weft::mend::orient::{is_orientable, signed_volume, unify_orientation};
 use weft::mend::t_nodes::{find_t_nodes, repair_t_nodes};
 use weft::mend::weld::{join, weld, DEFAULT_WELD_TOLERANCE};
-use weft::mesh::analysis::{is_planar, naked_boundaries, planarity_deviations, plane_deviation};
+use weft::mesh::analysis::{
+    is_planar, naked_boundaries, planarity, planarity_deviations, plane_deviation, Planarity,
+};
 use weft::mesh::shapes;
 use weft::subdivide::{catmull_clark, NakedEdges};
 use weft::{DVec3, Mesh, MeshInfo, Topology};
@@ -156,6 +158,58 @@ fn hyperbolic_paraboloid_grid_is_not_planar() {
     assert!(deviations.iter().all(|&d| d > 0.1 && d <= 0.25 + 1e-12));
     assert!(!is_planar(&mesh, 0.01).unwrap());
     assert!(is_planar(&mesh, 0.3).unwrap());
+}
+
+#[test]
+fn planarity_on_all_threads_is_each_face_measured_alone() {
+    // 120 × 100 cells of a warped surface (several runs of faces per
+    // thread), with a row of cells cut into triangles and one pentagon.
+    let warped = grid(120, 100, [-2.0, -1.0], [4.0, 3.0], |x, y| {
+        0.3 * x * y + 0.1 * (3.0 * x).sin()
+    });
+    let (positions, mut sizes, mut indices) = warped.into_parts();
+    let (quads_in_a_row, split) = (120, 40);
+    let row = &indices[4 * split * quads_in_a_row..4 * (split + 1) * quads_in_a_row].to_vec();
+    let mut tail: Vec<u32> = row
+        .chunks(4)
+        .flat_map(|q| [q[0], q[1], q[2], q[0], q[2], q[3]])
+        .collect();
+    tail.extend_from_slice(&[0, 1, 2, 123, 121]);
+    indices.splice(
+        4 * split * quads_in_a_row..4 * (split + 1) * quads_in_a_row,
+        [],
+    );
+    sizes.truncate(sizes.len() - quads_in_a_row);
+    sizes.extend(std::iter::repeat_n(3, 2 * quads_in_a_row));
+    sizes.push(5);
+    indices.extend(tail);
+    let mesh = Mesh::new(positions, sizes, indices).unwrap();
+    let alone: Vec<f64> = (0..mesh.face_count())
+        .map(|f| match mesh.face(f).len() {
+            3 => 0.0,
+            _ => plane_deviation(&mesh.face_positions(f).collect::<Vec<_>>()),
+        })
+        .collect();
+    assert_eq!(planarity_deviations(&mesh), alone);
+    let largest = alone.iter().copied().fold(0.0, f64::max);
+    assert!(
+        largest > 1e-5 && alone[mesh.face_count() - 2] == 0.0,
+        "{largest}"
+    );
+    for tolerance in [0.0, largest / 2.0, largest] {
+        let beyond = alone.iter().filter(|&&d| d > tolerance).count();
+        assert_eq!(
+            planarity(&mesh, tolerance).unwrap(),
+            Planarity {
+                largest_deviation: largest,
+                faces_beyond: beyond
+            }
+        );
+        assert_eq!(is_planar(&mesh, tolerance).unwrap(), beyond == 0);
+    }
+    assert!(planarity(&mesh, -1.0).is_err() && planarity(&mesh, f64::NAN).is_err());
+    let empty = Mesh::new(Vec::new(), Vec::new(), Vec::new()).unwrap();
+    assert_eq!(planarity(&empty, 0.0).unwrap().faces_beyond, 0);
 }
 
 #[test]

@@ -436,9 +436,7 @@ pub unsafe extern "C" fn weft_planarity(
             let mesh = mesh_ref(mesh, "mesh")?;
             check_room("out_deviations", capacity, mesh.face_count())?;
             let out = output_slice(out_deviations, capacity, "out_deviations")?;
-            for (slot, d) in out.iter_mut().zip(analysis::planarity_deviations(mesh)) {
-                *slot = d;
-            }
+            analysis::write_planarity_deviations(mesh, &mut out[..mesh.face_count()]);
             Ok(())
         })
     }

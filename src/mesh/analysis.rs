@@ -2,6 +2,7 @@
 //! the naked boundary as polylines.
 
 use glam::{DMat3, DVec3};
+use rayon::prelude::*;
 
 use crate::error::Result;
 use crate::mesh::check_tolerance;
@@ -125,18 +126,84 @@ pub fn vertex_normals(mesh: &Mesh) -> Vec<DVec3> {
 /// This is the planarity check of a planar-quad (PQ) mesh: a face whose
 /// deviation is under the fabrication tolerance can be cut from a flat sheet.
 pub fn planarity_deviations(mesh: &Mesh) -> Vec<f64> {
-    let mut corners = Vec::new();
-    (0..mesh.face_count())
-        .map(|f| {
-            if mesh.face_sizes()[f] == 3 {
-                0.0
-            } else {
-                corners.clear();
-                corners.extend(mesh.face_positions(f));
-                plane_deviation(&corners)
-            }
-        })
-        .collect()
+    let mut deviations = vec![0.0; mesh.face_count()];
+    write_planarity_deviations(mesh, &mut deviations);
+    deviations
+}
+
+/// [`planarity_deviations`] into `out`, which has one slot per face, on all
+/// threads: each face's deviation is its own, whatever the order.
+pub(crate) fn write_planarity_deviations(mesh: &Mesh, out: &mut [f64]) {
+    out.par_iter_mut()
+        .enumerate()
+        .with_min_len(PLANARITY_RUN)
+        .for_each_init(Vec::new, |corners, (f, slot)| {
+            *slot = face_plane_deviation(mesh, f, corners);
+        });
+}
+
+/// Faces a thread measures at a time: a face takes a small eigenproblem.
+const PLANARITY_RUN: usize = 4096;
+
+/// The deviation of face `f` from its best-fit plane, its corners gathered
+/// into `corners`.
+fn face_plane_deviation(mesh: &Mesh, f: usize, corners: &mut Vec<DVec3>) -> f64 {
+    let face = mesh.face(f);
+    if face.len() == 3 {
+        return 0.0;
+    }
+    corners.clear();
+    corners.extend(face.iter().map(|&v| mesh.positions()[v as usize]));
+    plane_deviation(corners)
+}
+
+/// The planarity of a whole mesh against a tolerance (see
+/// [`planarity_deviations`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Planarity {
+    /// The largest deviation of any face (0 for a mesh without faces).
+    pub largest_deviation: f64,
+    /// How many faces are not within the tolerance.
+    pub faces_beyond: usize,
+}
+
+/// The largest deviation of a face from its best-fit plane, and how many
+/// faces are further than `tolerance`, measured on all threads without a
+/// deviation per face kept.
+///
+/// # Errors
+/// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when
+/// `tolerance` is negative, NaN or infinite.
+pub fn planarity(mesh: &Mesh, tolerance: f64) -> Result<Planarity> {
+    check_tolerance(tolerance)?;
+    let start = Planarity {
+        largest_deviation: 0.0,
+        faces_beyond: 0,
+    };
+    // The largest and the count do not depend on the order of the faces.
+    Ok((0..mesh.face_count())
+        .into_par_iter()
+        .with_min_len(PLANARITY_RUN)
+        .fold(
+            || (start, Vec::new()),
+            |(sum, mut corners), f| {
+                let deviation = face_plane_deviation(mesh, f, &mut corners);
+                let sum = Planarity {
+                    largest_deviation: sum.largest_deviation.max(deviation),
+                    faces_beyond: sum.faces_beyond
+                        + usize::from(deviation > tolerance || deviation.is_nan()),
+                };
+                (sum, corners)
+            },
+        )
+        .map(|(sum, _)| sum)
+        .reduce(
+            || start,
+            |a, b| Planarity {
+                largest_deviation: a.largest_deviation.max(b.largest_deviation),
+                faces_beyond: a.faces_beyond + b.faces_beyond,
+            },
+        ))
 }
 
 /// Whether every face lies within `tolerance` of its best-fit plane (see
@@ -146,10 +213,7 @@ pub fn planarity_deviations(mesh: &Mesh) -> Vec<f64> {
 /// [`Error::InvalidArgument`](crate::Error::InvalidArgument) when
 /// `tolerance` is negative, NaN or infinite.
 pub fn is_planar(mesh: &Mesh, tolerance: f64) -> Result<bool> {
-    check_tolerance(tolerance)?;
-    Ok(planarity_deviations(mesh)
-        .into_iter()
-        .all(|d| d <= tolerance))
+    Ok(planarity(mesh, tolerance)?.faces_beyond == 0)
 }
 
 /// The largest distance of `points` from their least-squares plane.

@@ -4,6 +4,7 @@
 use std::path::Path;
 
 use rayon::prelude::*;
+use weft::mesh::analysis;
 use weft::{Mesh, MeshInfo};
 
 /// What `weft info` reports.
@@ -33,21 +34,22 @@ pub struct Report {
     pub attributes: Vec<&'static str>,
 }
 
-pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
+pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> weft::Result<Report> {
     // The topology beside the per-face and per-vertex counts; each side
     // splits its own work over the threads rayon has free.
-    let (info, ((max_planarity_deviation, non_planar_faces), unused_vertices)) = rayon::join(
+    let (info, (planarity, unused_vertices)) = rayon::join(
         || MeshInfo::of(mesh),
         || {
             rayon::join(
-                || planarity(mesh, planarity_tolerance),
+                || analysis::planarity(mesh, planarity_tolerance),
                 || weft::mend::weld::unused_vertex_count(mesh),
             )
         },
     );
+    let planarity = planarity?;
     let count = |size: u32| mesh.face_sizes().par_iter().filter(|&&s| s == size).count();
     let (triangles, quads) = (count(3), count(4));
-    Report {
+    Ok(Report {
         vertices: info.vertex_count,
         unused_vertices,
         faces: info.face_count,
@@ -65,40 +67,11 @@ pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> Report {
         bounding_box: mesh
             .bounding_box()
             .map(|(lo, hi)| (lo.to_array(), hi.to_array())),
-        max_planarity_deviation,
-        non_planar_faces,
+        max_planarity_deviation: planarity.largest_deviation,
+        non_planar_faces: planarity.faces_beyond,
         planarity_tolerance,
         attributes: Vec::new(),
-    }
-}
-
-/// The largest distance of a face's corners from its best-fit plane and
-/// how many faces are further than `tolerance`, as
-/// [`weft::mesh::analysis::planarity_deviations`] measures them, over the
-/// faces in parallel (the largest and the count do not depend on the order).
-fn planarity(mesh: &Mesh, tolerance: f64) -> (f64, usize) {
-    (0..mesh.face_count())
-        .into_par_iter()
-        .with_min_len(4096)
-        .fold(
-            || (0.0f64, 0usize, Vec::new()),
-            |(largest, count, mut corners), f| {
-                let deviation = if mesh.face_sizes()[f] == 3 {
-                    0.0
-                } else {
-                    corners.clear();
-                    corners.extend(mesh.face_positions(f));
-                    weft::mesh::analysis::plane_deviation(&corners)
-                };
-                (
-                    largest.max(deviation),
-                    count + (deviation > tolerance) as usize,
-                    corners,
-                )
-            },
-        )
-        .map(|(largest, count, _)| (largest, count))
-        .reduce(|| (0.0, 0), |a, b| (a.0.max(b.0), a.1 + b.1))
+    })
 }
 
 /// One fact of the report: its line of text (none when the text leaves it

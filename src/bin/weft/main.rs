@@ -358,7 +358,8 @@ fn run(cli: &Cli) -> Result<(), Failure> {
             let file = read_file_or_mesh(cli, input)?;
             let mesh = &file.mesh;
             let mut report =
-                with_progress("analysing", || info::describe(mesh, *planarity_tolerance));
+                with_progress("analysing", || info::describe(mesh, *planarity_tolerance))
+                    .map_err(|e| Failure::Failed(format!("{}: {e}", input.display())))?;
             report.attributes = file.attribute_names();
             if *json {
                 println!("{}", report.json(input));
