@@ -15,15 +15,28 @@ use crate::mesh::Mesh;
 /// on non-planar and non-convex polygons (Sutherland, Sproull & Schumacker
 /// 1974). A face of zero area gets the zero vector.
 pub fn face_normals(mesh: &Mesh) -> Vec<DVec3> {
+    // Each face's normal is its own: the same bits on any number of threads.
     (0..mesh.face_count())
+        .into_par_iter()
+        .with_min_len(NORMALS_RUN)
         .map(|f| face_normal(mesh, f))
         .collect()
 }
 
+/// Faces a thread takes at a time for their normals.
+const NORMALS_RUN: usize = 8192;
+
 /// The area vector of face `f` (its normal times its area), by Newell's method.
 pub fn area_vector(mesh: &Mesh, f: usize) -> DVec3 {
-    let corners: Vec<DVec3> = mesh.face_positions(f).collect();
-    newell_vector(&corners) / 2.0
+    let p = mesh.positions();
+    let face = mesh.face(f);
+    // `newell_vector` of the face's corners, read where they lie.
+    let Some(&first) = face.first() else {
+        return DVec3::ZERO;
+    };
+    let origin = p[first as usize];
+    let corner = |i: usize| p[face[i % face.len()] as usize] - origin;
+    (0..face.len()).fold(DVec3::ZERO, |sum, i| sum + corner(i).cross(corner(i + 1))) / 2.0
 }
 
 /// The unit Newell normal of face `f`; zero for a face of no area.
@@ -400,6 +413,34 @@ mod tests {
             median_edge_length_sampled(&torus, 0),
             median_edge_length_sampled(&torus, 1)
         );
+    }
+
+    #[test]
+    fn face_normals_on_all_threads_are_newells_sum_of_each_face_alone() {
+        // Mixed sizes, a twisted surface, far from the origin, and many runs
+        // of faces per thread.
+        let mut mixed = shapes::torus(200, 120);
+        let moved: Vec<DVec3> = mixed
+            .positions()
+            .iter()
+            .map(|p| DVec3::new(p.x + 0.1 * p.y * p.z, p.y, p.z * 1.3) + 1e4)
+            .collect();
+        mixed = mixed.with_positions(moved).unwrap();
+        let (positions, mut sizes, mut indices) = mixed.into_parts();
+        sizes.extend([3, 5]);
+        indices.extend([0, 1, 91, 2, 3, 4, 94, 93]);
+        let mesh = Mesh::new(positions, sizes, indices).unwrap();
+        let normals = face_normals(&mesh);
+        for f in 0..mesh.face_count() {
+            let corners: Vec<DVec3> = mesh.face_positions(f).collect();
+            let area = newell_vector(&corners) / 2.0;
+            assert_eq!(
+                area_vector(&mesh, f).to_array(),
+                area.to_array(),
+                "face {f}"
+            );
+            assert_eq!(normals[f], area.normalize_or_zero(), "face {f}");
+        }
     }
 
     #[test]
