@@ -431,7 +431,7 @@ mod tests {
         indices.extend([0, 1, 91, 2, 3, 4, 94, 93]);
         let mesh = Mesh::new(positions, sizes, indices).unwrap();
         let normals = face_normals(&mesh);
-        for f in 0..mesh.face_count() {
+        for (f, &normal) in normals.iter().enumerate() {
             let corners: Vec<DVec3> = mesh.face_positions(f).collect();
             let area = newell_vector(&corners) / 2.0;
             assert_eq!(
@@ -439,7 +439,7 @@ mod tests {
                 area.to_array(),
                 "face {f}"
             );
-            assert_eq!(normals[f], area.normalize_or_zero(), "face {f}");
+            assert_eq!(normal, area.normalize_or_zero(), "face {f}");
         }
     }
 
