@@ -4,6 +4,7 @@
 use glam::{DMat3, DVec3};
 use rayon::prelude::*;
 
+use crate::buffers::split_by_offsets;
 use crate::error::Result;
 use crate::mesh::check_tolerance;
 use crate::mesh::topology::Topology;
@@ -111,24 +112,61 @@ pub fn newell_vector(corners: &[DVec3]) -> DVec3 {
 /// normal where it was. A vertex used by no face, or whose faces cancel,
 /// gets the zero vector.
 pub fn vertex_normals(mesh: &Mesh) -> Vec<DVec3> {
-    let p = mesh.positions();
+    let normals = face_normals(mesh);
+    let (offsets, indices) = (mesh.face_offsets(), mesh.face_indices());
     let mut sums = vec![DVec3::ZERO; mesh.vertex_count()];
-    for (f, normal) in face_normals(mesh).into_iter().enumerate() {
-        let face = mesh.face(f);
-        let n = face.len();
-        for i in 0..n {
-            let here = p[face[i] as usize];
-            let to_next = p[face[(i + 1) % n] as usize] - here;
-            let to_previous = p[face[(i + n - 1) % n] as usize] - here;
-            // atan2 keeps small and near-straight angles accurate where acos does not.
-            let angle = to_next
-                .cross(to_previous)
-                .length()
-                .atan2(to_next.dot(to_previous));
-            sums[face[i] as usize] += normal * angle;
+    let mut weighted = Vec::new();
+    // Block by block: each corner's weighted normal on all threads, then
+    // added to its vertex's sum corner after corner, in the order of the
+    // faces, which keeps the sums' rounding whatever the threads.
+    for first in (0..mesh.face_count()).step_by(SCATTER_BLOCK) {
+        let last = (first + SCATTER_BLOCK).min(mesh.face_count());
+        let corners = offsets[first] as usize..offsets[last] as usize;
+        weighted.clear();
+        weighted.resize(corners.len(), DVec3::ZERO);
+        split_by_offsets(&mut weighted, &offsets[first..=last], WEIGHT_RUN)
+            .into_par_iter()
+            .for_each(|(faces, mut part)| {
+                for f in faces {
+                    let f = first + f;
+                    let (own, rest) = std::mem::take(&mut part).split_at_mut(mesh.face(f).len());
+                    weight_corners(mesh, f, normals[f], own);
+                    part = rest;
+                }
+            });
+        for (&v, &w) in indices[corners].iter().zip(&weighted) {
+            sums[v as usize] += w;
         }
     }
-    sums.into_iter().map(DVec3::normalize_or_zero).collect()
+    sums.into_par_iter()
+        .with_min_len(NORMALS_RUN)
+        .map(DVec3::normalize_or_zero)
+        .collect()
+}
+
+/// Faces whose corners [`vertex_normals`] weighs at a time before adding
+/// them up: their weights stay in the cache.
+const SCATTER_BLOCK: usize = 1 << 14;
+
+/// Faces of a block a thread weighs at a time.
+const WEIGHT_RUN: usize = 1 << 10;
+
+/// Face `f`'s `normal` weighted by its angle at each corner, into `out`.
+fn weight_corners(mesh: &Mesh, f: usize, normal: DVec3, out: &mut [DVec3]) {
+    let p = mesh.positions();
+    let face = mesh.face(f);
+    let n = face.len();
+    for (i, out) in out.iter_mut().enumerate() {
+        let here = p[face[i] as usize];
+        let to_next = p[face[(i + 1) % n] as usize] - here;
+        let to_previous = p[face[(i + n - 1) % n] as usize] - here;
+        // atan2 keeps small and near-straight angles accurate where acos does not.
+        let angle = to_next
+            .cross(to_previous)
+            .length()
+            .atan2(to_next.dot(to_previous));
+        *out = normal * angle;
+    }
 }
 
 /// Per face, the largest distance of its corners from its best-fit plane:
@@ -441,6 +479,50 @@ mod tests {
             );
             assert_eq!(normal, area.normalize_or_zero(), "face {f}");
         }
+    }
+
+    #[test]
+    fn vertex_normals_on_all_threads_keep_the_order_of_the_sums() {
+        // Each corner's weight added to its vertex face after face, on one
+        // thread: the sums the blocks must reproduce bit for bit.
+        let one_thread = |mesh: &Mesh| {
+            let p = mesh.positions();
+            let mut sums = vec![DVec3::ZERO; mesh.vertex_count()];
+            for f in 0..mesh.face_count() {
+                let normal = face_normal(mesh, f);
+                let face = mesh.face(f);
+                let n = face.len();
+                for i in 0..n {
+                    let here = p[face[i] as usize];
+                    let to_next = p[face[(i + 1) % n] as usize] - here;
+                    let to_previous = p[face[(i + n - 1) % n] as usize] - here;
+                    let angle = to_next
+                        .cross(to_previous)
+                        .length()
+                        .atan2(to_next.dot(to_previous));
+                    sums[face[i] as usize] += normal * angle;
+                }
+            }
+            sums.into_iter()
+                .map(DVec3::normalize_or_zero)
+                .collect::<Vec<_>>()
+        };
+        // More faces than a block, of mixed sizes, with an unused vertex.
+        let torus = shapes::torus(240, 150);
+        let wavy: Vec<DVec3> = torus
+            .positions()
+            .iter()
+            .map(|p| *p + DVec3::new(0.0, 0.05 * (9.0 * p.x).sin(), 0.0))
+            .chain([DVec3::splat(7.0)])
+            .collect();
+        let (_, mut sizes, mut indices) = torus.into_parts();
+        sizes.extend([3, 5]);
+        indices.extend([0, 1, 151, 2, 3, 4, 154, 153]);
+        let mesh = Mesh::new(wavy, sizes, indices).unwrap();
+        assert!(mesh.face_count() > 2 * SCATTER_BLOCK);
+        let normals = vertex_normals(&mesh);
+        assert_eq!(normals, one_thread(&mesh));
+        assert_eq!(normals[mesh.vertex_count() - 1], DVec3::ZERO);
     }
 
     #[test]
