@@ -153,20 +153,23 @@ const WEIGHT_RUN: usize = 1 << 10;
 
 /// Face `f`'s `normal` weighted by its angle at each corner, into `out`.
 fn weight_corners(mesh: &Mesh, f: usize, normal: DVec3, out: &mut [DVec3]) {
-    let p = mesh.positions();
     let face = mesh.face(f);
-    let n = face.len();
     for (i, out) in out.iter_mut().enumerate() {
-        let here = p[face[i] as usize];
-        let to_next = p[face[(i + 1) % n] as usize] - here;
-        let to_previous = p[face[(i + n - 1) % n] as usize] - here;
-        // atan2 keeps small and near-straight angles accurate where acos does not.
-        let angle = to_next
-            .cross(to_previous)
-            .length()
-            .atan2(to_next.dot(to_previous));
-        *out = normal * angle;
+        *out = normal * corner_angle(mesh.positions(), face, i);
     }
+}
+
+/// The angle of `face` at its corner `i`.
+fn corner_angle(p: &[DVec3], face: &[u32], i: usize) -> f64 {
+    let n = face.len();
+    let here = p[face[i] as usize];
+    let to_next = p[face[(i + 1) % n] as usize] - here;
+    let to_previous = p[face[(i + n - 1) % n] as usize] - here;
+    // atan2 keeps small and near-straight angles accurate where acos does not.
+    to_next
+        .cross(to_previous)
+        .length()
+        .atan2(to_next.dot(to_previous))
 }
 
 /// Per face, the largest distance of its corners from its best-fit plane:
@@ -486,21 +489,12 @@ mod tests {
         // Each corner's weight added to its vertex face after face, on one
         // thread: the sums the blocks must reproduce bit for bit.
         let one_thread = |mesh: &Mesh| {
-            let p = mesh.positions();
             let mut sums = vec![DVec3::ZERO; mesh.vertex_count()];
             for f in 0..mesh.face_count() {
                 let normal = face_normal(mesh, f);
                 let face = mesh.face(f);
-                let n = face.len();
-                for i in 0..n {
-                    let here = p[face[i] as usize];
-                    let to_next = p[face[(i + 1) % n] as usize] - here;
-                    let to_previous = p[face[(i + n - 1) % n] as usize] - here;
-                    let angle = to_next
-                        .cross(to_previous)
-                        .length()
-                        .atan2(to_next.dot(to_previous));
-                    sums[face[i] as usize] += normal * angle;
+                for (i, &v) in face.iter().enumerate() {
+                    sums[v as usize] += normal * corner_angle(mesh.positions(), face, i);
                 }
             }
             sums.into_iter()
