@@ -29,15 +29,9 @@ const NORMALS_RUN: usize = 8192;
 
 /// The area vector of face `f` (its normal times its area), by Newell's method.
 pub fn area_vector(mesh: &Mesh, f: usize) -> DVec3 {
-    let p = mesh.positions();
-    let face = mesh.face(f);
-    // `newell_vector` of the face's corners, read where they lie.
-    let Some(&first) = face.first() else {
-        return DVec3::ZERO;
-    };
-    let origin = p[first as usize];
-    let corner = |i: usize| p[face[i % face.len()] as usize] - origin;
-    (0..face.len()).fold(DVec3::ZERO, |sum, i| sum + corner(i).cross(corner(i + 1))) / 2.0
+    let (p, face) = (mesh.positions(), mesh.face(f));
+    // The face's corners read where they lie, not copied out.
+    newell_sum(face.len(), |i| p[face[i] as usize]) / 2.0
 }
 
 /// The unit Newell normal of face `f`; zero for a face of no area.
@@ -95,11 +89,18 @@ fn median(mut lengths: Vec<f64>) -> f64 {
 /// whose length is twice its area. Taken about the first corner, which keeps
 /// polygons far from the origin exact. Zero for fewer than 3 corners.
 pub fn newell_vector(corners: &[DVec3]) -> DVec3 {
-    let Some(&origin) = corners.first() else {
+    newell_sum(corners.len(), |i| corners[i])
+}
+
+/// [`newell_vector`] of the `count` corners `corner(0), corner(1), …`.
+#[inline]
+fn newell_sum(count: usize, corner: impl Fn(usize) -> DVec3) -> DVec3 {
+    if count == 0 {
         return DVec3::ZERO;
-    };
-    (0..corners.len())
-        .map(|i| (corners[i] - origin).cross(corners[(i + 1) % corners.len()] - origin))
+    }
+    let origin = corner(0);
+    (0..count)
+        .map(|i| (corner(i) - origin).cross(corner((i + 1) % count) - origin))
         .sum()
 }
 
