@@ -371,6 +371,12 @@ fn render_with(
             let first = mesh.face_start(f);
             corners.clear();
             corners.extend(mesh.face_positions(f));
+            screen.clear();
+            screen.extend(corners.iter().map(|&p| camera.project(p)));
+            // A face that holds no sample's centre draws nothing.
+            if covered_samples(&screen, (w, h)).is_none() {
+                continue;
+            }
             let normal = crate::mesh::analysis::newell_vector(&corners).normalize_or_zero();
             let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
             if let Some(cut) = &options.section {
@@ -402,8 +408,6 @@ fn render_with(
             let shade = (0.34 + lambert) as f32;
             let shaded = base.map(|c| (c * shade).min(1.0));
 
-            screen.clear();
-            screen.extend(corners.iter().map(|&p| camera.project(p)));
             let n = screen.len();
             for i in 1..n - 1 {
                 // Side k of the fan triangle (0, i, i + 1) is opposite its corner k:
@@ -485,6 +489,36 @@ fn render_with(
     })
 }
 
+/// How far outside a polygon's bounds a sample's centre may lie and still
+/// be tested: far more than the rounding of the inside test, so that
+/// leaving out the samples beyond it changes no pixel.
+const BOUNDS_MARGIN: f64 = 1e-6;
+
+/// The columns and rows of the samples whose centres (at `x + 0.5`,
+/// `y + 0.5`) may lie inside the polygon `corners`, within the picture of
+/// `w` × `h` samples; `None` when there are none, as for most faces of a
+/// mesh with many faces to a pixel.
+fn covered_samples(
+    corners: &[(f64, f64, f64)],
+    (w, h): (usize, usize),
+) -> Option<([usize; 2], [usize; 2])> {
+    let (mut low, mut high) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
+    for &(x, y, _) in corners {
+        low = (low.0.min(x), low.1.min(y));
+        high = (high.0.max(x), high.1.max(y));
+    }
+    let span = |low: f64, high: f64, count: usize| -> Option<[usize; 2]> {
+        let first = (low - 0.5 - BOUNDS_MARGIN).ceil().max(0.0);
+        let last = (high - 0.5 + BOUNDS_MARGIN).floor().min(count as f64 - 1.0);
+        // Not `first > last`: a NaN bound covers nothing.
+        (first <= last).then_some([first as usize, last as usize])
+    };
+    Some((span(low.0, high.0, w)?, span(low.1, high.1, h)?))
+}
+
 /// Fills one triangle, z-buffered, drawing the sides marked in `sides` as lines.
 fn fill_triangle(
     color: &mut [[f32; 3]],
@@ -494,15 +528,26 @@ fn fill_triangle(
     shaded: [f32; 3],
     sides: [Side; 3],
 ) {
+    if let Some((columns, rows)) = covered_samples(&[a, b, c], (w, h)) {
+        fill_samples(color, depth, w, [a, b, c], shaded, sides, columns, rows);
+    }
+}
+
+/// [`fill_triangle`] over the samples of `columns` and `rows` (first and
+/// last, inclusive), which must lie in the picture.
+#[allow(clippy::too_many_arguments)]
+fn fill_samples(
+    color: &mut [[f32; 3]],
+    depth: &mut [f32],
+    w: usize,
+    [a, b, c]: [(f64, f64, f64); 3],
+    shaded: [f32; 3],
+    sides: [Side; 3],
+    [x0, x1]: [usize; 2],
+    [y0, y1]: [usize; 2],
+) {
     let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
     if !area.is_finite() || area.abs() < 1e-12 {
-        return;
-    }
-    let x0 = a.0.min(b.0).min(c.0).floor().max(0.0);
-    let x1 = a.0.max(b.0).max(c.0).ceil().min(w as f64 - 1.0);
-    let y0 = a.1.min(b.1).min(c.1).floor().max(0.0);
-    let y1 = a.1.max(b.1).max(c.1).ceil().min(h as f64 - 1.0);
-    if x0 > x1 || y0 > y1 {
         return;
     }
     // Length of the side opposite each corner, for distances to the sides:
@@ -511,9 +556,9 @@ fn fill_triangle(
     let side = |p: (f64, f64, f64), q: (f64, f64, f64)| (q.0 - p.0).hypot(q.1 - p.1);
     let mut side_lengths = None;
     let inverse_depth = [1.0 / a.2, 1.0 / b.2, 1.0 / c.2];
-    for y in y0 as usize..=y1 as usize {
+    for y in y0..=y1 {
         let py = y as f64 + 0.5;
-        for x in x0 as usize..=x1 as usize {
+        for x in x0..=x1 {
             let px = x as f64 + 0.5;
             let wa = ((b.0 - px) * (c.1 - py) - (b.1 - py) * (c.0 - px)) / area;
             let wb = ((c.0 - px) * (a.1 - py) - (c.1 - py) * (a.0 - px)) / area;
@@ -548,5 +593,86 @@ fn fill_triangle(
                 None => shaded,
             };
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Triangles of every size from a hundredth of a sample to most of the
+    /// picture, thin ones, and ones partly or wholly outside it: drawn
+    /// within [`covered_samples`] they paint exactly what they paint when
+    /// every sample of the picture is tested.
+    #[test]
+    fn covered_samples_leave_out_no_sample_a_triangle_paints() {
+        let (w, h) = (37, 23);
+        let mut state = 0x9e37_79b9_7f4a_7c15u64;
+        let mut next = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut painted, mut skipped) = (0, 0);
+        for case in 0..20_000 {
+            let size = [0.01, 0.3, 1.0, 2.5, 12.0, 40.0][case % 6];
+            let (cx, cy) = (next() * 50.0 - 6.0, next() * 36.0 - 6.0);
+            let triangle: [(f64, f64, f64); 3] = std::array::from_fn(|_| {
+                let [x, y, z, snap] = [next(), next(), next(), next()];
+                let (x, y) = (cx + (x - 0.5) * size, cy + (y - 0.5) * size);
+                // Corners on sample centres and halfway between, now and then.
+                match snap < 0.2 {
+                    true => ((x * 2.0).round() / 2.0, (y * 2.0).round() / 2.0, 1.0 + z),
+                    false => (x, y, 1.0 + z),
+                }
+            });
+            let sides = [Side::Edge, Side::Naked, Side::Hidden];
+            let mut within = (vec![BACKGROUND; w * h], vec![f32::INFINITY; w * h]);
+            let mut everywhere = within.clone();
+            fill_triangle(&mut within.0, &mut within.1, (w, h), triangle, FRONT, sides);
+            let all = ([0, w - 1], [0, h - 1]);
+            let (colour, depth) = (&mut everywhere.0, &mut everywhere.1);
+            fill_samples(colour, depth, w, triangle, FRONT, sides, all.0, all.1);
+            assert_eq!(within, everywhere, "case {case}: {triangle:?}");
+            match covered_samples(&triangle, (w, h)) {
+                None => skipped += 1,
+                Some(_) if within.1.iter().any(|d| d.is_finite()) => painted += 1,
+                Some(_) => {}
+            }
+        }
+        // The cases reach both sides of the test.
+        assert!(
+            painted > 1000 && skipped > 1000,
+            "{painted} painted, {skipped} skipped"
+        );
+    }
+
+    #[test]
+    fn covered_samples_are_the_centres_within_the_bounds() {
+        let at = |x: f64, y: f64| (x, y, 1.0);
+        // Centres at 2.5 and 3.5 lie within [2.5, 3.6]; 4.5 does not.
+        assert_eq!(
+            covered_samples(&[at(2.5, 0.2), at(3.6, 0.9)], (10, 10)),
+            Some(([2, 3], [0, 0]))
+        );
+        // Between two centres, and off the picture.
+        assert_eq!(
+            covered_samples(&[at(2.6, 0.6), at(3.4, 1.4)], (10, 10)),
+            None
+        );
+        assert_eq!(
+            covered_samples(&[at(-3.0, 2.0), at(-0.6, 4.0)], (10, 10)),
+            None
+        );
+        assert_eq!(
+            covered_samples(&[at(9.6, 2.0), at(20.0, 4.0)], (10, 10)),
+            None
+        );
+        // Clipped to the picture.
+        assert_eq!(
+            covered_samples(&[at(-5.0, -5.0), at(50.0, 50.0)], (10, 8)),
+            Some(([0, 9], [0, 7]))
+        );
     }
 }
