@@ -62,9 +62,8 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
     let face_base = vertex_base + parent.edge_count() as u32;
     // The child quad c has corners 4c..4c + 4; each makes a quad
     // [v_k, e_k, c, e_prev(k)] of the grandchild level.
-    let indices = par_groups(corner_count, into, "child faces", |c| {
-        let (quad, edges) = (parent.quad(c), parent.quad_edges(c));
-        let mut out = [0u32; 16];
+    let grandchildren = |c: usize, edges: [u32; 4], out: &mut [u32]| {
+        let quad = parent.quad(c);
         for j in 0..4 {
             out[4 * j..4 * j + 4].copy_from_slice(&[
                 quad[j],
@@ -73,8 +72,24 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
                 vertex_base + edges[(j + 3) % 4],
             ]);
         }
-        out
-    })?;
+    };
+    let indices = if parent.parent.faces.size == 4 {
+        // A parent quad's corners at once: they share their edges' slots.
+        par_groups(corner_count / 4, into, "child faces", |q| {
+            let edges = parent.quad_edges_of_quad(q);
+            let mut out = [0u32; 64];
+            for (j, group) in out.chunks_exact_mut(16).enumerate() {
+                grandchildren(4 * q + j, edges[j], group);
+            }
+            out
+        })?
+    } else {
+        par_groups(corner_count, into, "child faces", |c| {
+            let mut out = [0u32; 16];
+            grandchildren(c, parent.quad_edges(c), &mut out);
+            out
+        })?
+    };
     Ok(Faces {
         vertex_count: parent.vertex_count() + parent.edge_count() + corner_count,
         size: 4,

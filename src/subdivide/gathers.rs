@@ -490,6 +490,15 @@ impl RefinedGathers<'_> {
             .connectivity
             .child_quad_edges(self.parent.faces, c)
     }
+
+    /// [`RefinedGathers::quad_edges`] of the four corners of the parent's
+    /// quad `q`, when the parent's faces are all quads.
+    #[inline]
+    pub(crate) fn quad_edges_of_quad(&self, q: usize) -> [[u32; 4]; 4] {
+        self.parent
+            .connectivity
+            .child_quad_edges_of_quad(self.parent.faces, q)
+    }
 }
 
 /// The most edges [`RefinedGathers::slot_wings`] walks around at once.

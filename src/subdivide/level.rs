@@ -294,6 +294,34 @@ impl Connectivity {
         ]
     }
 
+    /// [`Connectivity::child_quad_edges`] of the four corners of quad `q`
+    /// of `faces`, which are all quads: each edge-corner slot, which two
+    /// corners' child quads share, is found once.
+    #[inline]
+    pub(crate) fn child_quad_edges_of_quad(&self, faces: &Faces, q: usize) -> [[u32; 4]; 4] {
+        let two_e = 2 * self.edge_count() as u32;
+        let first = 4 * q;
+        let edges = &self.corner_edges[first..first + 4];
+        let vertices = &faces.indices[first..first + 4];
+        let mut inside = [0u32; 4];
+        for (j, slot) in inside.iter_mut().enumerate() {
+            let e = edges[j] as usize;
+            *slot =
+                two_e + self.edge_offsets[e] + position(self.edge_corners(e), (first + j) as u32);
+        }
+        let mut quads = [[0u32; 4]; 4];
+        for (j, quad) in quads.iter_mut().enumerate() {
+            let previous = (j + 3) % 4;
+            *quad = [
+                self.vertex_edge_slot(vertices[j], edges[j]),
+                inside[j],
+                inside[previous],
+                self.vertex_edge_slot_arriving(vertices[j], edges[previous]),
+            ];
+        }
+        quads
+    }
+
     /// Where edge `e` (one of vertex `v`'s) sits in `vertex_edges`; for a
     /// degenerate edge `[v, v]`, listed twice, the slot of the end it
     /// leaves `v` from.

@@ -70,6 +70,17 @@ fn refined_gathers_equal_the_built_level() {
                     .collect();
                 assert_eq!(refined.quad_edges(f).to_vec(), edges, "{what}: face {f}");
             }
+            if refined.parent.faces.size == 4 {
+                for q in 0..built.face_count() / 4 {
+                    let one_by_one: [[u32; 4]; 4] =
+                        std::array::from_fn(|j| refined.quad_edges(4 * q + j));
+                    assert_eq!(
+                        refined.quad_edges_of_quad(q),
+                        one_by_one,
+                        "{what}: quad {q}"
+                    );
+                }
+            }
             assert_same_gathers(&refined, &built, &what);
             // The points made around the parent's faces, edges and vertices
             // are the points made kind by kind from the built level.

@@ -64,6 +64,15 @@ impl Connectivity {
 
         // Quad c's edges: [v_c, e_c], [e_c, f], [f, e_prev], [e_prev, v_c].
         let build_corner_edges = || -> Result<Vec<u32>> {
+            if faces.size == 4 {
+                // A quad's corners at once: they share their edges' slots.
+                let quads = par_map(faces.face_count(), "corner edges", |q| {
+                    bytemuck::cast::<[[u32; 4]; 4], [u32; 16]>(
+                        self.child_quad_edges_of_quad(faces, q),
+                    )
+                })?;
+                return Ok(flatten(quads));
+            }
             let quads = par_map(c_count, "corner edges", |c| self.child_quad_edges(faces, c))?;
             Ok(flatten(quads))
         };
