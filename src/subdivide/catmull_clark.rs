@@ -62,8 +62,7 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
     let face_base = vertex_base + parent.edge_count() as u32;
     // The child quad c has corners 4c..4c + 4; each makes a quad
     // [v_k, e_k, c, e_prev(k)] of the grandchild level.
-    let grandchildren = |c: usize, edges: [u32; 4], out: &mut [u32]| {
-        let quad = parent.quad(c);
+    let grandchildren = |c: usize, quad: [u32; 4], edges: [u32; 4], out: &mut [u32]| {
         for j in 0..4 {
             out[4 * j..4 * j + 4].copy_from_slice(&[
                 quad[j],
@@ -76,17 +75,17 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
     let indices = if parent.parent.faces.size == 4 {
         // A parent quad's corners at once: they share their edges' slots.
         par_groups(corner_count / 4, into, "child faces", |q| {
-            let edges = parent.quad_edges_of_quad(q);
+            let (quads, edges) = (parent.quads_of_quad(q), parent.quad_edges_of_quad(q));
             let mut out = [0u32; 64];
             for (j, group) in out.chunks_exact_mut(16).enumerate() {
-                grandchildren(4 * q + j, edges[j], group);
+                grandchildren(4 * q + j, quads[j], edges[j], group);
             }
             out
         })?
     } else {
         par_groups(corner_count, into, "child faces", |c| {
             let mut out = [0u32; 16];
-            grandchildren(c, parent.quad_edges(c), &mut out);
+            grandchildren(c, parent.quad(c), parent.quad_edges(c), &mut out);
             out
         })?
     };
@@ -100,7 +99,12 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
 
 #[inline]
 fn face_point(level: &impl Gathers, points: &[DVec3], f: usize) -> DVec3 {
-    let corners = level.face(f);
+    mean_of(level.face(f), points)
+}
+
+/// The mean of the points at `corners`, summed in their order.
+#[inline]
+fn mean_of(corners: impl ExactSizeIterator<Item = u32>, points: &[DVec3]) -> DVec3 {
     let n = corners.len() as f64;
     let sum = corners.fold(DVec3::ZERO, |s, v| s + points[v as usize]);
     divided(sum, n)
@@ -459,8 +463,15 @@ fn around_parent_faces(
         .for_each(|(block, first_corner, face_points, vertex_points)| {
             for f in block.clone() {
                 let corners = faces.corners(f);
-                for c in corners.clone() {
-                    face_points[c - first_corner] = face_point(level, points, c);
+                if faces.size == 4 {
+                    // The quad's four faces read its corners' edges once.
+                    for (c, quad) in corners.clone().zip(level.quads_of_quad(f)) {
+                        face_points[c - first_corner] = mean_of(quad.into_iter(), points);
+                    }
+                } else {
+                    for c in corners.clone() {
+                        face_points[c - first_corner] = face_point(level, points, c);
+                    }
                 }
                 // The ring of face f's point (see `RefinedGathers::around`):
                 // the points of the edges before its corners, its face points.

@@ -491,6 +491,25 @@ impl RefinedGathers<'_> {
             .child_quad_edges(self.parent.faces, c)
     }
 
+    /// [`RefinedGathers::quad`] of the four corners of the parent's quad
+    /// `q`, when the parent's faces are all quads: each corner's edge is
+    /// read once for the two faces that name its point.
+    #[inline]
+    pub(crate) fn quads_of_quad(&self, q: usize) -> [[u32; 4]; 4] {
+        let (v, e) = self.parent_counts();
+        let first = 4 * q;
+        let vertices = &self.parent.faces.indices[first..first + 4];
+        let edges = &self.parent.connectivity.corner_edges[first..first + 4];
+        let face_point = (v + e + q) as u32;
+        let mut quads = [[0u32; 4]; 4];
+        for (j, quad) in quads.iter_mut().enumerate() {
+            let previous = (j + 3) % 4;
+            let (edge, edge_before) = (v as u32 + edges[j], v as u32 + edges[previous]);
+            *quad = [vertices[j], edge, face_point, edge_before];
+        }
+        quads
+    }
+
     /// [`RefinedGathers::quad_edges`] of the four corners of the parent's
     /// quad `q`, when the parent's faces are all quads.
     #[inline]

@@ -79,6 +79,9 @@ fn refined_gathers_equal_the_built_level() {
                         one_by_one,
                         "{what}: quad {q}"
                     );
+                    let one_by_one: [[u32; 4]; 4] =
+                        std::array::from_fn(|j| refined.quad(4 * q + j));
+                    assert_eq!(refined.quads_of_quad(q), one_by_one, "{what}: quad {q}");
                 }
             }
             assert_same_gathers(&refined, &built, &what);
