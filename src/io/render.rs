@@ -528,14 +528,13 @@ fn fill_triangle(
     shaded: [f32; 3],
     sides: [Side; 3],
 ) {
-    if let Some((columns, rows)) = covered_samples(&[a, b, c], (w, h)) {
-        fill_samples(color, depth, w, [a, b, c], shaded, sides, columns, rows);
+    if let Some(samples) = covered_samples(&[a, b, c], (w, h)) {
+        fill_samples(color, depth, w, [a, b, c], shaded, sides, samples);
     }
 }
 
-/// [`fill_triangle`] over the samples of `columns` and `rows` (first and
-/// last, inclusive), which must lie in the picture.
-#[allow(clippy::too_many_arguments)]
+/// [`fill_triangle`] over the samples of the given columns and rows (first
+/// and last, inclusive), which must lie in the picture.
 fn fill_samples(
     color: &mut [[f32; 3]],
     depth: &mut [f32],
@@ -543,8 +542,7 @@ fn fill_samples(
     [a, b, c]: [(f64, f64, f64); 3],
     shaded: [f32; 3],
     sides: [Side; 3],
-    [x0, x1]: [usize; 2],
-    [y0, y1]: [usize; 2],
+    ([x0, x1], [y0, y1]): ([usize; 2], [usize; 2]),
 ) {
     let area = (b.0 - a.0) * (c.1 - a.1) - (b.1 - a.1) * (c.0 - a.0);
     if !area.is_finite() || area.abs() < 1e-12 {
@@ -633,7 +631,7 @@ mod tests {
             fill_triangle(&mut within.0, &mut within.1, (w, h), triangle, FRONT, sides);
             let all = ([0, w - 1], [0, h - 1]);
             let (colour, depth) = (&mut everywhere.0, &mut everywhere.1);
-            fill_samples(colour, depth, w, triangle, FRONT, sides, all.0, all.1);
+            fill_samples(colour, depth, w, triangle, FRONT, sides, all);
             assert_eq!(within, everywhere, "case {case}: {triangle:?}");
             match covered_samples(&triangle, (w, h)) {
                 None => skipped += 1,
