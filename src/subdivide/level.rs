@@ -305,9 +305,7 @@ impl Connectivity {
         let vertices = &faces.indices[first..first + 4];
         let mut inside = [0u32; 4];
         for (j, slot) in inside.iter_mut().enumerate() {
-            let e = edges[j] as usize;
-            *slot =
-                two_e + self.edge_offsets[e] + position(self.edge_corners(e), (first + j) as u32);
+            *slot = two_e + self.edge_corner_slot(first + j);
         }
         let mut quads = [[0u32; 4]; 4];
         for (j, quad) in quads.iter_mut().enumerate() {
