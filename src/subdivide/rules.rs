@@ -28,7 +28,7 @@ use rayon::prelude::*;
 
 use super::level::{Connectivity, Faces};
 use super::scheme::{NakedEdges, Scheme, VertexRule};
-use crate::buffers::{try_vec, zeroed, CHUNK};
+use crate::buffers::{par_map, try_vec, zeroed, CHUNK};
 use crate::error::Result;
 
 /// Sharpness of every edge and rule of every vertex of one level.
@@ -108,9 +108,9 @@ pub(crate) fn forced_sharpness(
         }
     }
 
-    let mut vertex_infinite = try_vec(vertex_count, "vertex tags")?;
-    let mut sharp_edge_counts = try_vec(vertex_count, "vertex tags")?;
-    for (v, &[edges, naked, non_manifold_edges, sharp_edges]) in counts.iter().enumerate() {
+    // The fans are walked vertex by vertex, each on its own: in parallel.
+    let vertex_infinite = par_map(vertex_count, "vertex tags", |v| {
+        let [edges, naked, non_manifold_edges, _] = counts[v];
         let face_count = connectivity.vertex_corners(v).len() as u32;
         let non_manifold = face_count == 0
             || non_manifold_edges > 0
@@ -118,14 +118,12 @@ pub(crate) fn forced_sharpness(
         let topological_corner = face_count == 1 && edges == 2;
         let interior_non_manifold_crease =
             non_manifold_edges == 2 && naked == 0 && face_count > edges;
-        vertex_infinite.push(
-            face_count == 0
-                || (naked_edges == NakedEdges::Fixed && naked > 0)
-                || (naked_edges == NakedEdges::CornerFixed && topological_corner)
-                || (non_manifold && !interior_non_manifold_crease),
-        );
-        sharp_edge_counts.push(sharp_edges);
-    }
+        face_count == 0
+            || (naked_edges == NakedEdges::Fixed && naked > 0)
+            || (naked_edges == NakedEdges::CornerFixed && topological_corner)
+            || (non_manifold && !interior_non_manifold_crease)
+    })?;
+    let sharp_edge_counts = par_map(vertex_count, "vertex tags", |v| counts[v][3])?;
     Ok(ForcedSharpness {
         edge_infinite: edge_sharp,
         vertex_infinite,

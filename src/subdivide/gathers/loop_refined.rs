@@ -22,21 +22,22 @@ use crate::error::Result;
 use crate::subdivide::level::{Connectivity, NONE};
 use crate::subdivide::scheme::VertexRule;
 
-/// The edges inside the triangles of the level refined from a level of
-/// this connectivity whose lower parent edge is m, as (higher parent edge,
-/// triangle, m), unsorted.
-fn higher_edges(
-    connectivity: &Connectivity,
-    m: usize,
-) -> impl Iterator<Item = (u32, u32, u32)> + '_ {
-    connectivity.edge_corners(m).iter().flat_map(move |&c| {
-        let f = c as usize / 3;
-        let [_, next, previous] = edges_from(&connectivity.corner_edges, c as usize);
-        [next, previous]
-            .into_iter()
-            .filter(move |&h| h as usize > m)
-            .map(move |h| (h, f as u32, m as u32))
-    })
+/// Visits the edges inside the triangles of the level refined from a level
+/// of this connectivity whose lower parent edge is m, as (higher parent
+/// edge, triangle, m), unsorted. Each corner of m, in triangle f, gives
+/// f's other two edges that are higher than m; m itself is never higher,
+/// so f's three edges are read without finding m among them.
+#[inline]
+fn higher_edges(connectivity: &Connectivity, m: usize, mut visit: impl FnMut((u32, u32, u32))) {
+    for &c in connectivity.edge_corners(m) {
+        let f = c / 3;
+        let first = 3 * f as usize;
+        for &h in &connectivity.corner_edges[first..first + 3] {
+            if h as usize > m {
+                visit((h, f, m as u32));
+            }
+        }
+    }
 }
 
 /// Where the edges inside triangles whose lower parent edge is m start
@@ -47,7 +48,9 @@ fn higher_edges(
 /// [`crate::Error::OutOfMemory`].
 pub(crate) fn inside_offsets(connectivity: &Connectivity) -> Result<Vec<u32>> {
     par_offsets(connectivity.edge_count(), "edges", |m| {
-        higher_edges(connectivity, m).count() as u32
+        let mut count = 0;
+        higher_edges(connectivity, m, |_| count += 1);
+        count
     })
 }
 
@@ -71,9 +74,11 @@ impl<'a> LoopRefinedGathers<'a> {
         let connectivity = parent.connectivity;
         let offsets = inside_offsets(connectivity)?;
         let edges = fill_by_offsets(&offsets, "edges", |m, out| {
-            for (out, edge) in out.iter_mut().zip(higher_edges(connectivity, m)) {
-                *out = edge;
-            }
+            let mut k = 0;
+            higher_edges(connectivity, m, |edge| {
+                out[k] = edge;
+                k += 1;
+            });
             out.sort_unstable();
         })?;
         Ok(LoopRefinedGathers {
@@ -140,33 +145,35 @@ impl<'a> LoopRefinedGathers<'a> {
     pub(crate) fn children(&self, f: usize) -> [([u32; 3], [u32; 3]); 4] {
         let (v_count, _) = self.parent_counts();
         let connectivity = self.parent.connectivity;
-        let v = [0, 1, 2].map(|i| self.parent.faces.indices[3 * f + i]);
-        let e = [0, 1, 2].map(|i| connectivity.corner_edges[3 * f + i]);
-        let points = e.map(|e| v_count as u32 + e);
+        let corners = 3 * f..3 * f + 3;
+        let v: [u32; 3] = self.parent.faces.indices[corners.clone()]
+            .try_into()
+            .unwrap();
+        let e: [u32; 3] = connectivity.corner_edges[corners].try_into().unwrap();
+        let points = [
+            v_count as u32 + e[0],
+            v_count as u32 + e[1],
+            v_count as u32 + e[2],
+        ];
+        // The edge inside f between E_i and E_(i+1), found once for the
+        // two children it bounds.
+        let inner = [
+            self.inside(f, e[0], e[1]),
+            self.inside(f, e[1], e[2]),
+            self.inside(f, e[2], e[0]),
+        ];
         let corner = |i: usize| {
-            let previous = (i + 2) % 3;
+            let previous = PREVIOUS[i];
             (
                 [v[i], points[i], points[previous]],
                 [
                     connectivity.vertex_edge_slot(v[i], e[i]),
-                    self.inside(f, e[i], e[previous]),
+                    inner[previous],
                     connectivity.vertex_edge_slot_arriving(v[i], e[previous]),
                 ],
             )
         };
-        [
-            corner(0),
-            corner(1),
-            corner(2),
-            (
-                points,
-                [
-                    self.inside(f, e[0], e[1]),
-                    self.inside(f, e[1], e[2]),
-                    self.inside(f, e[2], e[0]),
-                ],
-            ),
-        ]
+        [corner(0), corner(1), corner(2), (points, inner)]
     }
 }
 
@@ -174,9 +181,17 @@ impl<'a> LoopRefinedGathers<'a> {
 /// then the previous corner's.
 #[inline]
 fn edges_from(corner_edges: &[u32], c: usize) -> [u32; 3] {
-    let (f, i) = (c / 3, c % 3);
-    [0, 1, 2].map(|k| corner_edges[3 * f + (i + k) % 3])
+    let first = c - c % 3;
+    [
+        corner_edges[c],
+        corner_edges[first + NEXT[c - first]],
+        corner_edges[first + PREVIOUS[c - first]],
+    ]
 }
+
+/// The place after and before each of a triangle's three.
+const NEXT: [usize; 3] = [1, 2, 0];
+const PREVIOUS: [usize; 3] = [2, 0, 1];
 
 impl Gathers for LoopRefinedGathers<'_> {
     fn as_loop_refined(&self) -> Option<&LoopRefinedGathers<'_>> {
@@ -222,7 +237,7 @@ impl Gathers for LoopRefinedGathers<'_> {
                             if idx[c as usize] == v {
                                 (12 * f + 3 * i, point(previous))
                             } else {
-                                (12 * f + 3 * ((i + 1) % 3) + 2, point(next))
+                                (12 * f + 3 * NEXT[i as usize] as u32 + 2, point(next))
                             }
                         };
                         let (w1, w2) = (wing(c1), wing(c2));
@@ -239,16 +254,14 @@ impl Gathers for LoopRefinedGathers<'_> {
                 // [E_0, E_1, E_2], opposite E_(j+2).
                 let (h, f, m) = self.inside_edges[k];
                 let f = f as usize;
-                let i = (0..3)
-                    .find(|&i| connectivity.corner_edges[3 * f + i] == m)
-                    .unwrap_or(0);
-                let [_, next, _] = self.edges_from(3 * f + i);
-                let j = if next == h { i } else { (i + 2) % 3 };
+                let edges = &connectivity.corner_edges[3 * f..3 * f + 3];
+                let i = edges.iter().position(|&e| e == m).unwrap_or(0);
+                let j = if edges[NEXT[i]] == h { i } else { PREVIOUS[i] };
                 [
                     point(m),
                     point(h),
-                    idx[3 * f + (j + 1) % 3],
-                    point(connectivity.corner_edges[3 * f + (j + 2) % 3]),
+                    idx[3 * f + NEXT[j]],
+                    point(edges[PREVIOUS[j]]),
                 ]
             }
         }
@@ -301,10 +314,10 @@ impl Gathers for LoopRefinedGathers<'_> {
         for (triple, &c) in ring.chunks_exact_mut(3).zip(corners) {
             let [_, next, previous] = self.edges_from(c as usize);
             let (f, i) = (c / 3, c % 3);
-            let following = parent.faces.indices[3 * f as usize + (i as usize + 1) % 3];
+            let following = parent.faces.indices[3 * f as usize + NEXT[i as usize]];
             triple.copy_from_slice(&[
                 (12 * f + 3 * i + 1, v_count as u32 + previous),
-                (12 * f + 3 * ((i + 1) % 3) + 2, following),
+                (12 * f + 3 * NEXT[i as usize] as u32 + 2, following),
                 (12 * f + 9 + i, v_count as u32 + next),
             ]);
             if i == 2 {
