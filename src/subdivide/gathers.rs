@@ -727,7 +727,7 @@ impl Gathers for RefinedGathers<'_> {
 }
 
 mod loop_refined;
-pub(crate) use loop_refined::{inside_offsets as loop_inside_offsets, LoopRefinedGathers};
+pub(crate) use loop_refined::LoopRefinedGathers;
 
 #[cfg(test)]
 mod tests;

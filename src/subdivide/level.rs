@@ -265,6 +265,23 @@ impl Connectivity {
             .find(|&e| self.edges[e as usize] == [low, high])
     }
 
+    /// Loop: visits the edges inside the child triangles whose lower parent
+    /// edge is m, unsorted, as (higher parent edge, triangle). Each corner
+    /// of m, in triangle f, gives f's other two edges above m; m is never
+    /// above itself, so f's three edges are read without finding m.
+    #[inline]
+    pub(crate) fn loop_inside_edges(&self, m: usize, mut visit: impl FnMut(u32, u32)) {
+        for &c in self.edge_corners(m) {
+            let f = c / 3;
+            let first = 3 * f as usize;
+            for &h in &self.corner_edges[first..first + 3] {
+                if h as usize > m {
+                    visit(h, f);
+                }
+            }
+        }
+    }
+
     /// The end of edge `vertex_edges[s]` whose list holds slot `s`.
     #[inline]
     pub(crate) fn slot_vertex(&self, s: usize) -> u32 {

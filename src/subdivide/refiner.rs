@@ -8,9 +8,7 @@ use std::sync::Mutex;
 use glam::DVec3;
 
 use super::creases::SubdivisionOptions;
-use super::gathers::{
-    loop_inside_offsets, plan, LevelGathers, LoopRefinedGathers, ParentGroups, Plan, RefinedGathers,
-};
+use super::gathers::{plan, LevelGathers, LoopRefinedGathers, ParentGroups, Plan, RefinedGathers};
 use super::level::{uniform_offsets, Connectivity, Faces};
 use super::point_rules::{self, apply, child_faces, child_faces_into};
 use super::rules::{cage_tags, child_tags, Tags};
@@ -379,7 +377,7 @@ fn parent_groups(
     };
     let edge_inside = match scheme {
         Scheme::CatmullClark => std::mem::take(&mut connectivity.adjacency.edge_offsets),
-        Scheme::Loop => loop_inside_offsets(connectivity)?,
+        Scheme::Loop => connectivity.loop_inside_offsets()?,
     };
     Ok(ParentGroups {
         face_faces,

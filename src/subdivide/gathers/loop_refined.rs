@@ -17,42 +17,9 @@
 //! edge m, sorted by h, then by triangle.
 
 use super::{slot_wings_around, Gathers, LevelGathers, MAX_WALKED_EDGES};
-use crate::buffers::{fill_by_offsets, par_offsets};
 use crate::error::Result;
-use crate::subdivide::level::{Connectivity, NONE};
+use crate::subdivide::level::NONE;
 use crate::subdivide::scheme::VertexRule;
-
-/// Visits the edges inside the triangles of the level refined from a level
-/// of this connectivity whose lower parent edge is m, as (higher parent
-/// edge, triangle, m), unsorted. Each corner of m, in triangle f, gives
-/// f's other two edges that are higher than m; m itself is never higher,
-/// so f's three edges are read without finding m among them.
-#[inline]
-fn higher_edges(connectivity: &Connectivity, m: usize, mut visit: impl FnMut((u32, u32, u32))) {
-    for &c in connectivity.edge_corners(m) {
-        let f = c / 3;
-        let first = 3 * f as usize;
-        for &h in &connectivity.corner_edges[first..first + 3] {
-            if h as usize > m {
-                visit((h, f, m as u32));
-            }
-        }
-    }
-}
-
-/// Where the edges inside triangles whose lower parent edge is m start
-/// among the inside edges of the level refined from a level of this
-/// connectivity (m from 0 to E, inclusive).
-///
-/// # Errors
-/// [`crate::Error::OutOfMemory`].
-pub(crate) fn inside_offsets(connectivity: &Connectivity) -> Result<Vec<u32>> {
-    par_offsets(connectivity.edge_count(), "edges", |m| {
-        let mut count = 0;
-        higher_edges(connectivity, m, |_| count += 1);
-        count
-    })
-}
 
 /// A Loop level's gathers worked out from its parent's (see the module doc).
 pub(crate) struct LoopRefinedGathers<'a> {
@@ -71,20 +38,11 @@ impl<'a> LoopRefinedGathers<'a> {
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
     pub(crate) fn new(parent: LevelGathers<'a>) -> Result<LoopRefinedGathers<'a>> {
-        let connectivity = parent.connectivity;
-        let offsets = inside_offsets(connectivity)?;
-        let edges = fill_by_offsets(&offsets, "edges", |m, out| {
-            let mut k = 0;
-            higher_edges(connectivity, m, |edge| {
-                out[k] = edge;
-                k += 1;
-            });
-            out.sort_unstable();
-        })?;
+        let (inside_offsets, inside_edges) = parent.connectivity.loop_inside_table()?;
         Ok(LoopRefinedGathers {
             parent,
-            inside_offsets: offsets,
-            inside_edges: edges,
+            inside_offsets,
+            inside_edges,
         })
     }
 

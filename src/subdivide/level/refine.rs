@@ -198,6 +198,39 @@ impl Connectivity {
         })
     }
 
+    /// Loop: where the edges inside the child triangles whose lower parent
+    /// edge is m start among the child's inside edges (m from 0 to E,
+    /// inclusive).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`].
+    pub(crate) fn loop_inside_offsets(&self) -> Result<Vec<u32>> {
+        par_offsets(self.edge_count(), "edges", |m| {
+            let mut count = 0;
+            self.loop_inside_edges(m, |_, _| count += 1);
+            count
+        })
+    }
+
+    /// Loop: [`Connectivity::loop_inside_offsets`] and the child's inside
+    /// edges in order, as (higher parent edge, triangle, lower parent edge
+    /// m): grouped by m, sorted within.
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`].
+    pub(crate) fn loop_inside_table(&self) -> Result<(Vec<u32>, Vec<(u32, u32, u32)>)> {
+        let offsets = self.loop_inside_offsets()?;
+        let edges = fill_by_offsets(&offsets, "edges", |m, out| {
+            let mut k = 0;
+            self.loop_inside_edges(m, |h, f| {
+                out[k] = (h, f, m as u32);
+                k += 1;
+            });
+            out.sort_unstable();
+        })?;
+        Ok((offsets, edges))
+    }
+
     /// Loop: triangle f = `[v0, v1, v2]` with edges `e_i = v_i v_(i+1)` and
     /// `E_i = V + e_i` becomes `T_i = [v_i, E_i, E_(i-1)]` (i < 3) and
     /// `T_3 = [E0, E1, E2]`. The child edges, sorted, are `[v, V + e]` as for
@@ -220,26 +253,9 @@ impl Connectivity {
             ]
         };
 
-        // Inside edges grouped by their lower parent edge: (higher parent
-        // edge, face).
-        let mut inner_offsets = try_vec(e_count + 1, "edges")?;
-        let mut inner_high: Vec<(u32, u32)> = try_vec(3 * f_count, "edges")?;
-        inner_offsets.push(0u32);
-        for m in 0..e_count as u32 {
-            let start = inner_high.len();
-            for &c in self.edge_corners(m as usize) {
-                let (f, i) = (c as usize / 3, c as usize % 3);
-                let edges = face_edges(f);
-                inner_high.extend(
-                    [edges[(i + 1) % 3], edges[(i + 2) % 3]]
-                        .into_iter()
-                        .filter(|&h| h > m)
-                        .map(|h| (h, f as u32)),
-                );
-            }
-            inner_high[start..].sort_unstable();
-            inner_offsets.push(inner_high.len() as u32);
-        }
+        // Inside edges grouped by their lower parent edge m, sorted: (higher
+        // parent edge, face, m).
+        let (inner_offsets, inner_high) = self.loop_inside_table()?;
         let inner_block =
             |m: usize| &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
         // The edge inside face f between its parent edges x and y.
@@ -247,7 +263,7 @@ impl Connectivity {
             let (m, h) = (x.min(y) as usize, x.max(y));
             let k = inner_block(m)
                 .iter()
-                .position(|&entry| entry == (h, f as u32))
+                .position(|&(high, face, _)| (high, face) == (h, f as u32))
                 .unwrap_or(0);
             two_e + inner_offsets[m] + k as u32
         };
@@ -263,7 +279,7 @@ impl Connectivity {
                 edges.extend(
                     inner_block(m)
                         .iter()
-                        .map(|&(h, _)| [v_base + m as u32, v_base + h]),
+                        .map(|&(h, _, _)| [v_base + m as u32, v_base + h]),
                 );
             }
 
@@ -310,7 +326,7 @@ impl Connectivity {
                 }
             }
             for m in 0..e_count {
-                for &(h, face) in inner_block(m) {
+                for &(h, face, _) in inner_block(m) {
                     let start = edge_corners.len();
                     for &c in self.edge_corners(m) {
                         let (f, i) = (c / 3, c % 3);
