@@ -10,6 +10,8 @@
 
 mod refine;
 
+pub(crate) use refine::InsideEdge;
+
 use super::scheme::{check_counts, Scheme};
 use crate::buffers::{par_map, prefix_sum, try_copy, try_vec, zeroed};
 use crate::error::Result;

@@ -18,7 +18,7 @@
 
 use super::{slot_wings_around, Gathers, LevelGathers, MAX_WALKED_EDGES};
 use crate::error::Result;
-use crate::subdivide::level::NONE;
+use crate::subdivide::level::{InsideEdge, NONE};
 use crate::subdivide::scheme::VertexRule;
 
 /// A Loop level's gathers worked out from its parent's (see the module doc).
@@ -28,7 +28,7 @@ pub(crate) struct LoopRefinedGathers<'a> {
     /// inside triangles whose lower parent edge is m, as (higher parent
     /// edge, triangle, m), sorted.
     inside_offsets: Vec<u32>,
-    inside_edges: Vec<(u32, u32, u32)>,
+    inside_edges: Vec<InsideEdge>,
 }
 
 impl<'a> LoopRefinedGathers<'a> {

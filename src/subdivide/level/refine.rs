@@ -10,6 +10,10 @@ use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 use crate::subdivide::scheme::Scheme;
 
+/// Loop: an edge of the child inside a parent triangle, as (higher parent
+/// edge, triangle, lower parent edge).
+pub(crate) type InsideEdge = (u32, u32, u32);
+
 impl Connectivity {
     /// The connectivity of the level `scheme` makes from `faces`, whose
     /// connectivity is `self`, written from the parent's without sorting. Equal
@@ -218,7 +222,7 @@ impl Connectivity {
     ///
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
-    pub(crate) fn loop_inside_table(&self) -> Result<(Vec<u32>, Vec<(u32, u32, u32)>)> {
+    pub(crate) fn loop_inside_table(&self) -> Result<(Vec<u32>, Vec<InsideEdge>)> {
         let offsets = self.loop_inside_offsets()?;
         let edges = fill_by_offsets(&offsets, "edges", |m, out| {
             let mut k = 0;
