@@ -103,11 +103,14 @@ impl<'a> LoopRefinedGathers<'a> {
     pub(crate) fn children(&self, f: usize) -> [([u32; 3], [u32; 3]); 4] {
         let (v_count, _) = self.parent_counts();
         let connectivity = self.parent.connectivity;
-        let corners = 3 * f..3 * f + 3;
-        let v: [u32; 3] = self.parent.faces.indices[corners.clone()]
-            .try_into()
-            .unwrap();
-        let e: [u32; 3] = connectivity.corner_edges[corners].try_into().unwrap();
+        let idx = &self.parent.faces.indices;
+        let v = [idx[3 * f], idx[3 * f + 1], idx[3 * f + 2]];
+        let corner_edges = &connectivity.corner_edges;
+        let e = [
+            corner_edges[3 * f],
+            corner_edges[3 * f + 1],
+            corner_edges[3 * f + 2],
+        ];
         let points = [
             v_count as u32 + e[0],
             v_count as u32 + e[1],
@@ -147,7 +150,7 @@ fn edges_from(corner_edges: &[u32], c: usize) -> [u32; 3] {
     ]
 }
 
-/// The place after and before each of a triangle's three.
+/// The corner after and the corner before each of a triangle's three.
 const NEXT: [usize; 3] = [1, 2, 0];
 const PREVIOUS: [usize; 3] = [2, 0, 1];
 
