@@ -10,7 +10,7 @@
 
 mod refine;
 
-pub(crate) use refine::InsideEdge;
+pub(crate) use refine::LoopInsideEdges;
 
 use super::scheme::{check_counts, Scheme};
 use crate::buffers::{par_map, prefix_sum, try_copy, try_vec, zeroed};

@@ -18,17 +18,14 @@
 
 use super::{slot_wings_around, Gathers, LevelGathers, MAX_WALKED_EDGES};
 use crate::error::Result;
-use crate::subdivide::level::{InsideEdge, NONE};
+use crate::subdivide::level::{LoopInsideEdges, NONE};
 use crate::subdivide::scheme::VertexRule;
 
 /// A Loop level's gathers worked out from its parent's (see the module doc).
 pub(crate) struct LoopRefinedGathers<'a> {
     pub(crate) parent: LevelGathers<'a>,
-    /// `inside_edges[inside_offsets[m]..inside_offsets[m + 1]]`: the edges
-    /// inside triangles whose lower parent edge is m, as (higher parent
-    /// edge, triangle, m), sorted.
-    inside_offsets: Vec<u32>,
-    inside_edges: Vec<InsideEdge>,
+    /// The level's edges inside the parent's triangles.
+    inside: LoopInsideEdges,
 }
 
 impl<'a> LoopRefinedGathers<'a> {
@@ -38,18 +35,14 @@ impl<'a> LoopRefinedGathers<'a> {
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
     pub(crate) fn new(parent: LevelGathers<'a>) -> Result<LoopRefinedGathers<'a>> {
-        let (inside_offsets, inside_edges) = parent.connectivity.loop_inside_table()?;
-        Ok(LoopRefinedGathers {
-            parent,
-            inside_offsets,
-            inside_edges,
-        })
+        let inside = parent.connectivity.loop_inside_table()?;
+        Ok(LoopRefinedGathers { parent, inside })
     }
 
     /// Where the edges inside triangles whose lower parent edge is m start
     /// among the level's inside edges (m from 0 to E, inclusive).
     pub(crate) fn inside_offsets(&self) -> &[u32] {
-        &self.inside_offsets
+        &self.inside.offsets
     }
 
     fn parent_counts(&self) -> (usize, usize) {
@@ -68,14 +61,7 @@ impl<'a> LoopRefinedGathers<'a> {
     /// edges x and y.
     #[inline]
     fn inside(&self, f: usize, x: u32, y: u32) -> u32 {
-        let (m, h) = (x.min(y) as usize, x.max(y));
-        let start = self.inside_offsets[m] as usize;
-        let block = &self.inside_edges[start..self.inside_offsets[m + 1] as usize];
-        let k = block
-            .iter()
-            .position(|&(high, face, _)| (high, face) == (h, f as u32))
-            .unwrap_or(0);
-        (2 * self.parent_counts().1 + start + k) as u32
+        (2 * self.parent_counts().1 + self.inside.find(f, x, y)) as u32
     }
 
     /// The wings of the level's edges `[v, V + e]` at the parent's vertex
@@ -165,7 +151,7 @@ impl Gathers for LoopRefinedGathers<'_> {
     }
 
     fn edge_count(&self) -> usize {
-        2 * self.parent_counts().1 + self.inside_edges.len()
+        2 * self.parent_counts().1 + self.inside.edges.len()
     }
 
     fn face_count(&self) -> usize {
@@ -213,7 +199,7 @@ impl Gathers for LoopRefinedGathers<'_> {
                 // The edge between E_j and E_(j+1) of triangle f lies in
                 // [v_(j+1), E_(j+1), E_j], opposite v_(j+1), and in
                 // [E_0, E_1, E_2], opposite E_(j+2).
-                let (h, f, m) = self.inside_edges[k];
+                let (h, f, m) = self.inside.edges[k];
                 let f = f as usize;
                 let edges = &connectivity.corner_edges[3 * f..3 * f + 3];
                 let i = edges.iter().position(|&e| e == m).unwrap_or(0);

@@ -10,9 +10,35 @@ use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
 use crate::subdivide::scheme::Scheme;
 
-/// Loop: an edge of the child inside a parent triangle, as (higher parent
-/// edge, triangle, lower parent edge).
-pub(crate) type InsideEdge = (u32, u32, u32);
+/// Loop: the child's edges inside the parent's triangles, in the child's
+/// order: grouped by their lower parent edge m, sorted within, each as
+/// (higher parent edge, triangle, m).
+pub(crate) struct LoopInsideEdges {
+    /// Where each m's group starts (m from 0 to E, inclusive).
+    pub(crate) offsets: Vec<u32>,
+    pub(crate) edges: Vec<(u32, u32, u32)>,
+}
+
+impl LoopInsideEdges {
+    /// The group of the edges whose lower parent edge is m.
+    #[inline]
+    pub(crate) fn group(&self, m: usize) -> &[(u32, u32, u32)] {
+        &self.edges[self.offsets[m] as usize..self.offsets[m + 1] as usize]
+    }
+
+    /// The place, among the inside edges, of the one inside triangle f
+    /// between the points of its parent edges x and y.
+    #[inline]
+    pub(crate) fn find(&self, f: usize, x: u32, y: u32) -> usize {
+        let (m, h) = (x.min(y) as usize, x.max(y));
+        let k = self
+            .group(m)
+            .iter()
+            .position(|&(high, face, _)| (high, face) == (h, f as u32))
+            .unwrap_or(0);
+        self.offsets[m] as usize + k
+    }
+}
 
 impl Connectivity {
     /// The connectivity of the level `scheme` makes from `faces`, whose
@@ -216,13 +242,11 @@ impl Connectivity {
         })
     }
 
-    /// Loop: [`Connectivity::loop_inside_offsets`] and the child's inside
-    /// edges in order, as (higher parent edge, triangle, lower parent edge
-    /// m): grouped by m, sorted within.
+    /// Loop: the child's inside edges (see [`LoopInsideEdges`]).
     ///
     /// # Errors
     /// [`crate::Error::OutOfMemory`].
-    pub(crate) fn loop_inside_table(&self) -> Result<(Vec<u32>, Vec<InsideEdge>)> {
+    pub(crate) fn loop_inside_table(&self) -> Result<LoopInsideEdges> {
         let offsets = self.loop_inside_offsets()?;
         let edges = fill_by_offsets(&offsets, "edges", |m, out| {
             let mut k = 0;
@@ -232,7 +256,7 @@ impl Connectivity {
             });
             out.sort_unstable();
         })?;
-        Ok((offsets, edges))
+        Ok(LoopInsideEdges { offsets, edges })
     }
 
     /// Loop: triangle f = `[v0, v1, v2]` with edges `e_i = v_i v_(i+1)` and
@@ -257,22 +281,12 @@ impl Connectivity {
             ]
         };
 
-        // Inside edges grouped by their lower parent edge m, sorted: (higher
-        // parent edge, face, m).
-        let (inner_offsets, inner_high) = self.loop_inside_table()?;
-        let inner_block =
-            |m: usize| &inner_high[inner_offsets[m] as usize..inner_offsets[m + 1] as usize];
+        let inside = self.loop_inside_table()?;
+        let inner_offsets = &inside.offsets;
         // The edge inside face f between its parent edges x and y.
-        let inner = |f: usize, x: u32, y: u32| -> u32 {
-            let (m, h) = (x.min(y) as usize, x.max(y));
-            let k = inner_block(m)
-                .iter()
-                .position(|&(high, face, _)| (high, face) == (h, f as u32))
-                .unwrap_or(0);
-            two_e + inner_offsets[m] + k as u32
-        };
+        let inner = |f: usize, x: u32, y: u32| two_e + inside.find(f, x, y) as u32;
 
-        let edge_slots = 2 * e_count + inner_high.len();
+        let edge_slots = 2 * e_count + inside.edges.len();
         // The arrays are independent of each other: built side by side.
         let build_edges = || -> Result<(Vec<[u32; 2]>, Vec<u32>)> {
             let mut edges = try_vec(edge_slots, "edges")?;
@@ -281,7 +295,8 @@ impl Connectivity {
             }
             for m in 0..e_count {
                 edges.extend(
-                    inner_block(m)
+                    inside
+                        .group(m)
                         .iter()
                         .map(|&(h, _, _)| [v_base + m as u32, v_base + h]),
                 );
@@ -330,7 +345,7 @@ impl Connectivity {
                 }
             }
             for m in 0..e_count {
-                for &(h, face, _) in inner_block(m) {
+                for &(h, face, _) in inside.group(m) {
                     let start = edge_corners.len();
                     for &c in self.edge_corners(m) {
                         let (f, i) = (c / 3, c % 3);
