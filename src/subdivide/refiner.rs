@@ -336,9 +336,10 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         plan.parent = groups.take();
         if !last {
             // The next level's edges and adjacency, written from this one's.
-            let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
+            let (next_connectivity, inside) =
+                connectivity.refine_with_inside(scheme, &faces, !next_last)?;
             tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
-            groups = Some(parent_groups(scheme, &faces, &mut connectivity)?);
+            groups = Some(parent_groups(&faces, &mut connectivity, inside)?);
             connectivity = next_connectivity;
         } else {
             // Not needed any more: free it before the last, largest pass.
@@ -355,29 +356,30 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
     Ok(faces)
 }
 
-/// How the elements of the level `scheme` refines from `faces` group
-/// around them (see [`ParentGroups`]), the lists moved out of
-/// `connectivity`, which has its vertices' edges and is done with.
+/// How the elements of the level refined from `faces` group around them
+/// (see [`ParentGroups`]), the lists moved out of `connectivity`, which
+/// has its vertices' edges and is done with. `loop_inside` are Loop's
+/// inside-edge offsets, handed on by the refinement that counted them;
+/// `None` for Catmull-Clark, whose groups are the parent's own lists.
 fn parent_groups(
-    scheme: Scheme,
     faces: &Faces,
     connectivity: &mut Connectivity,
+    loop_inside: Option<Vec<u32>>,
 ) -> Result<ParentGroups> {
-    let face_faces = match scheme {
-        Scheme::Loop => Vec::new(),
-        // Faces of one size may have no offsets (see `gather_levels`).
-        Scheme::CatmullClark if faces.offsets.is_empty() => {
-            uniform_offsets(faces.face_count(), faces.size, true)?
+    let (face_faces, edge_inside) = match loop_inside {
+        Some(inside_offsets) => (Vec::new(), inside_offsets),
+        None => {
+            // Faces of one size may have no offsets (see `gather_levels`).
+            let face_faces = if faces.offsets.is_empty() {
+                uniform_offsets(faces.face_count(), faces.size, true)?
+            } else {
+                let mut copy = try_vec(faces.offsets.len(), "parent groups")?;
+                copy.extend_from_slice(&faces.offsets);
+                copy
+            };
+            let edge_inside = std::mem::take(&mut connectivity.adjacency.edge_offsets);
+            (face_faces, edge_inside)
         }
-        Scheme::CatmullClark => {
-            let mut copy = try_vec(faces.offsets.len(), "parent groups")?;
-            copy.extend_from_slice(&faces.offsets);
-            copy
-        }
-    };
-    let edge_inside = match scheme {
-        Scheme::CatmullClark => std::mem::take(&mut connectivity.adjacency.edge_offsets),
-        Scheme::Loop => connectivity.loop_inside_offsets()?,
     };
     Ok(ParentGroups {
         face_faces,
@@ -491,9 +493,10 @@ pub(crate) fn gather_levels(
         each(Step::Level(gathers), Points::Next)?;
         // The vertices' edges are read by the next refinement, and by
         // Catmull-Clark's refined gathers.
-        let next_connectivity = connectivity.refine(scheme, &faces, !next_last)?;
+        let (next_connectivity, inside) =
+            connectivity.refine_with_inside(scheme, &faces, !next_last)?;
         tags = child_tags(scheme, &tags, &faces, &next_connectivity)?;
-        groups = Some(parent_groups(scheme, &faces, &mut connectivity)?);
+        groups = Some(parent_groups(&faces, &mut connectivity, inside)?);
         (faces, connectivity) = (next_faces, next_connectivity);
     }
     Ok(faces)

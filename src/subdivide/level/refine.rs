@@ -55,9 +55,27 @@ impl Connectivity {
         faces: &Faces,
         vertex_edges: bool,
     ) -> Result<Connectivity> {
+        Ok(self.refine_with_inside(scheme, faces, vertex_edges)?.0)
+    }
+
+    /// As [`Connectivity::refine`], with Loop's inside-edge offsets (see
+    /// [`Connectivity::loop_inside_offsets`]), which the refinement counts
+    /// anyway and the parent's groups read (`None` for Catmull-Clark).
+    ///
+    /// # Errors
+    /// [`crate::Error::OutOfMemory`].
+    pub(crate) fn refine_with_inside(
+        &self,
+        scheme: Scheme,
+        faces: &Faces,
+        vertex_edges: bool,
+    ) -> Result<(Connectivity, Option<Vec<u32>>)> {
         match scheme {
-            Scheme::CatmullClark => self.refine_catmull_clark(faces, vertex_edges),
-            Scheme::Loop => self.refine_loop(faces, vertex_edges),
+            Scheme::CatmullClark => Ok((self.refine_catmull_clark(faces, vertex_edges)?, None)),
+            Scheme::Loop => {
+                let (connectivity, inside_offsets) = self.refine_loop(faces, vertex_edges)?;
+                Ok((connectivity, Some(inside_offsets)))
+            }
         }
     }
 
@@ -267,7 +285,11 @@ impl Connectivity {
     /// every triangle has its own three, even where two triangles share two
     /// edges and so the same two edge points (OpenSubdiv's child edges of a
     /// face belong to that face).
-    fn refine_loop(&self, faces: &Faces, with_vertex_edges: bool) -> Result<Connectivity> {
+    fn refine_loop(
+        &self,
+        faces: &Faces,
+        with_vertex_edges: bool,
+    ) -> Result<(Connectivity, Vec<u32>)> {
         let (v_count, e_count, f_count) =
             (faces.vertex_count, self.edge_count(), faces.face_count());
         let idx = &faces.indices;
@@ -440,13 +462,14 @@ impl Connectivity {
             || rayon::join(build_vertex_corners, build_vertex_edges),
         );
         let (vertex_edge_offsets, vertex_edges) = vertex_edges?;
-        Ok(Connectivity {
+        let connectivity = Connectivity {
             adjacency: Adjacency::from_parts(edges?, edge_corners?, vertex_corners?),
             face_size: 3,
             corner_faces: Vec::new(),
             vertex_edge_offsets,
             vertex_edges,
-        })
+        };
+        Ok((connectivity, inside.offsets))
     }
 }
 
