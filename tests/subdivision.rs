@@ -364,9 +364,18 @@ fn refiner_evaluate_equals_one_shot_on_large_levels() {
     // 4,608 quads: level 1 has 18,432 faces, enough for the refiner to
     // make level 3 band by band; the seam's groups read the last band's
     // face points, and in the scrambled copy most groups read far away.
+    // The triangle torus: every vertex has six neighbours, whose rings the
+    // refiner sums unrolled.
     let torus = shapes::torus(72, 64);
-    for cage in [torus.clone(), scrambled(&torus, 7)] {
-        let refiner = Refiner::new(&cage, Scheme::CatmullClark, 3, NakedEdges::Smooth).unwrap();
+    let triangles = shapes::triangle_torus(48, 32);
+    let cages = [
+        (Scheme::CatmullClark, torus.clone()),
+        (Scheme::CatmullClark, scrambled(&torus, 7)),
+        (Scheme::Loop, triangles.clone()),
+        (Scheme::Loop, scrambled(&triangles, 7)),
+    ];
+    for (scheme, cage) in cages {
+        let refiner = Refiner::new(&cage, scheme, 3, NakedEdges::Smooth).unwrap();
         let moved: Vec<DVec3> = cage
             .positions()
             .iter()
@@ -375,7 +384,7 @@ fn refiner_evaluate_equals_one_shot_on_large_levels() {
         let mut out = vec![DVec3::ZERO; refiner.vertex_count()];
         refiner.evaluate(&moved, &mut out).unwrap();
         let moved_cage = cage.with_positions(moved).unwrap();
-        let expected = subdivide(&moved_cage, Scheme::CatmullClark, 3, NakedEdges::Smooth).unwrap();
+        let expected = subdivide(&moved_cage, scheme, 3, NakedEdges::Smooth).unwrap();
         assert_eq!(out, expected.positions());
         assert_eq!(refiner.face_indices(), expected.face_indices());
     }

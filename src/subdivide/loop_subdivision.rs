@@ -114,6 +114,9 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(refined) = level.as_loop_refined() {
         return apply_refined(refined, points, out);
     }
+    if let Some(plan) = level.as_plan() {
+        return apply_planned(plan, points, out);
+    }
     if let Some(groups) = level.parent_groups() {
         return apply_grouped(level, groups, points, out);
     }
@@ -130,91 +133,46 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .for_each(|(v, out)| *out = vertex_point(level, points, v));
 }
 
-/// [`apply`] for a level whose elements are known to group around those
-/// of the level it was refined from (a refiner's plan, or an intermediate
-/// level of one-shot subdivision), in the two passes of [`apply_refined`],
-/// around the parent's edges and vertices. The same gathers in the same
-/// order, so the same bits.
-fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
-    around_parents(
-        level,
-        &groups.edge_inside,
-        &groups.vertex_halves,
+/// [`apply`] for a plan, its gathers read straight from its arrays: in
+/// the passes of [`around_parents`] when its level groups around a parent
+/// level, else point after point. The same sums in the same order as
+/// [`apply`] on the level the plan was read from, so the same bits.
+fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
+    let planned = Planned {
+        edges: &plan.edges,
+        halves: 2 * plan.parent.as_ref().map_or(0, |g| g.parent_counts().1),
+        rings: PlannedRings::of(plan),
         points,
-        out,
-    );
+    };
+    let Some(groups) = &plan.parent else {
+        let (vertex_points, edge_points) = out.split_at_mut(plan.vertex_count);
+        edge_points
+            .par_chunks_mut(CHUNK)
+            .enumerate()
+            .for_each(|(k, outs)| planned.edge_points(k * CHUNK, outs));
+        vertex_points
+            .par_iter_mut()
+            .with_min_len(CHUNK)
+            .enumerate()
+            .for_each(|(v, out)| *out = planned.vertex_point(v));
+        return;
+    };
+    let offsets = (&groups.edge_inside[..], &groups.vertex_halves[..]);
+    around_parents(plan.vertex_count, offsets, out, &planned);
 }
 
-/// The two passes of [`apply_grouped`] and [`apply_refined`]: around each
-/// parent edge m, its point's vertex point and the edges inside triangles
-/// whose lower parent edge is m (`edge_inside`, see
-/// [`ParentGroups::edge_inside`]); around each parent vertex v, the halves
-/// of its edges at v (`vertex_halves`) and its vertex point.
-fn around_parents(
-    level: &impl Gathers,
-    edge_inside: &[u32],
-    vertex_halves: &[u32],
-    points: &[DVec3],
-    out: &mut [DVec3],
-) {
-    let (parent_vertices, parent_edges) = (vertex_halves.len() - 1, edge_inside.len() - 1);
-    let (vertex_points, edge_points) = out.split_at_mut(level.vertex_count());
-    let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
-    let (halves, inside) = edge_points.split_at_mut(2 * parent_edges);
-    let inside_base = 2 * parent_edges;
-    fill_groups(inside, edge_inside, at_edges, CHUNK, |m, first, outs| {
-        edge_points_into(level, inside_base + first, outs, |edge| {
-            edge_point_of(edge, points)
-        });
-        grouped_vertex_point(level, points, parent_vertices + m)
-    });
-    fill_groups(
-        halves,
-        vertex_halves,
-        at_vertices,
-        CHUNK,
-        |v, first, outs| {
-            let walked = level.as_loop_refined().and_then(|refined| {
-                let edges = refined.parent.connectivity.vertex_edges(v);
-                Some((edges, refined.slot_wings(v)?))
-            });
-            match walked {
-                Some((edges, wings)) => {
-                    let point = |e: u32| parent_vertices as u32 + e;
-                    for ((out, &e), [c, d]) in outs.iter_mut().zip(edges).zip(wings) {
-                        *out = edge_point_of([v as u32, point(e), c, d], points);
-                    }
-                }
-                None => edge_points_into(level, first, outs, |edge| edge_point_of(edge, points)),
-            }
-            grouped_vertex_point(level, points, v)
-        },
-    );
-}
-
-/// A vertex point of [`around_parents`]: read straight from a plan.
-#[inline]
-fn grouped_vertex_point(level: &impl Gathers, points: &[DVec3], v: usize) -> DVec3 {
-    match level.as_plan() {
-        Some(plan) => planned_vertex_point(plan, points, v),
-        None => vertex_point(level, points, v),
-    }
-}
-
-/// [`vertex_point`] of a plan's vertex `v`, read from its ring.
-#[inline]
-fn planned_vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
-    let ring = plan.ring(v);
-    match plan.vertex_rules[v] {
-        VertexRule::Smooth => {
-            let sum = ring
-                .iter()
-                .fold(DVec3::ZERO, |sum, &u| sum + points[u as usize]);
-            let (own, each) = loop_smooth_weights(ring.len());
-            points[v] * own + sum * each
-        }
-        rule => planned_sharp_point(rule, points, v, ring),
-    }
+/// [`apply`] for a level whose elements are known to group around those
+/// of the level it was refined from (an intermediate level of one-shot
+/// subdivision), in the passes of [`around_parents`]. The same gathers in
+/// the same order, so the same bits.
+fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
+    let gathered = Gathered {
+        level,
+        halves: 2 * groups.parent_counts().1,
+        points,
+    };
+    let offsets = (&groups.edge_inside[..], &groups.vertex_halves[..]);
+    around_parents(level.vertex_count(), offsets, out, &gathered);
 }
 
 /// [`apply`] for the level refined from `level.parent`, in two passes over
@@ -223,8 +181,206 @@ fn planned_vertex_point(plan: &Plan, points: &[DVec3], v: usize) -> DVec3 {
 /// points are in the cache (as Catmull-Clark's last level is made). Each
 /// point is the same gather as [`apply`]'s, so the same bits.
 fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
-    let vertex_halves = &level.parent.connectivity.vertex_edge_offsets;
-    around_parents(level, level.inside_offsets(), vertex_halves, points, out);
+    let connectivity = level.parent.connectivity;
+    let refined = Refined(Gathered {
+        level,
+        halves: 2 * connectivity.edge_count(),
+        points,
+    });
+    let offsets = (
+        level.inside_offsets(),
+        &connectivity.vertex_edge_offsets[..],
+    );
+    around_parents(level.vertex_count(), offsets, out, &refined);
+}
+
+/// What [`around_parents`] makes around each parent element, from the
+/// level's points.
+trait GroupPoints: Sync {
+    /// The points of the level's inside edges from inside edge `first` on.
+    fn inside(&self, first: usize, outs: &mut [DVec3]);
+    /// The points of the halves at parent vertex `v`, level edges from
+    /// `first` on.
+    fn halves(&self, v: usize, first: usize, outs: &mut [DVec3]);
+    /// The vertex point of the level's vertex `v`.
+    fn vertex_point(&self, v: usize) -> DVec3;
+}
+
+/// The two passes of [`apply_grouped`], [`apply_planned`] and
+/// [`apply_refined`], writing the next level (`vertex_count` vertex points
+/// and the edge points) into `out`: around each parent edge m, the edges
+/// inside triangles whose lower parent edge is m (`edge_inside`, see
+/// [`ParentGroups::edge_inside`]) and its point's vertex point; around
+/// each parent vertex v, the halves of its edges at v (`vertex_halves`)
+/// and its vertex point.
+fn around_parents(
+    vertex_count: usize,
+    (edge_inside, vertex_halves): (&[u32], &[u32]),
+    out: &mut [DVec3],
+    make: &impl GroupPoints,
+) {
+    let (parent_vertices, parent_edges) = (vertex_halves.len() - 1, edge_inside.len() - 1);
+    let (vertex_points, edge_points) = out.split_at_mut(vertex_count);
+    let (at_vertices, at_edges) = vertex_points.split_at_mut(parent_vertices);
+    let (half_points, inside_points) = edge_points.split_at_mut(2 * parent_edges);
+    fill_groups(
+        inside_points,
+        edge_inside,
+        at_edges,
+        CHUNK,
+        |m, first, outs| {
+            make.inside(first, outs);
+            make.vertex_point(parent_vertices + m)
+        },
+    );
+    fill_groups(
+        half_points,
+        vertex_halves,
+        at_vertices,
+        CHUNK,
+        |v, first, outs| {
+            make.halves(v, first, outs);
+            make.vertex_point(v)
+        },
+    );
+}
+
+/// A plan's gathers, as slices.
+struct Planned<'a> {
+    edges: &'a [[u32; 4]],
+    /// The first inside edge (twice the parent's edges; 0 without a parent).
+    halves: usize,
+    rings: PlannedRings<'a>,
+    points: &'a [DVec3],
+}
+
+impl Planned<'_> {
+    #[inline(always)]
+    fn edge_points(&self, first: usize, outs: &mut [DVec3]) {
+        for (out, &edge) in outs.iter_mut().zip(&self.edges[first..]) {
+            *out = edge_point_of(edge, self.points);
+        }
+    }
+}
+
+impl GroupPoints for Planned<'_> {
+    #[inline(always)]
+    fn inside(&self, first: usize, outs: &mut [DVec3]) {
+        self.edge_points(self.halves + first, outs);
+    }
+
+    #[inline(always)]
+    fn halves(&self, _: usize, first: usize, outs: &mut [DVec3]) {
+        self.edge_points(first, outs);
+    }
+
+    #[inline(always)]
+    fn vertex_point(&self, v: usize) -> DVec3 {
+        self.rings.vertex_point(self.points, v)
+    }
+}
+
+/// A plan's vertex rules and rings, as slices.
+struct PlannedRings<'a> {
+    rules: &'a [VertexRule],
+    offsets: &'a [u32],
+    ring: &'a [u32],
+}
+
+impl<'a> PlannedRings<'a> {
+    fn of(plan: &'a Plan) -> Self {
+        PlannedRings {
+            rules: &plan.vertex_rules,
+            offsets: &plan.vertex_ring_offsets,
+            ring: &plan.vertex_ring,
+        }
+    }
+
+    /// [`vertex_point`] of the plan's vertex `v`, read from its ring; a
+    /// regular ring's sum unrolled, in the same order.
+    #[inline(always)]
+    fn vertex_point(&self, points: &[DVec3], v: usize) -> DVec3 {
+        let ring = &self.ring[self.offsets[v] as usize..self.offsets[v + 1] as usize];
+        match (self.rules[v], ring) {
+            (VertexRule::Smooth, &[a, b, c, d, e, f]) => {
+                let p = |u: u32| points[u as usize];
+                let sum = DVec3::ZERO + p(a) + p(b) + p(c) + p(d) + p(e) + p(f);
+                let (own, each) = loop_smooth_weights(6);
+                points[v] * own + sum * each
+            }
+            (VertexRule::Smooth, _) => {
+                let sum = ring
+                    .iter()
+                    .fold(DVec3::ZERO, |sum, &u| sum + points[u as usize]);
+                let (own, each) = loop_smooth_weights(ring.len());
+                points[v] * own + sum * each
+            }
+            (rule, _) => planned_sharp_point(rule, points, v, ring),
+        }
+    }
+}
+
+/// A level's gathers, read where they lie.
+struct Gathered<'a, G> {
+    level: &'a G,
+    /// The first inside edge: twice the parent's edges.
+    halves: usize,
+    points: &'a [DVec3],
+}
+
+impl<G: Gathers> Gathered<'_, G> {
+    #[inline]
+    fn edge_points(&self, first: usize, outs: &mut [DVec3]) {
+        edge_points_into(self.level, first, outs, |edge| {
+            edge_point_of(edge, self.points)
+        });
+    }
+}
+
+impl<G: Gathers> GroupPoints for Gathered<'_, G> {
+    #[inline]
+    fn inside(&self, first: usize, outs: &mut [DVec3]) {
+        self.edge_points(self.halves + first, outs);
+    }
+
+    #[inline]
+    fn halves(&self, _: usize, first: usize, outs: &mut [DVec3]) {
+        self.edge_points(first, outs);
+    }
+
+    #[inline]
+    fn vertex_point(&self, v: usize) -> DVec3 {
+        vertex_point(self.level, self.points, v)
+    }
+}
+
+/// One-shot's last level: as [`Gathered`], the halves at a parent vertex
+/// with their wings found in one walk around it.
+struct Refined<'a, 'b>(Gathered<'a, LoopRefinedGathers<'b>>);
+
+impl GroupPoints for Refined<'_, '_> {
+    #[inline]
+    fn inside(&self, first: usize, outs: &mut [DVec3]) {
+        self.0.inside(first, outs);
+    }
+
+    #[inline]
+    fn halves(&self, v: usize, first: usize, outs: &mut [DVec3]) {
+        let Gathered { level, points, .. } = self.0;
+        let Some(wings) = level.slot_wings(v) else {
+            return self.0.halves(v, first, outs);
+        };
+        let parent_vertices = level.parent.faces.vertex_count as u32;
+        let edges = level.parent.connectivity.vertex_edges(v);
+        for ((out, &e), [c, d]) in outs.iter_mut().zip(edges).zip(wings) {
+            *out = edge_point_of([v as u32, parent_vertices + e, c, d], points);
+        }
+    }
+
+    #[inline]
+    fn vertex_point(&self, v: usize) -> DVec3 {
+        self.0.vertex_point(v)
+    }
 }
 
 /// As [`apply`], into a new vector written once (no zero-filling).
