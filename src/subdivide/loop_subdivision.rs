@@ -140,7 +140,7 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     let planned = Planned {
         edges: &plan.edges,
-        halves: 2 * plan.parent.as_ref().map_or(0, |g| g.parent_counts().1),
+        first_inside: 2 * plan.parent.as_ref().map_or(0, |g| g.parent_counts().1),
         rings: PlannedRings::of(plan),
         points,
     };
@@ -168,7 +168,7 @@ fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
 fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
     let gathered = Gathered {
         level,
-        halves: 2 * groups.parent_counts().1,
+        first_inside: 2 * groups.parent_counts().1,
         points,
     };
     let offsets = (&groups.edge_inside[..], &groups.vertex_halves[..]);
@@ -184,7 +184,7 @@ fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]
     let connectivity = level.parent.connectivity;
     let refined = Refined(Gathered {
         level,
-        halves: 2 * connectivity.edge_count(),
+        first_inside: 2 * connectivity.edge_count(),
         points,
     });
     let offsets = (
@@ -248,8 +248,9 @@ fn around_parents(
 /// A plan's gathers, as slices.
 struct Planned<'a> {
     edges: &'a [[u32; 4]],
-    /// The first inside edge (twice the parent's edges; 0 without a parent).
-    halves: usize,
+    /// The level's first inside edge: twice the parent's edges (0 without
+    /// a parent).
+    first_inside: usize,
     rings: PlannedRings<'a>,
     points: &'a [DVec3],
 }
@@ -266,7 +267,7 @@ impl Planned<'_> {
 impl GroupPoints for Planned<'_> {
     #[inline(always)]
     fn inside(&self, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(self.halves + first, outs);
+        self.edge_points(self.first_inside + first, outs);
     }
 
     #[inline(always)]
@@ -323,8 +324,8 @@ impl<'a> PlannedRings<'a> {
 /// A level's gathers, read where they lie.
 struct Gathered<'a, G> {
     level: &'a G,
-    /// The first inside edge: twice the parent's edges.
-    halves: usize,
+    /// The level's first inside edge: twice the parent's edges.
+    first_inside: usize,
     points: &'a [DVec3],
 }
 
@@ -340,7 +341,7 @@ impl<G: Gathers> Gathered<'_, G> {
 impl<G: Gathers> GroupPoints for Gathered<'_, G> {
     #[inline]
     fn inside(&self, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(self.halves + first, outs);
+        self.edge_points(self.first_inside + first, outs);
     }
 
     #[inline]
