@@ -140,7 +140,6 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
     let planned = Planned {
         edges: &plan.edges,
-        first_inside: 2 * plan.parent.as_ref().map_or(0, |g| g.parent_counts().1),
         rings: PlannedRings::of(plan),
         points,
     };
@@ -166,11 +165,7 @@ fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
 /// subdivision), in the passes of [`around_parents`]. The same gathers in
 /// the same order, so the same bits.
 fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], out: &mut [DVec3]) {
-    let gathered = Gathered {
-        level,
-        first_inside: 2 * groups.parent_counts().1,
-        points,
-    };
+    let gathered = Gathered { level, points };
     let offsets = (&groups.edge_inside[..], &groups.vertex_halves[..]);
     around_parents(level.vertex_count(), offsets, out, &gathered);
 }
@@ -182,11 +177,7 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
 /// point is the same gather as [`apply`]'s, so the same bits.
 fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]) {
     let connectivity = level.parent.connectivity;
-    let refined = Refined(Gathered {
-        level,
-        first_inside: 2 * connectivity.edge_count(),
-        points,
-    });
+    let refined = Refined(Gathered { level, points });
     let offsets = (
         level.inside_offsets(),
         &connectivity.vertex_edge_offsets[..],
@@ -197,11 +188,14 @@ fn apply_refined(level: &LoopRefinedGathers, points: &[DVec3], out: &mut [DVec3]
 /// What [`around_parents`] makes around each parent element, from the
 /// level's points.
 trait GroupPoints: Sync {
-    /// The points of the level's inside edges from inside edge `first` on.
-    fn inside(&self, first: usize, outs: &mut [DVec3]);
-    /// The points of the halves at parent vertex `v`, level edges from
-    /// `first` on.
-    fn halves(&self, v: usize, first: usize, outs: &mut [DVec3]);
+    /// The points of the level's edges from edge `first` on.
+    fn edge_points(&self, first: usize, outs: &mut [DVec3]);
+    /// The points of the halves at parent vertex `v`, the level's edges
+    /// from `first` on.
+    #[inline]
+    fn halves(&self, _v: usize, first: usize, outs: &mut [DVec3]) {
+        self.edge_points(first, outs);
+    }
     /// The vertex point of the level's vertex `v`.
     fn vertex_point(&self, v: usize) -> DVec3;
 }
@@ -229,7 +223,7 @@ fn around_parents(
         at_edges,
         CHUNK,
         |m, first, outs| {
-            make.inside(first, outs);
+            make.edge_points(2 * parent_edges + first, outs);
             make.vertex_point(parent_vertices + m)
         },
     );
@@ -248,31 +242,16 @@ fn around_parents(
 /// A plan's gathers, as slices.
 struct Planned<'a> {
     edges: &'a [[u32; 4]],
-    /// The level's first inside edge: twice the parent's edges (0 without
-    /// a parent).
-    first_inside: usize,
     rings: PlannedRings<'a>,
     points: &'a [DVec3],
 }
 
-impl Planned<'_> {
+impl GroupPoints for Planned<'_> {
     #[inline(always)]
     fn edge_points(&self, first: usize, outs: &mut [DVec3]) {
         for (out, &edge) in outs.iter_mut().zip(&self.edges[first..]) {
             *out = edge_point_of(edge, self.points);
         }
-    }
-}
-
-impl GroupPoints for Planned<'_> {
-    #[inline(always)]
-    fn inside(&self, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(self.first_inside + first, outs);
-    }
-
-    #[inline(always)]
-    fn halves(&self, _: usize, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(first, outs);
     }
 
     #[inline(always)]
@@ -324,29 +303,15 @@ impl<'a> PlannedRings<'a> {
 /// A level's gathers, read where they lie.
 struct Gathered<'a, G> {
     level: &'a G,
-    /// The level's first inside edge: twice the parent's edges.
-    first_inside: usize,
     points: &'a [DVec3],
 }
 
-impl<G: Gathers> Gathered<'_, G> {
+impl<G: Gathers> GroupPoints for Gathered<'_, G> {
     #[inline]
     fn edge_points(&self, first: usize, outs: &mut [DVec3]) {
         edge_points_into(self.level, first, outs, |edge| {
             edge_point_of(edge, self.points)
         });
-    }
-}
-
-impl<G: Gathers> GroupPoints for Gathered<'_, G> {
-    #[inline]
-    fn inside(&self, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(self.first_inside + first, outs);
-    }
-
-    #[inline]
-    fn halves(&self, _: usize, first: usize, outs: &mut [DVec3]) {
-        self.edge_points(first, outs);
     }
 
     #[inline]
@@ -361,15 +326,15 @@ struct Refined<'a, 'b>(Gathered<'a, LoopRefinedGathers<'b>>);
 
 impl GroupPoints for Refined<'_, '_> {
     #[inline]
-    fn inside(&self, first: usize, outs: &mut [DVec3]) {
-        self.0.inside(first, outs);
+    fn edge_points(&self, first: usize, outs: &mut [DVec3]) {
+        self.0.edge_points(first, outs);
     }
 
     #[inline]
     fn halves(&self, v: usize, first: usize, outs: &mut [DVec3]) {
-        let Gathered { level, points, .. } = self.0;
+        let Gathered { level, points } = self.0;
         let Some(wings) = level.slot_wings(v) else {
-            return self.0.halves(v, first, outs);
+            return self.0.edge_points(first, outs);
         };
         let parent_vertices = level.parent.faces.vertex_count as u32;
         let edges = level.parent.connectivity.vertex_edges(v);
