@@ -179,6 +179,7 @@ pub(crate) fn fill_by_offsets<T: Default + Clone + Send + Sync>(
     let mut values = zeroed(offsets.last().map_or(0, |&n| n as usize), what)?;
     split_by_offsets(&mut values, offsets, CHUNK)
         .into_par_iter()
+        .with_max_len(1)
         .for_each(|(items, block)| {
             let base = offsets[items.start] as usize;
             for i in items {
@@ -202,9 +203,14 @@ pub(crate) fn fill_groups<T: Send, S: Send>(
     block: usize,
     each: impl Fn(usize, usize, &mut [T]) -> S + Sync,
 ) {
+    // One task per block: a block's work follows its groups' sizes, which
+    // can run lopsided across the level (Loop's inside edges mostly go to
+    // the lower-numbered parent edges), so idle threads must be able to
+    // take any block still waiting.
     split_by_offsets(values, offsets, block)
         .into_par_iter()
         .zip(singles.par_chunks_mut(block))
+        .with_max_len(1)
         .for_each(|((items, part), singles)| fill_items(part, offsets, items, singles, &each));
 }
 
