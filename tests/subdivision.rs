@@ -361,12 +361,12 @@ fn scrambled(cage: &Mesh, seed: u64) -> Mesh {
 
 #[test]
 fn refiner_evaluate_equals_one_shot_on_large_levels() {
-    // 4,608 quads: level 1 has 18,432 faces, enough for the refiner to
+    // 18,432 quads: level 1 has 73,728 faces, enough for the refiner to
     // make level 3 band by band; the seam's groups read the last band's
     // face points, and in the scrambled copy most groups read far away.
     // The triangle torus: every vertex has six neighbours, whose rings the
     // refiner sums unrolled.
-    let torus = shapes::torus(72, 64);
+    let torus = shapes::torus(144, 128);
     let triangles = shapes::triangle_torus(48, 32);
     let cages = [
         (Scheme::CatmullClark, torus.clone()),
