@@ -22,6 +22,10 @@ use crate::error::Result;
 /// Groups per run at most: a task's worth of work.
 const RUN: usize = 2048;
 
+/// Groups per run at least, but at the end of the groups: a shorter run
+/// costs more in handing it to a thread than in making its points.
+const MIN_RUN: usize = 256;
+
 /// A run of groups of one band, with the parts of the output they write.
 pub(crate) struct Run<'a> {
     band: u32,
@@ -143,12 +147,26 @@ pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
     }))
 }
 
-/// Consecutive groups of one band, at most [`RUN`] to a run.
+/// Consecutive groups, at most [`RUN`] to a run, each run in the latest
+/// band any of its groups needs: groups of one band, and a run shorter
+/// than [`MIN_RUN`] takes the next groups whatever their band. Where the
+/// bands alternate group by group (the groups at a torus's seam, which
+/// read the first and the last band), the runs would otherwise be a
+/// group or two long, each a task of its own.
 fn runs(bands: &[u32]) -> Vec<(u32, u32)> {
     let mut runs: Vec<(u32, u32)> = Vec::new();
     for (i, &band) in bands.iter().enumerate() {
-        match runs.last() {
-            Some(&(start, last)) if last == band && i - (start as usize) < RUN => {}
+        match runs.last_mut() {
+            Some((start, last)) if i - (*start as usize) < RUN => {
+                if *last == band {
+                    continue;
+                }
+                if i - (*start as usize) < MIN_RUN {
+                    *last = (*last).max(band);
+                    continue;
+                }
+                runs.push((i as u32, band));
+            }
             _ => runs.push((i as u32, band)),
         }
     }
@@ -160,6 +178,33 @@ mod tests {
     use crate::mesh::shapes;
     use crate::subdivide::refiner::{plan_levels, Levels};
     use crate::subdivide::{NakedEdges, Scheme};
+
+    #[test]
+    fn runs_wait_for_every_band_their_groups_need_and_are_not_tiny() {
+        // A seam: bands alternating group by group, then one band.
+        let bands: Vec<u32> = (0..600)
+            .map(|i| [3, 0, 0, 0][i % 4])
+            .chain(std::iter::repeat_n(1, 5000))
+            .collect();
+        let runs = super::runs(&bands);
+        let ends: Vec<usize> = runs
+            .iter()
+            .skip(1)
+            .map(|&(start, _)| start as usize)
+            .chain([bands.len()])
+            .collect();
+        assert_eq!(runs[0].0, 0);
+        for (&(start, band), end) in runs.iter().zip(ends) {
+            let groups = &bands[start as usize..end];
+            assert!(!groups.is_empty() && groups.len() <= super::RUN);
+            assert!(groups.iter().all(|&need| need <= band), "run at {start}");
+            let pure = groups.iter().all(|&need| need == band);
+            assert!(pure || groups.len() >= super::MIN_RUN, "run at {start}");
+        }
+        // The seam's 600 groups go in three runs, not 300.
+        assert_eq!(runs.iter().filter(|&&(start, _)| start < 600).count(), 3);
+        assert!(runs.iter().any(|&(_, band)| band == 1));
+    }
 
     #[test]
     fn large_levels_go_band_by_band_and_the_seam_waits() {
