@@ -304,7 +304,9 @@ fn apply_grouped(level: &impl Gathers, groups: &ParentGroups, points: &[DVec3], 
         );
         let edge_tasks = edges.into_par_iter().map(|run| (run, true));
         let vertex_tasks = vertices.into_par_iter().map(|run| (run, false));
-        edge_tasks.chain(vertex_tasks).for_each(|(run, at_edge)| {
+        // One task per run, for the same reason as `fill_groups`'s blocks.
+        let tasks = edge_tasks.chain(vertex_tasks).with_max_len(1);
+        tasks.for_each(|(run, at_edge)| {
             let (offsets, base_edge, base_vertex) = match at_edge {
                 true => (&groups.edge_inside, inside_base, parent_vertices),
                 false => (&groups.vertex_halves, 0, 0),
