@@ -22,7 +22,7 @@ use crate::error::Result;
 /// Groups per run at most: a task's worth of work.
 const RUN: usize = 2048;
 
-/// Groups per run at least, but at the end of the groups: a shorter run
+/// Groups per run at least, but in the last run: a shorter run
 /// costs more in handing it to a thread than in making its points.
 const MIN_RUN: usize = 256;
 
