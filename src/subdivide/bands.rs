@@ -6,10 +6,10 @@
 //! before the edge and vertex passes read them back, by then from memory.
 //! A refiner's plan is cut once into bands of parent faces; each group
 //! around a parent edge or vertex goes in the first band whose face points
-//! hold every face point it reads, in runs of consecutive groups of one
-//! band (the groups at a torus's seam, whose rings reach its last faces,
-//! wait for the last band). Evaluation makes a band's face points, then
-//! its runs.
+//! hold every face point it reads, in runs of consecutive groups, each
+//! run in the latest band its groups need (the groups at a torus's seam,
+//! whose rings reach its last faces, wait for the last band). Evaluation
+//! makes a band's face points, then its runs.
 
 use glam::DVec3;
 
@@ -72,8 +72,8 @@ pub(crate) fn band_runs<'a>(runs: &mut [Option<Run<'a>>], band: usize) -> Vec<Ru
 /// Parent faces per band of Catmull-Clark's `apply_grouped`: a band's
 /// 262,144 face points (6 MB) and the points they read stay in a
 /// desktop's last-level cache. Bands no smaller: at the end of each
-/// band's two passes the threads wait for one another, tens of
-/// microseconds each time on a virtual machine.
+/// band's two passes the threads wait for one another, about a tenth of
+/// a millisecond each time on a virtual machine.
 const BAND_FACES: usize = 65_536;
 
 /// How a plan's Catmull-Clark's `apply_grouped` goes band by band (see
