@@ -28,6 +28,9 @@ pub(crate) struct Plan {
     pub(crate) vertex_count: usize,
     /// The faces of the level the plan reads (for face points; empty for Loop).
     pub(crate) face_offsets: Vec<u32>,
+    /// The corner count of every face read, when all have the same (see
+    /// `Faces::size`), else 0.
+    pub(crate) face_size: u32,
     pub(crate) face_indices: Vec<u32>,
     /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
     /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
@@ -74,6 +77,16 @@ impl ParentGroups {
 }
 
 impl Plan {
+    /// Where face `f`'s corners are in [`Plan::face_indices`]: a level of
+    /// quads (every refined level) reads no offsets.
+    #[inline]
+    pub(crate) fn face_corners(&self, f: usize) -> std::ops::Range<usize> {
+        match self.face_size {
+            4 => 4 * f..4 * f + 4,
+            _ => self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize,
+        }
+    }
+
     /// The ring of vertex `v` (see [`Plan::vertex_ring`]).
     #[inline]
     pub(crate) fn ring(&self, v: usize) -> &[u32] {
@@ -133,6 +146,7 @@ pub(crate) fn plan(
         scheme,
         vertex_count,
         face_offsets: Vec::new(),
+        face_size: 0,
         face_indices: Vec::new(),
         edges,
         vertex_rules: tags.vertex_rules.clone(),
@@ -284,8 +298,7 @@ impl Gathers for Plan {
 
     #[inline]
     fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
-        let corners = self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize;
-        self.face_indices[corners].iter().copied()
+        self.face_indices[self.face_corners(f)].iter().copied()
     }
 
     #[inline]
