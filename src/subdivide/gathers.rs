@@ -26,12 +26,13 @@ pub(crate) struct Plan {
     pub(crate) scheme: Scheme,
     /// Vertex count of the level the plan reads.
     pub(crate) vertex_count: usize,
-    /// The faces of the level the plan reads (for face points; empty for Loop).
+    /// The faces of the level the plan reads (for face points; empty for
+    /// Loop); no offsets for a level of quads (see [`Plan::face_corners`]).
     pub(crate) face_offsets: Vec<u32>,
+    pub(crate) face_indices: Vec<u32>,
     /// The corner count of every face read, when all have the same (see
     /// `Faces::size`), else 0.
     pub(crate) face_size: u32,
-    pub(crate) face_indices: Vec<u32>,
     /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
     /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
     /// [`NONE`] for a sharp edge, whose point is the midpoint.
@@ -146,8 +147,8 @@ pub(crate) fn plan(
         scheme,
         vertex_count,
         face_offsets: Vec::new(),
-        face_size: 0,
         face_indices: Vec::new(),
+        face_size: 0,
         edges,
         vertex_rules: tags.vertex_rules.clone(),
         vertex_ring_offsets: ring_offsets,
@@ -293,7 +294,10 @@ impl Gathers for Plan {
     }
 
     fn face_count(&self) -> usize {
-        self.face_offsets.len().saturating_sub(1)
+        match self.face_size {
+            4 => self.face_indices.len() / 4,
+            _ => self.face_offsets.len().saturating_sub(1),
+        }
     }
 
     #[inline]

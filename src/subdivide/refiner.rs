@@ -346,7 +346,9 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
             connectivity = Connectivity::default();
         }
         if scheme == Scheme::CatmullClark {
-            plan.face_offsets = faces.offsets;
+            if faces.size != 4 {
+                plan.face_offsets = faces.offsets;
+            }
             plan.face_size = faces.size;
             plan.face_indices = faces.indices;
             plan.bands = bands::plan_bands(&plan)?;
