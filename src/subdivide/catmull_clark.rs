@@ -423,6 +423,15 @@ fn planned_vertex_point(
         VertexRule::Smooth => {
             // Two sums side by side, each in ring order.
             let (neighbour_ring, face_ring) = ring.split_at(ring.len() / 2);
+            // Valence 4, nearly every vertex of a refined level, unrolled:
+            // the same sums without the loop's counters and checks.
+            if let (&[a, b, c, d], &[e, f, g, h]) = (neighbour_ring, face_ring) {
+                let at = |u: u32| points[u as usize];
+                let face = |f: u32| face_points[f as usize - first_face];
+                let neighbours = DVec3::ZERO + at(a) + at(b) + at(c) + at(d);
+                let faces = DVec3::ZERO + face(e) + face(f) + face(g) + face(h);
+                return smooth_vertex_point(points[v], neighbours, faces, 4);
+            }
             let (mut neighbours, mut faces) = (DVec3::ZERO, DVec3::ZERO);
             for (&u, &f) in neighbour_ring.iter().zip(face_ring) {
                 neighbours += points[u as usize];
