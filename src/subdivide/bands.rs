@@ -26,7 +26,8 @@ const RUN: usize = 2048;
 /// costs more in handing it to a thread than in making its points.
 const MIN_RUN: usize = 256;
 
-/// A run of groups of one band, with the parts of the output they write.
+/// A run of groups, made in the latest band any of them needs, with the
+/// parts of the output they write.
 pub(crate) struct Run<'a> {
     band: u32,
     pub(crate) items: std::ops::Range<usize>,
@@ -83,7 +84,8 @@ pub(crate) struct Bands {
     /// The end of each band's parent faces.
     pub(crate) face_ends: Vec<u32>,
     /// The parent edges' groups in runs `(first group, band)`, in order,
-    /// each run one band's and at most [`RUN`] groups long.
+    /// each run made in one band and at most [`RUN`] groups long (see
+    /// [`runs`]).
     pub(crate) edge_runs: Vec<(u32, u32)>,
     /// The parent vertices' groups, the same way.
     pub(crate) vertex_runs: Vec<(u32, u32)>,
