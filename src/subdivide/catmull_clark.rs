@@ -394,7 +394,7 @@ fn grouped_vertex_point(
 /// [`face_point`] of a plan's face `f`: the same sum, a quad's unrolled.
 #[inline]
 fn planned_face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
-    match plan.face_indices[plan.face_corners(f)] {
+    match *plan.faces.face(f) {
         [a, b, c, d] => {
             let sum = DVec3::ZERO + points[a as usize] + points[b as usize];
             (sum + points[c as usize] + points[d as usize]) * 0.25

@@ -27,12 +27,9 @@ pub(crate) struct Plan {
     /// Vertex count of the level the plan reads.
     pub(crate) vertex_count: usize,
     /// The faces of the level the plan reads (for face points; empty for
-    /// Loop); no offsets for a level of quads (see [`Plan::face_corners`]).
-    pub(crate) face_offsets: Vec<u32>,
-    pub(crate) face_indices: Vec<u32>,
-    /// The corner count of every face read, when all have the same (see
-    /// `Faces::size`), else 0.
-    pub(crate) face_size: u32,
+    /// Loop), without offsets when they are of one size (every refined
+    /// level): their corners are found by arithmetic.
+    pub(crate) faces: Faces,
     /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
     /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
     /// [`NONE`] for a sharp edge, whose point is the midpoint.
@@ -78,16 +75,6 @@ impl ParentGroups {
 }
 
 impl Plan {
-    /// Where face `f`'s corners are in [`Plan::face_indices`]: a level of
-    /// quads (every refined level) reads no offsets.
-    #[inline]
-    pub(crate) fn face_corners(&self, f: usize) -> std::ops::Range<usize> {
-        match self.face_size {
-            4 => 4 * f..4 * f + 4,
-            _ => self.face_offsets[f] as usize..self.face_offsets[f + 1] as usize,
-        }
-    }
-
     /// The ring of vertex `v` (see [`Plan::vertex_ring`]).
     #[inline]
     pub(crate) fn ring(&self, v: usize) -> &[u32] {
@@ -142,13 +129,11 @@ pub(crate) fn plan(
         }
     })?;
 
-    // The caller moves the faces in for Catmull-Clark (see `Plan::face_offsets`).
+    // The caller moves the faces in for Catmull-Clark (see `Plan::faces`).
     Ok(Plan {
         scheme,
         vertex_count,
-        face_offsets: Vec::new(),
-        face_indices: Vec::new(),
-        face_size: 0,
+        faces: Faces::default(),
         edges,
         vertex_rules: tags.vertex_rules.clone(),
         vertex_ring_offsets: ring_offsets,
@@ -294,15 +279,12 @@ impl Gathers for Plan {
     }
 
     fn face_count(&self) -> usize {
-        match self.face_size {
-            4 => self.face_indices.len() / 4,
-            _ => self.face_offsets.len().saturating_sub(1),
-        }
+        self.faces.face_count()
     }
 
     #[inline]
     fn face(&self, f: usize) -> impl ExactSizeIterator<Item = u32> + '_ {
-        self.face_indices[self.face_corners(f)].iter().copied()
+        self.faces.face(f).iter().copied()
     }
 
     #[inline]

@@ -21,7 +21,7 @@ use crate::mesh::adjacency::Adjacency;
 pub(crate) const NONE: u32 = u32::MAX;
 
 /// The faces of one level: sizes as offsets, vertices one face after another.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, Default)]
 pub(crate) struct Faces {
     pub(crate) vertex_count: usize,
     /// The corner count of every face when all have 3 or all have 4 (every

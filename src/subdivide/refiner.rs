@@ -346,11 +346,11 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
             connectivity = Connectivity::default();
         }
         if scheme == Scheme::CatmullClark {
-            if faces.size != 4 {
-                plan.face_offsets = faces.offsets;
-            }
-            plan.face_size = faces.size;
-            plan.face_indices = faces.indices;
+            let offsets = match faces.size {
+                0 => faces.offsets,
+                _ => Vec::new(),
+            };
+            plan.faces = Faces { offsets, ..faces };
             plan.bands = bands::plan_bands(&plan)?;
         }
         each(plan);
