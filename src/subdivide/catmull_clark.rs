@@ -169,6 +169,9 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(groups) = level.parent_groups() {
         return apply_grouped(level, groups, points, out);
     }
+    if let Some(plan) = level.as_plan() {
+        return apply_planned(plan, points, out);
+    }
     let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
     let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
     face_points
@@ -187,6 +190,31 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
         .with_min_len(CHUNK)
         .enumerate()
         .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
+}
+
+/// [`apply`] for a plan whose level groups around no parent (a refiner's
+/// cage): point after point, each read straight from the plan's arrays,
+/// the quads and valence-4 rings unrolled. The same sums in the same order
+/// as [`apply`] on the level the plan was read from, so the same bits.
+fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
+    let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
+    let (edge_points, face_points) = rest.split_at_mut(plan.edges.len());
+    face_points
+        .par_iter_mut()
+        .with_min_len(CHUNK)
+        .enumerate()
+        .for_each(|(f, out)| *out = planned_face_point(plan, points, f));
+    let face_points = &*face_points;
+    edge_points
+        .par_iter_mut()
+        .zip(&plan.edges)
+        .with_min_len(CHUNK)
+        .for_each(|(out, &edge)| *out = edge_point_of(edge, points, face_points));
+    vertex_points
+        .par_iter_mut()
+        .with_min_len(CHUNK)
+        .enumerate()
+        .for_each(|(v, out)| *out = planned_vertex_point(plan, points, face_points, 0, v));
 }
 
 /// [`apply`] for the level refined from `level.parent`, in three passes
@@ -369,7 +397,7 @@ fn grouped_face_point(level: &impl Gathers, points: &[DVec3], f: usize) -> DVec3
 /// A vertex point of [`apply_grouped`], whose faces are among
 /// `face_points`, the first of which is face `first_face`: read straight
 /// from a plan.
-#[inline]
+#[inline(always)]
 fn grouped_vertex_point(
     level: &impl Gathers,
     points: &[DVec3],
@@ -410,7 +438,7 @@ fn planned_face_point(plan: &Plan, points: &[DVec3], f: usize) -> DVec3 {
 
 /// [`vertex_point`] of a plan's vertex `v`, read from its ring, whose
 /// faces are among `face_points`, the first of which is face `first_face`.
-#[inline]
+#[inline(always)]
 fn planned_vertex_point(
     plan: &Plan,
     points: &[DVec3],
