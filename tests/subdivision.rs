@@ -361,9 +361,10 @@ fn scrambled(cage: &Mesh, seed: u64) -> Mesh {
 
 #[test]
 fn refiner_evaluate_equals_one_shot_on_large_levels() {
-    // 18,432 quads: level 1 has 73,728 faces, enough for the refiner to
-    // make level 3 band by band; the seam's groups read the last band's
-    // face points, and in the scrambled copy most groups read far away.
+    // 18,432 quads: level 1 has 73,728 faces, enough for a refiner made
+    // on two threads to make level 3 in three bands (16,384 parent faces a
+    // thread); the seam's groups read the last band's face points, and in
+    // the scrambled copy most groups read far away.
     // The triangle torus: every vertex has six neighbours, whose rings the
     // refiner sums unrolled.
     let torus = shapes::torus(144, 128);
@@ -374,8 +375,14 @@ fn refiner_evaluate_equals_one_shot_on_large_levels() {
         (Scheme::Loop, triangles.clone()),
         (Scheme::Loop, scrambled(&triangles, 7)),
     ];
+    let two_threads = rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .unwrap();
     for (scheme, cage) in cages {
-        let refiner = Refiner::new(&cage, scheme, 3, NakedEdges::Smooth).unwrap();
+        let refiner = two_threads
+            .install(|| Refiner::new(&cage, scheme, 3, NakedEdges::Smooth))
+            .unwrap();
         let moved: Vec<DVec3> = cage
             .positions()
             .iter()

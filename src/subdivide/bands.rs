@@ -70,12 +70,19 @@ pub(crate) fn band_runs<'a>(runs: &mut [Option<Run<'a>>], band: usize) -> Vec<Ru
         .collect()
 }
 
-/// Parent faces per band of Catmull-Clark's `apply_grouped`: a band's
-/// 262,144 face points (6 MB) and the points they read stay in a
-/// desktop's last-level cache. Bands no smaller: at the end of each
-/// band's two passes the threads wait for one another, about a tenth of
-/// a millisecond each time on a virtual machine.
-const BAND_FACES: usize = 65_536;
+/// Parent faces per band of Catmull-Clark's `apply_grouped`, for each
+/// thread that shares the band: each thread's part of a band's face
+/// points (65,536 of them, 1.5 MB) stays near its core until the band's
+/// groups read them back. Twice as many a thread made a one-thread
+/// evaluation a tenth slower on a virtual machine whose last-level cache
+/// other machines share; bands grow with the threads because at the end
+/// of each band's two passes the threads wait for one another.
+const BAND_FACES_PER_THREAD: usize = 16_384;
+
+/// Parent faces per band when `threads` threads share the work.
+fn band_faces(threads: usize) -> usize {
+    BAND_FACES_PER_THREAD * threads.max(1)
+}
 
 /// How a plan's Catmull-Clark's `apply_grouped` goes band by band (see
 /// [`plan_bands`]).
@@ -91,21 +98,27 @@ pub(crate) struct Bands {
     pub(crate) vertex_runs: Vec<(u32, u32)>,
 }
 
-/// The bands of a plan's Catmull-Clark's `apply_grouped`, for a level refined from
-/// more than [`BAND_FACES`] parent faces: the parent faces cut in bands,
-/// and each group around a parent edge or vertex in the first band whose
-/// face points hold every face point it reads.
+/// The bands of a plan's Catmull-Clark's `apply_grouped`, sized for the
+/// threads of the pool the plan is made in (see [`band_faces`]).
 pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
+    plan_bands_of(plan, band_faces(rayon::current_num_threads()))
+}
+
+/// The bands of a plan's Catmull-Clark's `apply_grouped`, for a level
+/// refined from more than `band_faces` parent faces: the parent faces cut
+/// in bands of `band_faces`, and each group around a parent edge or vertex
+/// in the first band whose face points hold every face point it reads.
+fn plan_bands_of(plan: &Plan, band_faces: usize) -> Result<Option<Bands>> {
     let Some(groups) = &plan.parent else {
         return Ok(None);
     };
     let (parent_vertices, parent_edges) = groups.parent_counts();
     let parent_faces = groups.face_faces.len() - 1;
-    if parent_faces <= BAND_FACES {
+    if parent_faces <= band_faces {
         return Ok(None);
     }
-    let face_ends: Vec<u32> = (1..=parent_faces.div_ceil(BAND_FACES))
-        .map(|b| (b * BAND_FACES).min(parent_faces) as u32)
+    let face_ends: Vec<u32> = (1..=parent_faces.div_ceil(band_faces))
+        .map(|b| (b * band_faces).min(parent_faces) as u32)
         .collect();
     let limits: Vec<u32> = face_ends
         .iter()
@@ -218,8 +231,21 @@ mod tests {
             levels: 3,
             naked_edges: NakedEdges::Smooth,
         };
-        let mut plans = Vec::new();
-        plan_levels(request, |plan| plans.push(plan)).unwrap();
+        // Bands of 16,384 parent faces a thread: 65,536 on four threads.
+        let plans_on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let mut plans = Vec::new();
+            pool.install(|| plan_levels(request, |plan| plans.push(plan)))
+                .unwrap();
+            plans
+        };
+        let on_two = plans_on(2);
+        let ends = &on_two[2].bands.as_ref().unwrap().face_ends;
+        assert_eq!(ends, &[32_768, 65_536, 73_728]);
+        let plans = plans_on(4);
         assert!(
             plans[1].bands.is_none(),
             "level 2 is refined from 18,432 faces"
