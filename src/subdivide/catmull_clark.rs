@@ -172,24 +172,14 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
     if let Some(plan) = level.as_plan() {
         return apply_planned(plan, points, out);
     }
-    let (vertex_points, rest) = out.split_at_mut(level.vertex_count());
-    let (edge_points, face_points) = rest.split_at_mut(level.edge_count());
-    face_points
-        .par_iter_mut()
-        .with_min_len(CHUNK)
-        .enumerate()
-        .for_each(|(f, out)| *out = face_point(level, points, f));
-    let face_points = &*face_points;
-    edge_points
-        .par_iter_mut()
-        .with_min_len(CHUNK)
-        .enumerate()
-        .for_each(|(e, out)| *out = edge_point(level, points, face_points, e));
-    vertex_points
-        .par_iter_mut()
-        .with_min_len(CHUNK)
-        .enumerate()
-        .for_each(|(v, out)| *out = vertex_point(level, points, face_points, v));
+    three_passes(
+        out,
+        level.vertex_count(),
+        level.edge_count(),
+        |f| face_point(level, points, f),
+        |face_points, e| edge_point(level, points, face_points, e),
+        |face_points, v| vertex_point(level, points, face_points, v),
+    );
 }
 
 /// [`apply`] for a plan whose level groups around no parent (a refiner's
@@ -197,24 +187,45 @@ pub(crate) fn apply(level: &impl Gathers, points: &[DVec3], out: &mut [DVec3]) {
 /// the quads and valence-4 rings unrolled. The same sums in the same order
 /// as [`apply`] on the level the plan was read from, so the same bits.
 fn apply_planned(plan: &Plan, points: &[DVec3], out: &mut [DVec3]) {
-    let (vertex_points, rest) = out.split_at_mut(plan.vertex_count);
-    let (edge_points, face_points) = rest.split_at_mut(plan.edges.len());
+    three_passes(
+        out,
+        plan.vertex_count,
+        plan.edges.len(),
+        |f| planned_face_point(plan, points, f),
+        |face_points, e| edge_point_of(plan.edges[e], points, face_points),
+        |face_points, v| planned_vertex_point(plan, points, face_points, 0, v),
+    );
+}
+
+/// Fills `out` with a level's vertex, edge and face points (`vertex_count`
+/// and `edge_count` of the first two) in three passes over all threads:
+/// the face points first, which the edge and vertex points read.
+fn three_passes(
+    out: &mut [DVec3],
+    vertex_count: usize,
+    edge_count: usize,
+    face: impl Fn(usize) -> DVec3 + Sync,
+    edge: impl Fn(&[DVec3], usize) -> DVec3 + Sync,
+    vertex: impl Fn(&[DVec3], usize) -> DVec3 + Sync,
+) {
+    let (vertex_points, rest) = out.split_at_mut(vertex_count);
+    let (edge_points, face_points) = rest.split_at_mut(edge_count);
     face_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(f, out)| *out = planned_face_point(plan, points, f));
+        .for_each(|(f, out)| *out = face(f));
     let face_points = &*face_points;
     edge_points
         .par_iter_mut()
-        .zip(&plan.edges)
         .with_min_len(CHUNK)
-        .for_each(|(out, &edge)| *out = edge_point_of(edge, points, face_points));
+        .enumerate()
+        .for_each(|(e, out)| *out = edge(face_points, e));
     vertex_points
         .par_iter_mut()
         .with_min_len(CHUNK)
         .enumerate()
-        .for_each(|(v, out)| *out = planned_vertex_point(plan, points, face_points, 0, v));
+        .for_each(|(v, out)| *out = vertex(face_points, v));
 }
 
 /// [`apply`] for the level refined from `level.parent`, in three passes
