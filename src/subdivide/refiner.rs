@@ -39,7 +39,9 @@ pub struct Refiner {
 
 impl Refiner {
     /// Plans `levels` levels of `scheme` on `cage`'s faces with the given
-    /// naked-edge mode.
+    /// naked-edge mode. The plans are laid out for the threads of the
+    /// rayon pool this is called in, which evaluation runs best in; any
+    /// pool evaluates to the same bits.
     ///
     /// # Errors
     /// [`Error::NotTriangles`] for Loop on a face that is not a triangle;
