@@ -73,10 +73,11 @@ pub(crate) fn band_runs<'a>(runs: &mut [Option<Run<'a>>], band: usize) -> Vec<Ru
 /// Parent faces per band of Catmull-Clark's `apply_grouped`, for each
 /// thread that shares the band: each thread's part of a band's face
 /// points (65,536 of them, 1.5 MB) stays near its core until the band's
-/// groups read them back. Twice as many a thread made a one-thread
-/// evaluation a tenth slower on a virtual machine whose last-level cache
-/// other machines share; bands grow with the threads because at the end
-/// of each band's two passes the threads wait for one another.
+/// groups read them back. Four times as many a thread (6 MB) made a
+/// one-thread evaluation a tenth slower on a virtual machine whose
+/// last-level cache other machines share; bands grow with the threads
+/// because at the end of each band's two passes the threads wait for one
+/// another.
 const BAND_FACES_PER_THREAD: usize = 16_384;
 
 /// Parent faces per band when `threads` threads share the work.
