@@ -99,20 +99,16 @@ pub(crate) struct Bands {
     pub(crate) vertex_runs: Vec<(u32, u32)>,
 }
 
-/// The bands of a plan's Catmull-Clark's `apply_grouped`, sized for the
-/// threads of the pool the plan is made in (see [`band_faces`]).
-pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
-    plan_bands_of(plan, band_faces(rayon::current_num_threads()))
-}
-
 /// The bands of a plan's Catmull-Clark's `apply_grouped`, for a level
-/// refined from more than `band_faces` parent faces: the parent faces cut
-/// in bands of `band_faces`, and each group around a parent edge or vertex
-/// in the first band whose face points hold every face point it reads.
-fn plan_bands_of(plan: &Plan, band_faces: usize) -> Result<Option<Bands>> {
+/// refined from more parent faces than a band holds (see [`band_faces`],
+/// for the threads of the pool the plan is made in): the parent faces cut
+/// in bands, and each group around a parent edge or vertex in the first
+/// band whose face points hold every face point it reads.
+pub(crate) fn plan_bands(plan: &Plan) -> Result<Option<Bands>> {
     let Some(groups) = &plan.parent else {
         return Ok(None);
     };
+    let band_faces = band_faces(rayon::current_num_threads());
     let (parent_vertices, parent_edges) = groups.parent_counts();
     let parent_faces = groups.face_faces.len() - 1;
     if parent_faces <= band_faces {

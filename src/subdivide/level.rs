@@ -29,7 +29,8 @@ pub(crate) struct Faces {
     /// by arithmetic instead of reading the offsets.
     pub(crate) size: u32,
     /// `offsets[f]..offsets[f + 1]` are face f's corners; one longer than the
-    /// face count, or empty for a last level of uniform `size`.
+    /// face count, or empty for faces of uniform `size` that dropped them
+    /// (see [`Faces::drop_uniform_offsets`]).
     pub(crate) offsets: Vec<u32>,
     pub(crate) indices: Vec<u32>,
 }
@@ -54,6 +55,14 @@ impl Faces {
             size,
             offsets,
             indices: mesh.face_indices().to_vec(),
+        }
+    }
+
+    /// Drops the offsets of faces of one size, whose corners are then
+    /// found by arithmetic (every refined level's faces are of one size).
+    pub(crate) fn drop_uniform_offsets(&mut self) {
+        if self.size != 0 {
+            self.offsets = Vec::new();
         }
     }
 

@@ -348,11 +348,8 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
             connectivity = Connectivity::default();
         }
         if scheme == Scheme::CatmullClark {
-            let offsets = match faces.size {
-                0 => faces.offsets,
-                _ => Vec::new(),
-            };
-            plan.faces = Faces { offsets, ..faces };
+            faces.drop_uniform_offsets();
+            plan.faces = faces;
             plan.bands = bands::plan_bands(&plan)?;
         }
         each(plan);
@@ -417,11 +414,9 @@ pub(crate) fn gather_levels(
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
     };
-    // Faces of one size are read by arithmetic here: their offsets go
-    // (as every refined level's, which are all of one size).
-    if faces.size != 0 {
-        faces.offsets = Vec::new();
-    }
+    // Faces of one size are read by arithmetic here, as every refined
+    // level's are.
+    faces.drop_uniform_offsets();
     let (vertex_count, face_count, index_count) = check_counts(
         scheme,
         faces.vertex_count as u64,
