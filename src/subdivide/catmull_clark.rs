@@ -56,7 +56,10 @@ pub(crate) fn child_indices(
 /// alone (see [`RefinedGathers`]): the level between is never built. Their
 /// order is that of [`child_indices`] applied twice; without offsets. The
 /// indices go `into` a caller's buffer when given (see [`par_groups`]).
-pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>) -> Result<Faces> {
+pub(crate) fn grandchild_faces(
+    parent: &RefinedGathers,
+    into: Option<&mut [u32]>,
+) -> Result<Faces<'static>> {
     let corner_count = parent.face_count();
     let vertex_base = parent.vertex_count() as u32;
     let face_base = vertex_base + parent.edge_count() as u32;
@@ -92,8 +95,8 @@ pub(crate) fn grandchild_faces(parent: &RefinedGathers, into: Option<&mut [u32]>
     Ok(Faces {
         vertex_count: parent.vertex_count() + parent.edge_count() + corner_count,
         size: 4,
-        offsets: Vec::new(),
-        indices,
+        offsets: Vec::new().into(),
+        indices: indices.into(),
     })
 }
 

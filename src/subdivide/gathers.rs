@@ -29,7 +29,7 @@ pub(crate) struct Plan {
     /// The faces of the level the plan reads (for face points; empty for
     /// Loop), without offsets when they are of one size (every refined
     /// level): their corners are found by arithmetic.
-    pub(crate) faces: Faces,
+    pub(crate) faces: Faces<'static>,
     /// Per edge `[a, b, wing, wing]`: the end vertices, then the two faces
     /// (Catmull-Clark) or opposite vertices (Loop) of a smooth edge, or
     /// [`NONE`] for a sharp edge, whose point is the midpoint.
@@ -318,7 +318,7 @@ impl Gathers for Plan {
 #[derive(Clone, Copy)]
 pub(crate) struct LevelGathers<'a> {
     pub(crate) scheme: Scheme,
-    pub(crate) faces: &'a Faces,
+    pub(crate) faces: &'a Faces<'a>,
     pub(crate) connectivity: &'a Connectivity,
     pub(crate) tags: &'a Tags,
     /// How the level groups around the level it was refined from, when

@@ -89,7 +89,7 @@ fn hard_naked_edges(
 #[derive(Debug, Clone)]
 pub(crate) struct Visible {
     /// The kept faces, with offsets.
-    pub(crate) faces: Faces,
+    pub(crate) faces: Faces<'static>,
     /// For each kept face corner, its corner in the last level.
     pub(crate) corners: Vec<u32>,
     /// For each kept face, its cage face.
@@ -144,8 +144,8 @@ pub(crate) fn visible_faces(
         faces: Faces {
             vertex_count: last.vertex_count,
             size: 0,
-            offsets,
-            indices,
+            offsets: offsets.into(),
+            indices: indices.into(),
         },
         corners,
         parents,

@@ -12,6 +12,8 @@ mod refine;
 
 pub(crate) use refine::LoopInsideEdges;
 
+use std::borrow::Cow;
+
 use super::scheme::{check_counts, Scheme};
 use crate::buffers::{par_map, prefix_sum, try_copy, try_vec, zeroed};
 use crate::error::Result;
@@ -21,8 +23,10 @@ use crate::mesh::adjacency::Adjacency;
 pub(crate) const NONE: u32 = u32::MAX;
 
 /// The faces of one level: sizes as offsets, vertices one face after another.
+/// A cage's faces borrow its mesh's arrays (`'a`); a refined level's own
+/// theirs (`Faces<'static>`).
 #[derive(Debug, Clone, Default)]
-pub(crate) struct Faces {
+pub(crate) struct Faces<'a> {
     pub(crate) vertex_count: usize,
     /// The corner count of every face when all have 3 or all have 4 (every
     /// refined level), else 0: corners then find their face and neighbours
@@ -31,13 +35,14 @@ pub(crate) struct Faces {
     /// `offsets[f]..offsets[f + 1]` are face f's corners; one longer than the
     /// face count, or empty for faces of uniform `size` that dropped them
     /// (see [`Faces::drop_uniform_offsets`]).
-    pub(crate) offsets: Vec<u32>,
-    pub(crate) indices: Vec<u32>,
+    pub(crate) offsets: Cow<'a, [u32]>,
+    pub(crate) indices: Cow<'a, [u32]>,
 }
 
-impl Faces {
-    /// The faces of a mesh (a cage).
-    pub(crate) fn of_mesh(mesh: &crate::Mesh) -> Faces {
+impl<'a> Faces<'a> {
+    /// The faces of a mesh (a cage), its indices (and offsets, when its
+    /// faces differ in size) read in place.
+    pub(crate) fn of_mesh(mesh: &'a crate::Mesh) -> Faces<'a> {
         let size = match mesh.face_count() {
             0 => 0,
             _ if mesh.is_quad_mesh() => 4,
@@ -47,14 +52,24 @@ impl Faces {
         // Faces of one size have arithmetic offsets: the mesh need not
         // write its own.
         let offsets = match size {
-            0 => mesh.face_offsets().to_vec(),
-            size => (0..=mesh.face_count() as u32).map(|f| f * size).collect(),
+            0 => Cow::Borrowed(mesh.face_offsets()),
+            size => Cow::Owned((0..=mesh.face_count() as u32).map(|f| f * size).collect()),
         };
         Faces {
             vertex_count: mesh.vertex_count(),
             size,
             offsets,
-            indices: mesh.face_indices().to_vec(),
+            indices: Cow::Borrowed(mesh.face_indices()),
+        }
+    }
+
+    /// The same faces with arrays of their own, copied when borrowed.
+    pub(crate) fn into_owned(self) -> Faces<'static> {
+        Faces {
+            vertex_count: self.vertex_count,
+            size: self.size,
+            offsets: Cow::Owned(self.offsets.into_owned()),
+            indices: Cow::Owned(self.indices.into_owned()),
         }
     }
 
@@ -62,7 +77,7 @@ impl Faces {
     /// found by arithmetic (every refined level's faces are of one size).
     pub(crate) fn drop_uniform_offsets(&mut self) {
         if self.size != 0 {
-            self.offsets = Vec::new();
+            self.offsets = Cow::Owned(Vec::new());
         }
     }
 
@@ -171,7 +186,7 @@ impl Connectivity {
         scheme: Scheme,
         levels: u32,
         vertex_edges: bool,
-    ) -> Result<(Faces, Connectivity)> {
+    ) -> Result<(Faces<'_>, Connectivity)> {
         let faces = Faces::of_mesh(cage);
         let connectivity = Connectivity::build(&faces, vertex_edges)?;
         check_counts(

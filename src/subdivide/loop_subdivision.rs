@@ -58,7 +58,7 @@ pub(crate) fn child_indices(
 pub(crate) fn grandchild_faces(
     level: &LoopRefinedGathers,
     into: Option<&mut [u32]>,
-) -> Result<Faces> {
+) -> Result<Faces<'static>> {
     let base = level.vertex_count() as u32;
     let parent_faces = level.parent.faces.face_count();
     // Each of a parent triangle's four children makes four triangles, as
@@ -76,8 +76,8 @@ pub(crate) fn grandchild_faces(
     Ok(Faces {
         vertex_count: level.vertex_count() + level.edge_count(),
         size: 3,
-        offsets: Vec::new(),
-        indices,
+        offsets: Vec::new().into(),
+        indices: indices.into(),
     })
 }
 

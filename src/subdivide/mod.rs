@@ -145,10 +145,18 @@ pub fn subdivide(
     if !faces.offsets.is_empty() {
         // Level 0, or no faces: the cage's own sizes.
         let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
-        return Ok(Mesh::from_valid_parts(positions, sizes, faces.indices));
+        return Ok(Mesh::from_valid_parts(
+            positions,
+            sizes,
+            faces.indices.into_owned(),
+        ));
     }
     // A refined level: all quads (Catmull-Clark) or all triangles (Loop).
-    Mesh::from_valid_uniform_parts(positions, scheme.refined_face_size(), faces.indices)
+    Mesh::from_valid_uniform_parts(
+        positions,
+        scheme.refined_face_size(),
+        faces.indices.into_owned(),
+    )
 }
 
 /// As [`subdivide`], into a caller's buffers instead of a new mesh: the
@@ -207,11 +215,11 @@ pub fn subdivide_into(
 /// (see [`refiner::gather_levels`]) and its positions, or none at level 0.
 /// With `into`, a caller's buffers, the last level's positions and face
 /// indices are written there instead, once `room` has accepted the counts.
-fn refine_points(
-    request: refiner::Levels<'_>,
+fn refine_points<'a>(
+    request: refiner::Levels<'a>,
     into: Option<(&mut [DVec3], &mut [u32])>,
     room: impl FnOnce(RefinedCounts) -> Result<()>,
-) -> Result<(level::Faces, Option<Vec<DVec3>>)> {
+) -> Result<(level::Faces<'a>, Option<Vec<DVec3>>)> {
     let (mesh, scheme) = (request.cage, request.scheme);
     // The first level reads the cage's positions in place, unless they are
     // near the top of the f64 range (see `scale.rs`).

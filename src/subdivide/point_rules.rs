@@ -18,7 +18,7 @@ pub(crate) fn child_faces(
     faces: &Faces,
     connectivity: &Connectivity,
     with_offsets: bool,
-) -> Result<Faces> {
+) -> Result<Faces<'static>> {
     child_faces_into(scheme, faces, connectivity, with_offsets, None)
 }
 
@@ -30,7 +30,7 @@ pub(crate) fn child_faces_into(
     connectivity: &Connectivity,
     with_offsets: bool,
     into: Option<&mut [u32]>,
-) -> Result<Faces> {
+) -> Result<Faces<'static>> {
     let indices = match scheme {
         Scheme::CatmullClark => catmull_clark::child_indices(faces, connectivity, into)?,
         Scheme::Loop => loop_subdivision::child_indices(faces, connectivity, into)?,
@@ -45,8 +45,8 @@ pub(crate) fn child_faces_into(
     Ok(Faces {
         vertex_count,
         size,
-        offsets: uniform_offsets(face_count, size, with_offsets)?,
-        indices,
+        offsets: uniform_offsets(face_count, size, with_offsets)?.into(),
+        indices: indices.into(),
     })
 }
 

@@ -28,7 +28,7 @@ pub struct Refiner {
     naked_edges: NakedEdges,
     cage_vertex_count: usize,
     plans: Vec<Plan>,
-    faces: Faces,
+    faces: Faces<'static>,
     /// The cage's positions, for [`Refiner::mesh`].
     cage_positions: Vec<DVec3>,
     /// Two buffers for the intermediate levels, reserved once.
@@ -85,7 +85,7 @@ impl Refiner {
             naked_edges,
             cage_vertex_count: cage.vertex_count(),
             plans,
-            faces,
+            faces: faces.into_owned(),
             cage_positions: cage.positions().to_vec(),
             scratch: Mutex::new([a, b]),
             creased: None,
@@ -250,7 +250,7 @@ impl Refiner {
 
     fn mesh_with(&self, positions: Vec<DVec3>) -> Mesh {
         let sizes = face_sizes(&self.faces);
-        Mesh::from_valid_parts(positions, sizes, self.faces.indices.clone())
+        Mesh::from_valid_parts(positions, sizes, self.faces.indices.to_vec())
     }
 }
 
@@ -292,7 +292,7 @@ pub(crate) struct Levels<'a> {
     pub(crate) naked_edges: NakedEdges,
 }
 
-impl Levels<'_> {
+impl<'a> Levels<'a> {
     /// For each level to refine, whether it is the last and whether the
     /// next one is.
     fn steps(&self) -> impl Iterator<Item = (bool, bool)> {
@@ -303,7 +303,9 @@ impl Levels<'_> {
     /// The cage's faces, connectivity and tags, or its faces alone when
     /// there is nothing to refine (no level or no face). Checks the scheme's
     /// preconditions and every level's size before allocating.
-    fn cage_level(&self) -> Result<std::result::Result<(Faces, Connectivity, Tags), Faces>> {
+    fn cage_level(
+        &self,
+    ) -> Result<std::result::Result<(Faces<'a>, Connectivity, Tags), Faces<'a>>> {
         let Levels {
             cage,
             scheme,
@@ -323,7 +325,7 @@ impl Levels<'_> {
 
 /// Plans every level in turn, handing each plan to `each`, and returns the
 /// faces of the last level, with offsets.
-pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Result<Faces> {
+pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Result<Faces<'_>> {
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
         Ok(cage) => cage,
         Err(faces) => return Ok(faces),
@@ -349,7 +351,7 @@ pub(crate) fn plan_levels(request: Levels<'_>, mut each: impl FnMut(Plan)) -> Re
         }
         if scheme == Scheme::CatmullClark {
             faces.drop_uniform_offsets();
-            plan.faces = faces;
+            plan.faces = faces.into_owned();
             plan.bands = bands::plan_bands(&plan)?;
         }
         each(plan);
@@ -403,12 +405,12 @@ fn parent_groups(
 /// are written there instead (the returned faces then have none); `room`
 /// first sees the result's counts, before anything is written, and
 /// refuses buffers too small for them.
-pub(crate) fn gather_levels(
-    request: Levels<'_>,
+pub(crate) fn gather_levels<'a>(
+    request: Levels<'a>,
     mut last_indices: Option<&mut [u32]>,
     room: impl FnOnce(RefinedCounts) -> Result<()>,
     mut each: impl FnMut(Step<'_>, Points<'_>) -> Result<()>,
-) -> Result<Faces> {
+) -> Result<Faces<'a>> {
     let scheme = request.scheme;
     let (mut faces, mut connectivity, mut tags) = match request.cage_level()? {
         Ok(cage) => cage,
@@ -477,7 +479,7 @@ pub(crate) fn gather_levels(
                     loop_subdivision::grandchild_faces(&refined, Some(indices))?
                 }
             };
-            last_faces.indices = own_indices;
+            last_faces.indices = own_indices.into();
             return Ok(last_faces);
         }
         if last {

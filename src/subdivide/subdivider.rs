@@ -20,7 +20,7 @@ use crate::mesh::Mesh;
 /// connectivity, and where OpenSubdiv starts walking around each vertex.
 #[derive(Debug, Clone)]
 pub(crate) struct KeptLevel {
-    pub(crate) faces: Faces,
+    pub(crate) faces: Faces<'static>,
     pub(crate) connectivity: Connectivity,
     pub(crate) sharpness: Sharpness,
 }
@@ -118,7 +118,7 @@ impl Subdivider {
                 &vertex_first,
             );
             kept.push(KeptLevel {
-                faces: std::mem::replace(&mut faces, next_faces),
+                faces: std::mem::replace(&mut faces, next_faces).into_owned(),
                 connectivity: std::mem::replace(&mut connectivity, next_connectivity),
                 sharpness: std::mem::replace(&mut sharpness, next_sharpness),
             });
@@ -134,7 +134,7 @@ impl Subdivider {
             None => None,
         };
         kept.push(KeptLevel {
-            faces,
+            faces: faces.into_owned(),
             connectivity,
             sharpness,
         });
@@ -186,7 +186,7 @@ impl Subdivider {
 
     /// The refined faces the result shows: the last level's, less the
     /// children of holes.
-    pub(crate) fn output_faces(&self) -> &Faces {
+    pub(crate) fn output_faces(&self) -> &Faces<'static> {
         self.visible
             .as_ref()
             .map_or(&self.last().faces, |visible| &visible.faces)
@@ -353,7 +353,7 @@ impl Subdivider {
         Ok(Mesh::from_valid_parts(
             positions,
             sizes,
-            faces.indices.clone(),
+            faces.indices.to_vec(),
         ))
     }
 }

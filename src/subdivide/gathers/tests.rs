@@ -128,18 +128,18 @@ fn assert_walked_wings(
 }
 
 /// A cage's level and the level `scheme` makes of it, built.
-struct TwoLevels {
+struct TwoLevels<'a> {
     scheme: Scheme,
-    faces: Faces,
+    faces: Faces<'a>,
     connectivity: Connectivity,
     tags: Tags,
-    child: Faces,
+    child: Faces<'static>,
     child_connectivity: Connectivity,
     child_tags: Tags,
 }
 
-impl TwoLevels {
-    fn of(mesh: &crate::Mesh, scheme: Scheme, naked: NakedEdges) -> TwoLevels {
+impl<'a> TwoLevels<'a> {
+    fn of(mesh: &'a crate::Mesh, scheme: Scheme, naked: NakedEdges) -> TwoLevels<'a> {
         let faces = Faces::of_mesh(mesh);
         let connectivity = Connectivity::new(&faces).unwrap();
         let tags = cage_tags(&faces, &connectivity, naked).unwrap();

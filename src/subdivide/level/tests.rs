@@ -5,8 +5,8 @@ fn connectivity_of_two_triangles() {
     let faces = Faces {
         vertex_count: 4,
         size: 0,
-        offsets: vec![0, 3, 6],
-        indices: vec![0, 1, 2, 0, 2, 3],
+        offsets: vec![0, 3, 6].into(),
+        indices: vec![0, 1, 2, 0, 2, 3].into(),
     };
     let c = Connectivity::new(&faces).unwrap();
     assert_eq!(c.edges, vec![[0, 1], [0, 2], [0, 3], [1, 2], [2, 3]]);
@@ -48,6 +48,33 @@ fn uniform_faces_match_their_offsets() {
         assert_eq!(uniform.face_count(), general.face_count());
     }
     assert_eq!(Faces::of_mesh(&shapes::mixed_polygons()).size, 0);
+}
+
+/// A cage's faces read its mesh's indices, and its offsets when its faces
+/// differ in size, in place: one-shot subdivision holds no copy of them
+/// beside the output (at level 1 a copy of the indices would be an eighth
+/// of the output).
+#[test]
+fn cage_faces_read_the_mesh_in_place() {
+    use crate::mesh::shapes;
+    use std::borrow::Cow;
+    for mesh in [shapes::triangle_torus(8, 10), shapes::mixed_polygons()] {
+        let faces = Faces::of_mesh(&mesh);
+        let Cow::Borrowed(indices) = faces.indices else {
+            panic!("the cage's indices were copied");
+        };
+        assert_eq!(indices.as_ptr(), mesh.face_indices().as_ptr());
+        if faces.size == 0 {
+            let Cow::Borrowed(offsets) = faces.offsets else {
+                panic!("the cage's offsets were copied");
+            };
+            assert_eq!(offsets.as_ptr(), mesh.face_offsets().as_ptr());
+        }
+        let owned = faces.clone().into_owned();
+        assert!(matches!(owned.indices, Cow::Owned(_)));
+        assert_eq!(owned.indices, faces.indices);
+        assert_eq!(owned.offsets, faces.offsets);
+    }
 }
 
 fn assert_same(derived: &Connectivity, bucketed: &Connectivity, what: &str) {
