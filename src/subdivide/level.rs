@@ -23,8 +23,8 @@ use crate::mesh::adjacency::Adjacency;
 pub(crate) const NONE: u32 = u32::MAX;
 
 /// The faces of one level: sizes as offsets, vertices one face after another.
-/// A cage's faces borrow its mesh's arrays (`'a`); a refined level's own
-/// theirs (`Faces<'static>`).
+/// A cage's faces read its mesh's indices in place (`'a`); a refined
+/// level's faces own theirs (`Faces<'static>`).
 #[derive(Debug, Clone, Default)]
 pub(crate) struct Faces<'a> {
     pub(crate) vertex_count: usize,
