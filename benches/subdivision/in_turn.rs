@@ -7,7 +7,9 @@
 //! the call right after OpenSubdiv's (which frees a gigabyte) takes up to
 //! several times as long, whichever call it is, and timing that would
 //! measure the neighbour. Each ratio is the median of the rounds' own
-//! ratios.
+//! ratios. The re-evaluation of the same cases is timed the same way:
+//! Weft's refiner, the warm floor of its output and OpenSubdiv's stencils,
+//! all on every thread but the floor.
 
 use std::time::Instant;
 
@@ -21,16 +23,24 @@ pub const WEFT_ONE: usize = 1;
 pub const WEFT_ALL: usize = 2;
 pub const FLOOR_HUGE: usize = 3;
 
-/// The rounds of one case: seconds per call, in the order of [`OSD`] to [`FLOOR_HUGE`].
-pub struct InTurn {
+/// The re-evaluation's calls, by index: Weft's refiner evaluating on all
+/// threads, the warm floor of its positions, OpenSubdiv's stencil table
+/// updated on all threads.
+pub const EVALUATE: usize = 0;
+pub const WARM_FLOOR: usize = 1;
+pub const STENCILS: usize = 2;
+
+/// The rounds of one case: seconds per call, in the order of the calls'
+/// indices ([`OSD`] to [`FLOOR_HUGE`], or [`EVALUATE`] to [`STENCILS`]).
+pub struct InTurn<const N: usize = 4> {
     pub case: String,
-    pub rounds: Vec<[f64; 4]>,
+    pub rounds: Vec<[f64; N]>,
 }
 
-impl InTurn {
-    /// Times `calls` (in the order of [`OSD`] to [`FLOOR_HUGE`]) round after
-    /// round, each right after an untimed call of itself.
-    pub fn run(case: String, calls: [&dyn Fn(); 4]) -> InTurn {
+impl<const N: usize> InTurn<N> {
+    /// Times `calls` round after round, each right after an untimed call
+    /// of itself.
+    pub fn run(case: String, calls: [&dyn Fn(); N]) -> InTurn<N> {
         let rounds = (0..ROUNDS)
             .map(|_| {
                 calls.map(|call| {
@@ -44,7 +54,7 @@ impl InTurn {
         InTurn { case, rounds }
     }
 
-    fn median_of(&self, of: impl Fn(&[f64; 4]) -> f64) -> f64 {
+    fn median_of(&self, of: impl Fn(&[f64; N]) -> f64) -> f64 {
         let mut values: Vec<f64> = self.rounds.iter().map(of).collect();
         values.sort_by(f64::total_cmp);
         let middle = values.len() / 2;
@@ -97,6 +107,44 @@ pub fn print(rows: &[InTurn], threads: usize) {
     for row in rows {
         println!(
             "\n{}, every round (ms): OSD, Weft 1t, Weft {threads}t, floor huge\n",
+            row.case
+        );
+        for round in &row.rounds {
+            println!("- {}", round.map(|s| format!("{:.1}", s * 1e3)).join(", "));
+        }
+    }
+}
+
+/// The table of the re-evaluation's rounds: medians and ratios.
+pub fn print_reevaluation(rows: &[InTurn<3>], threads: usize) {
+    if rows.is_empty() {
+        return;
+    }
+    println!(
+        "\n## In turn: re-evaluation at level 3, {ROUNDS} rounds of Weft's evaluate {threads}t, \
+         the warm floor and OSD's stencils {threads}t, each timed after an untimed call of its \
+         own (median ms; ratios: median of the rounds' ratios)\n"
+    );
+    println!(
+        "| case | evaluate {threads}t | warm floor | OSD stencils {threads}t | evaluate/warm floor \
+         | OSD stencils/evaluate |"
+    );
+    println!("|---|---:|---:|---:|---:|---:|");
+    for row in rows {
+        let ms = |i: usize| format!("{:.1}", row.median(i) * 1e3);
+        println!(
+            "| {} | {} | {} | {} | {:.2}× | {:.2}× |",
+            row.case,
+            ms(EVALUATE),
+            ms(WARM_FLOOR),
+            ms(STENCILS),
+            row.ratio(EVALUATE, WARM_FLOOR),
+            row.ratio(STENCILS, EVALUATE)
+        );
+    }
+    for row in rows {
+        println!(
+            "\n{}, every round (ms): evaluate {threads}t, warm floor, OSD stencils {threads}t\n",
             row.case
         );
         for round in &row.rounds {

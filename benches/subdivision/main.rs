@@ -3,7 +3,8 @@
 //!
 //! `cargo bench --bench subdivision` runs every case, then prints Markdown
 //! tables of the medians and ratios (read back from criterion's estimates),
-//! the target cases timed in turn (in_turn.rs), the targets with their
+//! the target cases and their re-evaluation timed in turn (in_turn.rs),
+//! the targets with their
 //! measured ratios, the first call in fresh processes
 //! beside the steady state, and the peak memory of each one-shot case
 //! (children of this binary, `VmHWM` after `clear_refs`). A criterion filter
@@ -40,6 +41,7 @@ mod in_turn;
 mod memory;
 mod report;
 
+use std::cell::RefCell;
 use std::hint::black_box;
 use std::time::{Duration, Instant};
 
@@ -313,6 +315,55 @@ fn target_cases_in_turn(
         .collect()
 }
 
+/// The re-evaluation of the target cases timed in turn (see
+/// [`in_turn`]), those the filter selects: Weft's refiner and the stencil
+/// table made again, as `reevaluation` makes them.
+fn reevaluation_in_turn(
+    cases: &[Case],
+    all: &ThreadPool,
+    threads: usize,
+    filter: Option<&str>,
+) -> Vec<in_turn::InTurn<3>> {
+    let levels = 3;
+    cases
+        .iter()
+        .filter(|case| REEVALUATED.contains(&case.name))
+        .map(|case| (case, format!("{}-L{levels}", case.name)))
+        // A filter naming a case selects it; one naming none ("stencil") both.
+        .filter(|(_, name)| {
+            filter.is_none_or(|f| {
+                f.contains(name.as_str()) || !REEVALUATED.iter().any(|case| f.contains(case))
+            })
+        })
+        .map(|(case, name)| {
+            let refiner = all
+                .install(|| Refiner::new(&case.mesh, case.scheme, levels, NakedEdges::Smooth))
+                .expect("refiner");
+            let moved: Vec<DVec3> = case.mesh.positions().iter().map(|p| *p * 1.01).collect();
+            let out = RefCell::new(vec![DVec3::ZERO; refiner.vertex_count()]);
+            let floor = RefCell::new(floors::written(24 * refiner.vertex_count()));
+            let table = OsdStencils::new(&case.cage, &osd_options(case.scheme), levels).unwrap();
+            let moved_flat: Vec<f64> = case.cage.positions.iter().map(|x| x * 1.01).collect();
+            let stencil_out = RefCell::new(vec![0.0; 3 * table.vertex_count()]);
+            in_turn::InTurn::run(
+                name,
+                [
+                    &|| {
+                        let mut out = out.borrow_mut();
+                        let out: &mut [DVec3] = &mut out;
+                        all.install(|| refiner.evaluate(&moved, out).unwrap())
+                    },
+                    &|| floors::warm(&mut floor.borrow_mut()),
+                    &|| {
+                        let mut stencil_out = stencil_out.borrow_mut();
+                        table.update_on_threads(&moved_flat, &mut stencil_out, threads as u32)
+                    },
+                ],
+            )
+        })
+        .collect()
+}
+
 fn main() {
     if let Some(result) = memory::child() {
         println!("{result}");
@@ -331,6 +382,10 @@ fn main() {
         return;
     }
     let in_turn = target_cases_in_turn(&cases, &all, &one, filter.as_deref());
+    let reevaluated = match stencils {
+        true => reevaluation_in_turn(&cases, &all, threads, filter.as_deref()),
+        false => Vec::new(),
+    };
     drop(cases);
     report::one_shot(threads);
     report::into_buffers(threads);
@@ -338,6 +393,7 @@ fn main() {
     let cold = memory::cold_calls(filter.as_deref());
     report::cold(&cold, threads);
     in_turn::print(&in_turn, threads);
-    report::targets(threads, &cold, &in_turn);
+    in_turn::print_reevaluation(&reevaluated, threads);
+    report::targets(threads, &cold, &in_turn, &reevaluated);
     memory::peak_memory(filter.as_deref());
 }
