@@ -73,6 +73,14 @@ impl<const N: usize> InTurn<N> {
     pub fn ratio(&self, a: usize, b: usize) -> f64 {
         self.median_of(|round| round[a] / round[b])
     }
+
+    /// Every round's times (ms), under a line naming the `calls`.
+    fn print_rounds(&self, calls: &str) {
+        println!("\n{}, every round (ms): {calls}\n", self.case);
+        for round in &self.rounds {
+            println!("- {}", round.map(|s| format!("{:.1}", s * 1e3)).join(", "));
+        }
+    }
 }
 
 /// The table of the rounds' medians and ratios.
@@ -105,13 +113,7 @@ pub fn print(rows: &[InTurn], threads: usize) {
         );
     }
     for row in rows {
-        println!(
-            "\n{}, every round (ms): OSD, Weft 1t, Weft {threads}t, floor huge\n",
-            row.case
-        );
-        for round in &row.rounds {
-            println!("- {}", round.map(|s| format!("{:.1}", s * 1e3)).join(", "));
-        }
+        row.print_rounds(&format!("OSD, Weft 1t, Weft {threads}t, floor huge"));
     }
 }
 
@@ -143,12 +145,8 @@ pub fn print_reevaluation(rows: &[InTurn<3>], threads: usize) {
         );
     }
     for row in rows {
-        println!(
-            "\n{}, every round (ms): evaluate {threads}t, warm floor, OSD stencils {threads}t\n",
-            row.case
-        );
-        for round in &row.rounds {
-            println!("- {}", round.map(|s| format!("{:.1}", s * 1e3)).join(", "));
-        }
+        row.print_rounds(&format!(
+            "evaluate {threads}t, warm floor, OSD stencils {threads}t"
+        ));
     }
 }
