@@ -89,6 +89,12 @@ impl<'a> Faces<'a> {
         }
     }
 
+    /// Each face's corner count, read from the offsets (which these faces
+    /// must have).
+    pub(crate) fn sizes(&self) -> Vec<u32> {
+        self.offsets.windows(2).map(|w| w[1] - w[0]).collect()
+    }
+
     pub(crate) fn corner_count(&self) -> usize {
         self.indices.len()
     }

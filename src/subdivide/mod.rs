@@ -144,7 +144,7 @@ pub fn subdivide(
     let positions = positions.unwrap_or_else(|| mesh.positions().to_vec());
     if !faces.offsets.is_empty() {
         // Level 0, or no faces: the cage's own sizes.
-        let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+        let sizes = faces.sizes();
         return Ok(Mesh::from_valid_parts(
             positions,
             sizes,

@@ -249,13 +249,9 @@ impl Refiner {
     }
 
     fn mesh_with(&self, positions: Vec<DVec3>) -> Mesh {
-        let sizes = face_sizes(&self.faces);
+        let sizes = self.faces.sizes();
         Mesh::from_valid_parts(positions, sizes, self.faces.indices.to_vec())
     }
-}
-
-fn face_sizes(faces: &Faces) -> Vec<u32> {
-    faces.offsets.windows(2).map(|w| w[1] - w[0]).collect()
 }
 
 /// A level handed on by [`gather_levels`].

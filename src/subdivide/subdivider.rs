@@ -349,7 +349,7 @@ impl Subdivider {
         positions.resize(self.vertex_count(), DVec3::ZERO);
         self.evaluate(&self.cage_positions, &mut positions)?;
         let faces = self.output_faces();
-        let sizes = faces.offsets.windows(2).map(|w| w[1] - w[0]).collect();
+        let sizes = faces.sizes();
         Ok(Mesh::from_valid_parts(
             positions,
             sizes,
