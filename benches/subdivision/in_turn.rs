@@ -83,6 +83,14 @@ impl<const N: usize> InTurn<N> {
     }
 }
 
+/// The ratio of calls `a` and `b` in the rounds of `case` (see
+/// [`InTurn::ratio`]), when `rows` holds that case.
+pub fn ratio_in<const N: usize>(rows: &[InTurn<N>], case: &str, a: usize, b: usize) -> Option<f64> {
+    rows.iter()
+        .find(|row| row.case == case)
+        .map(|row| row.ratio(a, b))
+}
+
 /// The table of the rounds' medians and ratios.
 pub fn print(rows: &[InTurn], threads: usize) {
     if rows.is_empty() {

@@ -4,7 +4,9 @@
 use std::path::PathBuf;
 use std::time::Duration;
 
-use crate::in_turn::{InTurn, EVALUATE, FLOOR_HUGE, OSD, STENCILS, WARM_FLOOR, WEFT_ALL, WEFT_ONE};
+use crate::in_turn::{
+    ratio_in, InTurn, EVALUATE, FLOOR_HUGE, OSD, STENCILS, WARM_FLOOR, WEFT_ALL, WEFT_ONE,
+};
 use crate::{CASE_NAMES, GROUP, LEVELS, REEVALUATED};
 
 /// Timings measured once, outside criterion, kept for the summary.
@@ -228,18 +230,8 @@ pub fn targets(
     let get = |case: &str, what: &str| median(case, what);
     let over = |a: Option<f64>, b: Option<f64>| a.zip(b).map(|(a, b)| a / b);
     let (osd, one, both, floor) = (OSD, WEFT_ONE, WEFT_ALL, FLOOR_HUGE);
-    let turn = |case: &str, a: usize, b: usize| {
-        in_turn
-            .iter()
-            .find(|row| row.case == case)
-            .map(|row| row.ratio(a, b))
-    };
-    let again = |case: &str, a: usize, b: usize| {
-        reevaluated
-            .iter()
-            .find(|row| row.case == case)
-            .map(|row| row.ratio(a, b))
-    };
+    let turn = |case: &str, a: usize, b: usize| ratio_in(in_turn, case, a, b);
+    let again = |case: &str, a: usize, b: usize| ratio_in(reevaluated, case, a, b);
     println!("\n## Targets (this run)\n");
     println!("| target | bound | measured (criterion medians) | measured (in turn) | met |");
     println!("|---|---|---:|---:|---|");
