@@ -543,9 +543,9 @@ fn clusters_by<K: CellKey>(
         .collect();
     // The pairs to join, blocks of cells on all threads (the clusters do not
     // depend on the order the pairs are joined in), then joined on one.
-    // The cells are sorted, and so are the cells one offset away from
-    // them: each block finds its neighbours across an offset by walking
-    // both sorted lists side by side, without hashing.
+    // The cells are sorted, and so are the cells one row away from
+    // them: each block finds its neighbours in a row by walking both
+    // sorted lists side by side, without hashing.
     const CELLS: usize = 4096;
     let pairs: Vec<Vec<(u32, u32)>> = (0..cell_keys.len().div_ceil(CELLS))
         .into_par_iter()
@@ -567,34 +567,47 @@ fn clusters_by<K: CellKey>(
                     }
                 }
             }
-            // Each pair of neighbouring cells once: only the 13 "forward" neighbours.
-            for offset in FORWARD_NEIGHBOURS {
-                let first = cell_keys[cells.start].offset(offset);
-                let mut other = cell_keys.partition_point(|&c| c < first);
-                for k in cells.clone() {
-                    let wanted = cell_keys[k].offset(offset);
-                    while other < cell_keys.len() && cell_keys[other] < wanted {
-                        other += 1;
-                    }
-                    if other == cell_keys.len() {
-                        break;
-                    }
-                    if cell_keys[other] != wanted {
-                        continue;
-                    }
-                    let (here, there) = (cell_sites(k), cell_sites(other));
-                    // Two tight cells are each one cluster: one close pair joins them.
-                    let both_tight = tight[k] && tight[other];
-                    'pairs: for &a in here {
-                        let pa = positions[a as usize];
-                        for &b in there {
-                            if within(pa, positions[b as usize], tolerance) {
-                                pairs.push((a, b));
-                                if both_tight {
-                                    break 'pairs;
-                                }
+            // Each pair of neighbouring cells once: only the 13 "forward"
+            // neighbours, the next cell of the row and three cells in each
+            // of four rows. A row's three cells are consecutive in the
+            // cells' order, so one walk finds all three.
+            let mut close = |k: usize, other: usize| {
+                let (here, there) = (cell_sites(k), cell_sites(other));
+                // Two tight cells are each one cluster: one close pair joins them.
+                let both_tight = tight[k] && tight[other];
+                for &a in here {
+                    let pa = positions[a as usize];
+                    for &b in there {
+                        if within(pa, positions[b as usize], tolerance) {
+                            pairs.push((a, b));
+                            if both_tight {
+                                return;
                             }
                         }
+                    }
+                }
+            };
+            for k in cells.clone() {
+                let next = k + 1;
+                if next < cell_keys.len() && cell_keys[next] == cell_keys[k].offset([0, 0, 1]) {
+                    close(k, next);
+                }
+            }
+            for [dx, dy] in FORWARD_ROWS {
+                let first = cell_keys[cells.start].offset([dx, dy, -1]);
+                let mut other = cell_keys.partition_point(|&c| c < first);
+                for k in cells.clone() {
+                    let (low, high) = (
+                        cell_keys[k].offset([dx, dy, -1]),
+                        cell_keys[k].offset([dx, dy, 1]),
+                    );
+                    while other < cell_keys.len() && cell_keys[other] < low {
+                        other += 1;
+                    }
+                    // The cells from `low` to `high` are the row's three.
+                    let row = cell_keys[other..].iter().take_while(|&&c| c <= high);
+                    for there in other..other + row.count() {
+                        close(k, there);
                     }
                 }
             }
@@ -673,23 +686,11 @@ fn piece_sites<K: CellKey>(
     (cells, sites)
 }
 
-/// The 13 of the 26 neighbouring cell offsets that come after (0, 0, 0) in
-/// lexicographic order; with their mirror images they make all 26.
-const FORWARD_NEIGHBOURS: [[i64; 3]; 13] = [
-    [0, 0, 1],
-    [0, 1, -1],
-    [0, 1, 0],
-    [0, 1, 1],
-    [1, -1, -1],
-    [1, -1, 0],
-    [1, -1, 1],
-    [1, 0, -1],
-    [1, 0, 0],
-    [1, 0, 1],
-    [1, 1, -1],
-    [1, 1, 0],
-    [1, 1, 1],
-];
+/// The rows of cells (x, y offsets) that hold the 12 of the 26
+/// neighbouring cells that come after (0, 0, 0) in lexicographic order
+/// outside its own row, three in each (z - 1, z, z + 1); with (0, 0, 1)
+/// and their mirror images they make all 26.
+const FORWARD_ROWS: [[i64; 2]; 4] = [[0, 1], [1, -1], [1, 0], [1, 1]];
 
 /// A grid cell as the clusters sort and walk them.
 trait CellKey: Copy + Ord + Send + Sync {

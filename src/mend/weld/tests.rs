@@ -272,6 +272,60 @@ fn packed_cells_cluster_as_the_cells_themselves() {
 }
 
 #[test]
+fn clusters_are_those_of_every_pair_compared() {
+    // Points in a box a few cells wide, plus pairs planted across a cell's
+    // border in each of the 26 directions: every pair of cells that can
+    // hold a close pair is walked, whichever row or order it comes in.
+    let tolerance = 0.03;
+    let grid = CellGrid::new([DVec3::ZERO, DVec3::ONE].into_iter(), tolerance);
+    let mut unit = units(0x9e37_79b9_7f4a_7c15);
+    let mut positions: Vec<DVec3> = (0..3_000)
+        .map(|_| DVec3::new(unit(), unit(), unit()))
+        .collect();
+    for dx in -1..=1 {
+        for dy in -1..=1 {
+            for dz in -1..=1 {
+                if (dx, dy, dz) == (0, 0, 0) {
+                    continue;
+                }
+                // Just inside a cell, its partner just across the border.
+                let corner = DVec3::splat(1.2 + 0.3 * unit());
+                let cell = grid.cell(corner);
+                let inner = DVec3::new(cell.0[0] as f64, cell.0[1] as f64, cell.0[2] as f64)
+                    * grid.size
+                    + DVec3::splat(grid.size * 0.5);
+                let d = DVec3::new(dx as f64, dy as f64, dz as f64);
+                let a = inner + d * (grid.size * 0.5 - tolerance * 0.1);
+                let b = a + d.normalize() * (tolerance * 0.9);
+                assert_ne!(grid.cell(a), grid.cell(b));
+                positions.extend([a, b]);
+            }
+        }
+    }
+    let mut every_pair = UnionFind::new(positions.len());
+    for i in 0..positions.len() {
+        for j in i + 1..positions.len() {
+            if within(positions[i], positions[j], tolerance) {
+                every_pair.union(i as u32, j as u32);
+            }
+        }
+    }
+    let (expected, count) = every_pair.into_labels();
+    let (lo, hi) = bounding_box_of(&positions).unwrap();
+    let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
+    let packed = clusters_by(&positions, tolerance, |p| {
+        PackedCell::of(grid.cell(p), origin)
+    })
+    .unwrap();
+    let plain = clusters_by(&positions, tolerance, |p| grid.cell(p)).unwrap();
+    assert_eq!(packed.into_labels().0, expected);
+    assert_eq!(plain.into_labels().0, expected);
+    // The planted pairs merged, and far from everything did.
+    let merged = positions.len() - count;
+    assert!(merged >= 26 && merged < positions.len() / 2, "{merged}");
+}
+
+#[test]
 fn cells_too_many_for_21_bits_are_not_packed() {
     let first = Cell([-5, 0, 0]);
     assert!(PackedCell::origin(first, Cell([(1 << 21) - 8, 3, 3])).is_some());
