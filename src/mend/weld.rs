@@ -430,9 +430,9 @@ fn clusters_by<K: CellKey>(
     if positions.is_empty() {
         return Ok(UnionFind::new(0));
     }
-    // By cell, then index (one parallel sort); each cell's vertices are then
-    // put in order of exact position, so that duplicates become neighbours
-    // with their lowest index first.
+    // By cell (one parallel sort, comparing the cells alone); each cell's
+    // vertices are then put in order of exact position, then index, so that
+    // duplicates become neighbours with their lowest index first.
     let mut entries = try_vec::<(K, u32)>(positions.len(), "the weld cells")?;
     entries.par_extend(
         positions
@@ -441,7 +441,7 @@ fn clusters_by<K: CellKey>(
             .with_min_len(4096)
             .map(|(v, &p)| (cell_of(p), v as u32)),
     );
-    entries.par_sort_unstable();
+    entries.par_sort_unstable_by_key(|entry| entry.0);
     let mut order = try_vec::<u32>(positions.len(), "the weld order")?;
     order.par_extend(entries.par_iter().with_min_len(4096).map(|&(_, v)| v));
     let by_position = |&a: &u32, &b: &u32| {
@@ -662,12 +662,14 @@ fn piece_sites<K: CellKey>(
     while start < entries.len() {
         let end = cell_end(entries, start);
         let group = &mut order[start..end];
-        // A cell of copies of one position (an STL's corners) is in that
-        // order already: by index.
+        // A cell of copies of one position (an STL's corners) needs only
+        // its indices in order.
         let first = positions[group[0] as usize];
         match group.len() {
             1 => {}
-            _ if group[1..].iter().all(|&v| positions[v as usize] == first) => {}
+            _ if group[1..].iter().all(|&v| positions[v as usize] == first) => {
+                group.sort_unstable()
+            }
             n if n < 1 << 16 => group.sort_unstable_by(by_position),
             _ => group.par_sort_unstable_by(by_position),
         }
