@@ -18,7 +18,7 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::buffers::{
-    par_map, par_offsets, prefix_sum, split_by_offsets, try_copy, try_vec, CHUNK,
+    fresh_zeroed, par_map, par_offsets, prefix_sum, split_by_offsets, try_copy, try_vec, CHUNK,
 };
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
@@ -134,9 +134,14 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 /// [`Error::OutOfMemory`] when the result cannot be allocated.
 pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     let clusters = Clusters::of(mesh.positions(), tolerance)?;
+    let unchanged = clusters.leave_unchanged(mesh)?;
     let positions = try_copy(mesh.positions(), "the welded positions")?;
     let face_sizes = mesh.try_copy_face_sizes("the welded face sizes")?;
     let face_indices = try_copy(mesh.face_indices(), "the welded face indices")?;
+    if unchanged {
+        let copy = Mesh::from_valid_parts(positions, face_sizes, face_indices);
+        return Ok((copy, WeldReport::default()));
+    }
     clusters.apply(positions, face_sizes, face_indices)
 }
 
@@ -148,6 +153,9 @@ pub fn weld(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
 /// As [`weld`].
 pub fn weld_owned(mesh: Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     let clusters = Clusters::of(mesh.positions(), tolerance)?;
+    if clusters.leave_unchanged(&mesh)? {
+        return Ok((mesh, WeldReport::default()));
+    }
     let (positions, face_sizes, face_indices) = mesh.into_parts();
     clusters.apply(positions, face_sizes, face_indices)
 }
@@ -183,6 +191,55 @@ impl Clusters {
             None => vertex_clusters(positions, tolerance)?.into_labels(),
         };
         Ok(Clusters { cluster_of, count })
+    }
+
+    /// Whether welding `mesh` (whose positions the clusters are of) leaves
+    /// it as it is: no vertex merged, no face names a vertex twice, and
+    /// every vertex is in a face. A mesh welded before is, and so, most
+    /// often, is an STL read to be welded (`io::read_mesh_to_weld`), its
+    /// copies merged as it was read: checked in one read of the faces,
+    /// where [`Clusters::apply`] writes them all.
+    ///
+    /// # Errors
+    /// [`Error::OutOfMemory`].
+    fn leave_unchanged(&self, mesh: &Mesh) -> Result<bool> {
+        // Numbered in order of their first vertex, clusters of one vertex
+        // each are the vertices themselves.
+        if self.count != self.cluster_of.len() {
+            return Ok(false);
+        }
+        // Each thread reads a run of faces and marks the vertices they name
+        // in a bit set of its own, which stays in its cache.
+        let words = mesh.vertex_count().div_ceil(64);
+        let faces = mesh.face_count();
+        let run = faces.div_ceil(rayon::current_num_threads()).max(1);
+        let marks = (0..faces.div_ceil(run))
+            .into_par_iter()
+            .map(|r| {
+                let mut marked = fresh_zeroed::<u64>(words, "the welded vertices")?;
+                for f in r * run..((r + 1) * run).min(faces) {
+                    let face = mesh.face(f);
+                    if names_a_vertex_twice(face) {
+                        return Ok(None);
+                    }
+                    for &v in face {
+                        marked[v as usize / 64] |= 1 << (v % 64);
+                    }
+                }
+                Ok(Some(marked))
+            })
+            .collect::<Result<Option<Vec<Vec<u64>>>>>()?;
+        let Some(marks) = marks else {
+            return Ok(false);
+        };
+        let unused_bits = words * 64 - mesh.vertex_count();
+        Ok((0..words).all(|w| {
+            let every = match w + 1 == words {
+                true => u64::MAX >> unused_bits,
+                false => u64::MAX,
+            };
+            marks.iter().fold(0, |all, marked| all | marked[w]) == every
+        }))
     }
 
     /// The welded mesh, written over the arrays of the mesh the clusters
@@ -299,6 +356,16 @@ fn faces_over_clusters(
 /// Faces larger than this drop their repeats through a set rather than by
 /// looking back over the corners already kept.
 const SCANNED_FACE_SIZE: usize = 32;
+
+/// Whether `face` names a vertex more than once.
+fn names_a_vertex_twice(face: &[u32]) -> bool {
+    if face.len() <= SCANNED_FACE_SIZE {
+        face.iter().enumerate().any(|(i, v)| face[..i].contains(v))
+    } else {
+        let mut seen = std::collections::HashSet::with_capacity(face.len());
+        !face.iter().all(|&v| seen.insert(v))
+    }
+}
 
 /// [`faces_over_clusters`] on one block: the kept faces' sizes and corners
 /// written at the front of `sizes` and `indices`; returns how many.

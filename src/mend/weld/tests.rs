@@ -114,6 +114,80 @@ fn unused_vertices_are_left_out_and_counted() {
 }
 
 #[test]
+fn faces_naming_a_vertex_twice_lose_the_repeat_though_nothing_merges() {
+    // Four distinct positions, every one in a face: only the repeats change.
+    let positions: Vec<DVec3> = [
+        [0.0, 0.0, 0.0],
+        [1.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [0.0, 1.0, 0.0],
+    ]
+    .into_iter()
+    .map(DVec3::from_array)
+    .collect();
+    let allow = MeshOptions {
+        allow_repeated_vertices: true,
+    };
+    let m = Mesh::new_with(
+        positions,
+        vec![4, 3, 3],
+        vec![0, 1, 1, 2, 2, 3, 0, 3, 3, 0],
+        allow,
+    )
+    .unwrap();
+    for (welded, report) in [
+        weld(&m, 0.01).unwrap(),
+        weld_owned(m.clone(), 0.01).unwrap(),
+    ] {
+        assert_eq!(report.merged_vertex_count, 0);
+        assert_eq!(report.removed_face_count, 1);
+        assert_eq!(welded.face_count(), 2);
+        assert_eq!(welded.face(0), &[0, 1, 2]);
+        assert_eq!(welded.face(1), &[2, 3, 0]);
+    }
+    // Without the repeats the same mesh comes back as it was, both ways.
+    let clean = Mesh::new(m.positions().to_vec(), vec![3, 3], vec![0, 1, 2, 2, 3, 0]).unwrap();
+    assert_eq!(
+        weld(&clean, 0.01).unwrap(),
+        (clean.clone(), WeldReport::default())
+    );
+    assert_eq!(
+        weld_owned(clean.clone(), 0.01).unwrap(),
+        (clean, WeldReport::default())
+    );
+}
+
+#[test]
+fn an_unused_last_vertex_is_found_whatever_the_vertex_count() {
+    // 64 vertices, the corner only the last face uses left out; then a
+    // 65th vertex no face uses: the last vertex ends a word of marks or not.
+    let grid = shapes::quad_grid(7, 7);
+    assert_eq!(grid.vertex_count(), 64);
+    let kept = grid.face_count() - 1;
+    let sizes = grid.face_sizes()[..kept].to_vec();
+    let corners = grid.face_indices()[..4 * kept].to_vec();
+    assert!(!corners.contains(&63));
+    let without_corner = Mesh::new(grid.positions().to_vec(), sizes, corners).unwrap();
+    let mut positions = grid.positions().to_vec();
+    positions.push(DVec3::splat(9.0));
+    let with_extra = Mesh::new(
+        positions,
+        grid.face_sizes().to_vec(),
+        grid.face_indices().to_vec(),
+    )
+    .unwrap();
+    for m in [without_corner, with_extra] {
+        for (welded, report) in [
+            weld(&m, 1e-6).unwrap(),
+            weld_owned(m.clone(), 1e-6).unwrap(),
+        ] {
+            assert_eq!(report.unused_vertex_count, 1);
+            assert_eq!(welded.vertex_count(), m.vertex_count() - 1);
+        }
+    }
+}
+
+#[test]
 fn zero_tolerance_merges_exact_duplicates_only() {
     let m = mesh(
         &[
