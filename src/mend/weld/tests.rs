@@ -312,6 +312,23 @@ fn units(mut state: u64) -> impl FnMut() -> f64 {
     }
 }
 
+/// The clusters of `positions` as labels, found with the cells of `grid`
+/// packed into one word, then as they are.
+fn packed_and_plain_labels(
+    positions: &[DVec3],
+    tolerance: f64,
+    grid: CellGrid,
+) -> [(Vec<u32>, usize); 2] {
+    let (lo, hi) = bounding_box_of(positions).unwrap();
+    let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
+    let packed = clusters_by(positions, tolerance, |p| {
+        PackedCell::of(grid.cell(p), origin)
+    })
+    .unwrap();
+    let plain = clusters_by(positions, tolerance, |p| grid.cell(p)).unwrap();
+    [packed.into_labels(), plain.into_labels()]
+}
+
 #[test]
 fn packed_cells_cluster_as_the_cells_themselves() {
     // Near and exact duplicates on a jittered grid, many per cell and across
@@ -330,15 +347,8 @@ fn packed_cells_cluster_as_the_cells_themselves() {
     }
     let tolerance = 0.05;
     let grid = CellGrid::new(positions.iter().copied(), tolerance);
-    let (lo, hi) = bounding_box_of(&positions).unwrap();
-    let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
-    let packed = clusters_by(&positions, tolerance, |p| {
-        PackedCell::of(grid.cell(p), origin)
-    })
-    .unwrap();
-    let plain = clusters_by(&positions, tolerance, |p| grid.cell(p)).unwrap();
     // The same partition: the clusters numbered in order of their first vertex.
-    let ((a, count), (b, _)) = (packed.into_labels(), plain.into_labels());
+    let [(a, count), (b, _)] = packed_and_plain_labels(&positions, tolerance, grid);
     assert_eq!(a, b);
     // Some vertices merged and most did not, so the comparison could fail.
     let merged = positions.len() - count;
@@ -385,15 +395,9 @@ fn clusters_are_those_of_every_pair_compared() {
         }
     }
     let (expected, count) = every_pair.into_labels();
-    let (lo, hi) = bounding_box_of(&positions).unwrap();
-    let origin = PackedCell::origin(grid.cell(lo), grid.cell(hi)).unwrap();
-    let packed = clusters_by(&positions, tolerance, |p| {
-        PackedCell::of(grid.cell(p), origin)
-    })
-    .unwrap();
-    let plain = clusters_by(&positions, tolerance, |p| grid.cell(p)).unwrap();
-    assert_eq!(packed.into_labels().0, expected);
-    assert_eq!(plain.into_labels().0, expected);
+    let [(packed, _), (plain, _)] = packed_and_plain_labels(&positions, tolerance, grid);
+    assert_eq!(packed, expected);
+    assert_eq!(plain, expected);
     // The planted pairs merged, and far from everything did.
     let merged = positions.len() - count;
     assert!(merged >= 26 && merged < positions.len() / 2, "{merged}");
