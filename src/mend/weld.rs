@@ -22,7 +22,7 @@ use crate::buffers::{
 };
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
-use crate::mesh::{bounding_box_of, check_tolerance, Mesh};
+use crate::mesh::{bounding_box_of, check_tolerance, repeated_corner, Mesh};
 
 mod copies;
 pub(crate) use copies::{
@@ -219,7 +219,7 @@ impl Clusters {
                 let mut marked = fresh_zeroed::<u64>(words, "the welded vertices")?;
                 for f in r * run..((r + 1) * run).min(faces) {
                     let face = mesh.face(f);
-                    if names_a_vertex_twice(face) {
+                    if repeated_corner(face).is_some() {
                         return Ok(None);
                     }
                     for &v in face {
@@ -356,16 +356,6 @@ fn faces_over_clusters(
 /// Faces larger than this drop their repeats through a set rather than by
 /// looking back over the corners already kept.
 const SCANNED_FACE_SIZE: usize = 32;
-
-/// Whether `face` names a vertex more than once.
-fn names_a_vertex_twice(face: &[u32]) -> bool {
-    if face.len() <= SCANNED_FACE_SIZE {
-        face.iter().enumerate().any(|(i, v)| face[..i].contains(v))
-    } else {
-        let mut seen = std::collections::HashSet::with_capacity(face.len());
-        !face.iter().all(|&v| seen.insert(v))
-    }
-}
 
 /// [`faces_over_clusters`] on one block: the kept faces' sizes and corners
 /// written at the front of `sizes` and `indices`; returns how many.

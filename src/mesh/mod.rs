@@ -652,7 +652,7 @@ fn face_error(
 }
 
 /// The first two corners of a polygon that name the same vertex.
-fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
+pub(crate) fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
     if corners.len() <= 16 {
         for i in 0..corners.len() {
             for j in i + 1..corners.len() {
