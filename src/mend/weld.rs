@@ -913,9 +913,18 @@ impl CellGrid {
 
     #[inline]
     pub(crate) fn cell(&self, p: DVec3) -> Cell {
-        let c = (p / self.size).floor();
-        Cell([c.x as i64, c.y as i64, c.z as i64])
+        let c = p / self.size;
+        Cell([c.x, c.y, c.z].map(floor_to_i64))
     }
+}
+
+/// `q.floor() as i64`, without the call to `floor` that the x86-64
+/// baseline (no SSE4.1 rounding instruction) makes: the truncation, one
+/// less when it rounded up.
+#[inline]
+fn floor_to_i64(q: f64) -> i64 {
+    let truncated = q as i64;
+    truncated.saturating_sub(i64::from(truncated as f64 > q))
 }
 
 #[cfg(test)]

@@ -615,8 +615,50 @@ fn copies_merged_in_pieces_give_the_clusters_of_every_vertex() {
     }
 }
 
+#[test]
+fn cells_floor_as_floor_does_at_the_edges() {
+    let tiny = f64::from_bits(1);
+    for q in [
+        0.0,
+        -0.0,
+        tiny,
+        -tiny,
+        0.5,
+        -0.5,
+        1.0 - f64::EPSILON / 2.0,
+        -1.0 + f64::EPSILON / 2.0,
+        -1.0,
+        -3.0,
+        2f64.powi(52) + 1.0,
+        -(2f64.powi(52) + 1.0),
+        2f64.powi(52) - 0.5,
+        -(2f64.powi(52) - 0.5),
+        2f64.powi(63),
+        -(2f64.powi(63)),
+        -(2f64.powi(63)) - 4096.0,
+        f64::MAX,
+        f64::MIN,
+        f64::INFINITY,
+        f64::NEG_INFINITY,
+        f64::NAN,
+    ] {
+        assert_eq!(floor_to_i64(q), q.floor() as i64, "{q:e}");
+    }
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+
+    /// Every double, by its bits: the cell's floor is `floor`'s.
+    #[test]
+    fn cells_floor_as_floor_does(bits in proptest::num::u64::ANY, scale in -70i32..70) {
+        let q = f64::from_bits(bits);
+        let scaled = (f64::from_bits(bits & !(0x7ff << 52) | (1023 << 52)) - 1.5)
+            * 2f64.powi(scale);
+        for q in [q, scaled] {
+            proptest::prop_assert_eq!(floor_to_i64(q), q.floor() as i64, "{:e}", q);
+        }
+    }
 
     /// Any positions, any pieces, any tolerance: merging copies first
     /// changes neither the clusters nor their numbering.
