@@ -566,9 +566,11 @@ fn clusters_by<K: CellKey>(
     // Each duplicate joins its site (every site is the lowest index of its
     // position, so is the root of a new set).
     let mut clusters = UnionFind::new(positions.len());
-    for (&(_, site), &v) in entries.iter().zip(&order) {
-        if site != v {
-            clusters.union(site, v);
+    if site_count as usize != positions.len() {
+        for (&(_, site), &v) in entries.iter().zip(&order) {
+            if site != v {
+                clusters.union(site, v);
+            }
         }
     }
     drop((entries, order));

@@ -619,6 +619,8 @@ fn root(parent: &mut [u32], mut x: u32) -> u32 {
 /// sets in one pass over the parents themselves.
 pub(crate) struct UnionFind {
     parent: Vec<u32>,
+    /// Unions that joined two sets: the sets are `n - joined`.
+    joined: usize,
 }
 
 impl UnionFind {
@@ -626,6 +628,7 @@ impl UnionFind {
         // Fresh, large and written once: on all threads, in huge pages.
         UnionFind {
             parent: crate::buffers::advised_map(n, |i| i as u32),
+            joined: 0,
         }
     }
 
@@ -644,6 +647,7 @@ impl UnionFind {
         let (a, b) = (self.find(a), self.find(b));
         let (low, high) = (a.min(b), a.max(b));
         self.parent[high as usize] = low;
+        self.joined += usize::from(low != high);
         low
     }
 
@@ -653,6 +657,11 @@ impl UnionFind {
     /// already).
     pub(crate) fn into_labels(self) -> (Vec<u32>, usize) {
         let mut labels = self.parent;
+        if self.joined == 0 {
+            // Every element its own set: the parents are the labels.
+            let count = labels.len();
+            return (labels, count);
+        }
         let mut count = 0;
         for x in 0..labels.len() {
             let parent = labels[x] as usize;
@@ -663,6 +672,7 @@ impl UnionFind {
                 labels[parent]
             };
         }
+        debug_assert_eq!(count, labels.len() - self.joined);
         (labels, count)
     }
 }
@@ -685,6 +695,25 @@ mod tests {
         assert_eq!(count, 4);
         assert_eq!(labels, [0, 1, 2, 2, 0, 2, 3, 0, 2]);
         assert_eq!(UnionFind::new(0).into_labels(), (Vec::new(), 0));
+    }
+
+    #[test]
+    fn union_find_counts_only_the_unions_that_join_two_sets() {
+        // Nothing joined: every element its own set.
+        let mut sets = UnionFind::new(4);
+        sets.union(2, 2);
+        assert_eq!(sets.into_labels(), (vec![0, 1, 2, 3], 4));
+        // One union, nothing repeated.
+        let mut sets = UnionFind::new(3);
+        sets.union(2, 0);
+        assert_eq!(sets.into_labels(), (vec![0, 1, 0], 2));
+        // A union of two members of one set joins nothing.
+        let mut sets = UnionFind::new(4);
+        for (a, b) in [(3, 1), (1, 3), (3, 3)] {
+            sets.union(a, b);
+        }
+        assert_eq!(sets.joined, 1);
+        assert_eq!(sets.into_labels(), (vec![0, 1, 2, 1], 3));
     }
 
     #[test]
