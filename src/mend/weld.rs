@@ -566,6 +566,7 @@ fn clusters_by<K: CellKey>(
     // Each duplicate joins its site (every site is the lowest index of its
     // position, so is the root of a new set).
     let mut clusters = UnionFind::new(positions.len());
+    // As many sites as vertices: no vertex has a copy.
     if site_count as usize != positions.len() {
         for (&(_, site), &v) in entries.iter().zip(&order) {
             if site != v {

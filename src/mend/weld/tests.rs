@@ -649,12 +649,15 @@ fn cells_floor_as_floor_does_at_the_edges() {
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
 
-    /// Every double, by its bits: the cell's floor is `floor`'s.
+    /// The cell's floor is `floor`'s: for a double of any bit pattern,
+    /// and for one in [-0.5, 0.5) scaled by 2^-70 to 2^69, which has a
+    /// fraction far more often.
     #[test]
     fn cells_floor_as_floor_does(bits in proptest::num::u64::ANY, scale in -70i32..70) {
         let q = f64::from_bits(bits);
-        let scaled = (f64::from_bits(bits & !(0x7ff << 52) | (1023 << 52)) - 1.5)
-            * 2f64.powi(scale);
+        // The bits' mantissa under the exponent of 1: a double in [1, 2).
+        let one_to_two = f64::from_bits((bits & !(0x7ff << 52)) | (1023 << 52));
+        let scaled = (one_to_two - 1.5) * 2f64.powi(scale);
         for q in [q, scaled] {
             proptest::prop_assert_eq!(floor_to_i64(q), q.floor() as i64, "{:e}", q);
         }
