@@ -5,6 +5,7 @@ use std::collections::HashMap;
 use glam::{DMat3, DVec3};
 
 use crate::error::{Error, Result};
+use crate::mend::weld::{within, CellGrid, CellMap};
 use crate::mesh::analysis::newell_vector;
 use crate::mesh::linalg::symmetric_eigen;
 use crate::mesh::topology::UnionFind;
@@ -15,10 +16,10 @@ use crate::toolbar::split::Builder;
 /// From Lines), each at most `max_valence` corners.
 ///
 /// The algorithm:
-/// 1. Endpoints closer than `tolerance` are welded (transitively, through a
-///    spatial hash of cell `tolerance`; 0 welds only identical points) to
-///    their average. Segments that collapse to a point and repeated
-///    segments are dropped.
+/// 1. Endpoints at most `tolerance` apart are welded (transitively, through
+///    the weld's spatial hash; 0 welds only identical points) to their
+///    average. Segments that collapse to a point and repeated segments are
+///    dropped.
 /// 2. Dangling segments (ends of degree 1) are pruned, repeatedly.
 /// 3. The welded points are projected onto their best-fit plane (least
 ///    squares), its normal pointing along its largest positive axis (+z for
@@ -144,37 +145,28 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
 fn weld(segments: &[[DVec3; 2]], tolerance: f64) -> (Vec<DVec3>, Vec<[u32; 2]>) {
     let ends: Vec<DVec3> = segments.iter().flat_map(|s| [s[0], s[1]]).collect();
     let mut clusters = UnionFind::new(ends.len());
-    let cell = |p: DVec3| -> [i64; 3] {
-        if tolerance > 0.0 {
-            (p / tolerance).floor().to_array().map(|x| x as i64)
-        } else {
-            p.to_array().map(|x| x.to_bits() as i64)
-        }
-    };
-    let mut grid: HashMap<[i64; 3], Vec<u32>> = HashMap::new();
+    // The weld's grid: cells at least `tolerance` wide, so every end within
+    // it lies in one of the 27 cells around.
+    let grid = CellGrid::new(ends.iter().copied(), tolerance);
+    let mut cells: CellMap<Vec<u32>> = CellMap::default();
     for (i, &p) in ends.iter().enumerate() {
-        let c = cell(p);
-        if tolerance > 0.0 {
-            for dx in -1..=1i64 {
-                for dy in -1..=1i64 {
-                    for dz in -1..=1i64 {
-                        let key = [
-                            c[0].saturating_add(dx),
-                            c[1].saturating_add(dy),
-                            c[2].saturating_add(dz),
-                        ];
-                        for &j in grid.get(&key).into_iter().flatten() {
-                            if ends[j as usize].distance(p) <= tolerance {
-                                clusters.union(i as u32, j);
-                            }
+        let centre = grid.cell(p);
+        for dx in -1..=1 {
+            for dy in -1..=1 {
+                for dz in -1..=1 {
+                    for &j in cells
+                        .get(&centre.offset([dx, dy, dz]))
+                        .into_iter()
+                        .flatten()
+                    {
+                        if within(ends[j as usize], p, tolerance) {
+                            clusters.union(i as u32, j);
                         }
                     }
                 }
             }
-        } else if let Some(&j) = grid.get(&c).and_then(|v| v.first()) {
-            clusters.union(i as u32, j);
         }
-        grid.entry(c).or_default().push(i as u32);
+        cells.entry(centre).or_default().push(i as u32);
     }
     // Clusters numbered in order of their first end.
     let (point_of, count) = clusters.into_labels();
@@ -265,6 +257,27 @@ mod tests {
         assert_eq!(edges, [[0, 1], [1, 2]]);
         let (points, _) = weld(&segments, 0.0);
         assert_eq!(points.len(), 5); // only the two identical ends of Y weld
+    }
+
+    #[test]
+    fn weld_at_tolerance_zero_joins_signed_zeros() {
+        let segments = [[DVec3::ZERO, DVec3::X], [DVec3::NEG_Y, -DVec3::ZERO]];
+        let (points, edges) = weld(&segments, 0.0);
+        assert_eq!(points.len(), 3);
+        assert_eq!(edges, [[0, 1], [0, 2]]);
+    }
+
+    #[test]
+    fn weld_measures_tiny_and_huge_distances_without_underflow() {
+        // 1e-300 apart: the squared distance underflows to 0.
+        let tiny = [[DVec3::ZERO, DVec3::X], [DVec3::splat(1e-300), DVec3::Y]];
+        assert_eq!(weld(&tiny, 1e-310).0.len(), 4);
+        assert_eq!(weld(&tiny, 2e-300).0.len(), 3);
+        // Near 1e300 the squares overflow; 0.5e300 apart is within 1e300.
+        let (a, b) = (DVec3::splat(1e300), DVec3::new(1.5e300, 1e300, 1e300));
+        let huge = [[a, DVec3::ZERO], [b, DVec3::ZERO]];
+        assert_eq!(weld(&huge, 0.4e300).0.len(), 3);
+        assert_eq!(weld(&huge, 1e300).0.len(), 2);
     }
 
     #[test]
