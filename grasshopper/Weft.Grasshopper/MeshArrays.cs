@@ -170,7 +170,7 @@ namespace Weft.Grasshopper
         /// Builds one mesh from closed polylines (each a list of x, y, z
         /// corners, with or without the closing point repeated): each polyline
         /// becomes a face of its own corners (<c>weft_mesh_new</c>), then the
-        /// library welds corners closer than <paramref name="tolerance"/>
+        /// library welds corners at most <paramref name="tolerance"/> apart
         /// (<c>weft_weld</c>), so neighbouring polygons share vertices.
         /// </summary>
         public static PolygonArrays FromPolylines(IList<double[]> polylines, double tolerance)

@@ -9,7 +9,7 @@ namespace Weft.Grasshopper
     {
         public JoinWeldComponent()
             : base("Join Meshes and Weld", "wbJoin",
-                   "Joins meshes into one and merges the vertices closer than the tolerance.",
+                   "Joins meshes into one and merges the vertices at most the tolerance apart.",
                    "Mend", "join")
         {
         }
@@ -17,7 +17,7 @@ namespace Weft.Grasshopper
         protected override void RegisterInputParams(GH_InputParamManager pManager)
         {
             AddMeshInput(pManager, "M+", "The meshes to join.");
-            pManager.AddBooleanParameter("Weld", "W", "Merge vertices closer than the tolerance.", GH_ParamAccess.item, true);
+            pManager.AddBooleanParameter("Weld", "W", "Merge vertices at most the tolerance apart.", GH_ParamAccess.item, true);
             AddToleranceInput(pManager, "Welding distance");
         }
 

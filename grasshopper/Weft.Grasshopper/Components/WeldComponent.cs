@@ -4,13 +4,13 @@ using Grasshopper.Kernel;
 
 namespace Weft.Grasshopper
 {
-    /// <summary>Merges vertices closer than a tolerance.</summary>
+    /// <summary>Merges vertices at most a tolerance apart.</summary>
     [Guid("0eff4233-4741-4c91-8cfc-8b88979bddb7")]
     public sealed class WeldComponent : MeshOperationComponent
     {
         public WeldComponent()
             : base("Weld", "Weld",
-                   "Merges vertices closer than the tolerance; faces that collapse below three vertices are removed.",
+                   "Merges vertices at most the tolerance apart; faces that collapse below three vertices are removed.",
                    "Mend", "weld", "The mesh to weld.", "The welded mesh.")
         {
         }

@@ -142,8 +142,8 @@ Examples:\n  weft evaluate cage.obj --samples uv.txt -o points.txt --naked-edges
 weft evaluate tri.obj --samples uv.txt --scheme loop"
     )]
     Evaluate(evaluate::Evaluate),
-    /// Joins meshes into one and merges vertices closer than the tolerance;
-    /// faces that collapse are removed and counted.
+    /// Joins meshes into one and merges vertices at most the tolerance
+    /// apart; fails, writing nothing, if faces would collapse.
     #[command(
         after_help = "Example:\n  weft weld panel-a.obj panel-b.obj panel-c.obj -o joined.obj --tolerance 0.01"
     )]

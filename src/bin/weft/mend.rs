@@ -16,7 +16,7 @@ use crate::{Cli, Failure};
 /// Faces whose sides give the median edge length of the hint.
 const EDGE_SAMPLES: usize = 100_000;
 
-/// Joins the inputs and merges vertices closer than `tolerance` (by
+/// Joins the inputs and merges vertices at most `tolerance` apart (by
 /// default relative to the mesh's size); refuses, writing nothing, when
 /// faces would collapse, unless `allow_collapse`.
 pub fn weld(
