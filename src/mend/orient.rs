@@ -113,11 +113,18 @@ fn faces_to_reverse(mesh: &Mesh) -> (Vec<bool>, OrientReport) {
         }
     }
     // Measured from a point of each piece: far from the origin, volumes
-    // measured from the origin would cancel in round-off.
+    // measured from the origin would cancel in round-off. Only the closed,
+    // orientable pieces' volumes decide anything.
+    let measured: Vec<bool> = (0..component_count)
+        .map(|c| orientation.component_orientable[c] && !open[c])
+        .collect();
     let mut origin = vec![None; component_count];
     let mut volume = vec![0.0f64; component_count];
     for f in 0..mesh.face_count() {
         let c = orientation.face_component[f] as usize;
+        if !measured[c] {
+            continue;
+        }
         let o = *origin[c].get_or_insert(mesh.positions()[mesh.face(f)[0] as usize]);
         let v = signed_volume_of_face(mesh, f, o);
         volume[c] += if reversed_face(f, &invert) { -v } else { v };
