@@ -47,7 +47,11 @@ pub fn describe(mesh: &Mesh, planarity_tolerance: f64) -> weft::Result<Report> {
         },
     );
     let planarity = planarity?;
-    let count = |size: u32| mesh.face_sizes().par_iter().filter(|&&s| s == size).count();
+    // A mesh of one face size answers without writing out its sizes.
+    let count = |size: u32| match mesh.uniform_face_size() {
+        Some(uniform) => usize::from(uniform == size as usize) * mesh.face_count(),
+        None => mesh.face_sizes().par_iter().filter(|&&s| s == size).count(),
+    };
     let (triangles, quads) = (count(3), count(4));
     Ok(Report {
         vertices: info.vertex_count,
