@@ -401,55 +401,118 @@ impl Topology {
     /// the count is the same without a union-find over all corners.
     fn non_manifold_vertex_count(&self) -> usize {
         let vertex_count = self.adjacency.vertex_offsets.len() - 1;
-        let corner_edges = &self.adjacency.corner_edges;
-        let previous = |c: u32| self.corners.previous(c as usize) as u32;
         (0..vertex_count)
             .into_par_iter()
             .with_min_len(CHUNK)
             .fold(
                 || (0usize, Vec::new()),
-                |(count, mut parent): (usize, Vec<u32>), v| {
+                |(count, mut scratch): (usize, Vec<u32>), v| {
                     let corners = self.vertex_corners(v);
-                    parent.clear();
-                    parent.extend(0..corners.len() as u32);
-                    let mut non_manifold = false;
-                    for (i, &c) in corners.iter().enumerate() {
-                        // The edge out of v and the edge into v in c's face,
-                        // each with the corner whose edge it is.
-                        let before = previous(c);
-                        for (own, edge) in [
-                            (c, corner_edges[c as usize]),
-                            (before, corner_edges[before as usize]),
-                        ] {
-                            match self.edge_corners(edge as usize) {
-                                &[c1, c2] => {
-                                    let other = if c1 == own { c2 } else { c1 };
-                                    let at_v = if self.face_vertices[other as usize] as usize == v {
-                                        other
-                                    } else {
-                                        self.corners.next(other as usize) as u32
-                                    };
-                                    if let Ok(j) = corners.binary_search(&at_v) {
-                                        let (a, b) = (
-                                            root(&mut parent, i as u32),
-                                            root(&mut parent, j as u32),
-                                        );
-                                        parent[a.max(b) as usize] = a.min(b);
-                                    }
-                                }
-                                [_] => {}
-                                _ => non_manifold = true,
-                            }
-                        }
-                    }
-                    if !non_manifold {
-                        non_manifold = (1..corners.len() as u32).any(|i| root(&mut parent, i) != 0);
-                    }
-                    (count + non_manifold as usize, parent)
+                    let non_manifold = match self.walk_one_fan(v, corners, &mut scratch) {
+                        Some(answer) => answer,
+                        None => self.joins_leave_several_fans(v, corners, &mut scratch),
+                    };
+                    (count + non_manifold as usize, scratch)
                 },
             )
             .map(|(count, _)| count)
             .sum()
+    }
+
+    /// Whether vertex `v` is non-manifold, found by walking around it from
+    /// its first corner across manifold edges, one way and then the other,
+    /// as a manifold vertex's one fan is walked: `Some(false)` when the
+    /// walk reaches every corner at `v` once, `Some(true)` when it meets a
+    /// non-manifold edge, `None` when it cannot tell (several fans, or a
+    /// face that meets `v` twice), which the union-find then decides.
+    fn walk_one_fan(&self, v: usize, corners: &[u32], walked: &mut Vec<u32>) -> Option<bool> {
+        let Some(&start) = corners.first() else {
+            return Some(false);
+        };
+        let corner_edges = &self.adjacency.corner_edges;
+        let previous = |c: u32| self.corners.previous(c as usize) as u32;
+        walked.clear();
+        walked.push(start);
+        // Out of `start` through its edge out of v, then through its edge
+        // into v; each step enters a corner through one of its two edges at
+        // v and leaves through the other.
+        let start_in = previous(start);
+        'ways: for (mut own, mut edge) in [
+            (start, corner_edges[start as usize]),
+            (start_in, corner_edges[start_in as usize]),
+        ] {
+            loop {
+                let (at_v, entered_by_edge_into_v, next_own) =
+                    match self.edge_corners(edge as usize) {
+                        &[c1, c2] => {
+                            let other = if c1 == own { c2 } else { c1 };
+                            if self.face_vertices[other as usize] as usize == v {
+                                (other, false, previous(other))
+                            } else {
+                                let at_v = self.corners.next(other as usize) as u32;
+                                (at_v, true, at_v)
+                            }
+                        }
+                        [_] => continue 'ways,
+                        _ => return Some(true),
+                    };
+                if at_v == start {
+                    // Round to the start through its edge into v: one closed fan.
+                    if !entered_by_edge_into_v {
+                        return None;
+                    }
+                    break 'ways;
+                }
+                let next_edge = corner_edges[next_own as usize];
+                if next_edge == edge || walked.len() == corners.len() {
+                    return None;
+                }
+                walked.push(at_v);
+                (own, edge) = (next_own, next_edge);
+            }
+        }
+        if walked.len() != corners.len() {
+            return None;
+        }
+        walked.sort_unstable();
+        (walked[..] == corners[..]).then_some(false)
+    }
+
+    /// Whether the corners at vertex `v`, joined across each manifold edge
+    /// there, form more than one fan, or `v` is on a non-manifold edge.
+    fn joins_leave_several_fans(&self, v: usize, corners: &[u32], parent: &mut Vec<u32>) -> bool {
+        let corner_edges = &self.adjacency.corner_edges;
+        let previous = |c: u32| self.corners.previous(c as usize) as u32;
+        parent.clear();
+        parent.extend(0..corners.len() as u32);
+        let mut non_manifold = false;
+        for (i, &c) in corners.iter().enumerate() {
+            // The edge out of v and the edge into v in c's face, each with
+            // the corner whose edge it is.
+            let before = previous(c);
+            for (own, edge) in [
+                (c, corner_edges[c as usize]),
+                (before, corner_edges[before as usize]),
+            ] {
+                match self.edge_corners(edge as usize) {
+                    &[c1, c2] => {
+                        let other = if c1 == own { c2 } else { c1 };
+                        let at_v = if self.face_vertices[other as usize] as usize == v {
+                            other
+                        } else {
+                            self.corners.next(other as usize) as u32
+                        };
+                        if let Ok(j) = corners.binary_search(&at_v) {
+                            let (a, b) = (root(parent, i as u32), root(parent, j as u32));
+                            parent[a.max(b) as usize] = a.min(b);
+                        }
+                    }
+                    [_] => {}
+                    _ => non_manifold = true,
+                }
+            }
+        }
+        non_manifold || (1..corners.len() as u32).any(|i| root(parent, i) != 0)
     }
 
     /// The connected component of each face (faces sharing any edge are
@@ -864,10 +927,54 @@ mod tests {
         assert_eq!(MeshInfo::of(&empty), Topology::new(&empty).info(&empty));
     }
 
+    /// Faces over a handful of vertices, so edges carry one, two or more
+    /// faces either way round and vertices hold several fans; with
+    /// `repeats`, faces may name a vertex more than once.
+    fn tangles() -> impl proptest::strategy::Strategy<Value = Mesh> {
+        use proptest::prelude::*;
+        let distinct =
+            proptest::sample::subsequence((0u32..8).collect::<Vec<_>>(), 3..6).prop_shuffle();
+        let repeating = proptest::collection::vec(0u32..8, 3..6);
+        prop_oneof![
+            proptest::collection::vec(distinct, 1..14).prop_map(|faces| (faces, false)),
+            proptest::collection::vec(repeating, 1..14).prop_map(|faces| (faces, true)),
+        ]
+        .prop_map(|(faces, repeats)| {
+            Mesh::new_with(
+                (0..8)
+                    .map(|i| glam::DVec3::new(i as f64, (i * i % 5) as f64, (i % 3) as f64))
+                    .collect(),
+                faces.iter().map(|f| f.len() as u32).collect(),
+                faces.concat(),
+                crate::mesh::MeshOptions {
+                    allow_repeated_vertices: repeats,
+                },
+            )
+            .unwrap()
+        })
+    }
+
     proptest::proptest! {
         #[test]
         fn mesh_info_is_the_topology_s_info(mesh in shapes::soups()) {
             proptest::prop_assert_eq!(MeshInfo::of(&mesh), Topology::new(&mesh).info(&mesh));
+        }
+
+        #[test]
+        fn the_walk_around_a_vertex_agrees_with_the_union_of_its_fans(mesh in tangles()) {
+            let topology = Topology::new(&mesh);
+            let mut scratch = Vec::new();
+            for v in 0..mesh.vertex_count() {
+                let corners = topology.vertex_corners(v);
+                if let Some(walked) = topology.walk_one_fan(v, corners, &mut scratch) {
+                    let joined = topology.joins_leave_several_fans(v, corners, &mut scratch);
+                    proptest::prop_assert_eq!(walked, joined, "vertex {}", v);
+                }
+            }
+            proptest::prop_assert_eq!(
+                topology.non_manifold_vertex_count(),
+                topology.non_manifold_vertices().len()
+            );
         }
     }
 }
