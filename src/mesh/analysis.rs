@@ -284,7 +284,7 @@ pub fn plane_deviation(points: &[DVec3]) -> f64 {
         covariance += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
     }
     // The best-fit plane's normal: the direction of least spread.
-    let normal = crate::mesh::linalg::symmetric_eigen(covariance).1[0];
+    let normal = crate::mesh::linalg::least_spread_direction(covariance);
     points
         .iter()
         .map(|&p| (p - centroid).dot(normal).abs())

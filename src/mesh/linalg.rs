@@ -15,6 +15,63 @@ pub(crate) fn symmetric_eigen(m: DMat3) -> ([f64; 3], [DVec3; 3]) {
     (values, vectors)
 }
 
+/// The unit eigenvector of the smallest eigenvalue of a symmetric 3×3
+/// matrix: the normal of a best-fit plane. Worked out directly (the
+/// eigenvalues by the trigonometric formula for a cubic's three real
+/// roots, the vector as the longest cross product of two rows of the
+/// matrix less that eigenvalue), and by [`symmetric_eigen`] where that
+/// eigenvalue lies within a hundredth of the spread of the next, where the
+/// cross products lose the digits the rotations keep.
+pub(crate) fn least_spread_direction(m: DMat3) -> DVec3 {
+    direct_least_spread(m).unwrap_or_else(|| symmetric_eigen(m).1[0])
+}
+
+/// [`least_spread_direction`] without the rotations: `None` for a zero or
+/// non-finite matrix, and where the two smallest eigenvalues lie too close.
+fn direct_least_spread(m: DMat3) -> Option<DVec3> {
+    let a = m.to_cols_array_2d();
+    // Scaled to entries of at most 1: squares and cubes neither overflow
+    // nor underflow.
+    let entry_scale = a.iter().flatten().fold(0.0f64, |l, x| l.max(x.abs()));
+    if !(entry_scale > 0.0 && entry_scale.is_finite()) {
+        return None;
+    }
+    let k = 1.0 / entry_scale;
+    let [a00, a01, a02, a11, a12, a22] =
+        [a[0][0], a[0][1], a[0][2], a[1][1], a[1][2], a[2][2]].map(|x| x * k);
+    // The eigenvalues are q + 2p cos(φ + 2πj/3) (j = 0, 1, 2), with B = (A − qI)/p.
+    let q = (a00 + a11 + a22) / 3.0;
+    let (b00, b11, b22) = (a00 - q, a11 - q, a22 - q);
+    let p = ((b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * (a01 * a01 + a02 * a02 + a12 * a12)) / 6.0)
+        .sqrt();
+    if p == 0.0 {
+        return None;
+    }
+    let det = b00 * (b11 * b22 - a12 * a12) - a01 * (a01 * b22 - a12 * a02)
+        + a02 * (a01 * a12 - b11 * a02);
+    let phi = (det / (2.0 * p * p * p)).clamp(-1.0, 1.0).acos() / 3.0;
+    let largest = q + 2.0 * p * phi.cos();
+    let smallest = q + 2.0 * p * (phi + 2.0 * std::f64::consts::FRAC_PI_3).cos();
+    let middle = 3.0 * q - largest - smallest;
+    if middle - smallest < 1e-2 * (largest - smallest) || smallest.is_nan() {
+        return None;
+    }
+    let rows = [
+        DVec3::new(a00 - smallest, a01, a02),
+        DVec3::new(a01, a11 - smallest, a12),
+        DVec3::new(a02, a12, a22 - smallest),
+    ];
+    let crosses = [
+        rows[0].cross(rows[1]),
+        rows[0].cross(rows[2]),
+        rows[1].cross(rows[2]),
+    ];
+    let longest = crosses
+        .into_iter()
+        .max_by(|x, y| x.length_squared().total_cmp(&y.length_squared()))?;
+    Some(longest.normalize())
+}
+
 /// [`symmetric_eigen`], and how many sweeps it took.
 #[allow(clippy::needless_range_loop)] // indices mirror the rotation formulas
 fn jacobi(m: DMat3) -> ([f64; 3], [DVec3; 3], usize) {
@@ -116,6 +173,64 @@ mod tests {
             // The normal: the least spread, along the tilted z.
             assert!(vectors[0].dot(tilt * DVec3::Z).abs() > 0.99);
         }
+    }
+
+    #[test]
+    fn least_spread_direction_is_the_rotations_smallest_eigenvector() {
+        let mut state = 0x9E37_79B9_7F4A_7C15u64;
+        let mut next = || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64
+        };
+        let (mut direct, mut rotated) = (0, 0);
+        for i in 0..3000 {
+            let r = DMat3::from_rotation_z(6.0 * next())
+                * DMat3::from_rotation_y(6.0 * next())
+                * DMat3::from_rotation_x(6.0 * next());
+            let mut spreads = DVec3::new(next(), next(), [0.0, 1e-9, 1e-3, 0.3][i % 4] * next());
+            if i % 5 == 0 {
+                // The two least spreads within a thousandth of each other.
+                spreads.y = spreads.z + 1e-3 * next() * spreads.x;
+            }
+            let scale = [1e-200, 1e-6, 1.0, 1e200][(i / 4) % 4];
+            let m = r * DMat3::from_diagonal(spreads * scale) * r.transpose();
+            let normal = least_spread_direction(m);
+            let (values, vectors) = symmetric_eigen(m);
+            assert!((normal.length() - 1.0).abs() < 1e-14);
+            match direct_least_spread(m) {
+                Some(_) => {
+                    direct += 1;
+                    // Close to the rotations' vector, as far as the gap to
+                    // the next eigenvalue allows.
+                    let along = normal * normal.dot(vectors[0]).signum();
+                    let gap = values[2] / (values[1] - values[0]);
+                    assert!(
+                        (along - vectors[0]).length() <= 1e-14 * (1.0 + gap),
+                        "{m:?}"
+                    );
+                    assert!(
+                        (m * (normal / values[2])).length()
+                            <= values[0].abs() / values[2] + 2e-14 * (1.0 + gap),
+                        "{m:?}"
+                    );
+                }
+                None => {
+                    rotated += 1;
+                    assert_eq!(normal, vectors[0]);
+                }
+            }
+        }
+        // Most matrices are solved directly; close spreads are rotated.
+        assert!(direct > 2000 && rotated > 600, "{direct} {rotated}");
+        // No spread, a single point: the rotations' answer.
+        assert_eq!(
+            least_spread_direction(DMat3::ZERO),
+            symmetric_eigen(DMat3::ZERO).1[0]
+        );
+        let line = DMat3::from_cols(DVec3::X, DVec3::ZERO, DVec3::ZERO);
+        assert!(direct_least_spread(line).is_none());
     }
 
     #[test]
