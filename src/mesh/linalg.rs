@@ -23,7 +23,32 @@ pub(crate) fn symmetric_eigen(m: DMat3) -> ([f64; 3], [DVec3; 3]) {
 /// eigenvalue lies within a hundredth of the spread of the next, where the
 /// cross products lose the digits the rotations keep.
 pub(crate) fn least_spread_direction(m: DMat3) -> DVec3 {
+    if nearly_diagonal(m) {
+        // A face in an axis plane: the rotations have nothing to turn, and
+        // give the axis of the least diagonal entry (the first of equals).
+        let diagonal = [m.x_axis.x, m.y_axis.y, m.z_axis.z];
+        let least = (0..3).min_by(|&i, &j| diagonal[i].total_cmp(&diagonal[j]));
+        return DVec3::AXES[least.unwrap_or(2)];
+    }
     direct_least_spread(m).unwrap_or_else(|| symmetric_eigen(m).1[0])
+}
+
+/// Whether every entry above the diagonal is too small to change either
+/// diagonal entry it sits between: [`symmetric_eigen`] zeroes them all
+/// without a rotation.
+fn nearly_diagonal(m: DMat3) -> bool {
+    let a = m.to_cols_array_2d();
+    [(0, 1), (0, 2), (1, 2)]
+        .into_iter()
+        .all(|(p, q)| negligible(a[p][q], a[p][p], a[q][q]))
+}
+
+/// Whether `apq` is too small to change `app` or `aqq`, or too small to
+/// rotate at all.
+#[inline]
+fn negligible(apq: f64, app: f64, aqq: f64) -> bool {
+    let small = 100.0 * apq.abs();
+    apq.abs() < 1e-300 || small + app.abs() == app.abs() && small + aqq.abs() == aqq.abs()
 }
 
 /// [`least_spread_direction`] without the rotations: `None` for a zero or
@@ -86,11 +111,7 @@ fn jacobi(m: DMat3) -> ([f64; 3], [DVec3; 3], usize) {
         sweeps += 1;
         for (p, q) in [(0, 1), (0, 2), (1, 2)] {
             let apq = a[p][q];
-            if apq.abs() < 1e-300 {
-                continue;
-            }
-            let small = 100.0 * apq.abs();
-            if small + a[p][p].abs() == a[p][p].abs() && small + a[q][q].abs() == a[q][q].abs() {
+            if negligible(apq, a[p][p], a[q][q]) {
                 a[p][q] = 0.0;
                 a[q][p] = 0.0;
                 continue;
@@ -224,7 +245,23 @@ mod tests {
         }
         // Most matrices are solved directly; close spreads are rotated.
         assert!(direct > 2000 && rotated > 600, "{direct} {rotated}");
-        // No spread, a single point: the rotations' answer.
+        // Already diagonal (a face in an axis plane), no spread (a single
+        // point): the rotations' answer, which makes no rotation.
+        let flat = DMat3::from_diagonal(DVec3::new(2.0, 1.0, 0.0));
+        assert_eq!(least_spread_direction(flat), DVec3::Z);
+        for diagonal in [
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::new(1.0, 1.0, 1.0),
+            DVec3::new(3.0, 1.0, 2.0),
+        ] {
+            let m = DMat3::from_diagonal(diagonal);
+            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
+            // Entries too small to turn anything.
+            let mut m = m;
+            m.x_axis.y = 1e-30;
+            m.y_axis.x = 1e-30;
+            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
+        }
         assert_eq!(
             least_spread_direction(DMat3::ZERO),
             symmetric_eigen(DMat3::ZERO).1[0]
