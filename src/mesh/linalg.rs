@@ -19,9 +19,9 @@ pub(crate) fn symmetric_eigen(m: DMat3) -> ([f64; 3], [DVec3; 3]) {
 /// matrix: the normal of a best-fit plane. Worked out directly (the
 /// eigenvalues by the trigonometric formula for a cubic's three real
 /// roots, the vector as the longest cross product of two rows of the
-/// matrix less that eigenvalue), and by [`symmetric_eigen`] where that
-/// eigenvalue lies within a hundredth of the spread of the next, where the
-/// cross products lose the digits the rotations keep.
+/// matrix less that eigenvalue), and by [`symmetric_eigen`] where the two
+/// least eigenvalues lie within a hundredth of the spread of all three,
+/// where the cross products lose the digits the rotations keep.
 pub(crate) fn least_spread_direction(m: DMat3) -> DVec3 {
     if nearly_diagonal(m) {
         // A face in an axis plane: the rotations have nothing to turn, and
@@ -94,7 +94,7 @@ fn direct_least_spread(m: DMat3) -> Option<DVec3> {
     let longest = crosses
         .into_iter()
         .max_by(|x, y| x.length_squared().total_cmp(&y.length_squared()))?;
-    Some(longest.normalize())
+    longest.try_normalize()
 }
 
 /// [`symmetric_eigen`], and how many sweeps it took.

@@ -398,7 +398,8 @@ impl Topology {
     /// out vertex by vertex in parallel: the corners at a vertex are joined
     /// across each manifold edge there (the edge's two faces' corners at
     /// the vertex), which are exactly the joins of that method's fans, so
-    /// the count is the same without a union-find over all corners.
+    /// the count is the same without a union-find over all corners. Most
+    /// vertices are one fan, which a walk around them finds first.
     fn non_manifold_vertex_count(&self) -> usize {
         let vertex_count = self.adjacency.vertex_offsets.len() - 1;
         (0..vertex_count)
