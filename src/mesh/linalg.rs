@@ -164,110 +164,102 @@ mod tests {
         }
     }
 
-    #[test]
-    fn eigen_of_best_fit_planes_converges_in_a_few_sweeps() {
-        // Covariances of four to six corners, nearly flat in a tilted
-        // plane, at scales from 1e-6 to 1e3, as a planarity check meets them.
-        let mut state = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let tilt = DMat3::from_rotation_y(0.4) * DMat3::from_rotation_x(1.1);
-        for i in 0..2000 {
-            let scale = [1e-6, 1.0, 1e3][i % 3];
-            let corners: Vec<DVec3> = (0..4 + i % 3)
-                .map(|_| tilt * DVec3::new(next(), next(), 1e-3 * next()) * scale)
+    /// The covariance of `points` about their centroid.
+    fn covariance(points: &[DVec3]) -> DMat3 {
+        let centroid = points.iter().sum::<DVec3>() / points.len() as f64;
+        points.iter().fold(DMat3::ZERO, |m, &p| {
+            let d = p - centroid;
+            m + DMat3::from_cols(d * d.x, d * d.y, d * d.z)
+        })
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn eigen_of_best_fit_planes_converges_in_a_few_sweeps(
+            corners in proptest::collection::vec((0.0..1.0f64, 0.0..1.0f64, 0.0..1e-3f64), 4..7),
+            scale in proptest::sample::select(vec![1e-6, 1.0, 1e3]),
+        ) {
+            // Four to six corners nearly flat in a tilted plane, as a
+            // planarity check meets them.
+            let tilt = DMat3::from_rotation_y(0.4) * DMat3::from_rotation_x(1.1);
+            let corners: Vec<DVec3> = corners
+                .into_iter()
+                .map(|(x, y, z)| tilt * DVec3::new(x, y, z) * scale)
                 .collect();
-            let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
-            let m = corners.iter().fold(DMat3::ZERO, |m, &p| {
-                let d = p - centroid;
-                m + DMat3::from_cols(d * d.x, d * d.y, d * d.z)
-            });
+            let m = covariance(&corners);
             let (values, vectors, sweeps) = jacobi(m);
-            assert!(sweeps <= 8, "{sweeps} sweeps for {m:?}");
+            proptest::prop_assert!(sweeps <= 8, "{} sweeps", sweeps);
             for (value, vector) in values.iter().zip(vectors) {
-                assert!((m * vector - vector * *value).length() <= 1e-13 * values[2]);
+                proptest::prop_assert!((m * vector - vector * *value).length() <= 1e-13 * values[2]);
             }
-            // The normal: the least spread, along the tilted z.
-            assert!(vectors[0].dot(tilt * DVec3::Z).abs() > 0.99);
+        }
+
+        #[test]
+        fn least_spread_direction_is_the_rotations_smallest_eigenvector(
+            angles in (0.0..6.3f64, 0.0..6.3f64, 0.0..6.3f64),
+            (first, second, least) in (0.0..1.0f64, 0.0..1.0f64, 0.0..1.0f64),
+            flatness in proptest::sample::select(vec![0.0, 1e-9, 1e-3, 0.3]),
+            close in proptest::bool::weighted(0.2),
+            scale in proptest::sample::select(vec![1e-200, 1e-6, 1.0, 1e200]),
+        ) {
+            let least = flatness * least;
+            // With `close`, the two least spreads within a thousandth.
+            let second = if close { least + 1e-3 * second * first } else { second };
+            let r = DMat3::from_rotation_z(angles.0)
+                * DMat3::from_rotation_y(angles.1)
+                * DMat3::from_rotation_x(angles.2);
+            let m = r * DMat3::from_diagonal(DVec3::new(first, second, least) * scale) * r.transpose();
+            let normal = least_spread_direction(m);
+            let (values, vectors) = symmetric_eigen(m);
+            proptest::prop_assert!((normal.length() - 1.0).abs() < 1e-14);
+            if direct_least_spread(m).is_some() {
+                // Close to the rotations' vector, as far as the gap to the
+                // next eigenvalue allows.
+                let along = normal * normal.dot(vectors[0]).signum();
+                let gap = values[2] / (values[1] - values[0]);
+                proptest::prop_assert!((along - vectors[0]).length() <= 1e-14 * (1.0 + gap));
+                proptest::prop_assert!(
+                    (m * (normal / values[2])).length()
+                        <= values[0].abs() / values[2] + 2e-14 * (1.0 + gap)
+                );
+            } else {
+                proptest::prop_assert_eq!(normal, vectors[0]);
+            }
         }
     }
 
     #[test]
-    fn least_spread_direction_is_the_rotations_smallest_eigenvector() {
-        let mut state = 0x9E37_79B9_7F4A_7C15u64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
-        let (mut direct, mut rotated) = (0, 0);
-        for i in 0..3000 {
-            let r = DMat3::from_rotation_z(6.0 * next())
-                * DMat3::from_rotation_y(6.0 * next())
-                * DMat3::from_rotation_x(6.0 * next());
-            let mut spreads = DVec3::new(next(), next(), [0.0, 1e-9, 1e-3, 0.3][i % 4] * next());
-            if i % 5 == 0 {
-                // The two least spreads within a thousandth of each other.
-                spreads.y = spreads.z + 1e-3 * next() * spreads.x;
-            }
-            let scale = [1e-200, 1e-6, 1.0, 1e200][(i / 4) % 4];
-            let m = r * DMat3::from_diagonal(spreads * scale) * r.transpose();
-            let normal = least_spread_direction(m);
-            let (values, vectors) = symmetric_eigen(m);
-            assert!((normal.length() - 1.0).abs() < 1e-14);
-            match direct_least_spread(m) {
-                Some(_) => {
-                    direct += 1;
-                    // Close to the rotations' vector, as far as the gap to
-                    // the next eigenvalue allows.
-                    let along = normal * normal.dot(vectors[0]).signum();
-                    let gap = values[2] / (values[1] - values[0]);
-                    assert!(
-                        (along - vectors[0]).length() <= 1e-14 * (1.0 + gap),
-                        "{m:?}"
-                    );
-                    assert!(
-                        (m * (normal / values[2])).length()
-                            <= values[0].abs() / values[2] + 2e-14 * (1.0 + gap),
-                        "{m:?}"
-                    );
-                }
-                None => {
-                    rotated += 1;
-                    assert_eq!(normal, vectors[0]);
-                }
-            }
-        }
-        // Most matrices are solved directly; close spreads are rotated.
-        assert!(direct > 2000 && rotated > 600, "{direct} {rotated}");
+    fn least_spread_is_direct_where_the_spreads_are_apart() {
+        let r = DMat3::from_rotation_z(0.3) * DMat3::from_rotation_x(1.2);
+        let turned = |d: DVec3| r * DMat3::from_diagonal(d) * r.transpose();
+        assert!(direct_least_spread(turned(DVec3::new(1.0, 0.5, 0.0))).is_some());
+        assert!(direct_least_spread(turned(DVec3::new(1.0, 0.02, 0.01))).is_some());
+        // The two least within a hundredth of the spread: the rotations.
+        assert!(direct_least_spread(turned(DVec3::new(1.0, 0.009, 0.0))).is_none());
+        assert!(direct_least_spread(turned(DVec3::ONE)).is_none());
+        let line = DMat3::from_cols(DVec3::X, DVec3::ZERO, DVec3::ZERO);
+        assert!(direct_least_spread(line).is_none());
+        assert!(direct_least_spread(DMat3::ZERO).is_none());
         // Already diagonal (a face in an axis plane), no spread (a single
         // point): the rotations' answer, which makes no rotation.
-        let flat = DMat3::from_diagonal(DVec3::new(2.0, 1.0, 0.0));
-        assert_eq!(least_spread_direction(flat), DVec3::Z);
-        for diagonal in [
-            DVec3::new(0.0, 1.0, 0.0),
-            DVec3::new(1.0, 1.0, 1.0),
-            DVec3::new(3.0, 1.0, 2.0),
-        ] {
-            let m = DMat3::from_diagonal(diagonal);
-            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
-            // Entries too small to turn anything.
-            let mut m = m;
-            m.x_axis.y = 1e-30;
-            m.y_axis.x = 1e-30;
-            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
-        }
         assert_eq!(
             least_spread_direction(DMat3::ZERO),
             symmetric_eigen(DMat3::ZERO).1[0]
         );
-        let line = DMat3::from_cols(DVec3::X, DVec3::ZERO, DVec3::ZERO);
-        assert!(direct_least_spread(line).is_none());
+        let flat = DMat3::from_diagonal(DVec3::new(2.0, 1.0, 0.0));
+        assert_eq!(least_spread_direction(flat), DVec3::Z);
+        for diagonal in [
+            DVec3::new(0.0, 1.0, 0.0),
+            DVec3::ONE,
+            DVec3::new(3.0, 1.0, 2.0),
+        ] {
+            let mut m = DMat3::from_diagonal(diagonal);
+            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
+            // Entries too small to turn anything.
+            m.x_axis.y = 1e-30;
+            m.y_axis.x = 1e-30;
+            assert_eq!(least_spread_direction(m), symmetric_eigen(m).1[0]);
+        }
     }
 
     #[test]
