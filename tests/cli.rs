@@ -74,27 +74,23 @@ fn info_reports_counts_and_properties() {
     );
 
     // Mixed sizes are counted face by face; one size from the layout.
-    std::fs::write(
-        dir.join("mixed.obj"),
-        "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 1 2 0\n\
-         f 1 2 5 4\nf 2 3 6 5\nf 4 5 7\nf 5 6 7\n",
-    )
-    .unwrap();
-    let text = succeeds(&dir, &["info", "mixed.obj"]);
-    assert_mentions(
-        &text,
-        &["faces                 4 (2 triangles, 2 quads, 0 n-gons)"],
-    );
-    std::fs::write(
-        dir.join("pentagon.obj"),
-        "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nv 3 0 0\nf 1 2 3 4 5\nf 2 6 3\n",
-    )
-    .unwrap();
-    let text = succeeds(&dir, &["info", "pentagon.obj"]);
-    assert_mentions(
-        &text,
-        &["faces                 2 (1 triangles, 0 quads, 1 n-gons)"],
-    );
+    let counted = [
+        (
+            "mixed.obj",
+            "v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\nv 1 2 0\n\
+             f 1 2 5 4\nf 2 3 6 5\nf 4 5 7\nf 5 6 7\n",
+            "faces                 4 (2 triangles, 2 quads, 0 n-gons)",
+        ),
+        (
+            "pentagon.obj",
+            "v 0 0 0\nv 1 0 0\nv 2 1 0\nv 1 2 0\nv 0 1 0\nv 3 0 0\nf 1 2 3 4 5\nf 2 6 3\n",
+            "faces                 2 (1 triangles, 0 quads, 1 n-gons)",
+        ),
+    ];
+    for (name, text, line) in counted {
+        std::fs::write(dir.join(name), text).unwrap();
+        assert_mentions(&succeeds(&dir, &["info", name]), &[line]);
+    }
     io::write_mesh(dir.join("icosahedron.obj"), &shapes::icosahedron()).unwrap();
     let text = succeeds(&dir, &["info", "icosahedron.obj"]);
     assert_mentions(
