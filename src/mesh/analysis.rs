@@ -1,14 +1,14 @@
 //! Measuring a mesh: face and vertex normals, planarity, face boundaries and
 //! the naked boundary as polylines.
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::buffers::split_by_offsets;
 use crate::error::Result;
-use crate::mesh::check_tolerance;
 use crate::mesh::topology::Topology;
 use crate::mesh::Mesh;
+use crate::mesh::{check_tolerance, linalg};
 
 /// The unit normal of each face by Newell's method: the sum over its edges
 /// of the cross products of consecutive corners, which is twice the area
@@ -278,13 +278,8 @@ pub fn plane_deviation(points: &[DVec3]) -> f64 {
         return 0.0;
     }
     let centroid = points.iter().sum::<DVec3>() / count as f64;
-    let mut covariance = DMat3::ZERO;
-    for &p in points {
-        let d = p - centroid;
-        covariance += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
-    }
     // The best-fit plane's normal: the direction of least spread.
-    let normal = crate::mesh::linalg::least_spread_direction(covariance);
+    let normal = linalg::least_spread_direction(linalg::covariance(points, centroid));
     points
         .iter()
         .map(|&p| (p - centroid).dot(normal).abs())

@@ -3,6 +3,16 @@
 
 use glam::{DMat3, DVec3};
 
+/// The scatter of `points` about `centre` (the sum of each offset's outer
+/// product with itself), in the points' order: the matrix whose least
+/// eigenvector is their best-fit plane's normal.
+pub(crate) fn covariance(points: &[DVec3], centre: DVec3) -> DMat3 {
+    points.iter().fold(DMat3::ZERO, |m, &p| {
+        let d = p - centre;
+        m + DMat3::from_cols(d * d.x, d * d.y, d * d.z)
+    })
+}
+
 /// Eigenvalues (ascending) and unit eigenvectors of a symmetric 3×3 matrix,
 /// by cyclic Jacobi rotations (exact enough and never fails to converge).
 ///
@@ -164,15 +174,6 @@ mod tests {
         }
     }
 
-    /// The covariance of `points` about their centroid.
-    fn covariance(points: &[DVec3]) -> DMat3 {
-        let centroid = points.iter().sum::<DVec3>() / points.len() as f64;
-        points.iter().fold(DMat3::ZERO, |m, &p| {
-            let d = p - centroid;
-            m + DMat3::from_cols(d * d.x, d * d.y, d * d.z)
-        })
-    }
-
     proptest::proptest! {
         #[test]
         fn eigen_of_best_fit_planes_converges_in_a_few_sweeps(
@@ -186,7 +187,8 @@ mod tests {
                 .into_iter()
                 .map(|(x, y, z)| tilt * DVec3::new(x, y, z) * scale)
                 .collect();
-            let m = covariance(&corners);
+            let centroid = corners.iter().sum::<DVec3>() / corners.len() as f64;
+            let m = covariance(&corners, centroid);
             let (values, vectors, sweeps) = jacobi(m);
             proptest::prop_assert!(sweeps <= 8, "{} sweeps", sweeps);
             for (value, vector) in values.iter().zip(vectors) {

@@ -2,12 +2,12 @@
 
 use std::collections::HashMap;
 
-use glam::{DMat3, DVec3};
+use glam::DVec3;
 
 use crate::error::{Error, Result};
 use crate::mend::weld::{within, CellGrid, CellMap};
 use crate::mesh::analysis::newell_vector;
-use crate::mesh::linalg::symmetric_eigen;
+use crate::mesh::linalg::{covariance, symmetric_eigen};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::Mesh;
 use crate::toolbar::split::Builder;
@@ -219,12 +219,7 @@ fn best_fit_normal(points: &[DVec3], around: &[Vec<u32>]) -> DVec3 {
         return DVec3::Z;
     }
     let centre = live.iter().sum::<DVec3>() / live.len() as f64;
-    let mut covariance = DMat3::ZERO;
-    for p in &live {
-        let d = *p - centre;
-        covariance += DMat3::from_cols(d * d.x, d * d.y, d * d.z);
-    }
-    let (_, vectors) = symmetric_eigen(covariance);
+    let (_, vectors) = symmetric_eigen(covariance(&live, centre));
     let n = vectors[0];
     let largest = n.abs().max_element();
     let axis = if n.x.abs() == largest {
