@@ -23,8 +23,10 @@ use crate::buffers::{
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
 use crate::mesh::{bounding_box_of, check_tolerance, repeated_corner, Mesh};
+use crowded::{close_pair, first_close_pair, Crowded, Group, COMPARED};
 
 mod copies;
+mod crowded;
 pub(crate) use copies::{
     append_triangle_sites, nearby_copies, worth_merging, Copies, PIECE as COPIES_PIECE,
     SAMPLE as COPIES_SAMPLE,
@@ -124,8 +126,11 @@ pub fn join(meshes: &[&Mesh]) -> Result<Mesh> {
 /// other in the vertex order, those copies are merged first, piece by piece
 /// through a hash table, and the cells sort only the distinct positions.
 /// A cell whose vertices all lie within the tolerance of each other merges
-/// without comparing them. The cost is linear in the vertex count unless
-/// many distinct vertices crowd into cells without all being that close.
+/// without comparing them; a crowded cell that is not so is split into
+/// parts that are, and two parts need one close pair to merge, or none when
+/// their boxes lie too far apart. So a tolerance many times the vertices'
+/// spacing (which collapses faces) costs about as much as a small one,
+/// and memory stays linear in the vertex count.
 /// Distances are compared without squaring the coordinates' differences, so
 /// welding means the same near 1e-300 and near 1e300.
 ///
@@ -579,28 +584,50 @@ fn clusters_by<K: CellKey>(
         return Ok(clusters);
     }
 
-    let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
     // A cell whose sites all lie within the tolerance of each other (its
     // box's diagonal is short enough) is one cluster without comparing its
     // pairs, and two such cells need only one close pair to become one.
-    // This keeps crowded cells, down to a tolerance larger than the whole
-    // mesh, linear.
-    let tight: Vec<bool> = (0..cell_keys.len())
-        .into_par_iter()
-        .with_min_len(1024)
-        .map(|k| {
-            let here = cell_sites(k);
-            if here.len() == 1 {
-                return true;
-            }
-            let first = positions[here[0] as usize];
-            let (lo, hi) = here.iter().fold((first, first), |(lo, hi), &v| {
-                let p = positions[v as usize];
-                (lo.min(p), hi.max(p))
+    // The other cells are split into groups that are (`crowded.rs`). This
+    // keeps crowded cells, down to a tolerance larger than the whole mesh,
+    // near linear in time and linear in memory.
+    let crowded = Crowded::split(&mut sites, &cell_starts, positions, tolerance);
+    let tight = &crowded.tight;
+    let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
+    let group_sites = |group: &Group| &sites[group.start as usize..group.end as usize];
+    // Two groups: at most one close pair when both are tight, else every one.
+    let join_groups = |a: &Group, b: &Group, pairs: &mut Vec<(u32, u32)>| {
+        if a.apart(b, tolerance) {
+            return;
+        }
+        let both_tight = a.tight && b.tight;
+        if both_tight && a.all_within(b, tolerance) {
+            pairs.push((sites[a.start as usize], sites[b.start as usize]));
+            return;
+        }
+        if both_tight {
+            // Large groups are ruled out or in box by box, not pair by pair.
+            let (here, there) = (group_sites(a), group_sites(b));
+            pairs.extend(match here.len() * there.len() <= COMPARED {
+                true => first_close_pair(here, there, positions, tolerance),
+                false => {
+                    let (mut here, mut there) = (here.to_vec(), there.to_vec());
+                    close_pair(&mut here, &mut there, positions, tolerance)
+                }
             });
-            within(lo, hi, tolerance)
-        })
-        .collect();
+            return;
+        }
+        for &u in group_sites(a) {
+            let pu = positions[u as usize];
+            for &v in group_sites(b) {
+                if within(pu, positions[v as usize], tolerance) {
+                    pairs.push((u, v));
+                    if both_tight {
+                        return;
+                    }
+                }
+            }
+        }
+    };
     // The pairs to join, blocks of cells on all threads (the clusters do not
     // depend on the order the pairs are joined in), then joined on one.
     // The cells are sorted, and so are the cells one row away from
@@ -612,18 +639,32 @@ fn clusters_by<K: CellKey>(
         .map(|block| {
             let cells = block * CELLS..((block + 1) * CELLS).min(cell_keys.len());
             let mut pairs = Vec::new();
+            let chain = |sites: &[u32], pairs: &mut Vec<(u32, u32)>| {
+                pairs.extend(sites[1..].iter().map(|&b| (sites[0], b)));
+            };
             for k in cells.clone() {
-                let here = cell_sites(k);
                 if tight[k] {
-                    pairs.extend(here[1..].iter().map(|&b| (here[0], b)));
-                } else {
-                    for (i, &a) in here.iter().enumerate() {
-                        let pa = positions[a as usize];
-                        for &b in &here[i + 1..] {
-                            if within(pa, positions[b as usize], tolerance) {
-                                pairs.push((a, b));
+                    chain(cell_sites(k), &mut pairs);
+                    continue;
+                }
+                let groups = crowded.groups(k);
+                for (i, group) in groups.iter().enumerate() {
+                    match group.tight {
+                        true => chain(group_sites(group), &mut pairs),
+                        false => {
+                            let here = group_sites(group);
+                            for (i, &a) in here.iter().enumerate() {
+                                let pa = positions[a as usize];
+                                for &b in &here[i + 1..] {
+                                    if within(pa, positions[b as usize], tolerance) {
+                                        pairs.push((a, b));
+                                    }
+                                }
                             }
                         }
+                    }
+                    for other in &groups[i + 1..] {
+                        join_groups(group, other, &mut pairs);
                     }
                 }
             }
@@ -632,17 +673,41 @@ fn clusters_by<K: CellKey>(
             // of four rows. A row's three cells are consecutive in the
             // cells' order, so one walk finds all three.
             let mut close = |k: usize, other: usize| {
-                let (here, there) = (cell_sites(k), cell_sites(other));
+                if !(tight[k] && tight[other]) {
+                    // A tight cell beside a crowded one: one group, its box unbounded.
+                    let whole = |k: usize| Group {
+                        start: cell_starts[k],
+                        end: cell_starts[k + 1],
+                        low: DVec3::NEG_INFINITY,
+                        high: DVec3::INFINITY,
+                        tight: true,
+                    };
+                    let (one, two) = ([whole(k)], [whole(other)]);
+                    let here = if tight[k] {
+                        &one[..]
+                    } else {
+                        crowded.groups(k)
+                    };
+                    let there = if tight[other] {
+                        &two[..]
+                    } else {
+                        crowded.groups(other)
+                    };
+                    for a in here {
+                        for b in there {
+                            join_groups(a, b, &mut pairs);
+                        }
+                    }
+                    return;
+                }
                 // Two tight cells are each one cluster: one close pair joins them.
-                let both_tight = tight[k] && tight[other];
+                let (here, there) = (cell_sites(k), cell_sites(other));
                 for &a in here {
                     let pa = positions[a as usize];
                     for &b in there {
                         if within(pa, positions[b as usize], tolerance) {
                             pairs.push((a, b));
-                            if both_tight {
-                                return;
-                            }
+                            return;
                         }
                     }
                 }

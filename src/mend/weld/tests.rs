@@ -386,6 +386,17 @@ fn clusters_are_those_of_every_pair_compared() {
             }
         }
     }
+    let (expected, count) = every_pair_labels(&positions, tolerance);
+    let [(packed, _), (plain, _)] = packed_and_plain_labels(&positions, tolerance, grid);
+    assert_eq!(packed, expected);
+    assert_eq!(plain, expected);
+    // The planted pairs merged, and far from everything did.
+    let merged = positions.len() - count;
+    assert!(merged >= 26 && merged < positions.len() / 2, "{merged}");
+}
+
+/// The clusters of `positions` found by comparing every pair.
+fn every_pair_labels(positions: &[DVec3], tolerance: f64) -> (Vec<u32>, usize) {
     let mut every_pair = UnionFind::new(positions.len());
     for i in 0..positions.len() {
         for j in i + 1..positions.len() {
@@ -394,13 +405,49 @@ fn clusters_are_those_of_every_pair_compared() {
             }
         }
     }
-    let (expected, count) = every_pair.into_labels();
-    let [(packed, _), (plain, _)] = packed_and_plain_labels(&positions, tolerance, grid);
-    assert_eq!(packed, expected);
-    assert_eq!(plain, expected);
-    // The planted pairs merged, and far from everything did.
-    let merged = positions.len() - count;
-    assert!(merged >= 26 && merged < positions.len() / 2, "{merged}");
+    every_pair.into_labels()
+}
+
+#[test]
+fn crowded_cells_cluster_as_every_pair_compared() {
+    // Tolerances many times the spacing: blobs of hundreds of points,
+    // the nearest points of neighbouring blobs just within or just beyond
+    // the tolerance; and two dense sheets a little more, and a little less,
+    // than the tolerance apart.
+    let mut unit = units(0x6a09_e667_f3bc_c908);
+    let tolerance = 0.05;
+    let mut cases: Vec<Vec<DVec3>> = Vec::new();
+    for spread in [0.02, 0.08, 0.3] {
+        let mut positions = Vec::new();
+        for blob in 0..12 {
+            let centre = DVec3::new((blob % 4) as f64 * 0.11, (blob / 4) as f64 * 0.13, 0.0);
+            for _ in 0..150 {
+                let d = DVec3::new(unit() - 0.5, unit() - 0.5, unit() - 0.5);
+                positions.push(centre + d * spread);
+            }
+        }
+        cases.push(positions);
+    }
+    for gap in [tolerance * 0.98, tolerance * 1.02] {
+        let sheet = |z: f64, unit: &mut dyn FnMut() -> f64| -> Vec<DVec3> {
+            (0..900)
+                .map(|_| DVec3::new(unit() * 0.4, unit() * 0.4, z))
+                .collect()
+        };
+        cases.push([sheet(0.0, &mut unit), sheet(gap, &mut unit)].concat());
+    }
+    let mut counts = Vec::new();
+    for (case, positions) in cases.iter().enumerate() {
+        let grid = CellGrid::new(positions.iter().copied(), tolerance);
+        let (expected, count) = every_pair_labels(positions, tolerance);
+        let [(packed, _), (plain, _)] = packed_and_plain_labels(positions, tolerance, grid);
+        assert_eq!(packed, expected, "case {case}");
+        assert_eq!(plain, expected, "case {case}");
+        counts.push(count);
+    }
+    // Blobs that stay apart and blobs that join; sheets joined and apart.
+    assert_eq!([counts[0], counts[3], counts[4]], [12, 1, 2], "{counts:?}");
+    assert!(counts[1] < 12, "{counts:?}");
 }
 
 #[test]
