@@ -120,7 +120,7 @@ pub fn repair_t_nodes(mesh: &Mesh, tolerance: f64) -> Result<(Mesh, usize)> {
     if nodes.is_empty() {
         return Ok((mesh.clone(), 0));
     }
-    let (face_sizes, face_indices, inserted) = faces_with_nodes_inserted(mesh, &nodes)?;
+    let (face_sizes, face_indices, inserted) = faces_with_nodes_inserted(mesh, &nodes, MANY_NODES)?;
     Ok((
         Mesh::from_valid_parts(mesh.positions().to_vec(), face_sizes, face_indices),
         inserted,
@@ -150,7 +150,8 @@ pub fn repair_t_nodes_owned(mesh: Mesh, tolerance: f64) -> Result<TNodeRepair> {
     let (mesh, inserted) = if nodes.is_empty() {
         (mesh, 0)
     } else {
-        let (face_sizes, face_indices, inserted) = faces_with_nodes_inserted(&mesh, &nodes)?;
+        let (face_sizes, face_indices, inserted) =
+            faces_with_nodes_inserted(&mesh, &nodes, MANY_NODES)?;
         let (positions, _, _) = mesh.into_parts();
         (
             Mesh::from_valid_parts(positions, face_sizes, face_indices),
@@ -164,11 +165,16 @@ pub fn repair_t_nodes_owned(mesh: Mesh, tolerance: f64) -> Result<TNodeRepair> {
     })
 }
 
+/// Nodes on one face past which its vertices are looked up in a set.
+const MANY_NODES: usize = 32;
+
 /// The face sizes and corners of `mesh` with each of `nodes` (sorted by
-/// corner and parameter) inserted after its corner, and how many were.
+/// corner and parameter) inserted after its corner, and how many were;
+/// faces with more than `many_nodes` look their vertices up in a set.
 fn faces_with_nodes_inserted(
     mesh: &Mesh,
     nodes: &[(u32, TNode)],
+    many_nodes: usize,
 ) -> Result<(Vec<u32>, Vec<u32>, usize)> {
     let corners = mesh.face_indices();
     let mut face_sizes = try_vec::<u32>(mesh.face_count(), "the repaired face sizes")?;
@@ -176,15 +182,28 @@ fn faces_with_nodes_inserted(
         try_vec::<u32>(corners.len() + nodes.len(), "the repaired face indices")?;
     let mut inserted = 0;
     let mut next = 0;
+    // The vertices a face with many nodes holds so far: a long edge can
+    // take a million, which searching the face for each would square.
+    let mut held = std::collections::HashSet::new();
     for (f, w) in mesh.face_offsets().windows(2).enumerate() {
         let start = face_indices.len();
         let face = &corners[w[0] as usize..w[1] as usize];
+        let face_nodes = nodes[next..].partition_point(|node| node.0 < w[1]);
+        let many = face_nodes > many_nodes;
+        if many {
+            held.clear();
+            held.extend(face.iter().copied());
+        }
         for c in w[0]..w[1] {
             face_indices.push(corners[c as usize]);
             while next < nodes.len() && nodes[next].0 == c {
                 let v = nodes[next].1.vertex;
                 debug_assert_eq!(nodes[next].1.face as usize, f);
-                if !face.contains(&v) && !face_indices[start..].contains(&v) {
+                let new = match many {
+                    true => held.insert(v),
+                    false => !face.contains(&v) && !face_indices[start..].contains(&v),
+                };
+                if new {
                     face_indices.push(v);
                     inserted += 1;
                 }
@@ -948,6 +967,45 @@ mod tests {
         let topology = Topology::new(&repaired);
         let shared = topology.find_edge(4, 2).unwrap();
         assert_eq!(topology.edge_face_count(shared), 2);
+    }
+
+    /// A sliver of a triangle whose two long edges both pass within the
+    /// tolerance of the top vertices of a strip of 200 quads: each vertex
+    /// is a node of both edges, and is inserted once, wherever the face's
+    /// vertices are looked up.
+    #[test]
+    fn many_nodes_on_one_face_are_inserted_once_each() {
+        let n = 200;
+        let mut positions: Vec<DVec3> = (0..=n)
+            .flat_map(|i| {
+                let x = i as f64 / n as f64;
+                [DVec3::new(x, 0.0, 0.0), DVec3::new(x, -0.01, 0.0)]
+            })
+            .collect();
+        let mut faces: Vec<Vec<u32>> = (0..n as u32)
+            .map(|i| vec![2 * i + 1, 2 * i + 3, 2 * i + 2, 2 * i])
+            .collect();
+        let base = positions.len() as u32;
+        positions.extend([
+            DVec3::new(0.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0, 0.0),
+            DVec3::new(1.0, 0.0005, 0.0),
+        ]);
+        faces.push(vec![base, base + 1, base + 2]);
+        let mesh = Mesh::from_polygons(positions, faces).unwrap();
+        let nodes = find_with_corners(&mesh, 1e-3).unwrap();
+        let on_sliver = nodes.iter().filter(|node| node.1.face == n as u32).count();
+        assert!(on_sliver > 2 * (n - 10), "{on_sliver} nodes");
+        let in_set = faces_with_nodes_inserted(&mesh, &nodes, 0).unwrap();
+        let searched = faces_with_nodes_inserted(&mesh, &nodes, usize::MAX).unwrap();
+        assert_eq!(in_set, searched);
+        let (sizes, indices, inserted) = in_set;
+        let sliver = &indices[indices.len() - sizes[n] as usize..];
+        let mut distinct = sliver.to_vec();
+        distinct.sort_unstable();
+        distinct.dedup();
+        assert_eq!(distinct.len(), sliver.len(), "a vertex inserted twice");
+        assert_eq!(inserted, n - 1 + nodes.len() - on_sliver);
     }
 
     #[test]
