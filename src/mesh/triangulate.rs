@@ -10,6 +10,8 @@ use crate::error::Result;
 use crate::mesh::analysis::newell_vector;
 use crate::mesh::Mesh;
 
+mod large_polygons;
+
 /// A triangulated mesh and the input face each triangle comes from.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Triangulation {
@@ -107,6 +109,12 @@ impl EarClipper {
             .fold(0.0f64, |m, p| m.max(p.abs().max_element()))
             .max(f64::MIN_POSITIVE);
         let epsilon = 1e-12 * scale * scale;
+        if face.len() >= large_polygons::LARGE {
+            large_polygons::clip(&self.points, epsilon, |corners| {
+                out.extend(corners.map(|k| face[k]));
+            });
+            return;
+        }
 
         while self.remaining.len() > 3 {
             let n = self.remaining.len();
