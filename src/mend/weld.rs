@@ -594,7 +594,9 @@ fn clusters_by<K: CellKey>(
     let tight = &crowded.tight;
     let cell_sites = |k: usize| &sites[cell_starts[k] as usize..cell_starts[k + 1] as usize];
     let group_sites = |group: &Group| &sites[group.start as usize..group.end as usize];
-    // Two groups: at most one close pair when both are tight, else every one.
+    // Two groups: at most one close pair when both are tight, else every
+    // one (a group that could not be split: rounding at the ends of the
+    // f64 range).
     let join_groups = |a: &Group, b: &Group, pairs: &mut Vec<(u32, u32)>| {
         if a.apart(b, tolerance) {
             return;
@@ -621,9 +623,6 @@ fn clusters_by<K: CellKey>(
             for &v in group_sites(b) {
                 if within(pu, positions[v as usize], tolerance) {
                     pairs.push((u, v));
-                    if both_tight {
-                        return;
-                    }
                 }
             }
         }
@@ -653,9 +652,9 @@ fn clusters_by<K: CellKey>(
                         true => chain(group_sites(group), &mut pairs),
                         false => {
                             let here = group_sites(group);
-                            for (i, &a) in here.iter().enumerate() {
+                            for (j, &a) in here.iter().enumerate() {
                                 let pa = positions[a as usize];
-                                for &b in &here[i + 1..] {
+                                for &b in &here[j + 1..] {
                                     if within(pa, positions[b as usize], tolerance) {
                                         pairs.push((a, b));
                                     }
@@ -673,42 +672,35 @@ fn clusters_by<K: CellKey>(
             // of four rows. A row's three cells are consecutive in the
             // cells' order, so one walk finds all three.
             let mut close = |k: usize, other: usize| {
-                if !(tight[k] && tight[other]) {
-                    // A tight cell beside a crowded one: one group, its box unbounded.
-                    let whole = |k: usize| Group {
-                        start: cell_starts[k],
-                        end: cell_starts[k + 1],
-                        low: DVec3::NEG_INFINITY,
-                        high: DVec3::INFINITY,
-                        tight: true,
-                    };
-                    let (one, two) = ([whole(k)], [whole(other)]);
-                    let here = if tight[k] {
-                        &one[..]
-                    } else {
-                        crowded.groups(k)
-                    };
-                    let there = if tight[other] {
-                        &two[..]
-                    } else {
-                        crowded.groups(other)
-                    };
-                    for a in here {
-                        for b in there {
-                            join_groups(a, b, &mut pairs);
-                        }
-                    }
+                let (here, there) = (cell_sites(k), cell_sites(other));
+                // Two tight cells are each one cluster: one close pair joins them.
+                if tight[k] && tight[other] && here.len() * there.len() <= COMPARED {
+                    pairs.extend(first_close_pair(here, there, positions, tolerance));
                     return;
                 }
-                // Two tight cells are each one cluster: one close pair joins them.
-                let (here, there) = (cell_sites(k), cell_sites(other));
-                for &a in here {
-                    let pa = positions[a as usize];
-                    for &b in there {
-                        if within(pa, positions[b as usize], tolerance) {
-                            pairs.push((a, b));
-                            return;
-                        }
+                // A crowded cell, or two tight cells of many sites: by groups,
+                // a tight cell's its own (its box left unbounded).
+                let whole = |k: usize| Group {
+                    start: cell_starts[k],
+                    end: cell_starts[k + 1],
+                    low: DVec3::NEG_INFINITY,
+                    high: DVec3::INFINITY,
+                    tight: true,
+                };
+                let (one, two) = ([whole(k)], [whole(other)]);
+                let here = if tight[k] {
+                    &one[..]
+                } else {
+                    crowded.groups(k)
+                };
+                let there = if tight[other] {
+                    &two[..]
+                } else {
+                    crowded.groups(other)
+                };
+                for a in here {
+                    for b in there {
+                        join_groups(a, b, &mut pairs);
                     }
                 }
             };
