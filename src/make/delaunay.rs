@@ -6,9 +6,7 @@
 //! triangulated terrain keeps its heights.
 
 use glam::DVec3;
-use spade::{
-    DelaunayTriangulation, HierarchyHintGenerator, InsertionError, Point2, Triangulation,
-};
+use spade::{DelaunayTriangulation, HierarchyHintGenerator, InsertionError, Point2, Triangulation};
 
 use crate::buffers::try_vec;
 use crate::error::{Error, Result, MAX_ELEMENTS};

@@ -165,6 +165,16 @@ pub fn weld_owned(mesh: Mesh, tolerance: f64) -> Result<(Mesh, WeldReport)> {
     clusters.apply(positions, face_sizes, face_indices)
 }
 
+/// Each position's cluster at `tolerance` (what [`weld`] merges), numbered
+/// in order of their first position, and how many there are.
+///
+/// # Errors
+/// As [`weld`].
+pub(crate) fn position_clusters(positions: &[DVec3], tolerance: f64) -> Result<(Vec<u32>, usize)> {
+    let clusters = Clusters::of(positions, tolerance)?;
+    Ok((clusters.cluster_of, clusters.count))
+}
+
 /// The clusters of a weld: each vertex's, numbered in order of their first
 /// vertex, and how many there are.
 struct Clusters {

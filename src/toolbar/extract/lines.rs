@@ -5,10 +5,9 @@ use std::collections::HashMap;
 use glam::DVec3;
 
 use crate::error::{Error, Result};
-use crate::mend::weld::{within, CellGrid, CellMap};
+use crate::mend::weld::position_clusters;
 use crate::mesh::analysis::newell_vector;
 use crate::mesh::linalg::{covariance, symmetric_eigen};
-use crate::mesh::topology::UnionFind;
 use crate::mesh::Mesh;
 use crate::toolbar::split::Builder;
 
@@ -62,7 +61,7 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
             "segment {j} has a non-finite coordinate"
         )));
     }
-    let (points, edges) = weld(segments, tolerance);
+    let (points, edges) = weld(segments, tolerance)?;
     let neighbours = prune(points.len(), &edges);
     let normal = best_fit_normal(&points, &neighbours);
     let u = normal.any_orthonormal_vector();
@@ -81,6 +80,19 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
             around
         })
         .collect();
+    // Where each point stands around each of its neighbours: the walk
+    // turns at b from a without searching b's neighbours (a point with
+    // thousands of segments would square the walk).
+    let place: HashMap<(u32, u32), u32> = sorted
+        .iter()
+        .enumerate()
+        .flat_map(|(b, around)| {
+            around
+                .iter()
+                .enumerate()
+                .map(move |(k, &a)| ((b as u32, a), k as u32))
+        })
+        .collect();
     let mut used: HashMap<(u32, u32), ()> = HashMap::new();
     let mut faces: Vec<Vec<u32>> = Vec::new();
     for (start, around) in sorted.iter().enumerate() {
@@ -93,7 +105,7 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
             while used.insert((a, b), ()).is_none() {
                 cycle.push(a);
                 let at_b = &sorted[b as usize];
-                let k = at_b.iter().position(|&x| x == a).unwrap_or(0);
+                let k = place.get(&(b, a)).map_or(0, |&k| k as usize);
                 let next = at_b[(k + at_b.len() - 1) % at_b.len()];
                 (a, b) = (b, next);
             }
@@ -140,36 +152,12 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
     out.finish()
 }
 
-/// Welds endpoints within `tolerance`; returns the points (cluster averages,
-/// in order of first appearance) and the unique edges between them.
-fn weld(segments: &[[DVec3; 2]], tolerance: f64) -> (Vec<DVec3>, Vec<[u32; 2]>) {
+/// Welds endpoints within `tolerance` (as the weld does, crowded ends
+/// included); returns the points (cluster averages, in order of first
+/// appearance) and the unique edges between them.
+fn weld(segments: &[[DVec3; 2]], tolerance: f64) -> Result<(Vec<DVec3>, Vec<[u32; 2]>)> {
     let ends: Vec<DVec3> = segments.iter().flat_map(|s| [s[0], s[1]]).collect();
-    let mut clusters = UnionFind::new(ends.len());
-    // The weld's grid: cells at least `tolerance` wide, so every end within
-    // it lies in one of the 27 cells around.
-    let grid = CellGrid::new(ends.iter().copied(), tolerance);
-    let mut cells: CellMap<Vec<u32>> = CellMap::default();
-    for (i, &p) in ends.iter().enumerate() {
-        let centre = grid.cell(p);
-        for dx in -1..=1 {
-            for dy in -1..=1 {
-                for dz in -1..=1 {
-                    for &j in cells
-                        .get(&centre.offset([dx, dy, dz]))
-                        .into_iter()
-                        .flatten()
-                    {
-                        if within(ends[j as usize], p, tolerance) {
-                            clusters.union(i as u32, j);
-                        }
-                    }
-                }
-            }
-        }
-        cells.entry(centre).or_default().push(i as u32);
-    }
-    // Clusters numbered in order of their first end.
-    let (point_of, count) = clusters.into_labels();
+    let (point_of, count) = position_clusters(&ends, tolerance)?;
     let (mut sums, mut counts) = (vec![DVec3::ZERO; count], vec![0.0; count]);
     for (&p, &k) in ends.iter().zip(&point_of) {
         sums[k as usize] += p;
@@ -183,7 +171,7 @@ fn weld(segments: &[[DVec3; 2]], tolerance: f64) -> (Vec<DVec3>, Vec<[u32; 2]>) 
         .collect();
     edges.sort_unstable();
     edges.dedup();
-    (points, edges)
+    Ok((points, edges))
 }
 
 /// Adjacency lists after removing dangling edges, repeatedly.
@@ -247,17 +235,17 @@ mod tests {
             [DVec3::X + DVec3::splat(1e-4), DVec3::Y],
             [DVec3::Y, DVec3::Y * (1.0 + 1e-4)],
         ];
-        let (points, edges) = weld(&segments, 1e-3);
+        let (points, edges) = weld(&segments, 1e-3).unwrap();
         assert_eq!(points.len(), 3);
         assert_eq!(edges, [[0, 1], [1, 2]]);
-        let (points, _) = weld(&segments, 0.0);
+        let (points, _) = weld(&segments, 0.0).unwrap();
         assert_eq!(points.len(), 5); // only the two identical ends of Y weld
     }
 
     #[test]
     fn weld_at_tolerance_zero_joins_signed_zeros() {
         let segments = [[DVec3::ZERO, DVec3::X], [DVec3::NEG_Y, -DVec3::ZERO]];
-        let (points, edges) = weld(&segments, 0.0);
+        let (points, edges) = weld(&segments, 0.0).unwrap();
         assert_eq!(points.len(), 3);
         assert_eq!(edges, [[0, 1], [0, 2]]);
     }
@@ -266,13 +254,13 @@ mod tests {
     fn weld_measures_tiny_and_huge_distances_without_underflow() {
         // 1e-300 apart: the squared distance underflows to 0.
         let tiny = [[DVec3::ZERO, DVec3::X], [DVec3::splat(1e-300), DVec3::Y]];
-        assert_eq!(weld(&tiny, 1e-310).0.len(), 4);
-        assert_eq!(weld(&tiny, 2e-300).0.len(), 3);
+        assert_eq!(weld(&tiny, 1e-310).unwrap().0.len(), 4);
+        assert_eq!(weld(&tiny, 2e-300).unwrap().0.len(), 3);
         // Near 1e300 the squares overflow; 0.5e300 apart is within 1e300.
         let (a, b) = (DVec3::splat(1e300), DVec3::new(1.5e300, 1e300, 1e300));
         let huge = [[a, DVec3::ZERO], [b, DVec3::ZERO]];
-        assert_eq!(weld(&huge, 0.4e300).0.len(), 3);
-        assert_eq!(weld(&huge, 1e300).0.len(), 2);
+        assert_eq!(weld(&huge, 0.4e300).unwrap().0.len(), 3);
+        assert_eq!(weld(&huge, 1e300).unwrap().0.len(), 2);
     }
 
     #[test]
@@ -281,6 +269,31 @@ mod tests {
         let around = prune(5, &[[0, 1], [1, 2], [0, 2], [2, 3], [3, 4]]);
         assert!(around[3].is_empty() && around[4].is_empty());
         assert_eq!(around[2].len(), 2);
+    }
+
+    /// A wheel of 2,000 spokes whose inner ends lie scattered within the
+    /// tolerance of the hub, and a rim: one hub of valence 2,000, and a
+    /// triangle between each two spokes.
+    #[test]
+    fn a_wheel_of_many_spokes_gives_a_triangle_between_each_two() {
+        let n = 2000;
+        let rim = |k: usize| {
+            let (y, x) = (std::f64::consts::TAU * k as f64 / n as f64).sin_cos();
+            DVec3::new(x, y, 0.0)
+        };
+        let mut segments = Vec::new();
+        for k in 0..n {
+            let jitter = DVec3::new((k % 7) as f64, (k % 11) as f64, 0.0) * 1e-5;
+            segments.push([jitter, rim(k)]);
+            segments.push([rim(k), rim(k + 1)]);
+        }
+        let mesh = mesh_from_lines(&segments, 1e-3, 3).unwrap();
+        assert_eq!((mesh.vertex_count(), mesh.face_count()), (n + 1, n));
+        // Every triangle has the hub for a corner.
+        let hub = (0..mesh.vertex_count())
+            .find(|&v| mesh.positions()[v].length() < 1e-3)
+            .unwrap() as u32;
+        assert!(mesh.faces().all(|f| f.contains(&hub)));
     }
 
     #[test]
