@@ -47,6 +47,8 @@ pub mod make;
 pub mod mend;
 pub mod mesh;
 pub mod subdivide;
+#[cfg(test)]
+mod test_random;
 pub mod toolbar;
 
 #[allow(unsafe_code)]

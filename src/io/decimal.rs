@@ -315,13 +315,7 @@ mod tests {
         }
         // Every exponent and many mantissas: random bit patterns, and
         // decimals of a few digits as meshes hold them.
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::test_random::words(0x9e37_79b9_7f4a_7c15u64);
         for _ in 0..400_000 {
             let value = f64::from_bits(next());
             assert_eq!(pushed(value), format!("{value}"), "{value:e}");
@@ -360,11 +354,9 @@ mod tests {
             let first = 10u64.pow(digits);
             values.extend([first - 1, first, first + 1, first + first / 2 + 42]);
         }
-        let mut state = 0x2545_f491_4f6c_dd1du64;
+        let mut next = crate::test_random::words(0x2545_f491_4f6c_dd1du64);
         for _ in 0..100_000 {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
+            let state = next();
             values.extend([state, state >> (state % 64), state % 10_000_000]);
         }
         for value in values {

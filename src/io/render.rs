@@ -737,6 +737,7 @@ fn ceil_of_non_negative(value: f64) -> usize {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_random::units;
 
     /// Triangles of every size from a hundredth of a sample to most of the
     /// picture, thin ones, and ones partly or wholly outside it: drawn
@@ -745,13 +746,7 @@ mod tests {
     #[test]
     fn covered_samples_leave_out_no_sample_a_triangle_paints() {
         let (w, h) = (37, 23);
-        let mut state = 0x9e37_79b9_7f4a_7c15u64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = units(0x9e37_79b9_7f4a_7c15u64);
         let (mut painted, mut skipped) = (0, 0);
         for case in 0..20_000 {
             let size = [0.01, 0.3, 1.0, 2.5, 12.0, 40.0][case % 6];
@@ -814,13 +809,7 @@ mod tests {
     #[test]
     fn row_spans_leave_out_no_sample_a_sliver_paints() {
         let (w, h) = (61, 47);
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = move || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = units(0x2545_f491_4f6c_dd1du64);
         let mut painted = 0;
         for case in 0..40_000 {
             let centre = (next() * 70.0 - 5.0, next() * 55.0 - 4.0, 1.0 + next());

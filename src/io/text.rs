@@ -411,13 +411,7 @@ mod tests {
         .map(|s| s.to_string())
         .collect();
         // Pseudo-random decimals of every length and number of decimals.
-        let mut state = 0x2545_f491_4f6c_dd1du64;
-        let mut next = || {
-            state ^= state << 13;
-            state ^= state >> 7;
-            state ^= state << 17;
-            state
-        };
+        let mut next = crate::test_random::words(0x2545_f491_4f6c_dd1du64);
         for _ in 0..200_000 {
             let digits = 1 + next() % 24;
             let mut word = String::new();

@@ -250,19 +250,14 @@ fn split_into_groups(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_random::units;
 
     /// Sites scattered through a cell as wide as the tolerance split into
     /// tight groups that hold each site once.
     #[test]
     fn groups_are_tight_and_hold_every_site_once() {
         let tolerance = 0.25;
-        let mut state = 0x853c_49e6_748f_ea9bu64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = units(0x853c_49e6_748f_ea9bu64);
         let positions: Vec<DVec3> = (0..500)
             .map(|_| DVec3::new(next(), next(), next()) * tolerance + 3.0)
             .collect();
@@ -301,13 +296,7 @@ mod tests {
     /// just beyond the tolerance.
     #[test]
     fn close_pair_is_found_when_and_only_when_there_is_one() {
-        let mut state = 0x2b99_2ddf_a232_49d6u64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = units(0x2b99_2ddf_a232_49d6u64);
         for case in 0..60 {
             let count = [3, 40, 700][case % 3];
             let shift = DVec3::new(1.0 + next(), next() - 0.5, next() - 0.5);

@@ -1,6 +1,7 @@
 use super::*;
 use crate::mesh::shapes;
 use crate::mesh::MeshOptions;
+use crate::test_random::{units, words};
 
 fn mesh(positions: &[[f64; 3]], faces: &[&[u32]]) -> Mesh {
     Mesh::from_polygons(
@@ -302,16 +303,6 @@ fn a_face_soup_welds_back_to_its_mesh_in_order_of_first_use() {
     assert_eq!(report.removed_face_count, 0);
 }
 
-/// Repeatable numbers in [0, 1) from `seed` (xorshift).
-fn units(mut state: u64) -> impl FnMut() -> f64 {
-    move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    }
-}
-
 /// The clusters of `positions` as labels, found with the cells of `grid`
 /// packed into one word, then as they are.
 fn packed_and_plain_labels(
@@ -545,13 +536,8 @@ fn faces_over_clusters_in_blocks_match_one_face_after_another() {
     // Several blocks of faces of 3 to 40 corners over few clusters: faces
     // collapse in every block, so each block slides down over the gaps,
     // and the large faces drop their repeats through the set.
-    let mut state = 0x2545_F491_4F6C_DD1Du64;
-    let mut next = |n: u64| {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state % n
-    };
+    let mut word = words(0x2545_F491_4F6C_DD1Du64);
+    let mut next = |n: u64| word() % n;
     let vertex_count = 5000;
     for cluster_count in [3, 40, 5000] {
         let cluster_of: Vec<u32> = (0..vertex_count)

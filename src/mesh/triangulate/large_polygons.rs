@@ -231,6 +231,7 @@ fn x_extent_within(p: DVec2, q: DVec2, low: f64, high: f64) -> Option<(f64, f64)
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::test_random::units;
 
     fn shoelace(points: &[DVec2]) -> f64 {
         let n = points.len();
@@ -303,13 +304,7 @@ mod tests {
 
     #[test]
     fn large_polygons_are_tiled() {
-        let mut state = 0x1f83_d9ab_fb41_bd6bu64;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut next = units(0x1f83_d9ab_fb41_bd6bu64);
         let tau = std::f64::consts::TAU;
         // A star of random spikes.
         let n = 3000;
