@@ -22,7 +22,7 @@ use crate::buffers::try_vec;
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::make::delaunay::project_and_triangulate;
 use crate::make::plane::{check_points, Plane};
-use crate::mesh::Mesh;
+use crate::mesh::{bounds_2d, Mesh};
 
 /// Number of sides of the polygon that stands for the circle of a given
 /// radius: its corners lie on the circle, so every cell vertex stays within
@@ -200,7 +200,7 @@ impl Boundary {
         }
         check_simple(&ring)?;
         let area = signed_area(&ring);
-        let (lo, hi) = bounds(&ring);
+        let (lo, hi) = bounds_2d(&ring);
         let scale = (hi - lo).max_element();
         if area.abs() <= scale * scale * 1e-14 {
             return Err(Error::DegenerateInput(
@@ -232,7 +232,7 @@ impl Boundary {
         let (lo, hi) = if sites.is_empty() {
             (DVec2::ZERO, DVec2::ZERO)
         } else {
-            bounds(sites)
+            bounds_2d(sites)
         };
         let size = (hi - lo).max_element();
         let margin = if size > 0.0 {
@@ -329,13 +329,6 @@ fn to_geo(ring: &[DVec2]) -> Polygon<f64> {
 
 fn rectangle(lo: DVec2, hi: DVec2) -> Vec<DVec2> {
     vec![lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)]
-}
-
-fn bounds(points: &[DVec2]) -> (DVec2, DVec2) {
-    points.iter().fold(
-        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-        |(lo, hi), &p| (lo.min(p), hi.max(p)),
-    )
 }
 
 fn circle_corner(center: DVec2, radius: f64, k: usize) -> DVec2 {

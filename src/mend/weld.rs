@@ -22,7 +22,7 @@ use crate::buffers::{
 };
 use crate::error::{Error, Result, MAX_ELEMENTS};
 use crate::mesh::topology::UnionFind;
-use crate::mesh::{bounding_box_of, check_tolerance, repeated_corner, Mesh};
+use crate::mesh::{bounding_box_of, check_tolerance, floor_to_i64, repeated_corner, Mesh};
 use crowded::{close_pair, first_close_pair, Crowded, Group, COMPARED};
 
 mod copies;
@@ -986,15 +986,6 @@ impl CellGrid {
         let c = p / self.size;
         Cell([c.x, c.y, c.z].map(floor_to_i64))
     }
-}
-
-/// `q.floor() as i64`, without the call to `floor` that the x86-64
-/// baseline (no SSE4.1 rounding instruction) makes: the truncation, one
-/// less when it rounded up.
-#[inline]
-fn floor_to_i64(q: f64) -> i64 {
-    let truncated = q as i64;
-    truncated.saturating_sub(i64::from(truncated as f64 > q))
 }
 
 #[cfg(test)]

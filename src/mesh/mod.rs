@@ -18,7 +18,7 @@ pub mod triangulate;
 
 use std::sync::OnceLock;
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use rayon::prelude::*;
 
 use self::buffer::Buffer;
@@ -671,6 +671,24 @@ pub(crate) fn repeated_corner(corners: &[u32]) -> Option<(usize, usize)> {
         .filter(|w| w[0].0 == w[1].0)
         .map(|w| (w[0].1.min(w[1].1), w[0].1.max(w[1].1)))
         .min_by_key(|&(_, second)| second)
+}
+
+/// `q.floor() as i64`, without the call to `floor` that the x86-64
+/// baseline (no SSE4.1 rounding instruction) makes: the truncation, one
+/// less when it rounded up.
+#[inline]
+pub(crate) fn floor_to_i64(q: f64) -> i64 {
+    let truncated = q as i64;
+    truncated.saturating_sub(i64::from(truncated as f64 > q))
+}
+
+/// The bounding box `(min, max)` of points in a plane; for none, the
+/// empty box from +∞ to −∞.
+pub(crate) fn bounds_2d(points: &[DVec2]) -> (DVec2, DVec2) {
+    points.iter().fold(
+        (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
+        |(low, high), &p| (low.min(p), high.max(p)),
+    )
 }
 
 /// The axis-aligned bounding box `(min, max)` of `points`, or `None` for

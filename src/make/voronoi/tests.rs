@@ -106,7 +106,7 @@ fn default_boundary_is_tiled_by_cells_that_contain_their_sites() {
         let cells = voronoi(&lift(&sites), &Plane::xy(), None, None).unwrap();
         assert_eq!(cells.len(), 60);
         assert!(cells.iter().all(|c| c.len() >= 3));
-        let (lo, hi) = bounds(&sites);
+        let (lo, hi) = bounds_2d(&sites);
         let margin = (hi - lo).max_element() * DEFAULT_MARGIN;
         let boundary = rectangle(lo - margin, hi + margin);
         check_tiling(&sites, &cells, &boundary);

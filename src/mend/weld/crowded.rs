@@ -165,14 +165,15 @@ impl Crowded {
                 for k in cells {
                     let (start, end) = (cell_starts[k], cell_starts[k + 1]);
                     let here = &mut part[(start - base) as usize..(end - base) as usize];
-                    let whole = here.len() == 1 || {
-                        let group = Group::of(here, start, positions, tolerance);
-                        group.tight
-                    };
-                    tight.push(whole);
-                    if !whole {
+                    if here.len() == 1 {
+                        tight.push(true);
+                        continue;
+                    }
+                    let group = Group::of(here, start, positions, tolerance);
+                    tight.push(group.tight);
+                    if !group.tight {
                         let mut groups = Vec::new();
-                        split_into_groups(here, start, positions, tolerance, &mut groups);
+                        split_into_groups(here, group, positions, tolerance, &mut groups);
                         crowded.push((k, groups));
                     }
                 }
@@ -203,18 +204,17 @@ impl Crowded {
     }
 }
 
-/// Splits `sites` (which begin at `start`) into tight groups, appended to
+/// Splits `sites`, whose group is `group`, into tight groups, appended to
 /// `groups`: by the octants of their bounding box, each half as wide, until
 /// each is tight. A cell as wide as the tolerance takes one split (an
 /// octant's diagonal is under nine tenths of the tolerance).
 fn split_into_groups(
     sites: &mut [u32],
-    start: u32,
+    group: Group,
     positions: &[DVec3],
     tolerance: f64,
     groups: &mut Vec<Group>,
 ) {
-    let group = Group::of(sites, start, positions, tolerance);
     if group.tight {
         groups.push(group);
         return;
@@ -242,7 +242,8 @@ fn split_into_groups(
             return;
         }
         let part = &mut sites[first..end];
-        split_into_groups(part, start + first as u32, positions, tolerance, groups);
+        let part_group = Group::of(part, group.start + first as u32, positions, tolerance);
+        split_into_groups(part, part_group, positions, tolerance, groups);
         first = end;
     }
 }
@@ -263,7 +264,8 @@ mod tests {
             .collect();
         let mut sites: Vec<u32> = (0..500).collect();
         let mut groups = Vec::new();
-        split_into_groups(&mut sites, 7, &positions, tolerance, &mut groups);
+        let whole = Group::of(&sites, 7, &positions, tolerance);
+        split_into_groups(&mut sites, whole, &positions, tolerance, &mut groups);
         assert!(
             groups.len() > 1 && groups.len() <= 8,
             "{} groups",

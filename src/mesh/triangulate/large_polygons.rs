@@ -10,6 +10,7 @@
 use glam::DVec2;
 
 use super::inside_triangle;
+use crate::mesh::bounds_2d;
 
 /// Corners from which a polygon is clipped here.
 pub(super) const LARGE: usize = 1024;
@@ -38,10 +39,7 @@ impl Ring<'_> {
     /// grid of `side` × `side` cells over their bounding box.
     fn new(points: &[DVec2], epsilon: f64, side: usize) -> Ring<'_> {
         let n = points.len();
-        let (low, high) = points.iter().fold(
-            (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY)),
-            |(low, high), &p| (low.min(p), high.max(p)),
-        );
+        let (low, high) = bounds_2d(points);
         let side = side.max(1);
         let extent = (high - low).max_element();
         let cell_size = match extent / side as f64 {

@@ -93,21 +93,32 @@ pub fn mesh_from_lines(segments: &[[DVec3; 2]], tolerance: f64, max_valence: u32
                 .map(move |(k, &a)| ((b as u32, a), k as u32))
         })
         .collect();
-    let mut used: HashMap<(u32, u32), ()> = HashMap::new();
+    // Each segment walked each way once: the walk from a to b is slot
+    // `first_slot[a] + (b's place around a)`.
+    let mut first_slot = Vec::with_capacity(sorted.len());
+    let mut slots = 0;
+    for around in &sorted {
+        first_slot.push(slots);
+        slots += around.len();
+    }
+    let mut used = vec![false; slots];
     let mut faces: Vec<Vec<u32>> = Vec::new();
     for (start, around) in sorted.iter().enumerate() {
-        for &first in around {
+        for (place_of_first, &first) in around.iter().enumerate() {
             let (mut a, mut b) = (start as u32, first);
-            if used.contains_key(&(a, b)) {
+            let mut slot = first_slot[start] + place_of_first;
+            if used[slot] {
                 continue;
             }
             let mut cycle = Vec::new();
-            while used.insert((a, b), ()).is_none() {
+            while !used[slot] {
+                used[slot] = true;
                 cycle.push(a);
                 let at_b = &sorted[b as usize];
                 let k = place.get(&(b, a)).map_or(0, |&k| k as usize);
-                let next = at_b[(k + at_b.len() - 1) % at_b.len()];
-                (a, b) = (b, next);
+                let turn = (k + at_b.len() - 1) % at_b.len();
+                slot = first_slot[b as usize] + turn;
+                (a, b) = (b, at_b[turn]);
             }
             let repeated = {
                 let mut s = cycle.clone();
