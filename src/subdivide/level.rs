@@ -381,9 +381,7 @@ impl Connectivity {
     /// slot of the end it arrives at `v` by.
     #[inline]
     pub(crate) fn vertex_edge_slot_arriving(&self, v: u32, e: u32) -> u32 {
-        let list = self.vertex_edges(v as usize);
-        let k = list.iter().rposition(|&y| y == e).unwrap_or(0);
-        self.vertex_edge_offsets[v as usize] + k as u32
+        self.vertex_edge_offsets[v as usize] + last_position(self.vertex_edges(v as usize), e)
     }
 
     /// Whether the child edge of vertex-edge slot `s` (the half of its edge
@@ -408,10 +406,32 @@ impl Connectivity {
     }
 }
 
-/// The index of `x` in the short list `list`, which holds it.
+/// Lists up to this long are scanned; longer ones (around a vertex of
+/// high valence, along an edge of many faces) are searched by halves, so
+/// that finding each of a vertex's edges is not quadratic in its valence.
+pub(super) const SCANNED: usize = 16;
+
+/// The first index of `x` in `list`, ascending, which holds it.
 #[inline]
 pub(crate) fn position(list: &[u32], x: u32) -> u32 {
-    list.iter().position(|&y| y == x).unwrap_or(0) as u32
+    let k = if list.len() <= SCANNED {
+        list.iter().position(|&y| y == x)
+    } else {
+        Some(list.partition_point(|&y| y < x)).filter(|&k| list.get(k) == Some(&x))
+    };
+    k.unwrap_or(0) as u32
+}
+
+/// The last index of `x` in `list`, ascending, which holds it.
+#[inline]
+pub(crate) fn last_position(list: &[u32], x: u32) -> u32 {
+    let k = if list.len() <= SCANNED {
+        list.iter().rposition(|&y| y == x)
+    } else {
+        let after = list.partition_point(|&y| y <= x);
+        after.checked_sub(1).filter(|&k| list[k] == x)
+    };
+    k.unwrap_or(0) as u32
 }
 
 /// Every vertex's edges, ascending, from the sorted edges.

@@ -4,7 +4,7 @@
 //! Equal, array for array, to bucketing the child faces
 //! ([`Connectivity::new`]); `tests.rs` checks it on every named shape.
 
-use super::{Connectivity, Faces};
+use super::{Connectivity, Faces, SCANNED};
 use crate::buffers::{fill_by_offsets, flatten, par_map, par_offsets, try_vec};
 use crate::error::Result;
 use crate::mesh::adjacency::Adjacency;
@@ -31,12 +31,21 @@ impl LoopInsideEdges {
     #[inline]
     pub(crate) fn find(&self, f: usize, x: u32, y: u32) -> usize {
         let (m, h) = (x.min(y) as usize, x.max(y));
-        let k = self
-            .group(m)
-            .iter()
-            .position(|&(high, face, _)| (high, face) == (h, f as u32))
-            .unwrap_or(0);
-        self.offsets[m] as usize + k
+        let group = self.group(m);
+        let key = (h, f as u32);
+        // A group is long where many triangles share edge m.
+        let k = if group.len() <= SCANNED {
+            group
+                .iter()
+                .position(|&(high, face, _)| (high, face) == key)
+        } else {
+            let k = group.partition_point(|&(high, face, _)| (high, face) < key);
+            group
+                .get(k)
+                .filter(|&&(high, face, _)| (high, face) == key)
+                .map(|_| k)
+        };
+        self.offsets[m] as usize + k.unwrap_or(0)
     }
 }
 

@@ -109,7 +109,12 @@ fn refined_connectivity_equals_bucketing() {
         [[0u32, 1, 2], [1, 0, 2]],
     )
     .unwrap();
+    // A vertex of 40 edges and an edge of 40 faces: their lists are
+    // searched by halves, not scanned.
+    let (fan, book) = (wide_fan(40), book(40));
     let polygons = [
+        ("fan", fan.clone()),
+        ("book", book.clone()),
         ("cube", shapes::cube()),
         ("grid", shapes::quad_grid(3, 2)),
         ("grid with hole", shapes::quad_grid_with_hole()),
@@ -119,6 +124,8 @@ fn refined_connectivity_equals_bucketing() {
         ("mobius", shapes::mobius_strip(6)),
     ];
     let triangles = [
+        ("fan", fan),
+        ("book", book),
         ("tetrahedron", shapes::tetrahedron()),
         ("icosahedron", shapes::icosahedron()),
         ("triangle grid", shapes::triangle_grid(3, 2)),
@@ -200,5 +207,48 @@ fn loop_keeps_the_inside_edges_of_coincident_triangles_apart() {
             assert_eq!(derived.edge_corners(e).len(), 2, "level {level} edge {e}");
         }
         (faces, connectivity) = (child, derived);
+    }
+}
+
+/// A disc of `n` triangles around one vertex.
+fn wide_fan(n: u32) -> crate::Mesh {
+    let mut positions = vec![crate::DVec3::ZERO];
+    for k in 0..n {
+        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+        positions.push(crate::DVec3::new(a.cos(), a.sin(), 0.0));
+    }
+    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
+    crate::Mesh::from_polygons(positions, faces).unwrap()
+}
+
+/// `n` triangles on one edge, like the pages of a book.
+fn book(n: u32) -> crate::Mesh {
+    let mut positions = vec![crate::DVec3::ZERO, crate::DVec3::Z];
+    for k in 0..n {
+        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+        positions.push(crate::DVec3::new(a.cos(), a.sin(), 0.5));
+    }
+    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1, 2 + k]).collect();
+    crate::Mesh::from_polygons(positions, faces).unwrap()
+}
+
+/// The searches by halves of long lists find what a scan finds, first and
+/// last, in ascending lists with repeats (a degenerate edge is listed twice
+/// at its vertex) and for values the list does not hold.
+#[test]
+fn positions_in_long_lists_equal_a_scan() {
+    use super::{last_position, position};
+    let mut words = crate::test_random::words(7);
+    for len in 1..=80 {
+        for _ in 0..20 {
+            let mut list: Vec<u32> = (0..len).map(|_| (words() % 60) as u32).collect();
+            list.sort_unstable();
+            for x in 0..62 {
+                let first = list.iter().position(|&y| y == x).unwrap_or(0) as u32;
+                let last = list.iter().rposition(|&y| y == x).unwrap_or(0) as u32;
+                assert_eq!(position(&list, x), first, "{list:?} {x}");
+                assert_eq!(last_position(&list, x), last, "{list:?} {x}");
+            }
+        }
     }
 }
