@@ -1362,8 +1362,11 @@ WeftStatus weft_subdivide_limit(const struct WeftMesh *mesh, const struct WeftSu
  * Fails as `weft_subdivide_ex` (WEFT_STATUS_NOT_TRIANGLES for Loop on
  * another polygon, a bad crease, corner or hole), with
  * WEFT_STATUS_NON_FINITE_COORDINATE for a cage coordinate that is not
- * finite, and WEFT_STATUS_INVALID_ARGUMENT for a face whose semi-sharp
- * creases would need more than 65536 local refinements.
+ * finite, WEFT_STATUS_INVALID_ARGUMENT for a face whose semi-sharp
+ * creases would need more than 65536 local refinements, and
+ * WEFT_STATUS_RESULT_TOO_LARGE for a vertex with more than 1024 faces
+ * around it (each face around a vertex refines the vertex's whole ring on
+ * its own, so memory and time grow as the square of the count).
  *
  * # Safety
  * `cage` is NULL or a live handle; `options` as in `weft_subdivide_ex`;

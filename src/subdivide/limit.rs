@@ -102,22 +102,9 @@ impl Subdivider {
         cage: &[DVec3],
         vertices: impl ExactSizeIterator<Item = usize>,
     ) -> Result<Limit> {
-        let last = self.last();
-        let faces = &last.faces;
-        let connectivity = &last.connectivity;
-        if self.scheme == Scheme::CatmullClark {
-            if let Some(f) =
-                (0..faces.face_count()).find(|&f| faces.offsets[f + 1] - faces.offsets[f] != 4)
-            {
-                return Err(Error::InvalidArgument(format!(
-                    "the Catmull-Clark limit needs quads but face {f} is not one; \
-                     subdivide at least one level"
-                )));
-            }
-        }
+        self.check_limit_faces()?;
         let mut points = vec![DVec3::ZERO; self.vertex_count()];
         self.evaluate(cage, &mut points)?;
-        let sharpness = &last.sharpness;
         let n = vertices.len();
         let mut limit = Limit {
             positions: Vec::with_capacity(n),
@@ -128,87 +115,192 @@ impl Subdivider {
         let (mut edges, mut corners) = (Vec::new(), Vec::new());
         for v in vertices {
             let p = points[v];
-            let edge_count = sharpness.edges_at(v).len();
-            if edge_count == 0 {
+            let Some(stencil) = self.limit_stencil(v, &mut edges, &mut corners) else {
                 limit.positions.push(p);
                 limit.du.push(DVec3::ZERO);
                 limit.dv.push(DVec3::ZERO);
                 limit.normals.push(DVec3::ZERO);
                 continue;
-            }
-            let ordered = walk_around(
-                faces,
-                connectivity,
-                v,
-                self.first_corners[v],
-                edge_count,
-                &mut edges,
-                &mut corners,
-            );
-            if !ordered {
-                edges.clear();
-                edges.extend_from_slice(sharpness.edges_at(v));
-                corners.clear();
-            }
-            let far: Vec<DVec3> = edges
-                .iter()
-                .map(|&e| {
-                    let [a, b] = connectivity.edges[e as usize];
-                    points[if a as usize == v { b } else { a } as usize]
-                })
-                .collect();
-            let quads = if self.scheme == Scheme::CatmullClark {
-                &corners[..]
-            } else {
-                &[]
-            };
-            let opposite: Vec<DVec3> = quads
-                .iter()
-                .map(|&c| {
-                    let f = connectivity.face_of(c as usize);
-                    let start = faces.offsets[f] as usize;
-                    let local = (c as usize - start + 2) % 4;
-                    points[faces.indices[start + local] as usize]
-                })
-                .collect();
-            let sharp: Vec<bool> = edges
-                .iter()
-                .map(|&e| is_sharp(sharpness.edges[e as usize]))
-                .collect();
-            let mut rule = sharpness.rules[v];
-            // Catmull-Clark's smooth limit has no mask for two faces
-            // (OpenSubdiv takes the corner's); Loop's covers any valence.
-            let two_quads = self.scheme == Scheme::CatmullClark && corners.len() == 2;
-            if rule.is_smooth() && (two_quads || !ordered) {
-                rule = Rule::Corner;
-            }
-            let [position, du, dv] = match rule {
-                Rule::Smooth | Rule::Dart => smooth_masks(self.scheme, edges.len(), corners.len()),
-                Rule::Crease => {
-                    let first = sharp.iter().position(|&s| s).unwrap_or(0);
-                    let last = sharp.iter().rposition(|&s| s).unwrap_or(0);
-                    crease_masks(self.scheme, edges.len(), corners.len(), first, last)
-                }
-                Rule::Corner => corner_masks(self.scheme, edges.len()),
             };
             let apply = |mask: &Mask| {
                 let mut sum = p * mask.vertex;
-                for (w, q) in mask.edges.iter().zip(&far) {
-                    sum += *q * *w;
+                for (w, &q) in mask.edges.iter().zip(&stencil.far) {
+                    sum += points[q as usize] * *w;
                 }
-                for (w, q) in mask.faces.iter().zip(&opposite) {
-                    sum += *q * *w;
+                for (w, &q) in mask.faces.iter().zip(&stencil.opposite) {
+                    sum += points[q as usize] * *w;
                 }
                 sum
             };
-            let (du, dv) = (apply(&du), apply(&dv));
-            limit.positions.push(apply(&position));
+            let [position, du, dv] = &stencil.masks;
+            let (du, dv) = (apply(du), apply(dv));
+            limit.positions.push(apply(position));
             limit.du.push(du);
             limit.dv.push(dv);
             limit.normals.push(unit_normal(du, dv));
         }
         Ok(limit)
     }
+
+    /// The limit masks at the cage `vertices` of a subdivider of no levels,
+    /// as weights of the cage's points: for each vertex the weights of its
+    /// position, first and second tangent, by point ascending, zeros left
+    /// out. Each weight is summed in the order [`Subdivider::limit_of`]
+    /// sums its point's terms, so the weights are the bits `limit_of` gives
+    /// for unit points.
+    ///
+    /// # Errors
+    /// As [`Subdivider::limit_of`] (Catmull-Clark on faces that are not quads).
+    pub(crate) fn cage_limit_weights(
+        &self,
+        vertices: impl Iterator<Item = usize>,
+    ) -> Result<Vec<[Weights; 3]>> {
+        debug_assert_eq!(self.levels(), 0, "the weights are of the cage's points");
+        self.check_limit_faces()?;
+        let (mut edges, mut corners) = (Vec::new(), Vec::new());
+        let mut out = Vec::new();
+        for v in vertices {
+            let Some(stencil) = self.limit_stencil(v, &mut edges, &mut corners) else {
+                out.push([vec![(v as u32, 1.0)], Vec::new(), Vec::new()]);
+                continue;
+            };
+            let weights = |mask: &Mask| {
+                // `limit_of` starts each sum at the vertex's term.
+                let far = mask.edges.iter().zip(&stencil.far);
+                let opposite = mask.faces.iter().zip(&stencil.opposite);
+                let mut terms: Vec<(u32, f64)> = std::iter::once((v as u32, mask.vertex))
+                    .chain(far.chain(opposite).map(|(&w, &q)| (q, w)))
+                    .collect();
+                // A stable sort keeps each point's terms in their order.
+                terms.sort_by_key(|&(point, _)| point);
+                let mut sums: Vec<(u32, f64)> = Vec::new();
+                for (point, w) in terms {
+                    match sums.last_mut() {
+                        Some((last, sum)) if *last == point => *sum += w,
+                        _ => sums.push((point, w)),
+                    }
+                }
+                sums.retain(|&(_, w)| w != 0.0);
+                sums
+            };
+            out.push(stencil.masks.each_ref().map(weights));
+        }
+        Ok(out)
+    }
+
+    /// Refuses Catmull-Clark's limit on faces that are not quads.
+    fn check_limit_faces(&self) -> Result<()> {
+        let faces = &self.last().faces;
+        if self.scheme == Scheme::CatmullClark {
+            if let Some(f) =
+                (0..faces.face_count()).find(|&f| faces.offsets[f + 1] - faces.offsets[f] != 4)
+            {
+                return Err(Error::InvalidArgument(format!(
+                    "the Catmull-Clark limit needs quads but face {f} is not one; \
+                     subdivide at least one level"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// What the limit at last-level vertex `v` weighs and how: the far end
+    /// of each of its edges in ring order, the corner opposite `v` in each
+    /// of its faces (Catmull-Clark), and the position and tangent masks over
+    /// `v`, those and these. `None` for a vertex without edges, which stays.
+    fn limit_stencil(
+        &self,
+        v: usize,
+        edges: &mut Vec<u32>,
+        corners: &mut Vec<u32>,
+    ) -> Option<LimitStencil> {
+        let last = self.last();
+        let faces = &last.faces;
+        let connectivity = &last.connectivity;
+        let sharpness = &last.sharpness;
+        let edge_count = sharpness.edges_at(v).len();
+        if edge_count == 0 {
+            return None;
+        }
+        let ordered = walk_around(
+            faces,
+            connectivity,
+            v,
+            self.first_corners[v],
+            edge_count,
+            edges,
+            corners,
+        );
+        if !ordered {
+            edges.clear();
+            edges.extend_from_slice(sharpness.edges_at(v));
+            corners.clear();
+        }
+        let far: Vec<u32> = edges
+            .iter()
+            .map(|&e| {
+                let [a, b] = connectivity.edges[e as usize];
+                if a as usize == v {
+                    b
+                } else {
+                    a
+                }
+            })
+            .collect();
+        let quads = if self.scheme == Scheme::CatmullClark {
+            &corners[..]
+        } else {
+            &[]
+        };
+        let opposite: Vec<u32> = quads
+            .iter()
+            .map(|&c| {
+                let f = connectivity.face_of(c as usize);
+                let start = faces.offsets[f] as usize;
+                let local = (c as usize - start + 2) % 4;
+                faces.indices[start + local]
+            })
+            .collect();
+        let sharp: Vec<bool> = edges
+            .iter()
+            .map(|&e| is_sharp(sharpness.edges[e as usize]))
+            .collect();
+        let mut rule = sharpness.rules[v];
+        // Catmull-Clark's smooth limit has no mask for two faces
+        // (OpenSubdiv takes the corner's); Loop's covers any valence.
+        let two_quads = self.scheme == Scheme::CatmullClark && corners.len() == 2;
+        if rule.is_smooth() && (two_quads || !ordered) {
+            rule = Rule::Corner;
+        }
+        let masks = match rule {
+            Rule::Smooth | Rule::Dart => smooth_masks(self.scheme, edges.len(), corners.len()),
+            Rule::Crease => {
+                let first = sharp.iter().position(|&s| s).unwrap_or(0);
+                let last = sharp.iter().rposition(|&s| s).unwrap_or(0);
+                crease_masks(self.scheme, edges.len(), corners.len(), first, last)
+            }
+            Rule::Corner => corner_masks(self.scheme, edges.len()),
+        };
+        Some(LimitStencil {
+            far,
+            opposite,
+            masks,
+        })
+    }
+}
+
+/// Weights of points, `(point, weight)`.
+pub(crate) type Weights = Vec<(u32, f64)>;
+
+/// The points a vertex's limit weighs besides itself, and its masks (see
+/// `limit_stencil`).
+struct LimitStencil {
+    /// The far end of each of its edges, in ring order.
+    far: Vec<u32>,
+    /// The corner opposite it in each of its quads (Catmull-Clark).
+    opposite: Vec<u32>,
+    /// Position, first and second tangent.
+    masks: [Mask; 3],
 }
 
 /// `du × dv` normalised, or zero where the tangents are parallel. Each

@@ -49,8 +49,11 @@ pub fn run(cli: &Cli, args: &Evaluate) -> Result<(), Failure> {
         vec![DVec3::ZERO; count],
         vec![DVec3::ZERO; count],
     );
+    let surface = with_progress("preparing the limit surface", || {
+        LimitSurface::new(&file.mesh, scheme, &options)
+    })
+    .map_err(|e| Failure::Failed(format!("{}: {e}; nothing written", input.display())))?;
     with_progress("evaluating", || {
-        let surface = LimitSurface::new(&file.mesh, scheme, &options)?;
         surface.evaluate(&faces, &uvs, &mut positions, Some(&mut du), Some(&mut dv))
     })
     .map_err(|e| {

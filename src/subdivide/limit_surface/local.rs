@@ -23,6 +23,7 @@ use glam::DVec3;
 
 use super::super::creases::{Rule, SubdivisionOptions, SHARPNESS_INFINITE};
 use super::super::scheme::{NakedEdges, Scheme};
+use super::super::stencils::LevelStencils;
 use super::super::subdivider::{KeptLevel, Subdivider};
 use super::patches::{corner_kind, regular_patch, Row};
 use crate::error::{Error, Result};
@@ -42,21 +43,71 @@ pub(super) struct Sparse {
 }
 
 impl Sparse {
-    fn from_dense(rows: impl Iterator<Item = impl Iterator<Item = f64>>) -> Sparse {
+    /// From rows of `(point, weight)`.
+    pub(super) fn from_rows<'a>(rows: impl Iterator<Item = &'a [(u32, f64)]>) -> Sparse {
         let mut out = Sparse {
             offsets: vec![0],
             ..Sparse::default()
         };
         for row in rows {
-            for (k, w) in row.enumerate() {
-                if w != 0.0 {
-                    out.sources.push(k as u32);
-                    out.weights.push(w);
-                }
+            for &(point, w) in row {
+                out.sources.push(point);
+                out.weights.push(w);
             }
             out.offsets.push(out.sources.len() as u32);
         }
         out
+    }
+
+    /// Rows `rows` of this one, in that order.
+    fn rows_of(&self, rows: &[u32]) -> Sparse {
+        let mut out = Sparse {
+            offsets: vec![0],
+            ..Sparse::default()
+        };
+        for &r in rows {
+            let range = self.offsets[r as usize] as usize..self.offsets[r as usize + 1] as usize;
+            out.sources.extend_from_slice(&self.sources[range.clone()]);
+            out.weights.extend_from_slice(&self.weights[range]);
+            out.offsets.push(out.sources.len() as u32);
+        }
+        out
+    }
+
+    /// One level's stencils as weights of the parent's points alone: the
+    /// face points a row reads put in. Each weight is summed in the order
+    /// the stencils sum its point's terms, so the weights are the bits the
+    /// stencils give for unit points; zeros are left out.
+    pub(super) fn of_stencils(stencils: &LevelStencils) -> Sparse {
+        let parent = stencils.parent_count;
+        let terms_of = |r: usize| {
+            let range = stencils.offsets[r] as usize..stencils.offsets[r + 1] as usize;
+            stencils.sources[range.clone()]
+                .iter()
+                .zip(&stencils.weights[range])
+                .map(|(&s, &w)| (s as usize, w))
+        };
+        // The rows that read only the parent, which the others read.
+        let first = stencils.first_independent;
+        let mut independent = Vec::with_capacity(stencils.child_count() - first);
+        for r in first..stencils.child_count() {
+            independent.push(summed(terms_of(r).map(|(s, w)| (s as u32, w)).collect()));
+        }
+        let mut rows = Vec::with_capacity(first);
+        for r in 0..first {
+            let mut terms = Vec::new();
+            for (s, w) in terms_of(r) {
+                match s.checked_sub(parent) {
+                    None => terms.push((s as u32, w)),
+                    Some(child) => {
+                        let read = &independent[child - first];
+                        terms.extend(read.iter().map(|&(point, x)| (point, w * x)));
+                    }
+                }
+            }
+            rows.push(summed(terms));
+        }
+        Sparse::from_rows(rows.iter().chain(&independent).map(Vec::as_slice))
     }
 
     pub(super) fn rows(&self) -> usize {
@@ -73,6 +124,22 @@ impl Sparse {
         }
         sum
     }
+}
+
+/// Terms `(point, weight)` summed by point, ascending, each point's terms
+/// in their order (as a sum over them from zero adds them); zeros left out.
+fn summed(mut terms: Vec<(u32, f64)>) -> Vec<(u32, f64)> {
+    // A stable sort keeps each point's terms in their order.
+    terms.sort_by_key(|&(point, _)| point);
+    let mut sums: Vec<(u32, f64)> = Vec::with_capacity(terms.len());
+    for (point, w) in terms {
+        match sums.last_mut() {
+            Some((last, sum)) if *last == point => *sum += w,
+            _ => sums.push((point, w)),
+        }
+    }
+    sums.retain(|&(_, w)| w != 0.0);
+    sums
 }
 
 /// A child of a node: its node and its points from the parent's.
@@ -216,37 +283,6 @@ fn extract(level: &KeptLevel, g: usize, base: &SubdivisionOptions) -> (Local, Ve
     )
 }
 
-/// A linear map of `count` points as a dense matrix: `out[r * count + j][w]`
-/// is the weight of point j in value w of row r, found by evaluating three
-/// unit vectors at a time (x, y, z carry one point each).
-fn dense(
-    count: usize,
-    mut evaluate: impl FnMut(&[DVec3], &mut Vec<[DVec3; 3]>) -> Result<()>,
-) -> Result<Vec<[f64; 3]>> {
-    let mut out: Vec<[f64; 3]> = Vec::new();
-    let mut basis = vec![DVec3::ZERO; count];
-    let mut values = Vec::new();
-    for first in (0..count).step_by(3) {
-        let width = 3.min(count - first);
-        basis.fill(DVec3::ZERO);
-        for k in 0..width {
-            basis[first + k][k] = 1.0;
-        }
-        evaluate(&basis, &mut values)?;
-        if out.is_empty() {
-            out = vec![[0.0; 3]; values.len() * count];
-        }
-        for (r, row) in values.iter().enumerate() {
-            for (w, value) in row.iter().enumerate() {
-                for k in 0..width {
-                    out[r * count + first + k][w] = value[k];
-                }
-            }
-        }
-    }
-    Ok(out)
-}
-
 /// What one node becomes: a patch, or its children's small meshes and
 /// points and its corners' limits. It depends on the node's small mesh
 /// alone, so the faces whose graphs meet the same small mesh share it
@@ -302,19 +338,13 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     if let Some(rows) = regular_patch(scheme, level, g) {
         return Ok(Expanded::Patch(Arc::new(rows)));
     }
-    let m = local.mesh.vertex_count();
     let own = local.mesh.face(g).to_vec();
     let corner_count = own.len();
     let size = scheme.refined_face_size();
     let mut corners = vec![None; corner_count];
     if local.mesh.face_sizes().iter().all(|&s| s == size) {
         // The limit at the face's corners alone (unit points need no scaling).
-        let masks = dense(m, |basis, values| {
-            let limit = zero.limit_at_vertices(basis, own.iter().map(|&v| v as usize))?;
-            values.clear();
-            values.extend((0..own.len()).map(|k| [limit.positions[k], limit.du[k], limit.dv[k]]));
-            Ok(())
-        })?;
+        let masks = zero.cage_limit_weights(own.iter().map(|&v| v as usize))?;
         for (k, slot) in corners.iter_mut().enumerate() {
             let c = level.faces.corners(g).start + k;
             // Stop at an irregular corner once nothing at it is semi-sharp:
@@ -337,20 +367,12 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
             let corner = sharpness.rules[v] == Rule::Corner;
             let irregular =
                 decayed && !two_faces && !corner && corner_kind(scheme, level, g, c).is_none();
-            let masks = &masks;
-            let row = |w: usize| (0..m).map(move |j| masks[k * m + j][w]);
-            let masks = Sparse::from_dense([row(0), row(1), row(2)].into_iter());
+            let masks = Sparse::from_rows(masks[k].iter().map(Vec::as_slice));
             *slot = Some(CornerLimit { irregular, masks });
         }
     }
     let one = Subdivider::new(&local.mesh, scheme, 1, &local.options)?;
-    let mut refined = vec![DVec3::ZERO; one.vertex_count()];
-    let weights = dense(m, |basis, values| {
-        one.evaluate(basis, &mut refined)?;
-        values.clear();
-        values.extend(refined.iter().map(|&p| [p, DVec3::ZERO, DVec3::ZERO]));
-        Ok(())
-    })?;
+    let weights = Sparse::of_stencils(&one.stencils[0]);
     let refined = &one.levels[1];
     let children = match scheme {
         Scheme::CatmullClark => corner_count,
@@ -364,11 +386,7 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     let mut out = Vec::with_capacity(children);
     for j in 0..children {
         let (child, map) = extract(refined, first + j, &local.options);
-        let weights = &weights;
-        let points = Sparse::from_dense(
-            map.iter()
-                .map(|&r| (0..m).map(move |k| weights[r as usize * m + k][0])),
-        );
+        let points = weights.rows_of(&map);
         out.push((Arc::new(child), Arc::new(points)));
     }
     Ok(Expanded::Refine(out, Arc::new(corners)))

@@ -1,6 +1,6 @@
 use super::*;
 use crate::mesh::shapes;
-use crate::subdivide::{NakedEdges, Subdivider};
+use crate::subdivide::{Creasing, NakedEdges, Subdivider, TriangleRule};
 
 fn limit_at_corners(cage: &Mesh, scheme: Scheme, options: &SubdivisionOptions) -> f64 {
     let surface = LimitSurface::new(cage, scheme, options).unwrap();
@@ -250,4 +250,162 @@ fn sample_bits(surface: &LimitSurface, faces: &[u32], uvs: &[f64]) -> [Vec<[u64;
             .map(|q| q.to_array().map(f64::to_bits))
             .collect()
     })
+}
+
+/// Cages with every kind of rule: semi-sharp creases averaged along their
+/// chain (Chaikin), corners, naked edges, triangles among quads with the
+/// smooth-triangle weights, non-manifold edges and a vertex of 40 faces.
+fn ruled_cages() -> Vec<(Mesh, Scheme, SubdivisionOptions)> {
+    // Semi-sharp and sharp creases around the first face, a corner at a
+    // vertex of the second.
+    let creased = |cage: &Mesh| {
+        let mut options = SubdivisionOptions::new(NakedEdges::Smooth);
+        let face = cage.face(0);
+        let (a, b, c, last) = (face[0], face[1], face[2], face[face.len() - 1]);
+        options.creases = vec![([a, b], 1.5), ([b, c], 2.25), ([last, a], 10.0)];
+        options.corners = vec![(cage.face(1)[2], 0.75)];
+        options.creasing = Creasing::Chaikin;
+        options
+    };
+    let mut smooth_triangles = SubdivisionOptions::new(NakedEdges::CornerFixed);
+    smooth_triangles.triangles = TriangleRule::Smooth;
+    let fan = {
+        let mut positions = vec![DVec3::ZERO];
+        positions.extend((0..40).map(|k| {
+            let a = std::f64::consts::TAU * f64::from(k) / 40.0;
+            DVec3::new(a.cos(), a.sin(), 0.1 * f64::from(k % 3))
+        }));
+        let faces: Vec<[u32; 3]> = (0..40).map(|k| [0, 1 + k, 1 + (k + 1) % 40]).collect();
+        Mesh::from_polygons(positions, faces).unwrap()
+    };
+    let fixed = SubdivisionOptions::new(NakedEdges::Fixed);
+    vec![
+        (
+            shapes::cube(),
+            Scheme::CatmullClark,
+            creased(&shapes::cube()),
+        ),
+        (
+            shapes::icosahedron(),
+            Scheme::Loop,
+            creased(&shapes::icosahedron()),
+        ),
+        (
+            shapes::mixed_polygons(),
+            Scheme::CatmullClark,
+            smooth_triangles,
+        ),
+        (shapes::quad_grid(3, 2), Scheme::CatmullClark, fixed.clone()),
+        (shapes::fin(), Scheme::CatmullClark, fixed.clone()),
+        (fan.clone(), Scheme::CatmullClark, fixed.clone()),
+        (
+            fan,
+            Scheme::Loop,
+            SubdivisionOptions::new(NakedEdges::Smooth),
+        ),
+        (shapes::triangle_grid(3, 2), Scheme::Loop, fixed),
+    ]
+}
+
+/// The weight of `point` in row `r`, and that no weight is stored as 0.
+fn weight_in(sparse: &local::Sparse, r: usize, point: usize) -> f64 {
+    let range = sparse.offsets[r] as usize..sparse.offsets[r + 1] as usize;
+    assert!(sparse.weights[range.clone()].iter().all(|&w| w != 0.0));
+    let at = sparse.sources[range.clone()]
+        .iter()
+        .position(|&s| s as usize == point);
+    at.map_or(0.0, |k| sparse.weights[range.start + k])
+}
+
+/// A level's stencils as weights of the parent's points are, bit for bit,
+/// what refining each parent point alone at 1 gives.
+#[test]
+fn stencil_weights_are_the_refinement_of_unit_points() {
+    for (cage, scheme, options) in ruled_cages() {
+        let one = Subdivider::new(&cage, scheme, 1, &options).unwrap();
+        let weights = local::Sparse::of_stencils(&one.stencils[0]);
+        assert_eq!(weights.rows(), one.vertex_count());
+        let mut unit = vec![DVec3::ZERO; cage.vertex_count()];
+        let mut refined = vec![DVec3::ZERO; one.vertex_count()];
+        for k in 0..cage.vertex_count() {
+            unit.fill(DVec3::ZERO);
+            unit[k] = DVec3::X;
+            one.evaluate(&unit, &mut refined).unwrap();
+            for (r, p) in refined.iter().enumerate() {
+                let w = weight_in(&weights, r, k);
+                assert_eq!(
+                    w.to_bits(),
+                    (p.x + 0.0).to_bits(),
+                    "{scheme:?} row {r} point {k}"
+                );
+            }
+        }
+    }
+}
+
+/// The limit masks at cage vertices as weights are, bit for bit, the limit
+/// of each cage point alone at 1.
+#[test]
+fn limit_weights_are_the_limit_of_unit_points() {
+    // On the torus of 2 × 3 quads each vertex meets its neighbours along
+    // one direction twice, so their terms are summed in order.
+    let smooth = SubdivisionOptions::new(NakedEdges::Smooth);
+    let mut cases = ruled_cages();
+    cases.push((shapes::torus(5, 4), Scheme::CatmullClark, smooth.clone()));
+    cases.push((shapes::torus(2, 3), Scheme::CatmullClark, smooth));
+    for (cage, scheme, options) in cases {
+        let size = match scheme {
+            Scheme::CatmullClark => 4,
+            Scheme::Loop => 3,
+        };
+        if cage.face_sizes().iter().any(|&s| s != size) {
+            continue;
+        }
+        let zero = Subdivider::new(&cage, scheme, 0, &options).unwrap();
+        let n = cage.vertex_count();
+        let weights = zero.cage_limit_weights(0..n).unwrap();
+        let rows: Vec<local::Sparse> = weights
+            .iter()
+            .map(|masks| local::Sparse::from_rows(masks.iter().map(Vec::as_slice)))
+            .collect();
+        let mut unit = vec![DVec3::ZERO; n];
+        for k in 0..n {
+            unit.fill(DVec3::ZERO);
+            unit[k] = DVec3::X;
+            let limit = zero.limit_of(&unit).unwrap();
+            for (v, masks) in rows.iter().enumerate() {
+                let values = [limit.positions[v], limit.du[v], limit.dv[v]];
+                for (row, value) in values.iter().enumerate() {
+                    let w = weight_in(masks, row, k);
+                    assert_eq!(
+                        w.to_bits(),
+                        (value.x + 0.0).to_bits(),
+                        "{scheme:?} vertex {v} mask {row} point {k}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A vertex of more faces than the limit surface takes is refused before
+/// any refinement, naming it; one of the most is not.
+#[test]
+fn a_vertex_of_too_many_faces_is_refused() {
+    let fan = |n: u32| {
+        let mut positions = vec![DVec3::ZERO];
+        positions.extend((0..n).map(|k| {
+            let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+            DVec3::new(a.cos(), a.sin(), 0.0)
+        }));
+        let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
+        Mesh::from_polygons(positions, faces).unwrap()
+    };
+    let options = SubdivisionOptions::new(NakedEdges::Fixed);
+    let too_many = MAX_LIMIT_VALENCE as u32 + 1;
+    let err = LimitSurface::new(&fan(too_many), Scheme::Loop, &options).unwrap_err();
+    assert!(matches!(err, Error::ResultTooLarge(_)), "{err}");
+    let text = err.to_string();
+    assert!(text.contains("cage vertex 0 has 1025 faces"), "{text}");
+    assert!(LimitSurface::new(&fan(64), Scheme::Loop, &options).is_ok());
 }
