@@ -24,115 +24,17 @@ use glam::DVec3;
 pub type Bicubic = [[DVec3; 4]; 4];
 
 /// Writes `patches` as an AP214 STEP file named `name` (the name goes in
-/// its header and its product).
+/// its header and its product). Each entity is written as it is made, so
+/// memory holds the shared edges and vertices, not the file's text.
 ///
 /// # Errors
 /// What `w` reports.
-pub fn write(w: &mut dyn Write, name: &str, patches: &[Bicubic]) -> io::Result<()> {
-    let mut file = Entities::default();
-    let mut faces = Vec::with_capacity(patches.len());
-    let mut vertices: HashMap<[u64; 3], usize> = HashMap::new();
-    let mut edges: HashMap<[[u64; 3]; 4], usize> = HashMap::new();
-    for patch in patches {
-        let rows: String = (0..4)
-            .map(|i| {
-                let points: Vec<String> = (0..4).map(|j| file.point(patch[i][j])).collect();
-                format!("({})", points.join(","))
-            })
-            .collect::<Vec<_>>()
-            .join(",");
-        let surface = file.add(format!(
-            "B_SPLINE_SURFACE_WITH_KNOTS('',3,3,({rows}),.UNSPECIFIED.,.F.,.F.,.F.,(4,4),(4,4),(0.,1.),(0.,1.),.UNSPECIFIED.)"
-        ));
-        // The boundary counter-clockwise seen from du × dv: v = 0 along u,
-        // u = 1 along v, then back along v = 1 and u = 0.
-        let boundary = [
-            [patch[0][0], patch[1][0], patch[2][0], patch[3][0]],
-            [patch[3][0], patch[3][1], patch[3][2], patch[3][3]],
-            [patch[3][3], patch[2][3], patch[1][3], patch[0][3]],
-            [patch[0][3], patch[0][2], patch[0][1], patch[0][0]],
-        ];
-        let oriented: Vec<String> = boundary
-            .iter()
-            .map(|curve| {
-                let key = curve.map(bits);
-                let mut reversed = key;
-                reversed.reverse();
-                let (key, forward) = if key <= reversed {
-                    (key, true)
-                } else {
-                    (reversed, false)
-                };
-                let edge = match edges.get(&key) {
-                    Some(&edge) => edge,
-                    None => {
-                        let mut along = *curve;
-                        if !forward {
-                            along.reverse();
-                        }
-                        let [start, end] =
-                            [along[0], along[3]].map(|p| file.vertex(&mut vertices, p));
-                        let points: Vec<String> = along.iter().map(|&p| file.point(p)).collect();
-                        let geometry = file.add(format!(
-                            "B_SPLINE_CURVE_WITH_KNOTS('',3,({}),.UNSPECIFIED.,.F.,.F.,(4,4),(0.,1.),.UNSPECIFIED.)",
-                            points.join(",")
-                        ));
-                        let edge = file.add(format!("EDGE_CURVE('',#{start},#{end},#{geometry},.T.)"));
-                        edges.insert(key, edge);
-                        edge
-                    }
-                };
-                let sense = if forward { ".T." } else { ".F." };
-                format!("#{}", file.add(format!("ORIENTED_EDGE('',*,*,#{edge},{sense})")))
-            })
-            .collect();
-        let lp = file.add(format!("EDGE_LOOP('',({}))", oriented.join(",")));
-        let bound = file.add(format!("FACE_OUTER_BOUND('',#{lp},.T.)"));
-        faces.push(format!(
-            "#{}",
-            file.add(format!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)"))
-        ));
-    }
-
-    let shell = file.add(format!("OPEN_SHELL('',({}))", faces.join(",")));
-    let model = file.add(format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"));
-    let context = file.add("APPLICATION_CONTEXT('automotive design')".into());
-    file.add(format!(
-        "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,#{context})"
-    ));
-    let product_context = file.add(format!("PRODUCT_CONTEXT('',#{context},'mechanical')"));
+pub fn write<'a>(
+    w: &mut dyn Write,
+    name: &str,
+    patches: impl IntoIterator<Item = &'a Bicubic>,
+) -> io::Result<()> {
     let name = step_string(name);
-    let product = file.add(format!(
-        "PRODUCT('{name}','{name}','',(#{product_context}))"
-    ));
-    let formation = file.add(format!("PRODUCT_DEFINITION_FORMATION('','',#{product})"));
-    let definition_context = file.add(format!(
-        "PRODUCT_DEFINITION_CONTEXT('part definition',#{context},'design')"
-    ));
-    let definition = file.add(format!(
-        "PRODUCT_DEFINITION('design','',#{formation},#{definition_context})"
-    ));
-    let shape = file.add(format!("PRODUCT_DEFINITION_SHAPE('','',#{definition})"));
-    let length = file.add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))".into());
-    let angle = file.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))".into());
-    let solid_angle = file.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())".into());
-    let uncertainty = file.add(format!(
-        "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#{length},'distance_accuracy_value','confusion accuracy')"
-    ));
-    let geometric_context = file.add(format!(
-        "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#{uncertainty}))GLOBAL_UNIT_ASSIGNED_CONTEXT((#{length},#{angle},#{solid_angle}))REPRESENTATION_CONTEXT('',''))"
-    ));
-    let origin = file.point(DVec3::ZERO);
-    let z = file.add("DIRECTION('',(0.,0.,1.))".into());
-    let x = file.add("DIRECTION('',(1.,0.,0.))".into());
-    let placement = file.add(format!("AXIS2_PLACEMENT_3D('',{origin},#{z},#{x})"));
-    let representation = file.add(format!(
-        "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{name}',(#{placement},#{model}),#{geometric_context})"
-    ));
-    file.add(format!(
-        "SHAPE_DEFINITION_REPRESENTATION(#{shape},#{representation})"
-    ));
-
     writeln!(w, "ISO-10303-21;")?;
     writeln!(w, "HEADER;")?;
     writeln!(
@@ -150,28 +52,135 @@ pub fn write(w: &mut dyn Write, name: &str, patches: &[Bicubic]) -> io::Result<(
     )?;
     writeln!(w, "ENDSEC;")?;
     writeln!(w, "DATA;")?;
-    for (k, entity) in file.lines.iter().enumerate() {
-        writeln!(w, "#{}={entity};", k + 1)?;
+    let mut file = Entities { w, count: 0 };
+    let mut faces = String::new();
+    let mut vertices: HashMap<[u64; 3], usize> = HashMap::new();
+    let mut edges: HashMap<[[u64; 3]; 4], usize> = HashMap::new();
+    for patch in patches {
+        let mut rows = Vec::with_capacity(4);
+        for row in patch {
+            let mut points = Vec::with_capacity(4);
+            for &p in row {
+                points.push(file.point(p)?);
+            }
+            rows.push(format!("({})", points.join(",")));
+        }
+        let surface = file.add(&format!(
+            "B_SPLINE_SURFACE_WITH_KNOTS('',3,3,({}),.UNSPECIFIED.,.F.,.F.,.F.,(4,4),(4,4),(0.,1.),(0.,1.),.UNSPECIFIED.)",
+            rows.join(",")
+        ))?;
+        // The boundary counter-clockwise seen from du × dv: v = 0 along u,
+        // u = 1 along v, then back along v = 1 and u = 0.
+        let boundary = [
+            [patch[0][0], patch[1][0], patch[2][0], patch[3][0]],
+            [patch[3][0], patch[3][1], patch[3][2], patch[3][3]],
+            [patch[3][3], patch[2][3], patch[1][3], patch[0][3]],
+            [patch[0][3], patch[0][2], patch[0][1], patch[0][0]],
+        ];
+        let mut oriented = Vec::with_capacity(4);
+        for curve in &boundary {
+            let key = curve.map(bits);
+            let mut reversed = key;
+            reversed.reverse();
+            let (key, forward) = if key <= reversed {
+                (key, true)
+            } else {
+                (reversed, false)
+            };
+            let edge = match edges.get(&key) {
+                Some(&edge) => edge,
+                None => {
+                    let mut along = *curve;
+                    if !forward {
+                        along.reverse();
+                    }
+                    let start = file.vertex(&mut vertices, along[0])?;
+                    let end = file.vertex(&mut vertices, along[3])?;
+                    let mut points = Vec::with_capacity(4);
+                    for &p in &along {
+                        points.push(file.point(p)?);
+                    }
+                    let geometry = file.add(&format!(
+                        "B_SPLINE_CURVE_WITH_KNOTS('',3,({}),.UNSPECIFIED.,.F.,.F.,(4,4),(0.,1.),.UNSPECIFIED.)",
+                        points.join(",")
+                    ))?;
+                    let edge =
+                        file.add(&format!("EDGE_CURVE('',#{start},#{end},#{geometry},.T.)"))?;
+                    edges.insert(key, edge);
+                    edge
+                }
+            };
+            let sense = if forward { ".T." } else { ".F." };
+            let oriented_edge = file.add(&format!("ORIENTED_EDGE('',*,*,#{edge},{sense})"))?;
+            oriented.push(format!("#{oriented_edge}"));
+        }
+        let lp = file.add(&format!("EDGE_LOOP('',({}))", oriented.join(",")))?;
+        let bound = file.add(&format!("FACE_OUTER_BOUND('',#{lp},.T.)"))?;
+        let face = file.add(&format!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)"))?;
+        if !faces.is_empty() {
+            faces.push(',');
+        }
+        let _ = write!(faces, "#{face}");
     }
+
+    let shell = file.add(&format!("OPEN_SHELL('',({faces}))"))?;
+    let model = file.add(&format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"))?;
+    let context = file.add("APPLICATION_CONTEXT('automotive design')")?;
+    file.add(&format!(
+        "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,#{context})"
+    ))?;
+    let product_context = file.add(&format!("PRODUCT_CONTEXT('',#{context},'mechanical')"))?;
+    let product = file.add(&format!(
+        "PRODUCT('{name}','{name}','',(#{product_context}))"
+    ))?;
+    let formation = file.add(&format!("PRODUCT_DEFINITION_FORMATION('','',#{product})"))?;
+    let definition_context = file.add(&format!(
+        "PRODUCT_DEFINITION_CONTEXT('part definition',#{context},'design')"
+    ))?;
+    let definition = file.add(&format!(
+        "PRODUCT_DEFINITION('design','',#{formation},#{definition_context})"
+    ))?;
+    let shape = file.add(&format!("PRODUCT_DEFINITION_SHAPE('','',#{definition})"))?;
+    let length = file.add("(LENGTH_UNIT()NAMED_UNIT(*)SI_UNIT(.MILLI.,.METRE.))")?;
+    let angle = file.add("(NAMED_UNIT(*)PLANE_ANGLE_UNIT()SI_UNIT($,.RADIAN.))")?;
+    let solid_angle = file.add("(NAMED_UNIT(*)SI_UNIT($,.STERADIAN.)SOLID_ANGLE_UNIT())")?;
+    let uncertainty = file.add(&format!(
+        "UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),#{length},'distance_accuracy_value','confusion accuracy')"
+    ))?;
+    let geometric_context = file.add(&format!(
+        "(GEOMETRIC_REPRESENTATION_CONTEXT(3)GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((#{uncertainty}))GLOBAL_UNIT_ASSIGNED_CONTEXT((#{length},#{angle},#{solid_angle}))REPRESENTATION_CONTEXT('',''))"
+    ))?;
+    let origin = file.point(DVec3::ZERO)?;
+    let z = file.add("DIRECTION('',(0.,0.,1.))")?;
+    let x = file.add("DIRECTION('',(1.,0.,0.))")?;
+    let placement = file.add(&format!("AXIS2_PLACEMENT_3D('',{origin},#{z},#{x})"))?;
+    let representation = file.add(&format!(
+        "MANIFOLD_SURFACE_SHAPE_REPRESENTATION('{name}',(#{placement},#{model}),#{geometric_context})"
+    ))?;
+    file.add(&format!(
+        "SHAPE_DEFINITION_REPRESENTATION(#{shape},#{representation})"
+    ))?;
+    let w = file.w;
     writeln!(w, "ENDSEC;")?;
     writeln!(w, "END-ISO-10303-21;")
 }
 
-/// The data section as it is built: entity k is `#k + 1`.
-#[derive(Default)]
-struct Entities {
-    lines: Vec<String>,
+/// The data section as it is written: entity k is `#k`.
+struct Entities<'w> {
+    w: &'w mut dyn Write,
+    count: usize,
 }
 
-impl Entities {
-    fn add(&mut self, entity: String) -> usize {
-        self.lines.push(entity);
-        self.lines.len()
+impl Entities<'_> {
+    fn add(&mut self, entity: &str) -> io::Result<usize> {
+        self.count += 1;
+        writeln!(self.w, "#{}={entity};", self.count)?;
+        Ok(self.count)
     }
 
     /// A new `CARTESIAN_POINT`, as the reference `#n` (control points are
     /// not shared: each curve and surface lists its own).
-    fn point(&mut self, p: DVec3) -> String {
+    fn point(&mut self, p: DVec3) -> io::Result<String> {
         let mut text = String::from("CARTESIAN_POINT('',(");
         for (k, x) in p.to_array().into_iter().enumerate() {
             if k > 0 {
@@ -180,18 +189,18 @@ impl Entities {
             let _ = write!(text, "{}", real(x));
         }
         text.push_str("))");
-        format!("#{}", self.add(text))
+        Ok(format!("#{}", self.add(&text)?))
     }
 
     /// The `VERTEX_POINT` at `p`, shared by every edge that ends there.
-    fn vertex(&mut self, vertices: &mut HashMap<[u64; 3], usize>, p: DVec3) -> usize {
+    fn vertex(&mut self, vertices: &mut HashMap<[u64; 3], usize>, p: DVec3) -> io::Result<usize> {
         if let Some(&v) = vertices.get(&bits(p)) {
-            return v;
+            return Ok(v);
         }
-        let point = self.point(p);
-        let v = self.add(format!("VERTEX_POINT('',{point})"));
+        let point = self.point(p)?;
+        let v = self.add(&format!("VERTEX_POINT('',{point})"))?;
         vertices.insert(bits(p), v);
-        v
+        Ok(v)
     }
 }
 

@@ -56,13 +56,14 @@ pub fn run(cli: &Cli, args: &Nurbs) -> Result<(), Failure> {
             input.display()
         )));
     }
-    let surfaces: Vec<step::Bicubic> = patches.patches.iter().map(|p| p.control).collect();
     let name = output
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
     with_progress(&format!("writing {}", output.display()), || {
-        io::write_atomically(output, |w| step::write(w, &name, &surfaces))
+        io::write_atomically(output, |w| {
+            step::write(w, &name, patches.patches.iter().map(|p| &p.control))
+        })
     })?;
     print_summary(output, &patches);
     Ok(())
