@@ -2713,14 +2713,7 @@ fn convert_round_trips_through_every_format() {
 #[test]
 fn evaluate_refuses_a_vertex_of_too_many_faces() {
     let dir = folder("evaluate-crowded");
-    let n = 1100u32;
-    let mut positions = vec![weft::DVec3::ZERO];
-    positions.extend((0..n).map(|k| {
-        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
-        weft::DVec3::new(a.cos(), a.sin(), 0.0)
-    }));
-    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
-    let fan = weft::Mesh::from_polygons(positions, faces).unwrap();
+    let fan = shapes::fan(1100);
     io::write_mesh(dir.join("fan.obj"), &fan).unwrap();
     std::fs::write(dir.join("uv.txt"), "0 0.25 0.25\n").unwrap();
     let o = weft(

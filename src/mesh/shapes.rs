@@ -108,6 +108,30 @@ pub fn triangle_torus(u: usize, v: usize) -> Mesh {
     split_quads(&torus(u, v))
 }
 
+/// A disc of `n` triangles around one vertex (vertex 0, at the origin),
+/// its rim the unit circle in the z = 0 plane: a vertex of valence `n`.
+pub fn fan(n: u32) -> Mesh {
+    let mut p = vec![DVec3::ZERO];
+    p.extend((0..n).map(|k| {
+        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+        DVec3::new(a.cos(), a.sin(), 0.0)
+    }));
+    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
+    Mesh::from_polygons(p, faces).expect("fan is valid")
+}
+
+/// `n` triangles on one edge (vertices 0 and 1), like the pages of a book:
+/// an edge of `n` faces.
+pub fn book(n: u32) -> Mesh {
+    let mut p = vec![DVec3::ZERO, DVec3::Z];
+    p.extend((0..n).map(|k| {
+        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
+        DVec3::new(a.cos(), a.sin(), 0.5)
+    }));
+    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1, 2 + k]).collect();
+    Mesh::from_polygons(p, faces).expect("book is valid")
+}
+
 /// A flat grid of `nx` × `ny` unit quads in the z = 0 plane, facing +z.
 pub fn quad_grid(nx: usize, ny: usize) -> Mesh {
     let p = (0..=ny)

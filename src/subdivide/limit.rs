@@ -168,20 +168,11 @@ impl Subdivider {
                 // `limit_of` starts each sum at the vertex's term.
                 let far = mask.edges.iter().zip(&stencil.far);
                 let opposite = mask.faces.iter().zip(&stencil.opposite);
-                let mut terms: Vec<(u32, f64)> = std::iter::once((v as u32, mask.vertex))
-                    .chain(far.chain(opposite).map(|(&w, &q)| (q, w)))
-                    .collect();
-                // A stable sort keeps each point's terms in their order.
-                terms.sort_by_key(|&(point, _)| point);
-                let mut sums: Vec<(u32, f64)> = Vec::new();
-                for (point, w) in terms {
-                    match sums.last_mut() {
-                        Some((last, sum)) if *last == point => *sum += w,
-                        _ => sums.push((point, w)),
-                    }
-                }
-                sums.retain(|&(_, w)| w != 0.0);
-                sums
+                summed(
+                    std::iter::once((v as u32, mask.vertex))
+                        .chain(far.chain(opposite).map(|(&w, &q)| (q, w)))
+                        .collect(),
+                )
             };
             out.push(stencil.masks.each_ref().map(weights));
         }
@@ -291,6 +282,22 @@ impl Subdivider {
 
 /// Weights of points, `(point, weight)`.
 pub(crate) type Weights = Vec<(u32, f64)>;
+
+/// Terms `(point, weight)` summed by point, ascending, each point's terms
+/// in their order (as a sum over them from zero adds them); zeros left out.
+pub(crate) fn summed(mut terms: Weights) -> Weights {
+    // A stable sort keeps each point's terms in their order.
+    terms.sort_by_key(|&(point, _)| point);
+    let mut sums: Weights = Vec::with_capacity(terms.len());
+    for (point, w) in terms {
+        match sums.last_mut() {
+            Some((last, sum)) if *last == point => *sum += w,
+            _ => sums.push((point, w)),
+        }
+    }
+    sums.retain(|&(_, w)| w != 0.0);
+    sums
+}
 
 /// The points a vertex's limit weighs besides itself, and its masks (see
 /// `limit_stencil`).

@@ -111,7 +111,7 @@ fn refined_connectivity_equals_bucketing() {
     .unwrap();
     // A vertex of 40 edges and an edge of 40 faces: their lists are
     // searched by halves, not scanned.
-    let (fan, book) = (wide_fan(40), book(40));
+    let (fan, book) = (shapes::fan(40), shapes::book(40));
     let polygons = [
         ("fan", fan.clone()),
         ("book", book.clone()),
@@ -208,28 +208,6 @@ fn loop_keeps_the_inside_edges_of_coincident_triangles_apart() {
         }
         (faces, connectivity) = (child, derived);
     }
-}
-
-/// A disc of `n` triangles around one vertex.
-fn wide_fan(n: u32) -> crate::Mesh {
-    let mut positions = vec![crate::DVec3::ZERO];
-    for k in 0..n {
-        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
-        positions.push(crate::DVec3::new(a.cos(), a.sin(), 0.0));
-    }
-    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
-    crate::Mesh::from_polygons(positions, faces).unwrap()
-}
-
-/// `n` triangles on one edge, like the pages of a book.
-fn book(n: u32) -> crate::Mesh {
-    let mut positions = vec![crate::DVec3::ZERO, crate::DVec3::Z];
-    for k in 0..n {
-        let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
-        positions.push(crate::DVec3::new(a.cos(), a.sin(), 0.5));
-    }
-    let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1, 2 + k]).collect();
-    crate::Mesh::from_polygons(positions, faces).unwrap()
 }
 
 /// The searches by halves of long lists find what a scan finds, first and

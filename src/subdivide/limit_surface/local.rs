@@ -22,6 +22,7 @@ use std::sync::{Arc, Mutex};
 use glam::DVec3;
 
 use super::super::creases::{Rule, SubdivisionOptions, SHARPNESS_INFINITE};
+use super::super::limit::summed;
 use super::super::scheme::{NakedEdges, Scheme};
 use super::super::stencils::LevelStencils;
 use super::super::subdivider::{KeptLevel, Subdivider};
@@ -124,22 +125,6 @@ impl Sparse {
         }
         sum
     }
-}
-
-/// Terms `(point, weight)` summed by point, ascending, each point's terms
-/// in their order (as a sum over them from zero adds them); zeros left out.
-fn summed(mut terms: Vec<(u32, f64)>) -> Vec<(u32, f64)> {
-    // A stable sort keeps each point's terms in their order.
-    terms.sort_by_key(|&(point, _)| point);
-    let mut sums: Vec<(u32, f64)> = Vec::with_capacity(terms.len());
-    for (point, w) in terms {
-        match sums.last_mut() {
-            Some((last, sum)) if *last == point => *sum += w,
-            _ => sums.push((point, w)),
-        }
-    }
-    sums.retain(|&(_, w)| w != 0.0);
-    sums
 }
 
 /// A child of a node: its node and its points from the parent's.

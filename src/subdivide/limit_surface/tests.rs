@@ -269,15 +269,7 @@ fn ruled_cages() -> Vec<(Mesh, Scheme, SubdivisionOptions)> {
     };
     let mut smooth_triangles = SubdivisionOptions::new(NakedEdges::CornerFixed);
     smooth_triangles.triangles = TriangleRule::Smooth;
-    let fan = {
-        let mut positions = vec![DVec3::ZERO];
-        positions.extend((0..40).map(|k| {
-            let a = std::f64::consts::TAU * f64::from(k) / 40.0;
-            DVec3::new(a.cos(), a.sin(), 0.1 * f64::from(k % 3))
-        }));
-        let faces: Vec<[u32; 3]> = (0..40).map(|k| [0, 1 + k, 1 + (k + 1) % 40]).collect();
-        Mesh::from_polygons(positions, faces).unwrap()
-    };
+    let fan = shapes::fan(40);
     let fixed = SubdivisionOptions::new(NakedEdges::Fixed);
     vec![
         (
@@ -392,20 +384,11 @@ fn limit_weights_are_the_limit_of_unit_points() {
 /// any refinement, naming it; one of the most is not.
 #[test]
 fn a_vertex_of_too_many_faces_is_refused() {
-    let fan = |n: u32| {
-        let mut positions = vec![DVec3::ZERO];
-        positions.extend((0..n).map(|k| {
-            let a = std::f64::consts::TAU * f64::from(k) / f64::from(n);
-            DVec3::new(a.cos(), a.sin(), 0.0)
-        }));
-        let faces: Vec<[u32; 3]> = (0..n).map(|k| [0, 1 + k, 1 + (k + 1) % n]).collect();
-        Mesh::from_polygons(positions, faces).unwrap()
-    };
     let options = SubdivisionOptions::new(NakedEdges::Fixed);
     let too_many = MAX_LIMIT_VALENCE as u32 + 1;
-    let err = LimitSurface::new(&fan(too_many), Scheme::Loop, &options).unwrap_err();
+    let err = LimitSurface::new(&shapes::fan(too_many), Scheme::Loop, &options).unwrap_err();
     assert!(matches!(err, Error::ResultTooLarge(_)), "{err}");
     let text = err.to_string();
     assert!(text.contains("cage vertex 0 has 1025 faces"), "{text}");
-    assert!(LimitSurface::new(&fan(64), Scheme::Loop, &options).is_ok());
+    assert!(LimitSurface::new(&shapes::fan(64), Scheme::Loop, &options).is_ok());
 }
