@@ -299,14 +299,36 @@ fn ruled_cages() -> Vec<(Mesh, Scheme, SubdivisionOptions)> {
     ]
 }
 
-/// The weight of `point` in row `r`, and that no weight is stored as 0.
-fn weight_in(sparse: &local::Sparse, r: usize, point: usize) -> f64 {
+/// Asserts that the weight of `point` in row `r` has the bits of `value`
+/// (0 where the row leaves the point out), and that no weight is stored as 0.
+#[track_caller]
+fn assert_weight(
+    sparse: &local::Sparse,
+    r: usize,
+    point: usize,
+    value: f64,
+    what: impl Fn() -> String,
+) {
     let range = sparse.offsets[r] as usize..sparse.offsets[r + 1] as usize;
-    assert!(sparse.weights[range.clone()].iter().all(|&w| w != 0.0));
+    assert!(
+        sparse.weights[range.clone()].iter().all(|&w| w != 0.0),
+        "{}",
+        what()
+    );
     let at = sparse.sources[range.clone()]
         .iter()
         .position(|&s| s as usize == point);
-    at.map_or(0.0, |k| sparse.weights[range.start + k])
+    let w = at.map_or(0.0, |k| sparse.weights[range.start + k]);
+    assert_eq!(w.to_bits(), (value + 0.0).to_bits(), "{}", what());
+}
+
+/// For each of `n` points, the points all at zero but that one at x = 1.
+fn unit_points(n: usize) -> impl Iterator<Item = (usize, Vec<DVec3>)> {
+    (0..n).map(move |k| {
+        let mut unit = vec![DVec3::ZERO; n];
+        unit[k] = DVec3::X;
+        (k, unit)
+    })
 }
 
 /// A level's stencils as weights of the parent's points are, bit for bit,
@@ -317,19 +339,12 @@ fn stencil_weights_are_the_refinement_of_unit_points() {
         let one = Subdivider::new(&cage, scheme, 1, &options).unwrap();
         let weights = local::Sparse::of_stencils(&one.stencils[0]);
         assert_eq!(weights.rows(), one.vertex_count());
-        let mut unit = vec![DVec3::ZERO; cage.vertex_count()];
         let mut refined = vec![DVec3::ZERO; one.vertex_count()];
-        for k in 0..cage.vertex_count() {
-            unit.fill(DVec3::ZERO);
-            unit[k] = DVec3::X;
+        for (k, unit) in unit_points(cage.vertex_count()) {
             one.evaluate(&unit, &mut refined).unwrap();
             for (r, p) in refined.iter().enumerate() {
-                let w = weight_in(&weights, r, k);
-                assert_eq!(
-                    w.to_bits(),
-                    (p.x + 0.0).to_bits(),
-                    "{scheme:?} row {r} point {k}"
-                );
+                let what = || format!("{scheme:?} row {r} point {k}");
+                assert_weight(&weights, r, k, p.x, what);
             }
         }
     }
@@ -360,20 +375,13 @@ fn limit_weights_are_the_limit_of_unit_points() {
             .iter()
             .map(|masks| local::Sparse::from_rows(masks.iter().map(Vec::as_slice)))
             .collect();
-        let mut unit = vec![DVec3::ZERO; n];
-        for k in 0..n {
-            unit.fill(DVec3::ZERO);
-            unit[k] = DVec3::X;
+        for (k, unit) in unit_points(n) {
             let limit = zero.limit_of(&unit).unwrap();
             for (v, masks) in rows.iter().enumerate() {
                 let values = [limit.positions[v], limit.du[v], limit.dv[v]];
                 for (row, value) in values.iter().enumerate() {
-                    let w = weight_in(masks, row, k);
-                    assert_eq!(
-                        w.to_bits(),
-                        (value.x + 0.0).to_bits(),
-                        "{scheme:?} vertex {v} mask {row} point {k}"
-                    );
+                    let what = || format!("{scheme:?} vertex {v} mask {row} point {k}");
+                    assert_weight(masks, row, k, value.x, what);
                 }
             }
         }
