@@ -117,7 +117,7 @@ type Sample = [DVec3; 3];
 
 /// The most faces around one cage vertex. Every face around a vertex
 /// keeps the local refinement of the vertex's whole ring: at 1,024 faces
-/// about 1.7 GB and 17 s on one core of an AMD EPYC guest.
+/// about 1.7 GB and 17 s on a two-core AMD EPYC guest.
 pub const MAX_LIMIT_VALENCE: usize = 1024;
 
 impl LimitSurface {
