@@ -2711,6 +2711,26 @@ fn convert_round_trips_through_every_format() {
 /// A cage with a vertex of more faces than the limit surface takes is
 /// refused, naming the cage file and the vertex, and nothing is written.
 #[test]
+fn nurbs_refuses_a_vertex_whose_faces_make_too_many_patches_to_fit_together() {
+    let dir = folder("nurbs-crowded");
+    io::write_mesh(dir.join("fan.obj"), &shapes::fan(1500)).unwrap();
+    let o = weft(&dir, &["nurbs", "fan.obj", "fan.step", "--isolation", "4"]);
+    assert_exit(&o, 1);
+    assert_mentions(
+        &stderr(&o),
+        &[
+            "fan.obj",
+            "vertex 0 has 1500 faces",
+            "use a lower isolation",
+        ],
+    );
+    assert!(!dir.join("fan.step").exists());
+    // Fewer levels fit.
+    let text = succeeds(&dir, &["nurbs", "fan.obj", "fan.step", "--isolation", "1"]);
+    assert_mentions(&text, &["patches           4500"]);
+}
+
+#[test]
 fn evaluate_refuses_a_vertex_of_too_many_faces() {
     let dir = folder("evaluate-crowded");
     let fan = shapes::fan(1100);

@@ -36,7 +36,10 @@ pub const WEFT_PATCH_DOUBLES: usize = 48;
 /// `capacity` doubles (it may be NULL when `capacity` is 0), `out_cage_faces` and `out_errors` `capacity` elements
 /// each; too little fails with WEFT_STATUS_BUFFER_TOO_SMALL. An isolation
 /// outside 1 to 8 or another scheme is WEFT_STATUS_INVALID_ARGUMENT; the
-/// options fail as `weft_subdivide_ex`'s. Nothing is written on failure.
+/// options fail as `weft_subdivide_ex`'s; a face whose neighbours (the faces
+/// sharing a vertex with it) would make more than 262,144 patches, a vertex
+/// of very many faces at a high isolation, is WEFT_STATUS_RESULT_TOO_LARGE.
+/// Nothing is written on failure.
 ///
 /// # Safety
 /// `cage` and `options` are NULL or valid; each non-NULL output holds what

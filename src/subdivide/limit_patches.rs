@@ -6,9 +6,10 @@
 //! surface at the dyadic parameters of the face):
 //! - its corners are the limit points of the face's corners;
 //! - each edge's two inner control points fit the limit points at ¼, ½, ¾
-//!   of the edge (least squares), computed once per edge, so two patches
-//!   meeting at an edge share its curve exactly and the patches are
-//!   watertight everywhere, across creases and boundaries included;
+//!   of the edge (least squares), by sums symmetric in the edge's direction,
+//!   so the two patches meeting at an edge share its curve bit for bit and
+//!   the patches are watertight everywhere, across creases and boundaries
+//!   included;
 //! - the four inner control points fit the nine inner limit points of the
 //!   face's ¼ grid.
 //!
@@ -23,13 +24,16 @@
 
 use glam::DVec3;
 use rayon::prelude::*;
-use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
 
 use super::creases::SubdivisionOptions;
-use super::scheme::Scheme;
+use super::level::{Connectivity, Faces};
+use super::scheme::{check_counts, Scheme};
 use super::subdivider::Subdivider;
+use crate::buffers::try_vec;
 use crate::error::{Error, Result};
-use crate::mesh::Mesh;
+use crate::mesh::{Mesh, MeshOptions};
 
 /// The most isolation levels: the fit reads the limit three levels deeper.
 pub const MAX_ISOLATION: u32 = 8;
@@ -97,7 +101,14 @@ pub struct LimitPatches {
 /// [`Error::InvalidArgument`] for an isolation outside `1..=MAX_ISOLATION`
 /// or options naming another scheme's rule; what [`Subdivider::new`]
 /// refuses (bad creases, holes, a result past the size cap, which the fit's
-/// three deeper levels count towards).
+/// three deeper levels count towards); [`Error::ResultTooLarge`] when the
+/// faces sharing a vertex with one face would make more than 262,144
+/// patches (a vertex of very many faces at a high isolation), naming the
+/// face and the vertex.
+///
+/// The cage is fitted piece by piece, each piece with the faces around it,
+/// so memory follows a piece of a few thousand patches and the patches
+/// themselves, not the whole cage three levels past `isolation`.
 pub fn limit_patches(
     cage: &Mesh,
     options: &SubdivisionOptions,
@@ -130,69 +141,92 @@ pub fn limit_patches(
         patches.size *= up;
         return Ok(patches);
     }
-    let fine = Subdivider::new(cage, Scheme::CatmullClark, isolation + 3, options)?;
-    let limit = fine.limit()?.positions;
+    patches_in_pieces(cage, options, isolation, PIECE_PATCHES)
+}
+
+/// About how many patches one piece of the cage and the faces around it
+/// make: each is subdivided on its own, three levels past `isolation`, at
+/// roughly 27 KB a patch, so memory follows the piece and not the cage.
+const PIECE_PATCHES: usize = 4096;
+
+/// The most patches the faces around one cage face may make (~7 GB of
+/// subdivision): more is a vertex of very many faces at a high isolation.
+const MAX_PIECE_PATCHES: usize = 1 << 18;
+
+/// The patches, made piece by piece: consecutive cage faces with every face
+/// sharing a vertex with one of them, since the limit surface over a face
+/// depends on those alone. Each piece is refined as a cage of its own whose
+/// faces and vertices keep the whole cage's order, so every list walked near
+/// the piece's faces runs in the same order and every limit point rounds as
+/// it would on the whole cage: the patches are those of one piece, bit for
+/// bit, whatever the `budget`.
+fn patches_in_pieces(
+    cage: &Mesh,
+    options: &SubdivisionOptions,
+    isolation: u32,
+    budget: usize,
+) -> Result<LimitPatches> {
+    // Checked on the whole cage, so errors name its faces and vertices, and
+    // the size cap counts the fit's three deeper levels.
+    let whole = Subdivider::new(cage, Scheme::CatmullClark, 0, options)?;
+    let level = &whole.levels[0];
+    check_counts(
+        Scheme::CatmullClark,
+        cage.vertex_count() as u64,
+        level.connectivity.edge_count() as u64,
+        cage.face_count() as u64,
+        cage.index_count() as u64,
+        isolation + 3,
+    )?;
+    let tags = CageTags::of(&level.connectivity, cage, options);
+    let pieces = pieces(&level.faces, &level.connectivity, isolation, budget)?;
     let size = cage
         .bounding_box()
         .map_or(0.0, |(low, high)| (high - low).length());
 
-    // Every refined level is quads; the children of face f of level
-    // `isolation` are the 64 faces from 64 f three levels down, and share
-    // its cage face.
-    let fine_faces = fine.face_indices();
-    let face_count = fine.face_count() / 64;
-    let parents: Vec<u32> = fine.parent_faces().into_iter().step_by(64).collect();
-    let grids: Vec<Grid> = (0..face_count)
-        .into_par_iter()
-        .map(|f| Grid::of(&fine_faces[256 * f..256 * (f + 1)]))
-        .collect();
-
-    // Each edge's curve once, in the direction of its lower corner, keyed by
-    // its ends and its midpoint (pairs repeat where a face repeats a vertex).
-    let mut curves: HashMap<[u32; 3], [DVec3; 4]> = HashMap::new();
-    for grid in &grids {
-        for k in 0..4 {
-            let ids = grid.edge(k);
-            let forward = ids[0] < ids[8];
-            let key = edge_key(&ids);
-            curves.entry(key).or_insert_with(|| {
-                let mut along = ids;
-                if !forward {
-                    along.reverse();
-                }
-                fit_curve(&along.map(|v| limit[v as usize]))
-            });
+    // Where each cage face's patches start: its children's children, in
+    // order (a hole has none).
+    let per_side = 1usize << (2 * (isolation - 1));
+    let mut next = Vec::with_capacity(cage.face_count());
+    let mut total = 0;
+    for (f, face) in cage.faces().enumerate() {
+        next.push(total);
+        if !tags.holes[f] {
+            total += face.len() * per_side;
         }
     }
-
-    let patches: Vec<BezierPatch> = grids
-        .par_iter()
-        .zip(parents.par_iter())
-        .map(|(grid, &cage_face)| {
-            let edges: [[DVec3; 4]; 4] = std::array::from_fn(|k| {
-                let ids = grid.edge(k);
-                let mut curve = curves[&edge_key(&ids)];
-                if ids[0] > ids[8] {
-                    curve.reverse();
-                }
-                curve
-            });
-            let control = fit_patch(&edges, |a, b| limit[grid.at(2 * a, 2 * b) as usize]);
-            let mut patch = BezierPatch {
-                cage_face,
-                control,
-                error: 0.0,
-            };
-            for a in 0..=8 {
-                for b in 0..=8 {
-                    let exact = limit[grid.at(a, b) as usize];
-                    let distance = (patch.point(a as f64 / 8.0, b as f64 / 8.0) - exact).length();
-                    patch.error = patch.error.max(distance);
+    let mut patches = try_vec(total, "patches")?;
+    patches.resize(
+        total,
+        BezierPatch {
+            cage_face: 0,
+            control: [[DVec3::ZERO; 4]; 4],
+            error: 0.0,
+        },
+    );
+    // One piece at a time on each thread: a piece's subdivision gains
+    // little from more threads, and fewer pieces at once hold less memory.
+    let taken = AtomicUsize::new(0);
+    let placed = Mutex::new((&mut patches, &mut next));
+    let workers = rayon::current_num_threads().clamp(1, pieces.len().max(1));
+    (0..workers)
+        .into_par_iter()
+        .try_for_each(|_| -> Result<()> {
+            while let Some(piece) = pieces.get(taken.fetch_add(1, Ordering::Relaxed)) {
+                let made =
+                    piece_patches(cage, &level.connectivity, options, &tags, isolation, piece)?;
+                let mut guard = placed
+                    .lock()
+                    .unwrap_or_else(|poisoned| poisoned.into_inner());
+                let (patches, next) = &mut *guard;
+                for patch in made {
+                    let at = &mut next[patch.cage_face as usize];
+                    patches[*at] = patch;
+                    *at += 1;
                 }
             }
-            patch
-        })
-        .collect();
+            Ok(())
+        })?;
     let max_error = patches.iter().map(|p| p.error).fold(0.0, f64::max);
     let exact_count = patches.iter().filter(|p| p.error <= 1e-12 * size).count();
     Ok(LimitPatches {
@@ -204,8 +238,250 @@ pub fn limit_patches(
     })
 }
 
-fn edge_key(ids: &[u32; 9]) -> [u32; 3] {
-    [ids[0].min(ids[8]), ids[0].max(ids[8]), ids[4]]
+/// Cage faces whose patches are made together.
+#[derive(Debug)]
+struct Piece {
+    faces: Vec<u32>,
+    /// Those faces and every face sharing a vertex with one, ascending.
+    ring: Vec<u32>,
+}
+
+/// Cuts the cage's faces into pieces, each grown breadth first from the
+/// lowest face left (so that pieces are round and their rings thin) until
+/// its ring would make more than `budget` patches. A face whose ring alone
+/// makes more is a piece of its own, and the faces that add nothing to its
+/// ring join it (every face around a vertex of many faces shares that ring).
+///
+/// # Errors
+/// [`Error::ResultTooLarge`] when one face's ring makes more than
+/// [`MAX_PIECE_PATCHES`], naming the face and its vertex of most faces.
+fn pieces(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    isolation: u32,
+    budget: usize,
+) -> Result<Vec<Piece>> {
+    let per_side = 1usize << (2 * (isolation - 1));
+    let face_count = faces.face_count();
+    let mut taken = vec![false; face_count];
+    // The piece whose ring holds each face and vertex so far.
+    let mut face_piece = vec![u32::MAX; face_count];
+    let mut vertex_piece = vec![u32::MAX; faces.vertex_count];
+    let mut pieces = Vec::new();
+    let (mut added, mut queue) = (Vec::new(), std::collections::VecDeque::new());
+    let mut seed = 0;
+    loop {
+        while seed < face_count && taken[seed] {
+            seed += 1;
+        }
+        if seed == face_count {
+            return Ok(pieces);
+        }
+        let id = pieces.len() as u32;
+        let mut piece = Piece {
+            faces: Vec::new(),
+            ring: Vec::new(),
+        };
+        let mut ring_patches = 0;
+        queue.clear();
+        queue.push_back(seed as u32);
+        while let Some(f) = queue.pop_front() {
+            let f = f as usize;
+            if taken[f] {
+                continue;
+            }
+            // The faces face f adds to the ring, and their patches.
+            added.clear();
+            let mut patches = 0;
+            for &v in faces.face(f) {
+                if std::mem::replace(&mut vertex_piece[v as usize], id) == id {
+                    continue;
+                }
+                for &c in connectivity.vertex_corners(v as usize) {
+                    let g = connectivity.face_of(c as usize);
+                    if std::mem::replace(&mut face_piece[g], id) != id {
+                        added.push(g as u32);
+                        patches += faces.corners(g).len() * per_side;
+                    }
+                }
+            }
+            if piece.faces.is_empty() && patches > MAX_PIECE_PATCHES {
+                let crowded = faces
+                    .face(f)
+                    .iter()
+                    .copied()
+                    .max_by_key(|&v| connectivity.vertex_corners(v as usize).len())
+                    .unwrap_or(0);
+                return Err(Error::ResultTooLarge(format!(
+                    "face {f} and the faces sharing a vertex with it (vertex {crowded} has {} faces) \
+                     would make {patches} patches at isolation {isolation}, past the {MAX_PIECE_PATCHES} \
+                     that can be fitted together; use a lower isolation",
+                    connectivity.vertex_corners(crowded as usize).len()
+                )));
+            }
+            // Past the budget the piece ends here: the marks face f left
+            // belong to a ring no longer grown.
+            if !piece.faces.is_empty() && patches > 0 && ring_patches + patches > budget {
+                break;
+            }
+            taken[f] = true;
+            piece.faces.push(f as u32);
+            piece.ring.extend_from_slice(&added);
+            ring_patches += patches;
+            queue.extend(added.iter().filter(|&&g| !taken[g as usize]));
+        }
+        piece.ring.sort_unstable();
+        pieces.push(piece);
+    }
+}
+
+/// The options' creases, corners and holes by cage edge, vertex and face,
+/// as the whole cage reads them (the last given wins).
+struct CageTags {
+    creases: Vec<Option<f64>>,
+    corners: Vec<Option<f64>>,
+    holes: Vec<bool>,
+}
+
+impl CageTags {
+    /// The options are already checked against the cage.
+    fn of(connectivity: &Connectivity, cage: &Mesh, options: &SubdivisionOptions) -> CageTags {
+        let mut creases = vec![None; connectivity.edge_count()];
+        for &([a, b], sharpness) in &options.creases {
+            if let Some(e) = connectivity.find_edge(a, b) {
+                creases[e as usize] = Some(sharpness);
+            }
+        }
+        let mut corners = vec![None; cage.vertex_count()];
+        for &(v, sharpness) in &options.corners {
+            corners[v as usize] = Some(sharpness);
+        }
+        let mut holes = vec![false; cage.face_count()];
+        for &f in &options.holes {
+            holes[f as usize] = true;
+        }
+        CageTags {
+            creases,
+            corners,
+            holes,
+        }
+    }
+}
+
+/// The patches of `piece`'s faces, from its ring refined on its own.
+fn piece_patches(
+    cage: &Mesh,
+    connectivity: &Connectivity,
+    options: &SubdivisionOptions,
+    tags: &CageTags,
+    isolation: u32,
+    piece: &Piece,
+) -> Result<Vec<BezierPatch>> {
+    let mut vertices: Vec<u32> = piece
+        .ring
+        .iter()
+        .flat_map(|&f| cage.face(f as usize).iter().copied())
+        .collect();
+    vertices.sort_unstable();
+    vertices.dedup();
+    let local = |v: u32| vertices.binary_search(&v).unwrap_or(0) as u32;
+    let ring_faces = piece.ring.iter().map(|&f| cage.face(f as usize));
+    let sizes: Vec<u32> = ring_faces.clone().map(|face| face.len() as u32).collect();
+    let indices: Vec<u32> = ring_faces.flatten().map(|&v| local(v)).collect();
+    let positions = vertices
+        .iter()
+        .map(|&v| cage.positions()[v as usize])
+        .collect();
+    let ring_cage = Mesh::new_with(
+        positions,
+        sizes,
+        indices,
+        MeshOptions {
+            allow_repeated_vertices: true,
+        },
+    )
+    .map_err(Error::from)?;
+    let mut ring_options = SubdivisionOptions {
+        creases: Vec::new(),
+        corners: Vec::new(),
+        holes: Vec::new(),
+        ..options.clone()
+    };
+    for (i, &f) in piece.ring.iter().enumerate() {
+        for c in
+            cage.face_start(f as usize)..cage.face_start(f as usize) + cage.face(f as usize).len()
+        {
+            let e = connectivity.corner_edges[c] as usize;
+            if let Some(sharpness) = tags.creases[e] {
+                let [a, b] = connectivity.edges[e];
+                ring_options.creases.push(([local(a), local(b)], sharpness));
+            }
+        }
+        if tags.holes[f as usize] {
+            ring_options.holes.push(i as u32);
+        }
+    }
+    for (i, &v) in vertices.iter().enumerate() {
+        if let Some(sharpness) = tags.corners[v as usize] {
+            ring_options.corners.push((i as u32, sharpness));
+        }
+    }
+
+    let fine = Subdivider::new(
+        &ring_cage,
+        Scheme::CatmullClark,
+        isolation + 3,
+        &ring_options,
+    )?;
+    // Every refined level is quads; the children of face f of level
+    // `isolation` are the 64 faces from 64 f three levels down.
+    let fine_faces = fine.face_indices();
+    let parents = fine.parent_faces();
+    let mut ours = vec![false; piece.ring.len()];
+    for &f in &piece.faces {
+        ours[piece.ring.binary_search(&f).unwrap_or(0)] = true;
+    }
+    let grids: Vec<(Grid, u32)> = (0..fine.face_count() / 64)
+        .filter(|&g| ours[parents[64 * g] as usize])
+        .map(|g| {
+            let grid = Grid::of(&fine_faces[256 * g..256 * (g + 1)]);
+            (grid, piece.ring[parents[64 * g] as usize])
+        })
+        .collect();
+    // The limit at the grids' points alone, not at the rest of the ring.
+    let mut points: Vec<u32> = grids.iter().flat_map(|(grid, _)| grid.0).collect();
+    points.sort_unstable();
+    points.dedup();
+    let limit = fine
+        .limit_at_vertices(ring_cage.positions(), points.iter().map(|&v| v as usize))?
+        .positions;
+    Ok(grids
+        .into_par_iter()
+        .map(|(grid, cage_face)| {
+            let grid = Grid(grid.0.map(|v| points.binary_search(&v).unwrap_or(0) as u32));
+            fitted_patch(&grid, &limit, cage_face)
+        })
+        .collect())
+}
+
+/// The patch fitted to the limit points of `grid`, with its error.
+fn fitted_patch(grid: &Grid, limit: &[DVec3], cage_face: u32) -> BezierPatch {
+    let edges: [[DVec3; 4]; 4] =
+        std::array::from_fn(|k| fit_curve(&grid.edge(k).map(|v| limit[v as usize])));
+    let control = fit_patch(&edges, |a, b| limit[grid.at(2 * a, 2 * b) as usize]);
+    let mut patch = BezierPatch {
+        cage_face,
+        control,
+        error: 0.0,
+    };
+    for a in 0..=8 {
+        for b in 0..=8 {
+            let exact = limit[grid.at(a, b) as usize];
+            let distance = (patch.point(a as f64 / 8.0, b as f64 / 8.0) - exact).length();
+            patch.error = patch.error.max(distance);
+        }
+    }
+    patch
 }
 
 /// The vertices of a face's ⅛ grid three levels down: `at(a, b)` is the
@@ -272,25 +548,25 @@ fn bernstein(t: f64) -> [f64; 4] {
 }
 
 /// A cubic Bézier curve through `samples[0]` and `samples[8]` whose inner
-/// control points fit the samples at ¼, ½ and ¾ (least squares).
+/// control points fit the samples at ¼, ½ and ¾ (least squares). Every sum
+/// pairs a sample with its mirror, so the samples reversed give the curve
+/// reversed bit for bit: the two patches at an edge, each fitting it from
+/// its own side, share its curve exactly.
 fn fit_curve(samples: &[DVec3; 9]) -> [DVec3; 4] {
     let (p0, p3) = (samples[0], samples[8]);
-    // Normal equations of the two inner control points over t = ¼, ½, ¾.
-    let (mut m, mut r) = ([[0.0; 2]; 2], [DVec3::ZERO; 2]);
-    for k in [2, 4, 6] {
-        let b = bernstein(k as f64 / 8.0);
-        let rest = samples[k] - b[0] * p0 - b[3] * p3;
-        for i in 0..2 {
-            for j in 0..2 {
-                m[i][j] += b[i + 1] * b[j + 1];
-            }
-            r[i] += b[i + 1] * rest;
-        }
-    }
-    let det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
-    let p1 = (m[1][1] * r[0] - m[0][1] * r[1]) / det;
-    let p2 = (m[0][0] * r[1] - m[1][0] * r[0]) / det;
-    [p0, p1, p2, p3]
+    // The weights at ¼ (those at ¾ are the same reversed) and at ½.
+    let (q, h) = (bernstein(0.25), bernstein(0.5));
+    let near = samples[2] - (q[0] * p0 + q[3] * p3);
+    let far = samples[6] - (q[3] * p0 + q[0] * p3);
+    let middle = samples[4] - (h[0] * p0 + h[3] * p3);
+    // Normal equations of the two inner control points: the matrix is
+    // symmetric and persymmetric, [[d, o], [o, d]].
+    let d = (q[1] * q[1] + q[2] * q[2]) + h[1] * h[1];
+    let o = (q[1] * q[2] + q[2] * q[1]) + h[1] * h[2];
+    let r1 = (q[1] * near + q[2] * far) + h[1] * middle;
+    let r2 = (q[2] * near + q[1] * far) + h[2] * middle;
+    let det = d * d - o * o;
+    [p0, (d * r1 - o * r2) / det, (d * r2 - o * r1) / det, p3]
 }
 
 /// A bicubic patch with the four boundary curves `edges` (as
@@ -375,6 +651,152 @@ mod tests {
             let p = b[0] * curve[0] + b[1] * curve[1] + b[2] * curve[2] + b[3] * curve[3];
             assert!((p - cubic(t)).length() < 1e-14, "t = {t}");
         }
+    }
+
+    #[test]
+    fn a_curve_fitted_backwards_is_the_curve_reversed_bit_for_bit() {
+        let mut unit = crate::test_random::units(11);
+        for _ in 0..1000 {
+            let samples: [DVec3; 9] =
+                std::array::from_fn(|_| DVec3::new(unit(), unit(), unit()) * 1e3 - 500.0);
+            let mut backwards = samples;
+            backwards.reverse();
+            let mut curve = fit_curve(&backwards);
+            curve.reverse();
+            assert_eq!(curve, fit_curve(&samples));
+        }
+    }
+
+    /// `mesh` with every coordinate moved by up to a tenth, so that sums
+    /// taken in another order would round differently.
+    fn jittered(mesh: &Mesh, seed: u64) -> Mesh {
+        let mut unit = crate::test_random::units(seed);
+        let moved = mesh
+            .positions()
+            .iter()
+            .map(|&p| p + 0.1 * DVec3::new(unit(), unit(), unit()))
+            .collect();
+        mesh.with_positions(moved).unwrap()
+    }
+
+    #[test]
+    fn patches_made_in_pieces_are_those_of_the_whole_cage() {
+        use super::super::{Creasing, NakedEdges, TriangleRule};
+        use crate::mesh::shapes;
+        let creased = |naked_edges| SubdivisionOptions {
+            creases: vec![([7, 8], f64::INFINITY), ([8, 9], 2.0), ([14, 15], 0.5)],
+            corners: vec![(0, f64::INFINITY), (14, 1.5)],
+            holes: vec![15],
+            creasing: Creasing::Chaikin,
+            ..SubdivisionOptions::new(naked_edges)
+        };
+        let smooth_triangles = SubdivisionOptions {
+            triangles: TriangleRule::Smooth,
+            ..SubdivisionOptions::new(NakedEdges::Smooth)
+        };
+        let cases = [
+            (
+                jittered(&shapes::torus(5, 7), 1),
+                SubdivisionOptions::default(),
+                1,
+            ),
+            (
+                jittered(&shapes::cube(), 2),
+                SubdivisionOptions::default(),
+                2,
+            ),
+            (
+                jittered(&shapes::quad_grid(5, 5), 3),
+                creased(NakedEdges::Fixed),
+                1,
+            ),
+            (
+                jittered(&shapes::quad_grid(5, 5), 4),
+                creased(NakedEdges::Smooth),
+                2,
+            ),
+            (
+                jittered(&shapes::quad_grid(5, 5), 5),
+                creased(NakedEdges::CornerFixed),
+                1,
+            ),
+            (
+                jittered(&shapes::quad_grid(5, 5), 6),
+                creased(NakedEdges::None),
+                1,
+            ),
+            (jittered(&shapes::mixed_polygons(), 7), smooth_triangles, 1),
+            (
+                jittered(&shapes::icosahedron(), 8),
+                SubdivisionOptions::default(),
+                1,
+            ),
+            (
+                jittered(&shapes::fin(), 9),
+                SubdivisionOptions::default(),
+                1,
+            ),
+            (
+                jittered(&shapes::fan(12), 10),
+                SubdivisionOptions::default(),
+                1,
+            ),
+        ];
+        for (k, (cage, options, isolation)) in cases.iter().enumerate() {
+            let whole = patches_in_pieces(cage, options, *isolation, usize::MAX).unwrap();
+            assert!(!whole.patches.is_empty(), "case {k}");
+            for budget in [1, 24, 100] {
+                let pieces = patches_in_pieces(cage, options, *isolation, budget).unwrap();
+                assert_eq!(pieces, whole, "case {k}, pieces of {budget} patches");
+            }
+        }
+    }
+
+    #[test]
+    fn pieces_hold_their_rings_within_the_budget() {
+        let cage = crate::mesh::shapes::quad_grid(60, 60);
+        let mut around = vec![Vec::new(); cage.vertex_count()];
+        for (f, face) in cage.faces().enumerate() {
+            for &v in face {
+                around[v as usize].push(f as u32);
+            }
+        }
+        let whole = Subdivider::new(&cage, Scheme::CatmullClark, 0, &Default::default()).unwrap();
+        let level = &whole.levels[0];
+        let budget = 16 * 400;
+        let cut = pieces(&level.faces, &level.connectivity, 2, budget).unwrap();
+        assert!(cut.len() > 4);
+        let mut owner = vec![usize::MAX; cage.face_count()];
+        for (k, piece) in cut.iter().enumerate() {
+            assert!(piece.ring.len() * 16 <= budget);
+            assert!(piece.ring.windows(2).all(|w| w[0] < w[1]));
+            for &f in &piece.faces {
+                assert_eq!(owner[f as usize], usize::MAX, "face {f} twice");
+                owner[f as usize] = k;
+                for &v in cage.face(f as usize) {
+                    for g in &around[v as usize] {
+                        assert!(piece.ring.binary_search(g).is_ok());
+                    }
+                }
+            }
+        }
+        assert!(owner.iter().all(|&k| k != usize::MAX));
+        // Grown breadth first, pieces are round: their rings hold well
+        // under twice their faces (rows of faces would need three times).
+        let faces: usize = cut.iter().map(|p| p.faces.len()).sum();
+        let rings: usize = cut.iter().map(|p| p.ring.len()).sum();
+        assert!(rings < 2 * faces, "{rings} ring faces for {faces} faces");
+        // Around a vertex of many faces, a piece takes every face of its ring.
+        let fan = crate::mesh::shapes::fan(300);
+        let whole = Subdivider::new(&fan, Scheme::CatmullClark, 0, &Default::default()).unwrap();
+        let level = &whole.levels[0];
+        let cut = pieces(&level.faces, &level.connectivity, 1, 16).unwrap();
+        assert_eq!(cut.len(), 1);
+        let error = pieces(&level.faces, &level.connectivity, 8, 16);
+        let Err(Error::ResultTooLarge(message)) = error else {
+            panic!("{error:?}")
+        };
+        assert!(message.contains("has 300 faces"), "{message}");
     }
 
     #[test]
