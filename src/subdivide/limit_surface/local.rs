@@ -328,7 +328,7 @@ fn expand(scheme: Scheme, local: &Local) -> Result<Expanded> {
     let size = scheme.refined_face_size();
     let mut corners = vec![None; corner_count];
     if local.mesh.face_sizes().iter().all(|&s| s == size) {
-        // The limit at the face's corners alone (unit points need no scaling).
+        // The limit masks at the face's corners alone, as weights of its points.
         let masks = zero.cage_limit_weights(own.iter().map(|&v| v as usize))?;
         for (k, slot) in corners.iter_mut().enumerate() {
             let c = level.faces.corners(g).start + k;
