@@ -18,7 +18,9 @@
 //! many positions (on long thin triangles the cells fit the long edges,
 //! and the short edges' positions crowd them) has them sorted along the
 //! axis they spread most: an edge tests only those within its own extent
-//! along it.
+//! along it. Where the positions crowd cells as long as the edges (many
+//! long edges ending close together, as pages on one spine), the cells are
+//! halved while the edges still pass through a number linear in their count.
 
 use std::collections::HashMap;
 use std::hash::{BuildHasherDefault, Hash, Hasher};
@@ -55,6 +57,9 @@ struct Tuning {
     copies_piece: usize,
     /// Sites a cell holds before it is sorted along an axis.
     crowded_cell: usize,
+    /// How many of the boundary's vertices one of them may share its cell
+    /// with, on average, before the cells are halved.
+    crowded_grid: f64,
 }
 
 /// The share of a cell that covers the round-off of placing points and
@@ -65,7 +70,15 @@ const ROUND_OFF: f64 = 1.0 / 1024.0;
 const TUNING: Tuning = Tuning {
     copies_piece: COPIES_PIECE,
     crowded_cell: CROWDED_CELL,
+    crowded_grid: CROWDED_GRID,
 };
+
+/// Cells whose vertices share them with more than this many others, on
+/// average, are halved (see [`finer_where_crowded`]).
+const CROWDED_GRID: f64 = 64.0;
+
+/// The most boundary vertices the crowding of the cells is measured on.
+const CROWDING_SAMPLE: usize = 1 << 16;
 
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -305,6 +318,28 @@ fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, T
         }
         size = grid.size * 2.0;
     };
+    // The boundary's vertices from every stride-th naked edge, each once.
+    let stride = naked_corner.len().div_ceil(CROWDING_SAMPLE);
+    let mut sampled: Vec<u32> = naked_corner
+        .iter()
+        .step_by(stride)
+        .map(|&c| corner_vertices[c as usize])
+        .collect();
+    sampled.sort_unstable();
+    sampled.dedup();
+    let sampled: Vec<DVec3> = sampled.iter().map(|&v| positions[v as usize]).collect();
+    let grid = finer_where_crowded(
+        grid,
+        (reach, tolerance),
+        (&sampled, stride as f64),
+        tuning.crowded_grid,
+        |finer| {
+            let count = sum_over_edges(&|a, b| {
+                DVec3::new(1.0 + finer.cell(a).steps_to(finer.cell(b)) as f64, 0.0, 0.0)
+            });
+            count.x <= 8.0 * cell_limit
+        },
+    );
     let search = Search {
         mesh,
         corners: &corners,
@@ -322,6 +357,45 @@ fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, T
         Some(origin) => search.run(|cell| NarrowKey::of(cell, origin)),
         None => search.run(WideKey::of),
     }
+}
+
+/// `grid` with its cells halved while the boundary's vertices crowd them:
+/// where many long edges end close together (pages on one edge, spokes to
+/// a dense rim), cells as long as the edges hold thousands of vertices, and
+/// every edge would test every one. Halved while the vertices `sampled`
+/// (one in `stride` of them) share a cell with more than `crowded` others
+/// on average, the cells stay no narrower than the tolerance and within
+/// `reach`'s grid, and `edges_fit` says the edges still pass through few
+/// enough cells.
+fn finer_where_crowded(
+    mut grid: CellGrid,
+    (reach, tolerance): (f64, f64),
+    (sampled, stride): (&[DVec3], f64),
+    crowded: f64,
+    edges_fit: impl Fn(&CellGrid) -> bool,
+) -> CellGrid {
+    if sampled.is_empty() {
+        return grid;
+    }
+    // Each sampled pair in a cell stands for stride² pairs of its vertices,
+    // each sampled vertex for `stride` vertices.
+    let crowding = |grid: &CellGrid| {
+        let mut cells: Vec<Cell> = sampled.iter().map(|&p| grid.cell(p)).collect();
+        cells.par_sort_unstable();
+        let pairs: f64 = cells
+            .chunk_by(|a, b| a == b)
+            .map(|run| (run.len() * (run.len() - 1)) as f64)
+            .sum();
+        stride * pairs / sampled.len() as f64
+    };
+    while grid.size / 2.0 >= tolerance && crowding(&grid) > crowded {
+        let finer = CellGrid::with_reach(reach, grid.size / 2.0);
+        if finer.size >= grid.size || !edges_fit(&finer) {
+            break;
+        }
+        grid = finer;
+    }
+    grid
 }
 
 /// What the search for T-nodes works on: the naked edges (by their corners)
@@ -937,6 +1011,61 @@ mod tests {
         }
     }
 
+    #[test]
+    fn crowded_cells_are_halved_and_spread_ones_kept() {
+        let fits = |_: &CellGrid| true;
+        let grid = CellGrid::with_reach(2.0, 1.0);
+        // 10,000 points on a circle of radius 1: thousands to a cell, about
+        // 50 in cells of 1/32 (about 100 in cells of 1/16).
+        let circle: Vec<DVec3> = (0..10_000)
+            .map(|k| {
+                let a = std::f64::consts::TAU * k as f64 / 10_000.0;
+                DVec3::new(a.cos(), a.sin(), 0.5)
+            })
+            .collect();
+        let finer = finer_where_crowded(grid, (2.0, 1e-6), (&circle, 1.0), CROWDED_GRID, fits);
+        assert_eq!(finer.size, 1.0 / 32.0);
+        // One in ten of them stands for all: the same cells.
+        let tenth: Vec<DVec3> = circle.iter().copied().step_by(10).collect();
+        let sampled = finer_where_crowded(grid, (2.0, 1e-6), (&tenth, 10.0), CROWDED_GRID, fits);
+        assert!(sampled.size <= 2.0 * finer.size && finer.size <= 2.0 * sampled.size);
+        // Never narrower than the tolerance, nor past what the edges allow.
+        let wide = finer_where_crowded(grid, (2.0, 0.3), (&circle, 1.0), CROWDED_GRID, fits);
+        assert_eq!(wide.size, 0.5);
+        let stopped = finer_where_crowded(grid, (2.0, 1e-6), (&circle, 1.0), CROWDED_GRID, |g| {
+            g.size >= 0.25
+        });
+        assert_eq!(stopped.size, 0.25);
+        // A grid of points one cell apart stays as it is.
+        let spread: Vec<DVec3> = (0..10_000)
+            .map(|k| DVec3::new((k % 100) as f64 + 0.5, (k / 100) as f64 + 0.5, 0.5))
+            .collect();
+        let kept = finer_where_crowded(grid, (100.0, 1e-6), (&spread, 1.0), CROWDED_GRID, fits);
+        assert_eq!(kept.size, grid.size);
+    }
+
+    #[test]
+    fn pages_on_one_edge_find_the_vertices_on_their_edges() {
+        // 3,000 pages whose naked edges run from their tips to the spine's
+        // ends, and a small triangle at the middle of every hundredth
+        // page's edge from vertex 0: one T-node each.
+        let book = crate::mesh::shapes::book(3_000);
+        let mut positions = book.positions().to_vec();
+        let mut faces: Vec<Vec<u32>> = book.faces().map(<[u32]>::to_vec).collect();
+        for page in (0..3_000).step_by(100) {
+            let middle = positions[2 + page] * 0.5;
+            let first = positions.len() as u32;
+            let above = middle + DVec3::new(0.0, 0.0, 0.01);
+            let out = DVec3::new(1.02 * middle.x, 1.02 * middle.y, above.z);
+            positions.extend([middle, above, out]);
+            faces.push(vec![first, first + 1, first + 2]);
+        }
+        let mesh = Mesh::from_polygons(positions, faces).unwrap();
+        let found = find_tuned(&mesh, 1e-6, TUNING).unwrap();
+        assert_eq!(found.len(), 30);
+        assert_eq!(found, every_pair(&mesh, 1e-6));
+    }
+
     /// Two triangles where vertex 4 lies a quarter along the first one's
     /// edge 1-2 (with `t_node`), or two sharing that edge (without).
     fn two_triangles(t_node: bool) -> Mesh {
@@ -1092,6 +1221,7 @@ mod tests {
             tolerance in proptest::sample::select(vec![1e-9, 1e-3, 0.05]),
             piece in proptest::sample::select(vec![5usize, 16, 1 << 18]),
             crowded_cell in proptest::sample::select(vec![0usize, 2, CROWDED_CELL]),
+            crowded_grid in proptest::sample::select(vec![0.0, 1.0, CROWDED_GRID]),
             far: bool,
             off_seam: bool,
         ) {
@@ -1129,7 +1259,7 @@ mod tests {
             let mesh = Mesh::from_polygons(positions, faces).unwrap();
             let tolerance = tolerance * scale;
             proptest::prop_assert_eq!(
-                find_tuned(&mesh, tolerance, Tuning { copies_piece: piece, crowded_cell }).unwrap(),
+                find_tuned(&mesh, tolerance, Tuning { copies_piece: piece, crowded_cell, crowded_grid }).unwrap(),
                 every_pair(&mesh, tolerance)
             );
             // One search for the list and the repair gives what two do.

@@ -146,15 +146,16 @@ pub fn limit_patches(
 
 /// About how many patches one piece of the cage and the faces around it
 /// make: each is subdivided on its own, three levels past `isolation`, at
-/// roughly 27 KB a patch, so memory follows the piece and not the cage.
+/// roughly 30 KB a patch (0.12 GB a piece), so memory follows the piece
+/// and not the cage.
 const PIECE_PATCHES: usize = 4096;
 
 /// The most patches the faces around one cage face may make (~7 GB of
 /// subdivision): more is a vertex of very many faces at a high isolation.
 const MAX_PIECE_PATCHES: usize = 1 << 18;
 
-/// The patches, made piece by piece: consecutive cage faces with every face
-/// sharing a vertex with one of them, since the limit surface over a face
+/// The patches, made piece by piece: cage faces with every face sharing a
+/// vertex with one of them, since the limit surface over a face
 /// depends on those alone. Each piece is refined as a cage of its own whose
 /// faces and vertices keep the whole cage's order, so every list walked near
 /// the piece's faces runs in the same order and every limit point rounds as
