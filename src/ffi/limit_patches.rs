@@ -6,7 +6,7 @@ use crate::ffi::creases::{options_arg, WeftSubdivisionOptions};
 use crate::ffi::limit_surface::WeftLimitSurface;
 use crate::ffi::mesh::{mesh_ref, WeftMesh};
 use crate::mesh::Mesh;
-use crate::subdivide::{limit_patches, Scheme, SubdivisionOptions};
+use crate::subdivide::{limit_patch_count, limit_patches, Scheme, SubdivisionOptions};
 
 /// Doubles per patch in `weft_limit_patches`'s control points: 4 × 4 points of 3.
 pub const WEFT_PATCH_DOUBLES: usize = 48;
@@ -157,9 +157,11 @@ unsafe fn fill_patches(
             "the scheme is Loop; patches need WEFT_SCHEME_CATMULL_CLARK (Loop's limit surface is a quartic box spline, which no bicubic patch holds exactly)",
         ));
     }
-    let patches = limit_patches(mesh, options, isolation)?;
-    let count = patches.patches.len();
+    // Too little room is found before any patch is fitted.
+    let count = limit_patch_count(mesh, options, isolation)?;
     check_room("capacity (in patches)", out.capacity, count)?;
+    let patches = limit_patches(mesh, options, isolation)?;
+    debug_assert_eq!(patches.patches.len(), count);
     let doubles = out
         .capacity
         .checked_mul(WEFT_PATCH_DOUBLES)

@@ -114,11 +114,7 @@ pub fn limit_patches(
     options: &SubdivisionOptions,
     isolation: u32,
 ) -> Result<LimitPatches> {
-    if !(1..=MAX_ISOLATION).contains(&isolation) {
-        return Err(Error::InvalidArgument(format!(
-            "isolation is {isolation}; it must be 1 to {MAX_ISOLATION} (every face becomes a quad after one level)"
-        )));
-    }
+    check_isolation(isolation)?;
     // Squared distances of coordinates far from 1 over- or underflow: such a
     // cage is fitted at an exact power-of-two scale and the result scaled back.
     let largest = cage
@@ -144,6 +140,30 @@ pub fn limit_patches(
     patches_in_pieces(cage, options, isolation, PIECE_PATCHES)
 }
 
+/// How many patches [`limit_patches`] makes, and whether it accepts the
+/// cage, options and isolation, without fitting them: one per face of the
+/// cage refined `isolation` levels.
+///
+/// # Errors
+/// As [`limit_patches`], but for the refusal of a vertex of very many faces.
+pub fn limit_patch_count(
+    cage: &Mesh,
+    options: &SubdivisionOptions,
+    isolation: u32,
+) -> Result<usize> {
+    check_isolation(isolation)?;
+    Ok(checked_cage(cage, options, isolation)?.2)
+}
+
+fn check_isolation(isolation: u32) -> Result<()> {
+    if !(1..=MAX_ISOLATION).contains(&isolation) {
+        return Err(Error::InvalidArgument(format!(
+            "isolation is {isolation}; it must be 1 to {MAX_ISOLATION} (every face becomes a quad after one level)"
+        )));
+    }
+    Ok(())
+}
+
 /// About how many patches one piece of the cage and the faces around it
 /// make: each is subdivided on its own, three levels past `isolation`, at
 /// roughly 30 KB a patch (0.12 GB a piece), so memory follows the piece
@@ -167,35 +187,13 @@ fn patches_in_pieces(
     isolation: u32,
     budget: usize,
 ) -> Result<LimitPatches> {
-    // Checked on the whole cage, so errors name its faces and vertices, and
-    // the size cap counts the fit's three deeper levels.
-    let whole = Subdivider::new(cage, Scheme::CatmullClark, 0, options)?;
+    let (whole, mut next, total) = checked_cage(cage, options, isolation)?;
     let level = &whole.levels[0];
-    check_counts(
-        Scheme::CatmullClark,
-        cage.vertex_count() as u64,
-        level.connectivity.edge_count() as u64,
-        cage.face_count() as u64,
-        cage.index_count() as u64,
-        isolation + 3,
-    )?;
     let tags = CageTags::of(&level.connectivity, cage, options);
     let pieces = pieces(&level.faces, &level.connectivity, isolation, budget)?;
     let size = cage
         .bounding_box()
         .map_or(0.0, |(low, high)| (high - low).length());
-
-    // Where each cage face's patches start: its children's children, in
-    // order (a hole has none).
-    let per_side = 1usize << (2 * (isolation - 1));
-    let mut next = Vec::with_capacity(cage.face_count());
-    let mut total = 0;
-    for (f, face) in cage.faces().enumerate() {
-        next.push(total);
-        if !tags.holes[f] {
-            total += face.len() * per_side;
-        }
-    }
     let mut patches = try_vec(total, "patches")?;
     patches.resize(
         total,
@@ -237,6 +235,41 @@ fn patches_in_pieces(
         exact_count,
         size,
     })
+}
+
+/// The whole cage checked, so that errors name its faces and vertices and
+/// the size cap counts the fit's three deeper levels, with where each cage
+/// face's patches start and how many there are in all.
+fn checked_cage(
+    cage: &Mesh,
+    options: &SubdivisionOptions,
+    isolation: u32,
+) -> Result<(Subdivider, Vec<usize>, usize)> {
+    let whole = Subdivider::new(cage, Scheme::CatmullClark, 0, options)?;
+    check_counts(
+        Scheme::CatmullClark,
+        cage.vertex_count() as u64,
+        whole.levels[0].connectivity.edge_count() as u64,
+        cage.face_count() as u64,
+        cage.index_count() as u64,
+        isolation + 3,
+    )?;
+    // A face left out (a hole, or beside an open vertex when naked edges
+    // are left out) has none; the others their children's children.
+    let mut shown = vec![false; cage.face_count()];
+    for f in whole.parent_faces() {
+        shown[f as usize] = true;
+    }
+    let per_side = 1usize << (2 * (isolation - 1));
+    let mut starts = Vec::with_capacity(cage.face_count());
+    let mut total = 0;
+    for (face, &shown) in cage.faces().zip(&shown) {
+        starts.push(total);
+        if shown {
+            total += face.len() * per_side;
+        }
+    }
+    Ok((whole, starts, total))
 }
 
 /// Cage faces whose patches are made together.
@@ -746,6 +779,13 @@ mod tests {
         for (k, (cage, options, isolation)) in cases.iter().enumerate() {
             let whole = patches_in_pieces(cage, options, *isolation, usize::MAX).unwrap();
             assert!(!whole.patches.is_empty(), "case {k}");
+            // One patch per refined face, on its cage face, faces left out
+            // by holes and open vertices included.
+            let refined = Subdivider::new(cage, Scheme::CatmullClark, *isolation, options).unwrap();
+            let on: Vec<u32> = whole.patches.iter().map(|p| p.cage_face).collect();
+            assert_eq!(on, refined.parent_faces(), "case {k}");
+            let count = limit_patch_count(cage, options, *isolation).unwrap();
+            assert_eq!(count, on.len(), "case {k}");
             for budget in [1, 24, 100] {
                 let pieces = patches_in_pieces(cage, options, *isolation, budget).unwrap();
                 assert_eq!(pieces, whole, "case {k}, pieces of {budget} patches");

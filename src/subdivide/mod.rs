@@ -78,7 +78,9 @@ pub use creases::{
 };
 pub use face_varying::FaceVaryingLinear;
 pub use limit::Limit;
-pub use limit_patches::{limit_patches, BezierPatch, LimitPatches, MAX_ISOLATION};
+pub use limit_patches::{
+    limit_patch_count, limit_patches, BezierPatch, LimitPatches, MAX_ISOLATION,
+};
 pub use limit_surface::{LimitSurface, MAX_LIMIT_VALENCE};
 pub use refiner::Refiner;
 use refiner::{Points, Step};
