@@ -2708,7 +2708,7 @@ fn convert_round_trips_through_every_format() {
     }
 }
 
-/// A cage with a vertex of more faces than the limit surface takes is
+/// A vertex whose faces would make too many patches to fit together is
 /// refused, naming the cage file and the vertex, and nothing is written.
 #[test]
 fn nurbs_refuses_a_vertex_whose_faces_make_too_many_patches_to_fit_together() {
@@ -2730,6 +2730,8 @@ fn nurbs_refuses_a_vertex_whose_faces_make_too_many_patches_to_fit_together() {
     assert_mentions(&text, &["patches           4500"]);
 }
 
+/// A cage with a vertex of more faces than the limit surface takes is
+/// refused, naming the cage file and the vertex, and nothing is written.
 #[test]
 fn evaluate_refuses_a_vertex_of_too_many_faces() {
     let dir = folder("evaluate-crowded");
