@@ -260,16 +260,22 @@ fn checked_cage(
     for f in whole.parent_faces() {
         shown[f as usize] = true;
     }
-    let per_side = 1usize << (2 * (isolation - 1));
+    let per_corner = patches_per_corner(isolation);
     let mut starts = Vec::with_capacity(cage.face_count());
     let mut total = 0;
     for (face, &shown) in cage.faces().zip(&shown) {
         starts.push(total);
         if shown {
-            total += face.len() * per_side;
+            total += face.len() * per_corner;
         }
     }
     Ok((whole, starts, total))
+}
+
+/// Patches of each corner of a cage face: the corner's quad of level 1,
+/// split `isolation - 1` more times.
+fn patches_per_corner(isolation: u32) -> usize {
+    1 << (2 * (isolation - 1))
 }
 
 /// Cage faces whose patches are made together.
@@ -295,7 +301,7 @@ fn pieces(
     isolation: u32,
     budget: usize,
 ) -> Result<Vec<Piece>> {
-    let per_side = 1usize << (2 * (isolation - 1));
+    let per_corner = patches_per_corner(isolation);
     let face_count = faces.face_count();
     let mut taken = vec![false; face_count];
     // The piece whose ring holds each face and vertex so far.
@@ -335,7 +341,7 @@ fn pieces(
                     let g = connectivity.face_of(c as usize);
                     if std::mem::replace(&mut face_piece[g], id) != id {
                         added.push(g as u32);
-                        patches += faces.corners(g).len() * per_side;
+                        patches += faces.corners(g).len() * per_corner;
                     }
                 }
             }
