@@ -21,6 +21,10 @@ use crate::error::Error;
 use crate::mesh::topology::Edges;
 use crate::mesh::{floor_to_i64, Mesh};
 
+mod tiles;
+
+use tiles::{NearestDepth, OpenTiles, Tiles, BIN, TILE};
+
 /// Largest picture side, in pixels.
 pub const MAX_SIDE: u32 = 4096;
 
@@ -303,7 +307,7 @@ impl Camera {
 /// [`Error::InvalidArgument`] for a width or height outside 1 to
 /// [`MAX_SIDE`]; [`Error::OutOfMemory`] when the picture cannot be allocated.
 pub fn render(mesh: &Mesh, options: &RenderOptions) -> Result<Image, Error> {
-    render_with(mesh, options, None)
+    render_with(mesh, options, None, true)
 }
 
 /// Draws a mesh whose front faces take the average of their vertices'
@@ -324,13 +328,16 @@ pub fn render_coloured(
             mesh.vertex_count()
         )));
     }
-    render_with(mesh, options, Some(colours))
+    render_with(mesh, options, Some(colours), true)
 }
 
+/// Draws a mesh; without `hide_tiles`, every face in order into a plain
+/// z-buffer (what the tests hold the hidden tiles to).
 fn render_with(
     mesh: &Mesh,
     options: &RenderOptions,
     colours: Option<&[[f64; 4]]>,
+    hide_tiles: bool,
 ) -> Result<Image, Error> {
     for (name, side) in [("width", options.width), ("height", options.height)] {
         if side == 0 || side > MAX_SIDE {
@@ -343,10 +350,7 @@ fn render_with(
         options.width as usize * SAMPLES,
         options.height as usize * SAMPLES,
     );
-    let mut color: Vec<[f32; 3]> = try_vec(w * h, "the picture")?;
-    color.resize(w * h, BACKGROUND);
-    let mut depth: Vec<f32> = try_vec(w * h, "the depth buffer")?;
-    depth.resize(w * h, f32::INFINITY);
+    let mut canvas = Canvas::new(w, h)?;
 
     let camera = Camera::fit(mesh, w, h, options.view, options.up);
     let light = (camera.up * 0.7 - camera.right * 0.45 - camera.forward * 0.75).normalize();
@@ -363,10 +367,13 @@ fn render_with(
         None => Side::Hidden,
     };
 
-    // Draws a run of faces into a picture and depth buffer of its own.
-    let draw = |faces: std::ops::Range<usize>, color: &mut [[f32; 3]], depth: &mut [f32]| {
+    // Draws a run of faces into a canvas. Large triangles wait in a batch
+    // and are drawn nearest first, so that those behind find their tiles
+    // hidden; the samples' keys make the order of drawing immaterial.
+    let draw = |faces: std::ops::Range<usize>, canvas: &mut Canvas| {
         let mut corners = Vec::new();
         let mut screen = Vec::new();
+        let mut batch = Batch::default();
         for f in faces {
             let first = mesh.face_start(f);
             corners.clear();
@@ -423,44 +430,56 @@ fn render_with(
                     if i == 1 { side(first) } else { Side::Hidden },
                 ];
                 let triangle = [screen[0], screen[i], screen[i + 1]];
-                fill_triangle(color, depth, (w, h), triangle, shaded, sides);
-            }
-        }
-    };
-    // Large meshes: the first half of the faces into the picture, the
-    // second into a picture of its own, side by side; then each sample
-    // takes the second's only where it is strictly nearer. A face drawn
-    // over an equally near one does not replace it, so this is exactly
-    // the picture of drawing all faces in order (unless a depth came out
-    // NaN, whose comparisons order nothing: then the faces are drawn
-    // again in order).
-    let faces = mesh.face_count();
-    let mut drawn_apart = false;
-    if faces >= PARALLEL_FACES && rayon::current_num_threads() > 1 {
-        let mut second_color: Vec<[f32; 3]> = try_vec(w * h, "the picture")?;
-        second_color.resize(w * h, BACKGROUND);
-        let mut second_depth: Vec<f32> = try_vec(w * h, "the depth buffer")?;
-        second_depth.resize(w * h, f32::INFINITY);
-        let half = faces / 2;
-        rayon::join(
-            || draw(0..half, &mut color, &mut depth),
-            || draw(half..faces, &mut second_color, &mut second_depth),
-        );
-        if !depth.iter().chain(&second_depth).any(|d| d.is_nan()) {
-            for (i, &d) in second_depth.iter().enumerate() {
-                if d < depth[i] {
-                    color[i] = second_color[i];
+                let Some(bounds) = covered_samples(&triangle, (w, h)) else {
+                    continue;
+                };
+                let paint = Paint {
+                    shaded,
+                    sides,
+                    // Unique and rising in the order of drawing; past
+                    // u32::MAX (four billion corners) ties keep the first drawn.
+                    order: u32::try_from(first + i).unwrap_or(u32::MAX),
+                };
+                let nearest = (hide_tiles && worth_hiding(&triangle, bounds))
+                    .then(|| NearestDepth::of(triangle, doubled_area(triangle)))
+                    .flatten();
+                match nearest {
+                    Some(nearest) => batch.push(
+                        canvas,
+                        Waiting {
+                            triangle,
+                            bounds,
+                            paint,
+                            nearest,
+                        },
+                    ),
+                    None => fill_triangle(canvas, triangle, bounds, &paint, None),
                 }
             }
-            drawn_apart = true;
-        } else {
-            color.fill(BACKGROUND);
-            depth.fill(f32::INFINITY);
         }
+        batch.draw(canvas);
+    };
+    // Large meshes: the first half of the faces into the canvas, the
+    // second into a canvas of its own, side by side; then each sample
+    // takes the second's where its key is lower, as drawing every face into
+    // one canvas would.
+    let faces = mesh.face_count();
+    if faces >= PARALLEL_FACES && rayon::current_num_threads() > 1 {
+        let mut second = Canvas::new(w, h)?;
+        let half = faces / 2;
+        rayon::join(
+            || draw(0..half, &mut canvas),
+            || draw(half..faces, &mut second),
+        );
+        for (i, &key) in second.keys.iter().enumerate() {
+            if key < canvas.keys[i] {
+                canvas.color[i] = second.color[i];
+            }
+        }
+    } else {
+        draw(0..faces, &mut canvas);
     }
-    if !drawn_apart {
-        draw(0..faces, &mut color, &mut depth);
-    }
+    let color = canvas.color;
 
     // Average each 2 × 2 block of samples.
     let mut pixels = try_vec(
@@ -524,30 +543,161 @@ fn covered_samples(
     Some((span(low.0, high.0, w)?, span(low.1, high.1, h)?))
 }
 
-/// Fills one triangle, z-buffered, drawing the sides marked in `sides` as lines.
-fn fill_triangle(
-    color: &mut [[f32; 3]],
-    depth: &mut [f32],
-    (w, h): (usize, usize),
-    triangle: [(f64, f64, f64); 3],
+/// The samples drawn so far.
+struct Canvas {
+    w: usize,
+    color: Vec<[f32; 3]>,
+    /// Each sample's key: the `f32` depth's bits above the order of the
+    /// triangle drawn there. The lowest key wins, the nearest and then the
+    /// first in order, so faces drawn in any order give the picture of
+    /// drawing them in order with a strict depth test.
+    keys: Vec<u64>,
+    tiles: Tiles,
+}
+
+impl Canvas {
+    fn new(w: usize, h: usize) -> Result<Canvas, Error> {
+        let mut color = try_vec(w * h, "the picture")?;
+        color.resize(w * h, BACKGROUND);
+        let mut keys = try_vec(w * h, "the depth buffer")?;
+        keys.resize(w * h, u64::MAX);
+        Ok(Canvas {
+            w,
+            color,
+            keys,
+            tiles: Tiles::new(w, h)?,
+        })
+    }
+}
+
+/// How a triangle is painted, and its place in the order of drawing.
+#[derive(Debug, Clone, Copy)]
+struct Paint {
     shaded: [f32; 3],
     sides: [Side; 3],
+    order: u32,
+}
+
+/// A large triangle waiting to be drawn nearest first.
+struct Waiting {
+    triangle: [(f64, f64, f64); 3],
+    bounds: ([usize; 2], [usize; 2]),
+    paint: Paint,
+    nearest: NearestDepth,
+}
+
+/// Large triangles waiting to be drawn, bin by bin, each bin's nearest
+/// first.
+#[derive(Default)]
+struct Batch {
+    triangles: Vec<Waiting>,
+    /// Their bins in all.
+    bins: usize,
+    /// Each triangle's bins, keyed by the bin and its nearest depth there.
+    order: Vec<(u64, u32)>,
+}
+
+/// A batch is drawn once it holds this many triangle bins, so that it stays
+/// small beside the picture.
+const BATCH_BINS: usize = 1 << 20;
+
+impl Batch {
+    /// Adds a triangle, drawing the batch when it is full.
+    fn push(&mut self, canvas: &mut Canvas, waiting: Waiting) {
+        let (columns, rows) = waiting.bounds;
+        self.bins +=
+            (columns[1] / BIN - columns[0] / BIN + 1) * (rows[1] / BIN - rows[0] / BIN + 1);
+        self.triangles.push(waiting);
+        if self.bins >= BATCH_BINS || self.triangles.len() > u32::MAX as usize {
+            self.draw(canvas);
+        }
+    }
+
+    /// Draws the waiting triangles and empties the batch.
+    fn draw(&mut self, canvas: &mut Canvas) {
+        let bins_across = canvas.w.div_ceil(BIN);
+        let within = |[low, high]: [usize; 2], bin: usize| {
+            [low.max(bin * BIN), high.min(bin * BIN + BIN - 1)]
+        };
+        self.order.clear();
+        for (k, waiting) in self.triangles.iter().enumerate() {
+            let (columns, rows) = waiting.bounds;
+            for by in rows[0] / BIN..=rows[1] / BIN {
+                for bx in columns[0] / BIN..=columns[1] / BIN {
+                    let near = waiting.nearest.over(within(columns, bx), within(rows, by));
+                    let bin = (by * bins_across + bx) as u64;
+                    self.order.push(((bin << 32) | u64::from(near), k as u32));
+                }
+            }
+        }
+        self.order.sort_unstable();
+        for &(key, k) in &self.order {
+            let bin = (key >> 32) as usize;
+            let (bx, by) = (bin % bins_across, bin / bins_across);
+            let waiting = &self.triangles[k as usize];
+            let (columns, rows) = waiting.bounds;
+            let bounds = (within(columns, bx), within(rows, by));
+            let nearest = Some(&waiting.nearest);
+            fill_triangle(canvas, waiting.triangle, bounds, &waiting.paint, nearest);
+        }
+        self.triangles.clear();
+        self.bins = 0;
+    }
+}
+
+/// Whether a triangle covers enough samples, and enough of each tile of its
+/// bounds, for its tiles to be worth testing: finding a tile's farthest
+/// depth reads the whole tile.
+fn worth_hiding(
+    triangle: &[(f64, f64, f64); 3],
+    (columns, rows): ([usize; 2], [usize; 2]),
+) -> bool {
+    let samples = doubled_area(*triangle).abs() / 2.0;
+    let tiles = (columns[1] / TILE - columns[0] / TILE + 1) * (rows[1] / TILE - rows[0] / TILE + 1);
+    samples >= (TILE * TILE) as f64 && samples >= (TILE * tiles) as f64
+}
+
+/// The key of a sample at depth `z` of the triangle drawn `order`th, or
+/// `None` for a depth past `f32`'s range (coordinates beyond about 1e38)
+/// or NaN, which draws nothing.
+#[inline]
+fn depth_key(z: f64, order: u32) -> Option<u64> {
+    let z = z as f32;
+    // Depths are positive, and positive floats order as their bits.
+    (z < f32::INFINITY).then(|| (u64::from(z.to_bits()) << 32) | u64::from(order))
+}
+
+/// Fills one triangle, z-buffered, within `bounds` (from [`covered_samples`],
+/// or a part of them), drawing the sides marked in `paint` as lines; with
+/// its `nearest` depth, skipping the tiles where everything drawn is nearer.
+fn fill_triangle(
+    canvas: &mut Canvas,
+    triangle: [(f64, f64, f64); 3],
+    (columns, rows): ([usize; 2], [usize; 2]),
+    paint: &Paint,
+    nearest: Option<&NearestDepth>,
 ) {
-    let Some((columns, rows)) = covered_samples(&triangle, (w, h)) else {
-        return;
+    let open = match nearest {
+        Some(nearest) => {
+            let bounds = (columns, rows);
+            match canvas.tiles.open(nearest, &canvas.keys, canvas.w, bounds) {
+                Some(open) => Some(open),
+                None => return,
+            }
+        }
+        None => None,
     };
+    let open = open.as_ref();
     if rows[1] - rows[0] <= columns[1] - columns[0] {
         let spans = RowSpans::of(triangle, columns);
         let span = |py: f64| spans.columns(py);
-        fill_samples(color, depth, w, triangle, shaded, sides, rows, span, false);
+        fill_samples(canvas, triangle, paint, rows, span, false, open);
     } else {
         // Taller than wide: down each column, by the spans of the triangle
         // mirrored in the diagonal (whose inside test is this one's, negated).
         let spans = RowSpans::of(triangle.map(|(x, y, z)| (y, x, z)), rows);
         let span = |px: f64| spans.columns(px);
-        fill_samples(
-            color, depth, w, triangle, shaded, sides, columns, span, true,
-        );
+        fill_samples(canvas, triangle, paint, columns, span, true, open);
     }
 }
 
@@ -560,23 +710,23 @@ fn doubled_area([a, b, c]: [(f64, f64, f64); 3]) -> f64 {
 /// [`fill_triangle`] over the samples of the rows `[first, last]`
 /// (inclusive) and in each row those of the columns `span` gives for its
 /// centres' y, or `down_columns`, of those columns and in each the rows
-/// `span` gives for its centres' x. They must lie in the picture.
-#[allow(clippy::too_many_arguments)]
+/// `span` gives for its centres' x. They must lie in the picture. Given
+/// `open` tiles, the others are skipped.
 fn fill_samples(
-    color: &mut [[f32; 3]],
-    depth: &mut [f32],
-    w: usize,
+    canvas: &mut Canvas,
     [a, b, c]: [(f64, f64, f64); 3],
-    shaded: [f32; 3],
-    sides: [Side; 3],
+    paint: &Paint,
     [first, last]: [usize; 2],
     span: impl Fn(f64) -> Option<[usize; 2]>,
     down_columns: bool,
+    open: Option<&OpenTiles>,
 ) {
     let area = doubled_area([a, b, c]);
     if !area.is_finite() || area.abs() < 1e-12 {
         return;
     }
+    let w = canvas.w;
+    let sides = paint.sides;
     // Length of the side opposite each corner, for distances to the sides:
     // worked out at the first pixel drawn, since most faces of a dense mesh
     // cover none.
@@ -584,49 +734,86 @@ fn fill_samples(
     let mut side_lengths = None;
     let inverse_depth = [1.0 / a.2, 1.0 / b.2, 1.0 / c.2];
     for line in first..=last {
+        if open.is_some_and(|open| !open.line(line, down_columns)) {
+            continue;
+        }
         let Some([start, end]) = span(line as f64 + 0.5) else {
             continue;
         };
-        for across in start..=end {
+        let mut chunk = start;
+        while chunk <= end {
+            // Up to the end of the tile.
+            let chunk_end = end.min(chunk | (TILE - 1));
             let (x, y) = match down_columns {
-                false => (across, line),
-                true => (line, across),
+                false => (chunk, line),
+                true => (line, chunk),
             };
-            let (px, py) = (x as f64 + 0.5, y as f64 + 0.5);
-            let wa = ((b.0 - px) * (c.1 - py) - (b.1 - py) * (c.0 - px)) / area;
-            let wb = ((c.0 - px) * (a.1 - py) - (c.1 - py) * (a.0 - px)) / area;
-            let wc = 1.0 - wa - wb;
-            if wa < 0.0 || wb < 0.0 || wc < 0.0 {
+            if open.is_some_and(|open| !open.at(x, y)) {
+                chunk = chunk_end + 1;
                 continue;
             }
-            let weights = [wa, wb, wc];
-            let z = 1.0 / (wa * inverse_depth[0] + wb * inverse_depth[1] + wc * inverse_depth[2]);
-            let i = y * w + x;
-            if z as f32 >= depth[i] {
-                continue;
+            for across in chunk..=chunk_end {
+                let (x, y) = match down_columns {
+                    false => (across, line),
+                    true => (line, across),
+                };
+                let centre = (x as f64 + 0.5, y as f64 + 0.5);
+                let Some((weights, z)) = sample_depth([a, b, c], area, inverse_depth, centre)
+                else {
+                    continue;
+                };
+                let i = y * w + x;
+                let Some(key) = depth_key(z, paint.order) else {
+                    continue;
+                };
+                if key >= canvas.keys[i] {
+                    continue;
+                }
+                canvas.keys[i] = key;
+                canvas.tiles.mark(x, y);
+                let lengths: &[f64; 3] =
+                    side_lengths.get_or_insert_with(|| [side(b, c), side(c, a), side(a, b)]);
+                // Distance to side k: twice the area of (pixel, side) over its length.
+                let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
+                let wide =
+                    |kind: Side| (0..3).any(|k| sides[k] == kind && distance(k) < NAKED_HALF_WIDTH);
+                let line = if wide(Side::Marked) {
+                    Some(MARKED_EDGE)
+                } else if wide(Side::Naked) {
+                    Some(NAKED_EDGE)
+                } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
+                    Some(EDGE)
+                } else {
+                    None
+                };
+                let shaded = paint.shaded;
+                canvas.color[i] = match line {
+                    Some(ink) => [0, 1, 2].map(|k| shaded[k] * 0.15 + ink[k] * 0.85),
+                    None => shaded,
+                };
             }
-            depth[i] = z as f32;
-            let lengths: &[f64; 3] =
-                side_lengths.get_or_insert_with(|| [side(b, c), side(c, a), side(a, b)]);
-            // Distance to side k: twice the area of (pixel, side) over its length.
-            let distance = |k: usize| weights[k] * area.abs() / lengths[k].max(1e-12);
-            let wide =
-                |kind: Side| (0..3).any(|k| sides[k] == kind && distance(k) < NAKED_HALF_WIDTH);
-            let line = if wide(Side::Marked) {
-                Some(MARKED_EDGE)
-            } else if wide(Side::Naked) {
-                Some(NAKED_EDGE)
-            } else if (0..3).any(|k| sides[k] == Side::Edge && distance(k) < EDGE_HALF_WIDTH) {
-                Some(EDGE)
-            } else {
-                None
-            };
-            color[i] = match line {
-                Some(ink) => [0, 1, 2].map(|k| shaded[k] * 0.15 + ink[k] * 0.85),
-                None => shaded,
-            };
+            chunk = chunk_end + 1;
         }
     }
+}
+
+/// The barycentric weights of the sample centre `(px, py)` in the triangle
+/// whose doubled signed area is `area`, and its depth, when it lies inside.
+#[inline(always)]
+fn sample_depth(
+    [a, b, c]: [(f64, f64, f64); 3],
+    area: f64,
+    inverse_depth: [f64; 3],
+    (px, py): (f64, f64),
+) -> Option<([f64; 3], f64)> {
+    let wa = ((b.0 - px) * (c.1 - py) - (b.1 - py) * (c.0 - px)) / area;
+    let wb = ((c.0 - px) * (a.1 - py) - (c.1 - py) * (a.0 - px)) / area;
+    let wc = 1.0 - wa - wb;
+    if wa < 0.0 || wb < 0.0 || wc < 0.0 {
+        return None;
+    }
+    let z = 1.0 / (wa * inverse_depth[0] + wb * inverse_depth[1] + wc * inverse_depth[2]);
+    Some(([wa, wb, wc], z))
 }
 
 /// Where a triangle's side lets a row's samples in: the centres on one
@@ -737,6 +924,135 @@ mod tests {
     use super::*;
     use crate::test_random::units;
 
+    /// Renders on one thread, every face in order without tiles (a plain
+    /// z-buffer with a strict depth test), and on two threads with tiles.
+    fn in_order_and_with_tiles(
+        mesh: &Mesh,
+        options: &RenderOptions,
+        colours: Option<&[[f64; 4]]>,
+    ) -> (Image, Image) {
+        let pool = |threads| {
+            rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap()
+        };
+        let in_order = pool(1).install(|| render_with(mesh, options, colours, false).unwrap());
+        let tiled = pool(2).install(|| render_with(mesh, options, colours, true).unwrap());
+        (in_order, tiled)
+    }
+
+    /// A book: `pages` triangles on the edge from the origin to (1, 0, 0),
+    /// at angles drawn at random over half a turn, in any order.
+    fn book(pages: usize, next: &mut impl FnMut() -> f64) -> Mesh {
+        let mut positions = vec![DVec3::ZERO, DVec3::X];
+        let mut faces = Vec::new();
+        for page in 0..pages {
+            let angle = std::f64::consts::PI * next();
+            let reach = 0.6 + 0.6 * next();
+            let along = 0.2 + 0.6 * next();
+            positions.push(DVec3::new(along, reach * angle.cos(), reach * angle.sin()));
+            faces.push([0, 1, page as u32 + 2]);
+        }
+        Mesh::from_polygons(positions, faces).unwrap()
+    }
+
+    /// Large faces crossing one another, each drawn twice on vertices of its
+    /// own (so the two tie in depth at most samples and the first in order
+    /// must win), with quads and pentagons among them.
+    fn crossing_faces(faces: usize, next: &mut impl FnMut() -> f64) -> Mesh {
+        let mut positions = Vec::new();
+        let mut polygons: Vec<Vec<u32>> = Vec::new();
+        for face in 0..faces {
+            let corners = 3 + face % 3;
+            let centre = DVec3::new(next(), next(), next()) * 2.0;
+            let (u, v) = (
+                DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize(),
+                DVec3::new(next() - 0.5, next() - 0.5, next() - 0.5).normalize(),
+            );
+            let size = 0.5 + 1.5 * next();
+            let ring: Vec<DVec3> = (0..corners)
+                .map(|k| {
+                    let t = std::f64::consts::TAU * k as f64 / corners as f64;
+                    centre + (u * t.cos() + v * t.sin()) * size
+                })
+                .collect();
+            // The copy turns the other way (its back shows where the first's
+            // front does) from another corner, so its fan's triangles differ
+            // and are sorted apart from the first's.
+            let mut copy = ring.clone();
+            copy.reverse();
+            copy.rotate_left(1);
+            for ring in [ring, copy] {
+                let first = positions.len() as u32;
+                positions.extend(&ring);
+                polygons.push((first..first + corners as u32).collect());
+            }
+        }
+        Mesh::from_polygons(positions, polygons).unwrap()
+    }
+
+    /// Skipping hidden tiles, drawing large triangles bin by bin nearest
+    /// first, and the two threads' halves change no pixel: books seen from
+    /// every side, crossing faces whose copies tie in depth, under vertex
+    /// colours and marked edges, at picture sizes that cut tiles and bins.
+    #[test]
+    fn hidden_tiles_change_no_pixel() {
+        let mut next = units(0x7a11_b00c_5eed_0001);
+        let views = [
+            View::Iso,
+            View::Top,
+            View::Bottom,
+            View::Front,
+            View::Back,
+            View::Left,
+            View::Right,
+        ];
+        let mut differing_from_background = 0;
+        for case in 0..28 {
+            let mesh = match case % 2 {
+                0 => book([30, 400, 3000][case % 3], &mut next),
+                _ => crossing_faces([5, 40, 200][case % 3], &mut next),
+            };
+            let colours: Vec<[f64; 4]> = (0..mesh.vertex_count())
+                .map(|_| [next(), next(), next(), 1.0])
+                .collect();
+            let options = RenderOptions {
+                width: 20 + (next() * 230.0) as u32,
+                height: 20 + (next() * 170.0) as u32,
+                view: views[case % 7],
+                edges: Some(case % 4 == 1),
+                marked_edges: if case % 5 == 0 { vec![[0, 1]] } else { vec![] },
+                ..RenderOptions::default()
+            };
+            let colours = (case % 3 == 2).then_some(colours.as_slice());
+            let (in_order, tiled) = in_order_and_with_tiles(&mesh, &options, colours);
+            assert!(in_order == tiled, "case {case}: {options:?}");
+            let background = BACKGROUND.map(|c| (c * 255.0).round() as u8);
+            differing_from_background += in_order
+                .pixels
+                .chunks_exact(3)
+                .filter(|p| *p != background)
+                .count();
+        }
+        assert!(differing_from_background > 50_000);
+    }
+
+    /// A book of more pages than are drawn on one thread: its two halves
+    /// merged give the picture of drawing every page in order.
+    #[test]
+    fn the_halves_of_a_large_book_merge_to_the_picture_in_order() {
+        let mut next = units(0x0b00_c0f0_0000_1234);
+        let mesh = book(PARALLEL_FACES + 10, &mut next);
+        let options = RenderOptions {
+            width: 48,
+            height: 40,
+            ..RenderOptions::default()
+        };
+        let (in_order, tiled) = in_order_and_with_tiles(&mesh, &options, None);
+        assert!(in_order == tiled);
+    }
+
     /// Triangles of every size from a hundredth of a sample to most of the
     /// picture, thin ones, and ones partly or wholly outside it: drawn
     /// within [`covered_samples`] they paint exactly what they paint when
@@ -778,25 +1094,29 @@ mod tests {
         (w, h): (usize, usize),
         case: usize,
     ) -> bool {
-        let sides = [Side::Edge, Side::Naked, Side::Hidden];
-        let mut within = (vec![BACKGROUND; w * h], vec![f32::INFINITY; w * h]);
-        let mut everywhere = within.clone();
-        fill_triangle(&mut within.0, &mut within.1, (w, h), triangle, FRONT, sides);
-        let (colour, depth) = (&mut everywhere.0, &mut everywhere.1);
+        let paint = Paint {
+            shaded: FRONT,
+            sides: [Side::Edge, Side::Naked, Side::Hidden],
+            order: 7,
+        };
+        let mut within = Canvas::new(w, h).unwrap();
+        let mut everywhere = Canvas::new(w, h).unwrap();
+        if let Some(bounds) = covered_samples(&triangle, (w, h)) {
+            fill_triangle(&mut within, triangle, bounds, &paint, None);
+        }
         let every_column = |_| Some([0, w - 1]);
         fill_samples(
-            colour,
-            depth,
-            w,
+            &mut everywhere,
             triangle,
-            FRONT,
-            sides,
+            &paint,
             [0, h - 1],
             every_column,
             false,
+            None,
         );
-        assert_eq!(within, everywhere, "case {case}: {triangle:?}");
-        within.1.iter().any(|d| d.is_finite())
+        assert_eq!(within.color, everywhere.color, "case {case}: {triangle:?}");
+        assert_eq!(within.keys, everywhere.keys, "case {case}: {triangle:?}");
+        within.keys.iter().any(|&key| key != u64::MAX)
     }
 
     /// The triangles that make a row's span narrower than its bounds, and
