@@ -80,6 +80,12 @@ const CROWDED_GRID: f64 = 64.0;
 /// The most boundary vertices the crowding of the cells is measured on.
 const CROWDING_SAMPLE: usize = 1 << 16;
 
+/// The narrowest cell, in tolerances. A position is filed under every cell
+/// within the tolerance of it: in cells four times the tolerance, 1.5 along
+/// each axis on average (3.4 in all), where cells as narrow as the
+/// tolerance file every position under 27.
+const NARROWEST_CELL: f64 = 4.0;
+
 /// A vertex lying inside a naked edge of a face it does not belong to.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TNode {
@@ -300,7 +306,7 @@ fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, T
     let cell_limit = 8.0 * edge_count + 64.0;
     let (lo, hi) = bounding_box_of(positions).expect("a mesh with naked edges has vertices");
     let reach = lo.abs().max(hi.abs()).max_element();
-    let mut size = mean_length.max(tolerance);
+    let mut size = mean_length.max(NARROWEST_CELL * tolerance);
     let grid = loop {
         let grid = CellGrid::with_reach(reach, size);
         // An edge passes through at most 1 + (|d| / size + 1) cells along
@@ -364,9 +370,9 @@ fn find_tuned(mesh: &Mesh, tolerance: f64, tuning: Tuning) -> Result<Vec<(u32, T
 /// a dense rim), cells as long as the edges hold thousands of vertices, and
 /// every edge would test every one. Halved while the vertices `sampled`
 /// (one in `stride` of them) share a cell with more than `crowded` others
-/// on average, the cells stay no narrower than the tolerance and within
-/// `reach`'s grid, and `edges_fit` says the edges still pass through few
-/// enough cells.
+/// on average, the cells stay no narrower than [`NARROWEST_CELL`]
+/// tolerances and within `reach`'s grid, and `edges_fit` says the edges
+/// still pass through few enough cells.
 fn finer_where_crowded(
     mut grid: CellGrid,
     (reach, tolerance): (f64, f64),
@@ -388,7 +394,7 @@ fn finer_where_crowded(
             .sum();
         stride * pairs / sampled.len() as f64
     };
-    while grid.size / 2.0 >= tolerance && crowding(&grid) > crowded {
+    while grid.size / 2.0 >= NARROWEST_CELL * tolerance && crowding(&grid) > crowded {
         let finer = CellGrid::with_reach(reach, grid.size / 2.0);
         if finer.size >= grid.size || !edges_fit(&finer) {
             break;
@@ -1011,6 +1017,35 @@ mod tests {
         }
     }
 
+    /// In the narrowest cells a position is filed under 3.4 cells on
+    /// average, which hold every point within the tolerance of it; in cells
+    /// as narrow as the tolerance, under 27.
+    #[test]
+    fn positions_are_filed_under_few_of_the_narrowest_cells() {
+        let mut next = crate::test_random::units(0x7e57_ce11_5eed_0042);
+        let tolerance = 1e-3;
+        let (narrowest, narrow) = (
+            CellGrid::with_reach(1.0, NARROWEST_CELL * tolerance),
+            CellGrid::with_reach(1.0, tolerance),
+        );
+        let mut filed = 0;
+        for _ in 0..10_000 {
+            let p = DVec3::new(next(), next(), next());
+            let cells: Vec<Cell> = cells_near(&narrowest, p, tolerance).collect();
+            assert!((1..=27).contains(&cells.len()), "{p}: {}", cells.len());
+            filed += cells.len();
+            // Every point within the tolerance lies in one of them.
+            for _ in 0..8 {
+                let offset = DVec3::new(next(), next(), next()) * 2.0 - 1.0;
+                let q = p + offset.normalize_or_zero() * tolerance * 0.999;
+                assert!(cells.contains(&narrowest.cell(q)), "{p} {q}");
+            }
+            assert_eq!(cells_near(&narrow, p, tolerance).count(), 27);
+        }
+        // About 1.5 along each axis, 3.4 in all.
+        assert!((30_000..40_000).contains(&filed), "{filed}");
+    }
+
     #[test]
     fn crowded_cells_are_halved_and_spread_ones_kept() {
         let fits = |_: &CellGrid| true;
@@ -1029,9 +1064,12 @@ mod tests {
         let tenth: Vec<DVec3> = circle.iter().copied().step_by(10).collect();
         let sampled = finer_where_crowded(grid, (2.0, 1e-6), (&tenth, 10.0), CROWDED_GRID, fits);
         assert!(sampled.size <= 2.0 * finer.size && finer.size <= 2.0 * sampled.size);
-        // Never narrower than the tolerance, nor past what the edges allow.
-        let wide = finer_where_crowded(grid, (2.0, 0.3), (&circle, 1.0), CROWDED_GRID, fits);
+        // Never narrower than NARROWEST_CELL tolerances, nor past what the
+        // edges allow.
+        let wide = finer_where_crowded(grid, (2.0, 0.1), (&circle, 1.0), CROWDED_GRID, fits);
         assert_eq!(wide.size, 0.5);
+        let wider = finer_where_crowded(grid, (2.0, 0.15), (&circle, 1.0), CROWDED_GRID, fits);
+        assert_eq!(wider.size, 1.0);
         let stopped = finer_where_crowded(grid, (2.0, 1e-6), (&circle, 1.0), CROWDED_GRID, |g| {
             g.size >= 0.25
         });
