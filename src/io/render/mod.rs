@@ -440,8 +440,9 @@ fn render_with(
                     // u32::MAX (four billion corners) ties keep the first drawn.
                     order: u32::try_from(first + i).unwrap_or(u32::MAX),
                 };
-                let nearest = (hide_tiles && worth_hiding(&triangle, bounds))
-                    .then(|| NearestDepth::of(triangle, doubled_area(triangle)))
+                let area = doubled_area(triangle);
+                let nearest = (hide_tiles && worth_hiding(area, bounds))
+                    .then(|| NearestDepth::of(triangle, area))
                     .flatten();
                 match nearest {
                     Some(nearest) => batch.push(
@@ -645,14 +646,11 @@ impl Batch {
     }
 }
 
-/// Whether a triangle covers enough samples, and enough of each tile of its
-/// bounds, for its tiles to be worth testing: finding a tile's farthest
-/// depth reads the whole tile.
-fn worth_hiding(
-    triangle: &[(f64, f64, f64); 3],
-    (columns, rows): ([usize; 2], [usize; 2]),
-) -> bool {
-    let samples = doubled_area(*triangle).abs() / 2.0;
+/// Whether a triangle of doubled area `doubled_area` covers enough samples,
+/// and enough of each tile of its bounds, for its tiles to be worth
+/// testing: finding a tile's farthest depth reads the whole tile.
+fn worth_hiding(doubled_area: f64, (columns, rows): ([usize; 2], [usize; 2])) -> bool {
+    let samples = doubled_area.abs() / 2.0;
     let tiles = (columns[1] / TILE - columns[0] / TILE + 1) * (rows[1] / TILE - rows[0] / TILE + 1);
     samples >= (TILE * TILE) as f64 && samples >= (TILE * tiles) as f64
 }
