@@ -1521,7 +1521,8 @@ WeftStatus weft_crease_edges_from_mesh_ex(const struct WeftMesh *mesh, double an
  * surface is a bicubic B-spline (away from extraordinary vertices, crease
  * ends and corners) a patch is exact; the others are fitted to exact limit
  * points. `out_errors[p]` is patch p's largest distance from the limit
- * points of an 8 × 8 grid of its face, `out_cage_faces[p]` the cage face it
+ * points of an 8 × 8 grid of its face (0 where the patch is made as the
+ * B-spline the surface is there), `out_cage_faces[p]` the cage face it
  * lies on; both may be NULL. `*out_patch_count` receives the number of
  * patches, `*out_max_error` (may be NULL) the largest error and
  * `*out_exact_count` (may be NULL) how many patches are exact (an error

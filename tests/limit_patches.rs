@@ -9,7 +9,7 @@ use std::collections::HashMap;
 use weft::io::step;
 use weft::mesh::shapes;
 use weft::subdivide::{
-    limit_patches, BezierPatch, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
+    limit_patches, BezierPatch, Creasing, NakedEdges, Scheme, Subdivider, SubdivisionOptions,
 };
 use weft::{DVec3, Error, Mesh, Topology};
 
@@ -146,42 +146,145 @@ fn the_approximation_near_extraordinary_vertices_improves_with_isolation() {
     }
 }
 
+/// `mesh` with every vertex moved by up to a tenth, by a fixed pattern, so
+/// that no two faces are alike.
+fn bumped(mesh: &Mesh) -> Mesh {
+    let moved = mesh
+        .positions()
+        .iter()
+        .enumerate()
+        .map(|(i, &p)| {
+            let t = i as f64;
+            p + 0.1 * DVec3::new((1.3 * t).sin(), (2.1 * t).cos(), (0.7 * t).sin())
+        })
+        .collect();
+    mesh.with_positions(moved).unwrap()
+}
+
+/// Cages whose patches are checked against the limit three levels down:
+/// smooth, creased (infinite, semi-sharp and decaying), with corners and a
+/// hole, with two faces at a vertex, and at every vertex valence.
+fn checked_cages() -> Vec<(&'static str, Mesh, SubdivisionOptions, u32)> {
+    let creased = SubdivisionOptions {
+        creases: vec![([5, 6], f64::INFINITY), ([6, 7], 2.0), ([13, 14], 0.5)],
+        corners: vec![(0, f64::INFINITY), (9, 1.5)],
+        holes: vec![15],
+        creasing: Creasing::Chaikin,
+        ..SubdivisionOptions::new(NakedEdges::Fixed)
+    };
+    let torus_crease = SubdivisionOptions {
+        creases: vec![([0, 1], 1.5), ([1, 2], 1.5)],
+        ..smooth()
+    };
+    vec![
+        ("mixed polygons", shapes::mixed_polygons(), smooth(), 2),
+        ("bumped cube", bumped(&shapes::cube()), smooth(), 2),
+        ("creased grid", bumped(&shapes::quad_grid(4, 4)), creased, 1),
+        (
+            "creased grid, level 2",
+            bumped(&shapes::quad_grid(3, 3)),
+            torus_crease.clone(),
+            2,
+        ),
+        (
+            "torus with a semi-sharp crease",
+            bumped(&shapes::torus(5, 6)),
+            torus_crease,
+            1,
+        ),
+    ]
+}
+
+/// The limit points three levels below `isolation`, and the distance from
+/// a point to the nearest of them.
+fn fine_limit(cage: &Mesh, options: &SubdivisionOptions, isolation: u32) -> Vec<DVec3> {
+    let fine = Subdivider::new(cage, Scheme::CatmullClark, isolation + 3, options).unwrap();
+    fine.limit().unwrap().positions
+}
+
+fn nearest(limit: &[DVec3], p: DVec3) -> f64 {
+    limit
+        .iter()
+        .map(|q| (*q - p).length())
+        .fold(f64::INFINITY, f64::min)
+}
+
 #[test]
 fn patch_corners_are_limit_points_and_errors_are_measured_against_the_limit() {
-    let cage = shapes::mixed_polygons();
-    let options = smooth();
-    let isolation = 2;
-    let patches = limit_patches(&cage, &options, isolation).unwrap();
-    // The limit points three levels down, to find by position.
-    let fine = Subdivider::new(&cage, Scheme::CatmullClark, isolation + 3, &options).unwrap();
-    let limit = fine.limit().unwrap().positions;
-    let nearest = |p: DVec3| {
-        limit
-            .iter()
-            .map(|q| (*q - p).length())
-            .fold(f64::INFINITY, f64::min)
-    };
-    let size = patches.size;
-    for (k, patch) in patches.patches.iter().enumerate() {
-        for (u, v) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+    for (name, cage, options, isolation) in checked_cages() {
+        let patches = limit_patches(&cage, &options, isolation).unwrap();
+        let limit = fine_limit(&cage, &options, isolation);
+        let size = patches.size;
+        for (k, patch) in patches.patches.iter().enumerate() {
+            for (u, v) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+                assert!(
+                    nearest(&limit, patch.point(u, v)) < 1e-13 * size,
+                    "{name}: patch {k} corner ({u}, {v})"
+                );
+            }
+            // Its error is within the distance of its ⅛ grid from the limit:
+            // a patch taken as exact (error 0) lies on the limit.
+            let mut worst: f64 = 0.0;
+            for a in 0..=8 {
+                for b in 0..=8 {
+                    let p = patch.point(a as f64 / 8.0, b as f64 / 8.0);
+                    worst = worst.max(nearest(&limit, p));
+                }
+            }
             assert!(
-                nearest(patch.point(u, v)) < 1e-13 * size,
-                "patch {k} corner ({u}, {v})"
+                worst <= patch.error + 1e-13 * size,
+                "{name}: patch {k}: {worst} vs {}",
+                patch.error
             );
         }
-        // Its error is within the distance of its ⅛ grid from the limit.
-        let mut worst: f64 = 0.0;
-        for a in 0..=8 {
-            for b in 0..=8 {
-                worst = worst.max(nearest(patch.point(a as f64 / 8.0, b as f64 / 8.0)));
+    }
+}
+
+#[test]
+fn edges_away_from_extraordinary_vertices_are_exact_on_every_patch() {
+    // On a closed smooth cage, every vertex of valence 4 is regular: an edge
+    // between two of them is on the limit even where the face beside it
+    // touches a vertex of another valence and is fitted.
+    for (cage, isolation) in [(bumped(&shapes::cube()), 2), (shapes::mixed_polygons(), 2)] {
+        let patches = limit_patches(&cage, &smooth(), isolation).unwrap();
+        let limit = fine_limit(&cage, &smooth(), isolation);
+        let refined = Subdivider::new(&cage, Scheme::CatmullClark, isolation, &smooth())
+            .unwrap()
+            .mesh()
+            .unwrap();
+        let valences = Topology::new(&refined).vertex_valences();
+        let regular = |v: u32| valences[v as usize] == 4;
+        let (mut exact_edges, mut fitted_faces_with_them) = (0, 0);
+        for (f, face) in refined.faces().enumerate() {
+            let patch = &patches.patches[f];
+            let mut any = false;
+            for k in 0..4 {
+                if !(regular(face[k]) && regular(face[(k + 1) % 4])) {
+                    continue;
+                }
+                let [a, b, c, d] = patch.edge(k);
+                for t in 0..=8 {
+                    let w = bernstein_weights(t as f64 / 8.0);
+                    let p = w[0] * a + w[1] * b + w[2] * c + w[3] * d;
+                    assert!(
+                        nearest(&limit, p) < 1e-13 * patches.size,
+                        "face {f} edge {k} at {t}/8"
+                    );
+                }
+                exact_edges += 1;
+                any = true;
+            }
+            if any && patch.error > 1e-9 {
+                fitted_faces_with_them += 1;
             }
         }
-        assert!(
-            worst <= patch.error + 1e-13 * size,
-            "patch {k}: {worst} vs {}",
-            patch.error
-        );
+        assert!(exact_edges > 0 && fitted_faces_with_them > 0);
     }
+}
+
+fn bernstein_weights(t: f64) -> [f64; 4] {
+    let s = 1.0 - t;
+    [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t]
 }
 
 #[test]

@@ -105,6 +105,16 @@ impl Subdivider {
         self.check_limit_faces()?;
         let mut points = vec![DVec3::ZERO; self.vertex_count()];
         self.evaluate(cage, &mut points)?;
+        Ok(self.limit_from_points(&points, vertices))
+    }
+
+    /// The limit at the last level's `vertices` from that level's `points`;
+    /// Catmull-Clark's faces are quads (see `check_limit_faces`).
+    pub(crate) fn limit_from_points(
+        &self,
+        points: &[DVec3],
+        vertices: impl ExactSizeIterator<Item = usize>,
+    ) -> Limit {
         let n = vertices.len();
         let mut limit = Limit {
             positions: Vec::with_capacity(n),
@@ -139,7 +149,7 @@ impl Subdivider {
             limit.dv.push(dv);
             limit.normals.push(unit_normal(du, dv));
         }
-        Ok(limit)
+        limit
     }
 
     /// The limit masks at the cage `vertices` of a subdivider of no levels,

@@ -1,26 +1,28 @@
 //! The Catmull-Clark limit surface as bicubic Bézier patches, for NURBS
 //! export: one patch per face of the cage refined `isolation` levels.
 //!
-//! Each patch is fitted to exact limit points (the limit masks of
-//! [`super::Limit`] at the vertices of deeper levels, which sit on the
-//! surface at the dyadic parameters of the face):
+//! Where the limit surface over a face is a bicubic B-spline (its four
+//! corners regular: four quads, four smooth edges, no sharpness), the patch
+//! is that B-spline's Bézier form, straight from the refined cage
+//! (`regular.rs`). Every other patch is fitted to exact limit points (the
+//! limit masks of [`super::Limit`] at the vertices of three levels deeper,
+//! which sit on the surface at the dyadic parameters of the face):
 //! - its corners are the limit points of the face's corners;
 //! - each edge's two inner control points fit the limit points at ¼, ½, ¾
-//!   of the edge (least squares), by sums symmetric in the edge's direction,
-//!   so the two patches meeting at an edge share its curve bit for bit and
-//!   the patches are watertight everywhere, across creases and boundaries
-//!   included;
+//!   of the edge (least squares), by sums symmetric in the edge's direction;
+//!   an edge between two regular vertices is their limit curve instead,
+//!   the one the regular patch beside it has, so the two patches meeting at
+//!   an edge share its curve bit for bit and the patches are watertight
+//!   everywhere, across creases and boundaries included;
 //! - the four inner control points fit the nine inner limit points of the
 //!   face's ¼ grid.
 //!
-//! Where the limit surface is a bicubic B-spline patch (a face whose
-//! neighbourhood is regular: away from extraordinary vertices, crease ends
-//! and corners; along smooth boundaries and infinitely sharp creases too)
-//! the samples lie on that cubic and the fit reproduces it to rounding:
-//! the patch is exact. Faces touching an irregular point are
-//! approximations; each patch's error is its largest distance from the
-//! limit points of the ⅛ grid (81 points, most not used by the fit), and it
-//! falls as `isolation` rises, since those faces shrink.
+//! Along smooth boundaries and infinitely sharp creases the surface is a
+//! B-spline too, and there the fit reproduces it to rounding. Faces touching
+//! an irregular point are approximations; each fitted patch's error is its
+//! largest distance from the limit points of the ⅛ grid (81 points, most
+//! not used by the fit), and it falls as `isolation` rises, since those
+//! faces shrink.
 
 use glam::DVec3;
 use rayon::prelude::*;
@@ -34,6 +36,9 @@ use super::subdivider::Subdivider;
 use crate::buffers::try_vec;
 use crate::error::{Error, Result};
 use crate::mesh::{Mesh, MeshOptions};
+use regular::Isolated;
+
+mod regular;
 
 /// The most isolation levels: the fit reads the limit three levels deeper.
 pub const MAX_ISOLATION: u32 = 8;
@@ -47,7 +52,8 @@ pub struct BezierPatch {
     pub cage_face: u32,
     /// Control points, `[u][v]`.
     pub control: [[DVec3; 4]; 4],
-    /// The patch's largest distance from the limit points of its ⅛ grid.
+    /// The patch's largest distance from the limit points of its ⅛ grid;
+    /// 0 for a patch made as the B-spline the surface is there.
     pub error: f64,
 }
 
@@ -187,10 +193,11 @@ fn patches_in_pieces(
     isolation: u32,
     budget: usize,
 ) -> Result<LimitPatches> {
-    let (whole, mut next, total) = checked_cage(cage, options, isolation)?;
+    let (whole, starts, total) = checked_cage(cage, options, isolation)?;
     let level = &whole.levels[0];
-    let tags = CageTags::of(&level.connectivity, cage, options);
-    let pieces = pieces(&level.faces, &level.connectivity, isolation, budget)?;
+    let refined = Subdivider::new(cage, Scheme::CatmullClark, isolation, options)?;
+    let isolated = Isolated::new(&refined, cage.positions())?;
+    let layout = Layout::of(cage, &starts, total, isolation);
     let size = cage
         .bounding_box()
         .map_or(0.0, |(low, high)| (high - low).length());
@@ -203,25 +210,64 @@ fn patches_in_pieces(
             error: 0.0,
         },
     );
+    // Regular faces first, straight from the refined cage; the others
+    // are fitted to the limit three levels further down.
+    let mut fitted = try_vec(total, "patches")?;
+    fitted.resize(total, false);
+    patches
+        .par_iter_mut()
+        .zip(&mut fitted)
+        .enumerate()
+        .for_each(|(slot, (patch, fitted))| {
+            let (cage_face, face) = layout.face_of(slot);
+            match isolated.regular_patch(face) {
+                Some(control) => {
+                    *patch = BezierPatch {
+                        cage_face,
+                        control,
+                        error: 0.0,
+                    }
+                }
+                None => *fitted = true,
+            }
+        });
+    let mut to_fit = vec![false; cage.face_count()];
+    for (slot, _) in fitted.iter().enumerate().filter(|(_, &f)| f) {
+        to_fit[layout.face_of(slot).0 as usize] = true;
+    }
+    let tags = CageTags::of(&level.connectivity, cage, options);
+    let pieces = pieces(
+        &level.faces,
+        &level.connectivity,
+        isolation,
+        budget,
+        &to_fit,
+    )?;
     // One piece at a time on each thread: a piece's subdivision gains
     // little from more threads, and fewer pieces at once hold less memory.
     let taken = AtomicUsize::new(0);
-    let placed = Mutex::new((&mut patches, &mut next));
+    let placed = Mutex::new(&mut patches);
     let workers = rayon::current_num_threads().clamp(1, pieces.len().max(1));
+    let fit = Fit {
+        cage,
+        connectivity: &level.connectivity,
+        options,
+        tags: &tags,
+        isolation,
+        isolated: &isolated,
+        layout: &layout,
+        fitted: &fitted,
+    };
     (0..workers)
         .into_par_iter()
         .try_for_each(|_| -> Result<()> {
             while let Some(piece) = pieces.get(taken.fetch_add(1, Ordering::Relaxed)) {
-                let made =
-                    piece_patches(cage, &level.connectivity, options, &tags, isolation, piece)?;
-                let mut guard = placed
+                let made = fit.piece_patches(piece)?;
+                let mut patches = placed
                     .lock()
                     .unwrap_or_else(|poisoned| poisoned.into_inner());
-                let (patches, next) = &mut *guard;
-                for patch in made {
-                    let at = &mut next[patch.cage_face as usize];
-                    patches[*at] = patch;
-                    *at += 1;
+                for (slot, patch) in made {
+                    patches[slot] = patch;
                 }
             }
             Ok(())
@@ -286,11 +332,12 @@ struct Piece {
     ring: Vec<u32>,
 }
 
-/// Cuts the cage's faces into pieces, each grown breadth first from the
-/// lowest face left (so that pieces are round and their rings thin) until
-/// its ring would make more than `budget` patches. A face whose ring alone
-/// makes more is a piece of its own, and the faces that add nothing to its
-/// ring join it (every face around a vertex of many faces shares that ring).
+/// Cuts the cage's faces `wanted` into pieces, each grown breadth first
+/// from the lowest face left (so that pieces are round and their rings
+/// thin) until its ring would make more than `budget` patches. A face whose
+/// ring alone makes more is a piece of its own, and the faces that add
+/// nothing to its ring join it (every face around a vertex of many faces
+/// shares that ring).
 ///
 /// # Errors
 /// [`Error::ResultTooLarge`] when one face's ring makes more than
@@ -300,10 +347,11 @@ fn pieces(
     connectivity: &Connectivity,
     isolation: u32,
     budget: usize,
+    wanted: &[bool],
 ) -> Result<Vec<Piece>> {
     let per_corner = patches_per_corner(isolation);
     let face_count = faces.face_count();
-    let mut taken = vec![false; face_count];
+    let mut taken: Vec<bool> = wanted.iter().map(|&w| !w).collect();
     // The piece whose ring holds each face and vertex so far.
     let mut face_piece = vec![u32::MAX; face_count];
     let mut vertex_piece = vec![u32::MAX; faces.vertex_count];
@@ -408,106 +456,197 @@ impl CageTags {
     }
 }
 
-/// The patches of `piece`'s faces, from its ring refined on its own.
-fn piece_patches(
-    cage: &Mesh,
-    connectivity: &Connectivity,
-    options: &SubdivisionOptions,
-    tags: &CageTags,
+/// What the fit of every piece reads.
+struct Fit<'a> {
+    cage: &'a Mesh,
+    connectivity: &'a Connectivity,
+    options: &'a SubdivisionOptions,
+    tags: &'a CageTags,
     isolation: u32,
-    piece: &Piece,
-) -> Result<Vec<BezierPatch>> {
-    let mut vertices: Vec<u32> = piece
-        .ring
-        .iter()
-        .flat_map(|&f| cage.face(f as usize).iter().copied())
-        .collect();
-    vertices.sort_unstable();
-    vertices.dedup();
-    let local = |v: u32| vertices.binary_search(&v).unwrap_or(0) as u32;
-    let ring_faces = piece.ring.iter().map(|&f| cage.face(f as usize));
-    let sizes: Vec<u32> = ring_faces.clone().map(|face| face.len() as u32).collect();
-    let indices: Vec<u32> = ring_faces.flatten().map(|&v| local(v)).collect();
-    let positions = vertices
-        .iter()
-        .map(|&v| cage.positions()[v as usize])
-        .collect();
-    let ring_cage = Mesh::new_with(
-        positions,
-        sizes,
-        indices,
-        MeshOptions {
-            allow_repeated_vertices: true,
-        },
-    )
-    .map_err(Error::from)?;
-    let mut ring_options = SubdivisionOptions {
-        creases: Vec::new(),
-        corners: Vec::new(),
-        holes: Vec::new(),
-        ..options.clone()
-    };
-    for (i, &f) in piece.ring.iter().enumerate() {
-        for c in
-            cage.face_start(f as usize)..cage.face_start(f as usize) + cage.face(f as usize).len()
-        {
-            let e = connectivity.corner_edges[c] as usize;
-            if let Some(sharpness) = tags.creases[e] {
-                let [a, b] = connectivity.edges[e];
-                ring_options.creases.push(([local(a), local(b)], sharpness));
-            }
-        }
-        if tags.holes[f as usize] {
-            ring_options.holes.push(i as u32);
-        }
-    }
-    for (i, &v) in vertices.iter().enumerate() {
-        if let Some(sharpness) = tags.corners[v as usize] {
-            ring_options.corners.push((i as u32, sharpness));
-        }
-    }
-
-    let fine = Subdivider::new(
-        &ring_cage,
-        Scheme::CatmullClark,
-        isolation + 3,
-        &ring_options,
-    )?;
-    // Every refined level is quads; the children of face f of level
-    // `isolation` are the 64 faces from 64 f three levels down.
-    let fine_faces = fine.face_indices();
-    let parents = fine.parent_faces();
-    let mut ours = vec![false; piece.ring.len()];
-    for &f in &piece.faces {
-        ours[piece.ring.binary_search(&f).unwrap_or(0)] = true;
-    }
-    let grids: Vec<(Grid, u32)> = (0..fine.face_count() / 64)
-        .filter(|&g| ours[parents[64 * g] as usize])
-        .map(|g| {
-            let grid = Grid::of(&fine_faces[256 * g..256 * (g + 1)]);
-            (grid, piece.ring[parents[64 * g] as usize])
-        })
-        .collect();
-    // The limit at the grids' points alone, not at the rest of the ring.
-    let mut points: Vec<u32> = grids.iter().flat_map(|(grid, _)| grid.0).collect();
-    points.sort_unstable();
-    points.dedup();
-    let limit = fine
-        .limit_at_vertices(ring_cage.positions(), points.iter().map(|&v| v as usize))?
-        .positions;
-    Ok(grids
-        .into_par_iter()
-        .map(|(grid, cage_face)| {
-            let grid = Grid(grid.0.map(|v| points.binary_search(&v).unwrap_or(0) as u32));
-            fitted_patch(&grid, &limit, cage_face)
-        })
-        .collect())
+    isolated: &'a Isolated<'a>,
+    layout: &'a Layout,
+    /// Per slot: whether its patch is fitted.
+    fitted: &'a [bool],
 }
 
-/// The patch fitted to the limit points of `grid`, with its error.
-fn fitted_patch(grid: &Grid, limit: &[DVec3], cage_face: u32) -> BezierPatch {
-    let edges: [[DVec3; 4]; 4] =
-        std::array::from_fn(|k| fit_curve(&grid.edge(k).map(|v| limit[v as usize])));
+impl Fit<'_> {
+    /// The fitted patches of `piece`'s faces with their slots, from its
+    /// ring refined on its own.
+    fn piece_patches(&self, piece: &Piece) -> Result<Vec<(usize, BezierPatch)>> {
+        let (cage, connectivity, options, tags) =
+            (self.cage, self.connectivity, self.options, self.tags);
+        let mut vertices: Vec<u32> = piece
+            .ring
+            .iter()
+            .flat_map(|&f| cage.face(f as usize).iter().copied())
+            .collect();
+        vertices.sort_unstable();
+        vertices.dedup();
+        let local = |v: u32| vertices.binary_search(&v).unwrap_or(0) as u32;
+        let ring_faces = piece.ring.iter().map(|&f| cage.face(f as usize));
+        let sizes: Vec<u32> = ring_faces.clone().map(|face| face.len() as u32).collect();
+        let indices: Vec<u32> = ring_faces.flatten().map(|&v| local(v)).collect();
+        let positions = vertices
+            .iter()
+            .map(|&v| cage.positions()[v as usize])
+            .collect();
+        let ring_cage = Mesh::new_with(
+            positions,
+            sizes,
+            indices,
+            MeshOptions {
+                allow_repeated_vertices: true,
+            },
+        )
+        .map_err(Error::from)?;
+        let mut ring_options = SubdivisionOptions {
+            creases: Vec::new(),
+            corners: Vec::new(),
+            holes: Vec::new(),
+            ..options.clone()
+        };
+        for (i, &f) in piece.ring.iter().enumerate() {
+            for c in cage.face_start(f as usize)
+                ..cage.face_start(f as usize) + cage.face(f as usize).len()
+            {
+                let e = connectivity.corner_edges[c] as usize;
+                if let Some(sharpness) = tags.creases[e] {
+                    let [a, b] = connectivity.edges[e];
+                    ring_options.creases.push(([local(a), local(b)], sharpness));
+                }
+            }
+            if tags.holes[f as usize] {
+                ring_options.holes.push(i as u32);
+            }
+        }
+        for (i, &v) in vertices.iter().enumerate() {
+            if let Some(sharpness) = tags.corners[v as usize] {
+                ring_options.corners.push((i as u32, sharpness));
+            }
+        }
+
+        let fine = Subdivider::new(
+            &ring_cage,
+            Scheme::CatmullClark,
+            self.isolation + 3,
+            &ring_options,
+        )?;
+        // Every refined level is quads; the children of face f of level
+        // `isolation` are the 64 faces from 64 f three levels down, and
+        // the faces of each cage face are in the whole cage's order.
+        let fine_faces = fine.face_indices();
+        let parents = fine.parent_faces();
+        let mut ours = vec![false; piece.ring.len()];
+        for &f in &piece.faces {
+            ours[piece.ring.binary_search(&f).unwrap_or(0)] = true;
+        }
+        let mut grids = Vec::new();
+        let mut child = 0;
+        for g in 0..fine.face_count() / 64 {
+            let parent = parents[64 * g] as usize;
+            child = if g > 0 && parents[64 * (g - 1)] as usize == parent {
+                child + 1
+            } else {
+                0
+            };
+            let cage_face = piece.ring[parent];
+            let (slot, face) = self.layout.place(cage_face, child);
+            if ours[parent] && self.fitted[slot] {
+                let grid = Grid::of(&fine_faces[256 * g..256 * (g + 1)]);
+                grids.push((grid, cage_face, slot, face));
+            }
+        }
+        // The limit at the grids' points alone, not at the rest of the ring.
+        let mut points: Vec<u32> = grids.iter().flat_map(|(grid, ..)| grid.0).collect();
+        points.sort_unstable();
+        points.dedup();
+        let limit = fine
+            .limit_at_vertices(ring_cage.positions(), points.iter().map(|&v| v as usize))?
+            .positions;
+        Ok(grids
+            .into_par_iter()
+            .map(|(grid, cage_face, slot, face)| {
+                let grid = Grid(grid.0.map(|v| points.binary_search(&v).unwrap_or(0) as u32));
+                (
+                    slot,
+                    fitted_patch(&grid, &limit, self.isolated, face, cage_face),
+                )
+            })
+            .collect())
+    }
+}
+
+/// Where the patches lie: each shown cage face's patches in one run of
+/// slots, as its faces of the refined cage are in one run of faces.
+struct Layout {
+    /// Per cage face, its first slot and its first refined face.
+    starts: Vec<usize>,
+    first_faces: Vec<usize>,
+    /// Per slot, its cage face and its refined face.
+    slots: Vec<(u32, u32)>,
+}
+
+impl Layout {
+    /// `starts` and `total` as [`checked_cage`] gives them.
+    fn of(cage: &Mesh, starts: &[usize], total: usize, isolation: u32) -> Layout {
+        let per_corner = patches_per_corner(isolation);
+        let mut first_faces = Vec::with_capacity(cage.face_count());
+        let mut slots = Vec::with_capacity(total);
+        let mut next_face = 0;
+        for (f, face) in cage.faces().enumerate() {
+            first_faces.push(next_face);
+            let shown = starts.get(f + 1).copied().unwrap_or(total) - starts[f];
+            slots.extend((0..shown).map(|k| (f as u32, (next_face + k) as u32)));
+            next_face += face.len() * per_corner;
+        }
+        Layout {
+            starts: starts.to_vec(),
+            first_faces,
+            slots,
+        }
+    }
+
+    /// The cage face and refined face of `slot`.
+    fn face_of(&self, slot: usize) -> (u32, usize) {
+        let (cage_face, face) = self.slots[slot];
+        (cage_face, face as usize)
+    }
+
+    /// The slot and refined face of child `k` of cage face `cage_face`.
+    fn place(&self, cage_face: u32, k: usize) -> (usize, usize) {
+        let f = cage_face as usize;
+        (self.starts[f] + k, self.first_faces[f] + k)
+    }
+}
+
+/// The patch of refined face `face` fitted to the limit points of `grid`,
+/// with its error. At regular vertices its corners are the refined cage's
+/// limit points, and along edges between them its edges are their limit
+/// curves, as the patches beside it have them. Elsewhere the limit points
+/// three levels down stand: a sharpness that has not yet decayed to zero,
+/// or two faces at a vertex, where OpenSubdiv's limit is the point itself,
+/// make the refined cage's limit there differ from theirs.
+fn fitted_patch(
+    grid: &Grid,
+    limit: &[DVec3],
+    isolated: &Isolated,
+    face: usize,
+    cage_face: u32,
+) -> BezierPatch {
+    let corners = isolated.corners_of(face);
+    let edges: [[DVec3; 4]; 4] = std::array::from_fn(|k| {
+        isolated
+            .edge_curve(face, corners.start + k)
+            .unwrap_or_else(|| {
+                let samples = grid.edge(k).map(|v| limit[v as usize]);
+                let corner = |c: usize, sample| {
+                    isolated
+                        .regular_corner(isolated.vertex_at(corners.start + c % 4))
+                        .unwrap_or(sample)
+                };
+                fit_curve(corner(k, samples[0]), corner(k + 1, samples[8]), &samples)
+            })
+    });
     let control = fit_patch(&edges, |a, b| limit[grid.at(2 * a, 2 * b) as usize]);
     let mut patch = BezierPatch {
         cage_face,
@@ -587,13 +726,12 @@ fn bernstein(t: f64) -> [f64; 4] {
     [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t]
 }
 
-/// A cubic Bézier curve through `samples[0]` and `samples[8]` whose inner
-/// control points fit the samples at ¼, ½ and ¾ (least squares). Every sum
-/// pairs a sample with its mirror, so the samples reversed give the curve
-/// reversed bit for bit: the two patches at an edge, each fitting it from
-/// its own side, share its curve exactly.
-fn fit_curve(samples: &[DVec3; 9]) -> [DVec3; 4] {
-    let (p0, p3) = (samples[0], samples[8]);
+/// A cubic Bézier curve from `p0` to `p3` whose inner control points fit
+/// `samples` at ¼, ½ and ¾ (least squares; the samples run from t = 0 to 1
+/// in eighths). Every sum pairs a sample with its mirror, so the ends and
+/// samples reversed give the curve reversed bit for bit: the two patches at
+/// an edge, each fitting it from its own side, share its curve exactly.
+fn fit_curve(p0: DVec3, p3: DVec3, samples: &[DVec3; 9]) -> [DVec3; 4] {
     // The weights at ¼ (those at ¾ are the same reversed) and at ½.
     let (q, h) = (bernstein(0.25), bernstein(0.5));
     let near = samples[2] - (q[0] * p0 + q[3] * p3);
@@ -613,13 +751,7 @@ fn fit_curve(samples: &[DVec3; 9]) -> [DVec3; 4] {
 /// [`BezierPatch::edge`] lists them) whose four inner control points fit
 /// `sample(a, b)`, the limit points at `(a / 4, b / 4)` for a, b in 1..=3.
 fn fit_patch(edges: &[[DVec3; 4]; 4], sample: impl Fn(usize, usize) -> DVec3) -> [[DVec3; 4]; 4] {
-    let mut c = [[DVec3::ZERO; 4]; 4];
-    for t in 0..4 {
-        c[t][0] = edges[0][t];
-        c[3][t] = edges[1][t];
-        c[3 - t][3] = edges[2][t];
-        c[0][3 - t] = edges[3][t];
-    }
+    let mut c = with_edges(edges);
     // Unknowns c[1][1], c[2][1], c[1][2], c[2][2]; normal equations over the
     // nine inner samples.
     const INNER: [(usize, usize); 4] = [(1, 1), (2, 1), (1, 2), (2, 2)];
@@ -647,6 +779,19 @@ fn fit_patch(edges: &[[DVec3; 4]; 4], sample: impl Fn(usize, usize) -> DVec3) ->
     let solved = solve4(m, r);
     for (x, &(i, j)) in INNER.iter().enumerate() {
         c[i][j] = solved[x];
+    }
+    c
+}
+
+/// Control points with the four boundary curves `edges` (as
+/// [`BezierPatch::edge`] lists them) and zeros inside.
+fn with_edges(edges: &[[DVec3; 4]; 4]) -> [[DVec3; 4]; 4] {
+    let mut c = [[DVec3::ZERO; 4]; 4];
+    for t in 0..4 {
+        c[t][0] = edges[0][t];
+        c[3][t] = edges[1][t];
+        c[3 - t][3] = edges[2][t];
+        c[0][3 - t] = edges[3][t];
     }
     c
 }
@@ -684,7 +829,7 @@ mod tests {
     fn the_fits_reproduce_a_cubic_exactly() {
         let cubic = |t: f64| DVec3::new(t, t * t * t - 2.0 * t, 0.5 * t * t);
         let samples: [DVec3; 9] = std::array::from_fn(|k| cubic(k as f64 / 8.0));
-        let curve = fit_curve(&samples);
+        let curve = fit_curve(samples[0], samples[8], &samples);
         for k in 0..=8 {
             let t = k as f64 / 8.0;
             let b = bernstein(t);
@@ -701,9 +846,9 @@ mod tests {
                 std::array::from_fn(|_| DVec3::new(unit(), unit(), unit()) * 1e3 - 500.0);
             let mut backwards = samples;
             backwards.reverse();
-            let mut curve = fit_curve(&backwards);
+            let mut curve = fit_curve(backwards[0], backwards[8], &backwards);
             curve.reverse();
-            assert_eq!(curve, fit_curve(&samples));
+            assert_eq!(curve, fit_curve(samples[0], samples[8], &samples));
         }
     }
 
@@ -811,7 +956,8 @@ mod tests {
         let whole = Subdivider::new(&cage, Scheme::CatmullClark, 0, &Default::default()).unwrap();
         let level = &whole.levels[0];
         let budget = 16 * 400;
-        let cut = pieces(&level.faces, &level.connectivity, 2, budget).unwrap();
+        let all = vec![true; cage.face_count()];
+        let cut = pieces(&level.faces, &level.connectivity, 2, budget, &all).unwrap();
         assert!(cut.len() > 4);
         let mut owner = vec![usize::MAX; cage.face_count()];
         for (k, piece) in cut.iter().enumerate() {
@@ -837,9 +983,10 @@ mod tests {
         let fan = crate::mesh::shapes::fan(300);
         let whole = Subdivider::new(&fan, Scheme::CatmullClark, 0, &Default::default()).unwrap();
         let level = &whole.levels[0];
-        let cut = pieces(&level.faces, &level.connectivity, 1, 16).unwrap();
+        let all = vec![true; fan.face_count()];
+        let cut = pieces(&level.faces, &level.connectivity, 1, 16, &all).unwrap();
         assert_eq!(cut.len(), 1);
-        let error = pieces(&level.faces, &level.connectivity, 8, 16);
+        let error = pieces(&level.faces, &level.connectivity, 8, 16, &all);
         let Err(Error::ResultTooLarge(message)) = error else {
             panic!("{error:?}")
         };
