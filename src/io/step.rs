@@ -19,20 +19,35 @@ use std::fmt::Write as _;
 use std::io::{self, Write};
 
 use glam::DVec3;
+use rayon::prelude::*;
 
 /// A bicubic Bézier patch: `control[i][j]`, i along u, j along v.
 pub type Bicubic = [[DVec3; 4]; 4];
 
 /// Writes `patches` as an AP214 STEP file named `name` (the name goes in
-/// its header and its product). Each entity is written as it is made, so
-/// memory holds the shared edges and vertices, not the file's text.
+/// its header and its product). The entities are numbered first, in file
+/// order, then formatted on all threads a batch of patches at a time, so
+/// memory holds the numbering and one batch's text, not the file's.
 ///
 /// # Errors
 /// What `w` reports.
-pub fn write<'a>(
+pub fn write(w: &mut dyn Write, name: &str, patches: &[Bicubic]) -> io::Result<()> {
+    write_in_batches(w, name, patches, BATCH_PATCHES)
+}
+
+/// Patches formatted at once, on all threads, before their text is written:
+/// about 3.4 KB each, so memory holds a few tens of megabytes of text.
+const BATCH_PATCHES: usize = 16_384;
+
+/// Patches one thread formats at a time.
+const CHUNK_PATCHES: usize = 256;
+
+/// [`write`], formatting `batch` patches at a time.
+fn write_in_batches(
     w: &mut dyn Write,
     name: &str,
-    patches: impl IntoIterator<Item = &'a Bicubic>,
+    patches: &[Bicubic],
+    batch: usize,
 ) -> io::Result<()> {
     let name = step_string(name);
     writeln!(w, "ISO-10303-21;")?;
@@ -52,77 +67,33 @@ pub fn write<'a>(
     )?;
     writeln!(w, "ENDSEC;")?;
     writeln!(w, "DATA;")?;
-    let mut file = Entities { w, count: 0 };
-    let mut faces = String::new();
-    let mut vertices: HashMap<[u64; 3], usize> = HashMap::new();
-    let mut edges: HashMap<[[u64; 3]; 4], usize> = HashMap::new();
-    for patch in patches {
-        let mut rows = Vec::with_capacity(4);
-        for row in patch {
-            let mut points = Vec::with_capacity(4);
-            for &p in row {
-                points.push(file.point(p)?);
-            }
-            rows.push(format!("({})", points.join(",")));
-        }
-        let surface = file.add(&format!(
-            "B_SPLINE_SURFACE_WITH_KNOTS('',3,3,({}),.UNSPECIFIED.,.F.,.F.,.F.,(4,4),(4,4),(0.,1.),(0.,1.),.UNSPECIFIED.)",
-            rows.join(",")
-        ))?;
-        // The boundary counter-clockwise seen from du × dv: v = 0 along u,
-        // u = 1 along v, then back along v = 1 and u = 0.
-        let boundary = [
-            [patch[0][0], patch[1][0], patch[2][0], patch[3][0]],
-            [patch[3][0], patch[3][1], patch[3][2], patch[3][3]],
-            [patch[3][3], patch[2][3], patch[1][3], patch[0][3]],
-            [patch[0][3], patch[0][2], patch[0][1], patch[0][0]],
-        ];
-        let mut oriented = Vec::with_capacity(4);
-        for curve in &boundary {
-            let key = curve.map(bits);
-            let mut reversed = key;
-            reversed.reverse();
-            let (key, forward) = if key <= reversed {
-                (key, true)
-            } else {
-                (reversed, false)
-            };
-            let edge = match edges.get(&key) {
-                Some(&edge) => edge,
-                None => {
-                    let mut along = *curve;
-                    if !forward {
-                        along.reverse();
-                    }
-                    let start = file.vertex(&mut vertices, along[0])?;
-                    let end = file.vertex(&mut vertices, along[3])?;
-                    let mut points = Vec::with_capacity(4);
-                    for &p in &along {
-                        points.push(file.point(p)?);
-                    }
-                    let geometry = file.add(&format!(
-                        "B_SPLINE_CURVE_WITH_KNOTS('',3,({}),.UNSPECIFIED.,.F.,.F.,(4,4),(0.,1.),.UNSPECIFIED.)",
-                        points.join(",")
-                    ))?;
-                    let edge =
-                        file.add(&format!("EDGE_CURVE('',#{start},#{end},#{geometry},.T.)"))?;
-                    edges.insert(key, edge);
-                    edge
+    let (plans, count) = plan(patches);
+    let chunk = CHUNK_PATCHES.min(batch).max(1);
+    for (patches, plans) in patches.chunks(batch.max(1)).zip(plans.chunks(batch.max(1))) {
+        let texts: Vec<String> = patches
+            .par_chunks(chunk)
+            .zip(plans.par_chunks(chunk))
+            .map(|(patches, plans)| {
+                let mut text = String::with_capacity(3500 * patches.len());
+                for (patch, plan) in patches.iter().zip(plans) {
+                    write_patch(&mut text, patch, plan);
                 }
-            };
-            let sense = if forward { ".T." } else { ".F." };
-            let oriented_edge = file.add(&format!("ORIENTED_EDGE('',*,*,#{edge},{sense})"))?;
-            oriented.push(format!("#{oriented_edge}"));
+                text
+            })
+            .collect();
+        for text in texts {
+            w.write_all(text.as_bytes())?;
         }
-        let lp = file.add(&format!("EDGE_LOOP('',({}))", oriented.join(",")))?;
-        let bound = file.add(&format!("FACE_OUTER_BOUND('',#{lp},.T.)"))?;
-        let face = file.add(&format!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)"))?;
+    }
+
+    let mut file = Entities { w, count };
+    let mut faces = String::new();
+    for plan in &plans {
         if !faces.is_empty() {
             faces.push(',');
         }
-        let _ = write!(faces, "#{face}");
+        let _ = write!(faces, "#{}", plan.face);
     }
-
     let shell = file.add(&format!("OPEN_SHELL('',({faces}))"))?;
     let model = file.add(&format!("SHELL_BASED_SURFACE_MODEL('',(#{shell}))"))?;
     let context = file.add("APPLICATION_CONTEXT('automotive design')")?;
@@ -165,7 +136,184 @@ pub fn write<'a>(
     writeln!(w, "END-ISO-10303-21;")
 }
 
-/// The data section as it is written: entity k is `#k`.
+/// The patch's boundary counter-clockwise seen from du × dv: v = 0 along u,
+/// u = 1 along v, then back along v = 1 and u = 0.
+fn boundary(patch: &Bicubic) -> [[DVec3; 4]; 4] {
+    [
+        [patch[0][0], patch[1][0], patch[2][0], patch[3][0]],
+        [patch[3][0], patch[3][1], patch[3][2], patch[3][3]],
+        [patch[3][3], patch[2][3], patch[1][3], patch[0][3]],
+        [patch[0][3], patch[0][2], patch[0][1], patch[0][0]],
+    ]
+}
+
+/// Where one patch's entities go. Each patch writes, in order: its 16
+/// control points and its surface; for each side, a new edge's entities
+/// (a new vertex's point and `VERTEX_POINT` at each end, the curve's 4
+/// points, the curve and its `EDGE_CURVE`) and the side's
+/// `ORIENTED_EDGE`; then its loop, bound and face.
+#[derive(Debug, Clone, Copy)]
+struct Plan {
+    /// The number of its first entity.
+    first: usize,
+    sides: [Side; 4],
+    /// Its `ADVANCED_FACE`.
+    face: usize,
+}
+
+/// One side of a patch: its `EDGE_CURVE`, run forward or backward, and
+/// whether this patch makes it.
+#[derive(Debug, Clone, Copy, Default)]
+struct Side {
+    edge: usize,
+    forward: bool,
+    /// Made here: the `VERTEX_POINT` at each end of the curve (as it runs
+    /// in the file), and whether this patch makes it too.
+    made: Option<[(usize, bool); 2]>,
+}
+
+/// Numbers every patch's entities in the order the file lists them,
+/// sharing the edges and vertices patches meet at (found by their control
+/// points' bits, which patches meeting at an edge hold exactly); returns
+/// the plans and the number of entities.
+fn plan(patches: &[Bicubic]) -> (Vec<Plan>, usize) {
+    // A closed shell of quads has as many vertices as faces and twice as
+    // many edges.
+    let mut vertices: HashMap<[u64; 3], usize> = HashMap::with_capacity(patches.len() + 4);
+    let mut edges: HashMap<[[u64; 3]; 4], usize> = HashMap::with_capacity(2 * patches.len() + 4);
+    let mut count = 0;
+    let plans = patches
+        .iter()
+        .map(|patch| {
+            let first = count + 1;
+            count += 17;
+            let sides = boundary(patch).map(|curve| {
+                let key = curve.map(bits);
+                let mut reversed = key;
+                reversed.reverse();
+                let (key, forward) = if key <= reversed {
+                    (key, true)
+                } else {
+                    (reversed, false)
+                };
+                let mut side = Side {
+                    forward,
+                    ..Side::default()
+                };
+                side.edge = match edges.get(&key) {
+                    Some(&edge) => edge,
+                    None => {
+                        let mut vertex = |p: [u64; 3]| match vertices.get(&p) {
+                            Some(&v) => (v, false),
+                            None => {
+                                count += 2;
+                                vertices.insert(p, count);
+                                (count, true)
+                            }
+                        };
+                        side.made = Some([vertex(key[0]), vertex(key[3])]);
+                        count += 6;
+                        edges.insert(key, count);
+                        count
+                    }
+                };
+                count += 1;
+                side
+            });
+            count += 3;
+            Plan {
+                first,
+                sides,
+                face: count,
+            }
+        })
+        .collect();
+    (plans, count)
+}
+
+/// Text of entities numbered from `next` on.
+struct Numbered<'t> {
+    text: &'t mut String,
+    next: usize,
+}
+
+impl Numbered<'_> {
+    /// Writes the next entity; returns its number.
+    fn entity(&mut self, body: std::fmt::Arguments) -> usize {
+        let _ = writeln!(self.text, "#{}={body};", self.next);
+        self.next += 1;
+        self.next - 1
+    }
+}
+
+/// Writes the entities of `patch` as `plan` numbers them.
+fn write_patch(text: &mut String, patch: &Bicubic, plan: &Plan) {
+    let mut out = Numbered {
+        text,
+        next: plan.first,
+    };
+    for row in patch {
+        for &p in row {
+            out.entity(format_args!("{}", Point(p)));
+        }
+    }
+    let row = |i: usize| {
+        let first = plan.first + 4 * i;
+        [first, first + 1, first + 2, first + 3]
+    };
+    let ([a, b, c, d], [e, f, g, h]) = (row(0), row(1));
+    let ([i, j, k, l], [m, n, o, p]) = (row(2), row(3));
+    let surface = out.entity(format_args!(
+        "B_SPLINE_SURFACE_WITH_KNOTS('',3,3,((#{a},#{b},#{c},#{d}),(#{e},#{f},#{g},#{h}),(#{i},#{j},#{k},#{l}),(#{m},#{n},#{o},#{p})),.UNSPECIFIED.,.F.,.F.,.F.,(4,4),(4,4),(0.,1.),(0.,1.),.UNSPECIFIED.)"
+    ));
+    let mut oriented = [0; 4];
+    for ((side, curve), oriented) in plan.sides.iter().zip(boundary(patch)).zip(&mut oriented) {
+        if let Some(ends) = side.made {
+            let mut along = curve;
+            if !side.forward {
+                along.reverse();
+            }
+            for ((v, made), p) in ends.into_iter().zip([along[0], along[3]]) {
+                if made {
+                    let point = out.entity(format_args!("{}", Point(p)));
+                    let vertex = out.entity(format_args!("VERTEX_POINT('',#{point})"));
+                    debug_assert_eq!(vertex, v);
+                }
+            }
+            let [a, b, c, d] = along.map(|p| out.entity(format_args!("{}", Point(p))));
+            let geometry = out.entity(format_args!(
+                "B_SPLINE_CURVE_WITH_KNOTS('',3,(#{a},#{b},#{c},#{d}),.UNSPECIFIED.,.F.,.F.,(4,4),(0.,1.),.UNSPECIFIED.)"
+            ));
+            let [start, end] = ends.map(|(v, _)| v);
+            let edge = out.entity(format_args!(
+                "EDGE_CURVE('',#{start},#{end},#{geometry},.T.)"
+            ));
+            debug_assert_eq!(edge, side.edge);
+        }
+        let sense = if side.forward { ".T." } else { ".F." };
+        let edge = side.edge;
+        *oriented = out.entity(format_args!("ORIENTED_EDGE('',*,*,#{edge},{sense})"));
+    }
+    let [a, b, c, d] = oriented;
+    let lp = out.entity(format_args!("EDGE_LOOP('',(#{a},#{b},#{c},#{d}))"));
+    let bound = out.entity(format_args!("FACE_OUTER_BOUND('',#{lp},.T.)"));
+    let face = out.entity(format_args!("ADVANCED_FACE('',(#{bound}),#{surface},.T.)"));
+    debug_assert_eq!(face, plan.face);
+}
+
+/// A `CARTESIAN_POINT` entity's body.
+struct Point(DVec3);
+
+impl std::fmt::Display for Point {
+    fn fmt(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        let [x, y, z] = self.0.to_array();
+        // "1.0000000000000000E0", "-2.5000000000000000E-5": STEP's REAL
+        // form, 17 significant digits, which read back to the same double.
+        write!(f, "CARTESIAN_POINT('',({x:.16E},{y:.16E},{z:.16E}))")
+    }
+}
+
+/// The entities after the patches: entity k is `#k`.
 struct Entities<'w> {
     w: &'w mut dyn Write,
     count: usize,
@@ -178,41 +326,15 @@ impl Entities<'_> {
         Ok(self.count)
     }
 
-    /// A new `CARTESIAN_POINT`, as the reference `#n` (control points are
-    /// not shared: each curve and surface lists its own).
+    /// A new `CARTESIAN_POINT`, as the reference `#n`.
     fn point(&mut self, p: DVec3) -> io::Result<String> {
-        let mut text = String::from("CARTESIAN_POINT('',(");
-        for (k, x) in p.to_array().into_iter().enumerate() {
-            if k > 0 {
-                text.push(',');
-            }
-            let _ = write!(text, "{}", real(x));
-        }
-        text.push_str("))");
-        Ok(format!("#{}", self.add(&text)?))
-    }
-
-    /// The `VERTEX_POINT` at `p`, shared by every edge that ends there.
-    fn vertex(&mut self, vertices: &mut HashMap<[u64; 3], usize>, p: DVec3) -> io::Result<usize> {
-        if let Some(&v) = vertices.get(&bits(p)) {
-            return Ok(v);
-        }
-        let point = self.point(p)?;
-        let v = self.add(&format!("VERTEX_POINT('',{point})"))?;
-        vertices.insert(bits(p), v);
-        Ok(v)
+        Ok(format!("#{}", self.add(&Point(p).to_string())?))
     }
 }
 
 fn bits(p: DVec3) -> [u64; 3] {
     // -0 and 0 are one place.
     p.to_array().map(|x| (x + 0.0).to_bits())
-}
-
-/// A STEP REAL with 17 significant digits (reads back to the same double).
-fn real(x: f64) -> String {
-    // "1.0000000000000000E0", "-2.5000000000000000E-5": STEP's REAL form.
-    format!("{x:.16E}")
 }
 
 /// A STEP string: apostrophes doubled, non-ASCII left out.
@@ -240,9 +362,15 @@ mod tests {
             std::f64::consts::PI,
             f64::MAX,
         ] {
-            let text = real(x);
-            assert!(text.contains('.') && text.contains('E'), "{text}");
-            assert_eq!(text.parse::<f64>().unwrap(), x, "{text}");
+            let text = Point(DVec3::splat(x)).to_string();
+            let reals = text
+                .strip_prefix("CARTESIAN_POINT('',(")
+                .and_then(|rest| rest.strip_suffix("))"))
+                .unwrap();
+            for real in reals.split(',') {
+                assert!(real.contains('.') && real.contains('E'), "{text}");
+                assert_eq!(real.parse::<f64>().unwrap(), x, "{text}");
+            }
         }
     }
 
@@ -263,6 +391,83 @@ mod tests {
         assert_eq!(text.matches("ORIENTED_EDGE(").count(), 8);
         assert!(text.starts_with("ISO-10303-21;\nHEADER;"));
         assert!(text.ends_with("ENDSEC;\nEND-ISO-10303-21;\n"));
+    }
+
+    /// An `n` × `m` sheet of patches over a wavy surface, each patch's
+    /// control points computed from its grid position so that neighbours
+    /// share their edges bit for bit.
+    fn sheet(n: usize, m: usize) -> Vec<Bicubic> {
+        let mut patches = Vec::new();
+        for i in 0..n {
+            for j in 0..m {
+                patches.push(std::array::from_fn(|a| {
+                    std::array::from_fn(|b| {
+                        let (x, y) = (i as f64 + a as f64 / 3.0, j as f64 + b as f64 / 3.0);
+                        DVec3::new(x, y, (0.7 * x).sin() * (1.3 * y).cos())
+                    })
+                }));
+            }
+        }
+        patches
+    }
+
+    #[test]
+    fn batches_of_any_size_write_the_same_file() {
+        let patches = sheet(7, 5);
+        let mut whole = Vec::new();
+        write_in_batches(&mut whole, "sheet", &patches, usize::MAX).unwrap();
+        for batch in [1, 2, 3, 16, 35] {
+            let mut out = Vec::new();
+            write_in_batches(&mut out, "sheet", &patches, batch).unwrap();
+            assert!(out == whole, "batches of {batch}");
+        }
+    }
+
+    #[test]
+    fn every_reference_names_an_earlier_entity_of_its_kind() {
+        let (n, m) = (6, 4);
+        let patches = sheet(n, m);
+        let mut out = Vec::new();
+        write_in_batches(&mut out, "sheet", &patches, 5).unwrap();
+        let text = String::from_utf8(out).unwrap();
+        let mut kinds: Vec<&str> = vec![""];
+        let mut count = HashMap::new();
+        for line in text.lines().filter(|l| l.starts_with('#')) {
+            let (id, body) = line.split_once('=').unwrap();
+            assert_eq!(id[1..].parse::<usize>().unwrap(), kinds.len(), "{line}");
+            let kind = body.split('(').next().unwrap();
+            let refs: Vec<&str> = body
+                .split('#')
+                .skip(1)
+                .map(|r| {
+                    let end = r.find(|c: char| !c.is_ascii_digit()).unwrap_or(r.len());
+                    let at: usize = r[..end].parse().unwrap();
+                    assert!(at < kinds.len(), "{line}");
+                    kinds[at]
+                })
+                .collect();
+            let expected: &[&str] = match kind {
+                "B_SPLINE_SURFACE_WITH_KNOTS" => &["CARTESIAN_POINT"; 16],
+                "VERTEX_POINT" => &["CARTESIAN_POINT"],
+                "B_SPLINE_CURVE_WITH_KNOTS" => &["CARTESIAN_POINT"; 4],
+                "EDGE_CURVE" => &["VERTEX_POINT", "VERTEX_POINT", "B_SPLINE_CURVE_WITH_KNOTS"],
+                "ORIENTED_EDGE" => &["EDGE_CURVE"],
+                "EDGE_LOOP" => &["ORIENTED_EDGE"; 4],
+                "FACE_OUTER_BOUND" => &["EDGE_LOOP"],
+                "ADVANCED_FACE" => &["FACE_OUTER_BOUND", "B_SPLINE_SURFACE_WITH_KNOTS"],
+                "OPEN_SHELL" => &["ADVANCED_FACE"; 24],
+                _ => &[],
+            };
+            if !expected.is_empty() {
+                assert_eq!(refs, expected, "{line}");
+            }
+            *count.entry(kind).or_insert(0) += 1;
+            kinds.push(kind);
+        }
+        assert_eq!(count["ADVANCED_FACE"], n * m);
+        assert_eq!(count["VERTEX_POINT"], (n + 1) * (m + 1));
+        assert_eq!(count["EDGE_CURVE"], n * (m + 1) + m * (n + 1));
+        assert_eq!(count["ORIENTED_EDGE"], 4 * n * m);
     }
 
     #[test]

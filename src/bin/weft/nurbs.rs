@@ -60,10 +60,9 @@ pub fn run(cli: &Cli, args: &Nurbs) -> Result<(), Failure> {
         .file_name()
         .map(|n| n.to_string_lossy().into_owned())
         .unwrap_or_default();
+    let controls: Vec<step::Bicubic> = patches.patches.iter().map(|p| p.control).collect();
     with_progress(&format!("writing {}", output.display()), || {
-        io::write_atomically(output, |w| {
-            step::write(w, &name, patches.patches.iter().map(|p| &p.control))
-        })
+        io::write_atomically(output, |w| step::write(w, &name, &controls))
     })?;
     print_summary(output, &patches);
     Ok(())
