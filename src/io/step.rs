@@ -36,8 +36,8 @@ pub fn write(w: &mut dyn Write, name: &str, patches: &[Bicubic]) -> io::Result<(
 }
 
 /// Patches formatted at once, on all threads, before their text is written:
-/// about 3.4 KB each, so memory holds a few tens of megabytes of text.
-const BATCH_PATCHES: usize = 16_384;
+/// about 3.4 KB each, so memory holds about 14 MB of text.
+const BATCH_PATCHES: usize = 4096;
 
 /// Patches one thread formats at a time.
 const CHUNK_PATCHES: usize = 256;
