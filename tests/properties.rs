@@ -9,6 +9,7 @@
 use std::collections::{HashMap, HashSet};
 
 use proptest::prelude::*;
+use proptest::test_runner::{RngAlgorithm, TestRng};
 use weft::mesh::shapes;
 use weft::{DVec3, Mesh, Topology};
 
@@ -46,7 +47,7 @@ fn open_mesh() -> impl Strategy<Value = (Mesh, f64)> {
         prop_oneof![Just(0.0), 0.0f64..0.02, 0.0f64..0.4],
     )
         .prop_map(|((mesh, _), seed, spread, tolerance)| {
-            let mut next = xorshift(seed);
+            let mut next = seeded_words(seed);
             let mut positions = mesh.positions().to_vec();
             let mut faces = Vec::new();
             for face in mesh.faces() {
@@ -73,15 +74,12 @@ fn open_mesh() -> impl Strategy<Value = (Mesh, f64)> {
         })
 }
 
-/// A xorshift generator: the generators' only source of randomness besides proptest's values.
-fn xorshift(seed: u64) -> impl FnMut() -> u64 {
-    let mut state = seed | 1;
-    move || {
-        state ^= state << 13;
-        state ^= state >> 7;
-        state ^= state << 17;
-        state
-    }
+/// Words from proptest's own seeded generator: the generators' only source
+/// of randomness besides proptest's values.
+fn seeded_words(seed: u64) -> impl FnMut() -> u64 {
+    let bytes = [seed.to_le_bytes(), (!seed).to_le_bytes()].concat();
+    let mut rng = TestRng::from_seed(RngAlgorithm::XorShift, &bytes);
+    move || rng.next_u64()
 }
 
 /// A number in [0, 1) from random bits.
@@ -130,7 +128,7 @@ fn box_mesh(n: usize) -> Mesh {
 /// Jitters the positions and splits some quads into triangles, without
 /// changing the surface's topology.
 fn remix(mesh: &Mesh, seed: u64) -> Mesh {
-    let mut next = xorshift(seed);
+    let mut next = seeded_words(seed);
     let positions: Vec<DVec3> = mesh
         .positions()
         .iter()
@@ -155,7 +153,7 @@ fn remix(mesh: &Mesh, seed: u64) -> Mesh {
 /// and no diagonal a triangulation draws inside the polygon is an edge
 /// anywhere else.
 fn merge_pairs(mesh: &Mesh, seed: u64) -> Mesh {
-    let mut next = xorshift(seed);
+    let mut next = seeded_words(seed);
     let faces: Vec<&[u32]> = mesh.faces().collect();
     let mut face_of: HashMap<(u32, u32), usize> = HashMap::new();
     for (f, face) in faces.iter().enumerate() {
