@@ -522,14 +522,7 @@ fn covered_samples(
     corners: &[(f64, f64, f64)],
     (w, h): (usize, usize),
 ) -> Option<([usize; 2], [usize; 2])> {
-    let (mut low, mut high) = (
-        (f64::INFINITY, f64::INFINITY),
-        (f64::NEG_INFINITY, f64::NEG_INFINITY),
-    );
-    for &(x, y, _) in corners {
-        low = (low.0.min(x), low.1.min(y));
-        high = (high.0.max(x), high.1.max(y));
-    }
+    let (low, high) = screen_box(corners);
     let span = |low: f64, high: f64, count: usize| -> Option<[usize; 2]> {
         let first = (low - 0.5 - BOUNDS_MARGIN).max(0.0);
         let last = (high - 0.5 + BOUNDS_MARGIN).min(count as f64 - 1.0);
@@ -699,6 +692,20 @@ fn fill_triangle(
     }
 }
 
+/// The lowest and highest screen x and y of `corners` (NaN coordinates
+/// left out: `min` and `max` drop them).
+fn screen_box(corners: &[(f64, f64, f64)]) -> ((f64, f64), (f64, f64)) {
+    let (mut low, mut high) = (
+        (f64::INFINITY, f64::INFINITY),
+        (f64::NEG_INFINITY, f64::NEG_INFINITY),
+    );
+    for &(x, y, _) in corners {
+        low = (low.0.min(x), low.1.min(y));
+        high = (high.0.max(x), high.1.max(y));
+    }
+    (low, high)
+}
+
 /// Twice the signed area of the triangle's projection, as the inside test
 /// divides by it.
 fn doubled_area([a, b, c]: [(f64, f64, f64); 3]) -> f64 {
@@ -844,11 +851,7 @@ impl RowSpans {
             sides: [None; 3],
             columns: [x0, x1],
         };
-        let (mut low, mut high) = ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
-        for &(x, y, _) in &corners {
-            low = (low.0.min(x), low.1.min(y));
-            high = (high.0.max(x), high.1.max(y));
-        }
+        let (low, high) = screen_box(&corners);
         // Far-off corners (behind the camera's plane, say): test every column.
         let reach = [low.0, low.1, high.0, high.1].map(f64::abs);
         if reach.into_iter().fold(0.0, f64::max) >= 1e9 {

@@ -169,11 +169,7 @@ impl NearestDepth {
             ((b.1 - c.1) * inverse[0] + (c.1 - a.1) * inverse[1] + (a.1 - b.1) * inverse[2]) / area,
             ((c.0 - b.0) * inverse[0] + (a.0 - c.0) * inverse[1] + (b.0 - a.0) * inverse[2]) / area,
         );
-        let (mut low, mut high) = ((f64::MAX, f64::MAX), (f64::MIN, f64::MIN));
-        for &(x, y, _) in &corners {
-            low = (low.0.min(x), low.1.min(y));
-            high = (high.0.max(x), high.1.max(y));
-        }
+        let (low, high) = super::screen_box(&corners);
         // The weights' products span at most the box and a bin beside it,
         // and a weight there is at most that over the area; the area's own
         // rounding scales the weight.
