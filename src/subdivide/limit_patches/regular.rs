@@ -163,3 +163,81 @@ impl<'a> Isolated<'a> {
         Some(control)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{shapes, Mesh};
+    use crate::subdivide::{Creasing, NakedEdges, Scheme, SubdivisionOptions};
+
+    /// `mesh` lifted off its plane, or its sphere, by a fixed pattern.
+    fn bumped(mesh: &Mesh) -> Mesh {
+        let moved = mesh
+            .positions()
+            .iter()
+            .enumerate()
+            .map(|(i, &p)| {
+                p + 0.2 * DVec3::new(0.0, (0.9 * i as f64).cos(), (1.7 * i as f64).sin())
+            })
+            .collect();
+        mesh.with_positions(moved).unwrap()
+    }
+
+    #[test]
+    fn edge_curves_between_regular_vertices_lie_on_the_limit() {
+        // A 6 × 6 grid with a hard crease along one row, a semi-sharp one
+        // (Chaikin) along a column and a semi-sharp corner: edges beside
+        // them, between regular vertices, are curves of the limit too.
+        let id = |i: u32, j: u32| j * 7 + i;
+        let mut creases: Vec<([u32; 2], f64)> = (1..5)
+            .map(|i| ([id(i, 3), id(i + 1, 3)], f64::INFINITY))
+            .collect();
+        creases.extend((1..5).map(|j| ([id(2, j), id(2, j + 1)], 1.5)));
+        let creased = SubdivisionOptions {
+            creases,
+            corners: vec![(id(4, 4), 2.0)],
+            creasing: Creasing::Chaikin,
+            ..SubdivisionOptions::new(NakedEdges::Fixed)
+        };
+        let smooth = SubdivisionOptions::new(NakedEdges::Smooth);
+        let cases = [
+            (bumped(&shapes::quad_grid(6, 6)), creased, 1),
+            (bumped(&shapes::cube()), smooth.clone(), 2),
+            (shapes::mixed_polygons(), smooth, 2),
+        ];
+        for (k, (cage, options, isolation)) in cases.iter().enumerate() {
+            let refined = Subdivider::new(cage, Scheme::CatmullClark, *isolation, options).unwrap();
+            let isolated = Isolated::new(&refined, cage.positions()).unwrap();
+            let fine = Subdivider::new(cage, Scheme::CatmullClark, isolation + 3, options).unwrap();
+            let limit = fine.limit().unwrap().positions;
+            let (low, high) = cage.bounding_box().unwrap();
+            let size = (high - low).length();
+            let faces = &refined.last().faces;
+            let (mut curves, mut regular, mut irregular) = (0, 0, 0);
+            for f in 0..faces.face_count() {
+                for c in faces.corners(f) {
+                    let Some([a, b, c, d]) = isolated.edge_curve(f, c) else {
+                        irregular += 1;
+                        continue;
+                    };
+                    for t in 0..=8 {
+                        let t = t as f64 / 8.0;
+                        let s = 1.0 - t;
+                        let p = s * s * s * a
+                            + 3.0 * s * s * t * b
+                            + 3.0 * s * t * t * c
+                            + t * t * t * d;
+                        let nearest = limit
+                            .iter()
+                            .map(|q| (*q - p).length())
+                            .fold(f64::INFINITY, f64::min);
+                        assert!(nearest < 1e-12 * size, "case {k}, face {f}: {nearest}");
+                    }
+                    curves += 1;
+                }
+                regular += usize::from(isolated.regular_patch(f).is_some());
+            }
+            assert!(curves > 0 && irregular > 0 && regular > 0, "case {k}");
+        }
+    }
+}
