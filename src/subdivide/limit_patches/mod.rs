@@ -854,7 +854,7 @@ mod tests {
 
     /// `mesh` with every coordinate moved by up to a tenth, so that sums
     /// taken in another order would round differently.
-    fn jittered(mesh: &Mesh, seed: u64) -> Mesh {
+    pub(super) fn jittered(mesh: &Mesh, seed: u64) -> Mesh {
         let mut unit = crate::test_random::units(seed);
         let moved = mesh
             .positions()

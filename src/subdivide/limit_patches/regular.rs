@@ -166,22 +166,10 @@ impl<'a> Isolated<'a> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::tests::jittered;
     use super::*;
-    use crate::mesh::{shapes, Mesh};
+    use crate::mesh::shapes;
     use crate::subdivide::{Creasing, NakedEdges, Scheme, SubdivisionOptions};
-
-    /// `mesh` lifted off its plane, or its sphere, by a fixed pattern.
-    fn bumped(mesh: &Mesh) -> Mesh {
-        let moved = mesh
-            .positions()
-            .iter()
-            .enumerate()
-            .map(|(i, &p)| {
-                p + 0.2 * DVec3::new(0.0, (0.9 * i as f64).cos(), (1.7 * i as f64).sin())
-            })
-            .collect();
-        mesh.with_positions(moved).unwrap()
-    }
 
     #[test]
     fn edge_curves_between_regular_vertices_lie_on_the_limit() {
@@ -201,8 +189,8 @@ mod tests {
         };
         let smooth = SubdivisionOptions::new(NakedEdges::Smooth);
         let cases = [
-            (bumped(&shapes::quad_grid(6, 6)), creased, 1),
-            (bumped(&shapes::cube()), smooth.clone(), 2),
+            (jittered(&shapes::quad_grid(6, 6), 21), creased, 1),
+            (jittered(&shapes::cube(), 22), smooth.clone(), 2),
             (shapes::mixed_polygons(), smooth, 2),
         ];
         for (k, (cage, options, isolation)) in cases.iter().enumerate() {
