@@ -303,6 +303,34 @@ pub(crate) fn soup(sizes: &[u32], extra: usize, seed: u64, shared: bool) -> Mesh
     Mesh::new(positions, sizes.to_vec(), indices).unwrap()
 }
 
+/// Faces over a handful of vertices, so edges carry one, two or more
+/// faces either way round and vertices hold several fans; with
+/// `repeats`, faces may name a vertex more than once.
+#[cfg(test)]
+pub(crate) fn tangles() -> impl proptest::strategy::Strategy<Value = Mesh> {
+    use proptest::prelude::*;
+    let distinct =
+        proptest::sample::subsequence((0u32..8).collect::<Vec<_>>(), 3..6).prop_shuffle();
+    let repeating = proptest::collection::vec(0u32..8, 3..6);
+    prop_oneof![
+        proptest::collection::vec(distinct, 1..14).prop_map(|faces| (faces, false)),
+        proptest::collection::vec(repeating, 1..14).prop_map(|faces| (faces, true)),
+    ]
+    .prop_map(|(faces, repeats)| {
+        Mesh::new_with(
+            (0..8)
+                .map(|i| glam::DVec3::new(i as f64, (i * i % 5) as f64, (i % 3) as f64))
+                .collect(),
+            faces.iter().map(|f| f.len() as u32).collect(),
+            faces.concat(),
+            crate::mesh::MeshOptions {
+                allow_repeated_vertices: repeats,
+            },
+        )
+        .unwrap()
+    })
+}
+
 /// Random [`soup`]s: up to 40 faces of 3 to 6 corners, some with a vertex
 /// shared.
 #[cfg(test)]

@@ -947,33 +947,6 @@ mod tests {
         assert_eq!(MeshInfo::of(&empty), Topology::new(&empty).info(&empty));
     }
 
-    /// Faces over a handful of vertices, so edges carry one, two or more
-    /// faces either way round and vertices hold several fans; with
-    /// `repeats`, faces may name a vertex more than once.
-    fn tangles() -> impl proptest::strategy::Strategy<Value = Mesh> {
-        use proptest::prelude::*;
-        let distinct =
-            proptest::sample::subsequence((0u32..8).collect::<Vec<_>>(), 3..6).prop_shuffle();
-        let repeating = proptest::collection::vec(0u32..8, 3..6);
-        prop_oneof![
-            proptest::collection::vec(distinct, 1..14).prop_map(|faces| (faces, false)),
-            proptest::collection::vec(repeating, 1..14).prop_map(|faces| (faces, true)),
-        ]
-        .prop_map(|(faces, repeats)| {
-            Mesh::new_with(
-                (0..8)
-                    .map(|i| glam::DVec3::new(i as f64, (i * i % 5) as f64, (i % 3) as f64))
-                    .collect(),
-                faces.iter().map(|f| f.len() as u32).collect(),
-                faces.concat(),
-                crate::mesh::MeshOptions {
-                    allow_repeated_vertices: repeats,
-                },
-            )
-            .unwrap()
-        })
-    }
-
     proptest::proptest! {
         #[test]
         fn mesh_info_is_the_topology_s_info(mesh in shapes::soups()) {
@@ -981,7 +954,7 @@ mod tests {
         }
 
         #[test]
-        fn the_walk_around_a_vertex_agrees_with_the_union_of_its_fans(mesh in tangles()) {
+        fn the_walk_around_a_vertex_agrees_with_the_union_of_its_fans(mesh in shapes::tangles()) {
             let topology = Topology::new(&mesh);
             let mut scratch = Vec::new();
             for v in 0..mesh.vertex_count() {

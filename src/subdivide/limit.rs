@@ -11,7 +11,10 @@
 //! Zorin's (2000) cross tangent; corners stay, with their two first edges
 //! as tangents.
 
+use std::collections::HashMap;
+
 use glam::DVec3;
+use rayon::prelude::*;
 
 use super::creases::{is_sharp, Rule};
 use super::scale;
@@ -92,7 +95,7 @@ impl Subdivider {
     }
 
     fn limit_at(&self, cage: &[DVec3]) -> Result<Limit> {
-        self.limit_at_vertices(cage, 0..self.vertex_count())
+        self.limit_at_vertices(cage, (0..self.vertex_count()).into_par_iter())
     }
 
     /// [`Subdivider::limit_of`] at the last level's `vertices` alone, in
@@ -100,7 +103,7 @@ impl Subdivider {
     pub(crate) fn limit_at_vertices(
         &self,
         cage: &[DVec3],
-        vertices: impl ExactSizeIterator<Item = usize>,
+        vertices: impl IndexedParallelIterator<Item = usize>,
     ) -> Result<Limit> {
         self.check_limit_faces()?;
         let mut points = vec![DVec3::ZERO; self.vertex_count()];
@@ -113,43 +116,80 @@ impl Subdivider {
     pub(crate) fn limit_from_points(
         &self,
         points: &[DVec3],
-        vertices: impl ExactSizeIterator<Item = usize>,
+        vertices: impl IndexedParallelIterator<Item = usize>,
     ) -> Limit {
-        let n = vertices.len();
-        let mut limit = Limit {
-            positions: Vec::with_capacity(n),
-            du: Vec::with_capacity(n),
-            dv: Vec::with_capacity(n),
-            normals: Vec::with_capacity(n),
-        };
-        let (mut edges, mut corners) = (Vec::new(), Vec::new());
-        for v in vertices {
-            let p = points[v];
-            let Some(stencil) = self.limit_stencil(v, &mut edges, &mut corners) else {
-                limit.positions.push(p);
-                limit.du.push(DVec3::ZERO);
-                limit.dv.push(DVec3::ZERO);
-                limit.normals.push(DVec3::ZERO);
-                continue;
-            };
-            let apply = |mask: &Mask| {
-                let mut sum = p * mask.vertex;
-                for (w, &q) in mask.edges.iter().zip(&stencil.far) {
-                    sum += points[q as usize] * *w;
-                }
-                for (w, &q) in mask.faces.iter().zip(&stencil.opposite) {
-                    sum += points[q as usize] * *w;
-                }
-                sum
-            };
-            let [position, du, dv] = &stencil.masks;
-            let (du, dv) = (apply(du), apply(dv));
-            limit.positions.push(apply(position));
-            limit.du.push(du);
-            limit.dv.push(dv);
-            limit.normals.push(unit_normal(du, dv));
+        let ((positions, du), (dv, normals)) = vertices
+            .with_min_len(VERTICES_PER_TASK)
+            .map_init(StencilScratch::default, |scratch, v| {
+                let [position, du, dv] = self.limit_sums(v, points, scratch, 3);
+                ((position, du), (dv, unit_normal(du, dv)))
+            })
+            .unzip();
+        Limit {
+            positions,
+            du,
+            dv,
+            normals,
         }
-        limit
+    }
+
+    /// The limit positions alone at every last-level vertex that is
+    /// `wanted`, the bits [`Subdivider::limit_from_points`] gives them;
+    /// zero at the others.
+    pub(crate) fn limit_positions_where(
+        &self,
+        points: &[DVec3],
+        wanted: impl Fn(usize) -> bool + Sync,
+    ) -> Vec<DVec3> {
+        (0..self.vertex_count())
+            .into_par_iter()
+            .with_min_len(VERTICES_PER_TASK)
+            .map_init(StencilScratch::default, |scratch, v| {
+                if wanted(v) {
+                    self.limit_sums(v, points, scratch, 1)[0]
+                } else {
+                    DVec3::ZERO
+                }
+            })
+            .collect()
+    }
+
+    /// The first `wanted` of vertex `v`'s limit position, first and second
+    /// tangent from `points` (the rest zero); a vertex without edges stays,
+    /// with zero tangents.
+    fn limit_sums(
+        &self,
+        v: usize,
+        points: &[DVec3],
+        scratch: &mut StencilScratch,
+        wanted: usize,
+    ) -> [DVec3; 3] {
+        let p = points[v];
+        let Some(kind) = self.limit_stencil(v, scratch) else {
+            return [p, DVec3::ZERO, DVec3::ZERO];
+        };
+        let StencilScratch {
+            far,
+            opposite,
+            masks,
+            ..
+        } = scratch;
+        let masks = masks.of(self.scheme, kind);
+        let apply = |mask: &Mask| {
+            let mut sum = p * mask.vertex;
+            for (w, &q) in mask.edges.iter().zip(far.iter()) {
+                sum += points[q as usize] * *w;
+            }
+            for (w, &q) in mask.faces.iter().zip(opposite.iter()) {
+                sum += points[q as usize] * *w;
+            }
+            sum
+        };
+        let mut sums = [DVec3::ZERO; 3];
+        for (sum, mask) in sums.iter_mut().zip(masks).take(wanted) {
+            *sum = apply(mask);
+        }
+        sums
     }
 
     /// The limit masks at the cage `vertices` of a subdivider of no levels,
@@ -167,24 +207,30 @@ impl Subdivider {
     ) -> Result<Vec<[Weights; 3]>> {
         debug_assert_eq!(self.levels(), 0, "the weights are of the cage's points");
         self.check_limit_faces()?;
-        let (mut edges, mut corners) = (Vec::new(), Vec::new());
+        let mut scratch = StencilScratch::default();
         let mut out = Vec::new();
         for v in vertices {
-            let Some(stencil) = self.limit_stencil(v, &mut edges, &mut corners) else {
+            let Some(kind) = self.limit_stencil(v, &mut scratch) else {
                 out.push([vec![(v as u32, 1.0)], Vec::new(), Vec::new()]);
                 continue;
             };
+            let StencilScratch {
+                far,
+                opposite,
+                masks,
+                ..
+            } = &mut scratch;
             let weights = |mask: &Mask| {
                 // `limit_of` starts each sum at the vertex's term.
-                let far = mask.edges.iter().zip(&stencil.far);
-                let opposite = mask.faces.iter().zip(&stencil.opposite);
+                let far = mask.edges.iter().zip(far.iter());
+                let opposite = mask.faces.iter().zip(opposite.iter());
                 summed(
                     std::iter::once((v as u32, mask.vertex))
                         .chain(far.chain(opposite).map(|(&w, &q)| (q, w)))
                         .collect(),
                 )
             };
-            out.push(stencil.masks.each_ref().map(weights));
+            out.push(masks.of(self.scheme, kind).each_ref().map(weights));
         }
         Ok(out)
     }
@@ -205,16 +251,12 @@ impl Subdivider {
         Ok(())
     }
 
-    /// What the limit at last-level vertex `v` weighs and how: the far end
-    /// of each of its edges in ring order, the corner opposite `v` in each
-    /// of its faces (Catmull-Clark), and the position and tangent masks over
-    /// `v`, those and these. `None` for a vertex without edges, which stays.
-    fn limit_stencil(
-        &self,
-        v: usize,
-        edges: &mut Vec<u32>,
-        corners: &mut Vec<u32>,
-    ) -> Option<LimitStencil> {
+    /// What the limit at last-level vertex `v` weighs and how: into
+    /// `scratch`, the far end of each of its edges in ring order and the
+    /// corner opposite `v` in each of its faces (Catmull-Clark); returned,
+    /// which masks weigh those and `v`. `None` for a vertex without edges,
+    /// which stays.
+    fn limit_stencil(&self, v: usize, scratch: &mut StencilScratch) -> Option<MaskKind> {
         let last = self.last();
         let faces = &last.faces;
         let connectivity = &last.connectivity;
@@ -223,6 +265,13 @@ impl Subdivider {
         if edge_count == 0 {
             return None;
         }
+        let StencilScratch {
+            edges,
+            corners,
+            far,
+            opposite,
+            ..
+        } = scratch;
         let ordered = walk_around(
             faces,
             connectivity,
@@ -237,35 +286,25 @@ impl Subdivider {
             edges.extend_from_slice(sharpness.edges_at(v));
             corners.clear();
         }
-        let far: Vec<u32> = edges
-            .iter()
-            .map(|&e| {
-                let [a, b] = connectivity.edges[e as usize];
-                if a as usize == v {
-                    b
-                } else {
-                    a
-                }
-            })
-            .collect();
-        let quads = if self.scheme == Scheme::CatmullClark {
-            &corners[..]
-        } else {
-            &[]
-        };
-        let opposite: Vec<u32> = quads
-            .iter()
-            .map(|&c| {
+        far.clear();
+        far.extend(edges.iter().map(|&e| {
+            let [a, b] = connectivity.edges[e as usize];
+            if a as usize == v {
+                b
+            } else {
+                a
+            }
+        }));
+        opposite.clear();
+        if self.scheme == Scheme::CatmullClark {
+            opposite.extend(corners.iter().map(|&c| {
                 let f = connectivity.face_of(c as usize);
                 let start = faces.offsets[f] as usize;
                 let local = (c as usize - start + 2) % 4;
                 faces.indices[start + local]
-            })
-            .collect();
-        let sharp: Vec<bool> = edges
-            .iter()
-            .map(|&e| is_sharp(sharpness.edges[e as usize]))
-            .collect();
+            }));
+        }
+        let is_sharp_edge = |&e: &u32| is_sharp(sharpness.edges[e as usize]);
         let mut rule = sharpness.rules[v];
         // Catmull-Clark's smooth limit has no mask for two faces
         // (OpenSubdiv takes the corner's); Loop's covers any valence.
@@ -273,21 +312,79 @@ impl Subdivider {
         if rule.is_smooth() && (two_quads || !ordered) {
             rule = Rule::Corner;
         }
-        let masks = match rule {
-            Rule::Smooth | Rule::Dart => smooth_masks(self.scheme, edges.len(), corners.len()),
-            Rule::Crease => {
-                let first = sharp.iter().position(|&s| s).unwrap_or(0);
-                let last = sharp.iter().rposition(|&s| s).unwrap_or(0);
-                crease_masks(self.scheme, edges.len(), corners.len(), first, last)
-            }
-            Rule::Corner => corner_masks(self.scheme, edges.len()),
-        };
-        Some(LimitStencil {
-            far,
-            opposite,
-            masks,
+        let (edges_len, faces_len) = (edges.len(), corners.len());
+        Some(match rule {
+            Rule::Smooth | Rule::Dart => MaskKind::Smooth {
+                edges: edges_len,
+                faces: faces_len,
+            },
+            Rule::Crease => MaskKind::Crease {
+                edges: edges_len,
+                faces: faces_len,
+                first: edges.iter().position(is_sharp_edge).unwrap_or(0),
+                last: edges.iter().rposition(is_sharp_edge).unwrap_or(0),
+            },
+            Rule::Corner => MaskKind::Corner { edges: edges_len },
         })
     }
+}
+
+/// Vertices of one rayon task: enough that each task's few masks are worked
+/// out once for many vertices.
+const VERTICES_PER_TASK: usize = 1024;
+
+/// Which limit masks a vertex takes: all they depend on besides the scheme,
+/// so that vertices of one kind share them.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+enum MaskKind {
+    Smooth {
+        edges: usize,
+        faces: usize,
+    },
+    /// Sharp edges `first` and `last` in the counter-clockwise order.
+    Crease {
+        edges: usize,
+        faces: usize,
+        first: usize,
+        last: usize,
+    },
+    Corner {
+        edges: usize,
+    },
+}
+
+/// Masks by kind, each worked out once: the vertices of a level take only
+/// a handful of kinds.
+#[derive(Debug, Default)]
+struct MaskCache(HashMap<MaskKind, [Mask; 3]>);
+
+impl MaskCache {
+    /// Position, first and second tangent masks of `kind`.
+    fn of(&mut self, scheme: Scheme, kind: MaskKind) -> &[Mask; 3] {
+        self.0.entry(kind).or_insert_with(|| match kind {
+            MaskKind::Smooth { edges, faces } => smooth_masks(scheme, edges, faces),
+            MaskKind::Crease {
+                edges,
+                faces,
+                first,
+                last,
+            } => crease_masks(scheme, edges, faces, first, last),
+            MaskKind::Corner { edges } => corner_masks(scheme, edges),
+        })
+    }
+}
+
+/// What one thread reuses from vertex to vertex: the walk around it, the
+/// points its limit weighs (see `limit_stencil`) and the masks met so far.
+#[derive(Debug, Default)]
+struct StencilScratch {
+    edges: Vec<u32>,
+    corners: Vec<u32>,
+    /// The far end of each of its edges, in ring order.
+    far: Vec<u32>,
+    /// The corner opposite it in each of its quads (Catmull-Clark).
+    opposite: Vec<u32>,
+    masks: MaskCache,
 }
 
 /// Weights of points, `(point, weight)`.
@@ -307,17 +404,6 @@ pub(crate) fn summed(mut terms: Weights) -> Weights {
     }
     sums.retain(|&(_, w)| w != 0.0);
     sums
-}
-
-/// The points a vertex's limit weighs besides itself, and its masks (see
-/// `limit_stencil`).
-struct LimitStencil {
-    /// The far end of each of its edges, in ring order.
-    far: Vec<u32>,
-    /// The corner opposite it in each of its quads (Catmull-Clark).
-    opposite: Vec<u32>,
-    /// Position, first and second tangent.
-    masks: [Mask; 3],
 }
 
 /// `du × dv` normalised, or zero where the tangents are parallel. Each
@@ -522,4 +608,47 @@ fn corner_masks(scheme: Scheme, edges: usize) -> [Mask; 3] {
         dv.edges[1] = scale;
     }
     [position, du, dv]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::shapes;
+    use crate::subdivide::creases::SubdivisionOptions;
+
+    #[test]
+    fn positions_alone_are_the_limit_s_positions() {
+        let grid = shapes::quad_grid_with_hole();
+        let creased = SubdivisionOptions {
+            creases: vec![([0, 1], 1.5), ([1, 2], f64::INFINITY)],
+            corners: vec![(5, 2.0)],
+            ..Default::default()
+        };
+        let mut checked = 0;
+        for (mesh, options) in [
+            (shapes::mixed_polygons(), SubdivisionOptions::default()),
+            (grid, creased),
+            (shapes::fin(), SubdivisionOptions::default()),
+        ] {
+            for scheme in [Scheme::CatmullClark, Scheme::Loop] {
+                let Ok(refined) = Subdivider::new(&mesh, scheme, 2, &options) else {
+                    continue;
+                };
+                let mut points = vec![DVec3::ZERO; refined.vertex_count()];
+                refined.evaluate(mesh.positions(), &mut points).unwrap();
+                let limit = refined.limit().unwrap();
+                checked += 1;
+                let wanted = |v: usize| v % 3 != 1;
+                let alone = refined.limit_positions_where(&points, wanted);
+                for (v, (&p, &q)) in alone.iter().zip(&limit.positions).enumerate() {
+                    let expected = if wanted(v) { q } else { DVec3::ZERO };
+                    assert_eq!(
+                        p.to_array().map(f64::to_bits),
+                        expected.to_array().map(f64::to_bits)
+                    );
+                }
+            }
+        }
+        assert!(checked >= 3, "{checked} cages refined");
+    }
 }

@@ -410,13 +410,33 @@ pub(crate) fn walk_around(
     edges: &mut Vec<u32>,
     corners: &mut Vec<u32>,
 ) -> bool {
-    edges.clear();
-    corners.clear();
     let around = connectivity.vertex_corners(v);
+    let met_all = |edges: &Vec<u32>, corners: &Vec<u32>| {
+        edges.len() == edge_count && corners.len() == around.len()
+    };
+    // Most vertices lie inside the surface. A walk from `first_corner` that
+    // closes on itself through every corner of v has met no naked edge
+    // leaving v, so it is the walk from where a search for one would start.
+    if faces.indices.get(first_corner as usize) == Some(&(v as u32))
+        && walk_from(
+            faces,
+            connectivity,
+            v,
+            first_corner as usize,
+            around.len(),
+            edges,
+            corners,
+        ) == Some(true)
+        && corners.len() == around.len()
+        && connectivity.edge_corners(edges[0] as usize).len() != 1
+    {
+        return edges.len() == edge_count;
+    }
     if around.is_empty() {
+        edges.clear();
+        corners.clear();
         return false;
     }
-    let face_of = |c: usize| connectivity.face_of(c);
     let start = around
         .iter()
         .copied()
@@ -427,30 +447,49 @@ pub(crate) fn walk_around(
                 == 1
         })
         .unwrap_or(first_corner) as usize;
+    walk_from(faces, connectivity, v, start, around.len(), edges, corners).is_some()
+        && met_all(edges, corners)
+}
+
+/// The walk of [`walk_around`] from corner `start`, taking at most `most`
+/// corners: `None` where it fails (too many corners, or an edge leading to
+/// another vertex), else whether it closed on its first edge (rather than
+/// ending at an edge without exactly two corners).
+fn walk_from(
+    faces: &Faces,
+    connectivity: &Connectivity,
+    v: usize,
+    start: usize,
+    most: usize,
+    edges: &mut Vec<u32>,
+    corners: &mut Vec<u32>,
+) -> Option<bool> {
+    edges.clear();
+    corners.clear();
+    let face_of = |c: usize| connectivity.face_of(c);
     let mut c = start;
     edges.push(connectivity.corner_edges[c]);
     loop {
         corners.push(c as u32);
-        if corners.len() > around.len() {
-            return false;
+        if corners.len() > most {
+            return None;
         }
         let previous = faces.prev(c, face_of(c));
         let arriving = connectivity.corner_edges[previous];
         if arriving == edges[0] {
-            break;
+            return Some(true);
         }
         edges.push(arriving);
         match *connectivity.edge_corners(arriving as usize) {
             [a, b] => {
                 c = if a as usize == previous { b } else { a } as usize;
                 if faces.indices[c] as usize != v {
-                    return false;
+                    return None;
                 }
             }
-            _ => break,
+            _ => return Some(false),
         }
     }
-    edges.len() == edge_count && corners.len() == around.len()
 }
 
 /// Puts the edges around every vertex in OpenSubdiv's order where the
@@ -461,20 +500,141 @@ pub(crate) fn order_vertex_edges(
     connectivity: &Connectivity,
     first_corners: &[u32],
 ) {
-    let (mut edges, mut corners) = (Vec::new(), Vec::new());
-    for (v, &first) in first_corners.iter().enumerate().take(faces.vertex_count) {
-        let range = sharpness.vertex_edge_offsets[v] as usize
-            ..sharpness.vertex_edge_offsets[v + 1] as usize;
-        if walk_around(
-            faces,
-            connectivity,
-            v,
-            first,
-            range.len(),
-            &mut edges,
-            &mut corners,
-        ) {
-            sharpness.vertex_edges[range].copy_from_slice(&edges);
+    let count = first_corners.len().min(faces.vertex_count);
+    let offsets = &sharpness.vertex_edge_offsets;
+    // Each task orders its own run of vertices, within its own run of edges.
+    let mut runs = Vec::with_capacity(count.div_ceil(CHUNK));
+    let mut rest = &mut sharpness.vertex_edges[offsets[0] as usize..];
+    for first in (0..count).step_by(CHUNK) {
+        let end = (first + CHUNK).min(count);
+        let (from, to) = (offsets[first] as usize, offsets[end] as usize);
+        let (run, tail) = std::mem::take(&mut rest).split_at_mut(to - from);
+        runs.push((first..end, from, run));
+        rest = tail;
+    }
+    runs.into_par_iter().for_each_init(
+        || (Vec::new(), Vec::new()),
+        |(edges, corners), (vertices, from, run)| {
+            for v in vertices {
+                let range = offsets[v] as usize - from..offsets[v + 1] as usize - from;
+                if walk_around(
+                    faces,
+                    connectivity,
+                    v,
+                    first_corners[v],
+                    range.len(),
+                    edges,
+                    corners,
+                ) {
+                    run[range].copy_from_slice(edges);
+                }
+            }
+        },
+    );
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh::{shapes, Mesh};
+    use crate::subdivide::scheme::Scheme;
+    use crate::subdivide::subdivider::Subdivider;
+
+    /// Every vertex's walk as OpenSubdiv starts it, from a search for a
+    /// naked edge first, against [`walk_around`]: the same answer, and the
+    /// same edges and corners where the walk met them all.
+    fn assert_walks_as_searched(
+        faces: &Faces,
+        connectivity: &Connectivity,
+        sharpness: &Sharpness,
+        first: &[u32],
+    ) {
+        let (mut edges, mut corners) = (Vec::new(), Vec::new());
+        let (mut searched_edges, mut searched_corners) = (Vec::new(), Vec::new());
+        for (v, &first_corner) in first.iter().enumerate().take(faces.vertex_count) {
+            let around = connectivity.vertex_corners(v);
+            let edge_count = sharpness.edges_at(v).len();
+            let met = walk_around(
+                faces,
+                connectivity,
+                v,
+                first_corner,
+                edge_count,
+                &mut edges,
+                &mut corners,
+            );
+            let start = around
+                .iter()
+                .copied()
+                .find(|&c| {
+                    let e = connectivity.corner_edges[c as usize] as usize;
+                    connectivity.edge_corners(e).len() == 1
+                })
+                .unwrap_or(first_corner) as usize;
+            let searched = !around.is_empty()
+                && walk_from(
+                    faces,
+                    connectivity,
+                    v,
+                    start,
+                    around.len(),
+                    &mut searched_edges,
+                    &mut searched_corners,
+                )
+                .is_some()
+                && searched_edges.len() == edge_count
+                && searched_corners.len() == around.len();
+            assert_eq!(met, searched, "vertex {v}");
+            if met {
+                assert_eq!(edges, searched_edges, "vertex {v}");
+                assert_eq!(corners, searched_corners, "vertex {v}");
+            }
+        }
+    }
+
+    fn assert_levels_walk_as_searched(mesh: &Mesh) {
+        let Ok(refined) = Subdivider::new(mesh, Scheme::CatmullClark, 2, &Default::default())
+        else {
+            return;
+        };
+        let cage = &refined.levels[0];
+        let lowest: Vec<u32> = (0..cage.faces.vertex_count)
+            .map(|v| {
+                let around = cage.connectivity.vertex_corners(v);
+                around.first().copied().unwrap_or(0)
+            })
+            .collect();
+        assert_walks_as_searched(&cage.faces, &cage.connectivity, &cage.sharpness, &lowest);
+        let last = refined.last();
+        assert_walks_as_searched(
+            &last.faces,
+            &last.connectivity,
+            &last.sharpness,
+            &refined.first_corners,
+        );
+    }
+
+    #[test]
+    fn walks_around_boundaries_fans_and_fins_start_where_a_search_would() {
+        for mesh in [
+            shapes::quad_grid_with_hole(),
+            shapes::triangle_grid_with_hole(),
+            shapes::fin(),
+            shapes::bow_tie(),
+            shapes::mobius_strip(7),
+            shapes::fan(12),
+            shapes::book(5),
+            shapes::mixed_polygons(),
+            shapes::cube(),
+        ] {
+            assert_levels_walk_as_searched(&mesh);
+        }
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn walks_around_tangles_start_where_a_search_would(mesh in shapes::tangles()) {
+            assert_levels_walk_as_searched(&mesh);
         }
     }
 }

@@ -172,9 +172,9 @@ fn check_isolation(isolation: u32) -> Result<()> {
 
 /// About how many patches one piece of the cage and the faces around it
 /// make: each is subdivided on its own, three levels past `isolation`, at
-/// roughly 30 KB a patch (0.12 GB a piece), so memory follows the piece
-/// and not the cage.
-const PIECE_PATCHES: usize = 4096;
+/// roughly 30 KB a patch (30 MB a piece), so memory follows the piece and
+/// not the cage, and a piece's levels stay near the processor's caches.
+const PIECE_PATCHES: usize = 1024;
 
 /// The most patches the faces around one cage face may make (~7 GB of
 /// subdivision): more is a vertex of very many faces at a high isolation.
@@ -334,10 +334,10 @@ struct Piece {
 
 /// Cuts the cage's faces `wanted` into pieces, each grown breadth first
 /// from the lowest face left (so that pieces are round and their rings
-/// thin) until its ring would make more than `budget` patches. A face whose
-/// ring alone makes more is a piece of its own, and the faces that add
-/// nothing to its ring join it (every face around a vertex of many faces
-/// shares that ring).
+/// thin) until its ring would make more than `budget` patches, or twice its
+/// first face's ring where that makes more: faces around a vertex of many
+/// faces share most of their rings, and are refined together instead of
+/// one at a time. Faces that add nothing to a ring always join it.
 ///
 /// # Errors
 /// [`Error::ResultTooLarge`] when one face's ring makes more than
@@ -370,7 +370,7 @@ fn pieces(
             faces: Vec::new(),
             ring: Vec::new(),
         };
-        let mut ring_patches = 0;
+        let (mut ring_patches, mut piece_budget) = (0, budget);
         queue.clear();
         queue.push_back(seed as u32);
         while let Some(f) = queue.pop_front() {
@@ -409,8 +409,11 @@ fn pieces(
             }
             // Past the budget the piece ends here: the marks face f left
             // belong to a ring no longer grown.
-            if !piece.faces.is_empty() && patches > 0 && ring_patches + patches > budget {
+            if !piece.faces.is_empty() && patches > 0 && ring_patches + patches > piece_budget {
                 break;
+            }
+            if piece.faces.is_empty() {
+                piece_budget = budget.max(2 * patches);
             }
             taken[f] = true;
             piece.faces.push(f as u32);
@@ -561,7 +564,10 @@ impl Fit<'_> {
         points.sort_unstable();
         points.dedup();
         let limit = fine
-            .limit_at_vertices(ring_cage.positions(), points.iter().map(|&v| v as usize))?
+            .limit_at_vertices(
+                ring_cage.positions(),
+                points.par_iter().map(|&v| v as usize),
+            )?
             .positions;
         Ok(grids
             .into_par_iter()
@@ -991,6 +997,25 @@ mod tests {
             panic!("{error:?}")
         };
         assert!(message.contains("has 300 faces"), "{message}");
+    }
+
+    #[test]
+    fn faces_around_a_crowded_vertex_share_pieces() {
+        // Each pole triangle's ring alone (the pole's 64 triangles) makes
+        // more patches than the budget at isolation 3; refined a face at a
+        // time, each pole would be refined 64 times.
+        let sphere = crate::make::primitives::uv_sphere(1.0, 64, 32).unwrap();
+        let whole = Subdivider::new(&sphere, Scheme::CatmullClark, 0, &Default::default()).unwrap();
+        let level = &whole.levels[0];
+        let all = vec![true; sphere.face_count()];
+        let cut = pieces(&level.faces, &level.connectivity, 3, 1024, &all).unwrap();
+        let at_poles = cut
+            .iter()
+            .filter(|p| p.faces.iter().any(|&f| sphere.face(f as usize).len() == 3))
+            .count();
+        assert!(at_poles <= 8, "the poles' triangles in {at_poles} pieces");
+        let faces: usize = cut.iter().map(|p| p.faces.len()).sum();
+        assert_eq!(faces, sphere.face_count());
     }
 
     #[test]

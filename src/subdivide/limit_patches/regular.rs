@@ -46,10 +46,7 @@ impl<'a> Isolated<'a> {
         let (faces, connectivity, sharpness) = (&last.faces, &last.connectivity, &last.sharpness);
         let mut points = vec![DVec3::ZERO; refined.vertex_count()];
         refined.evaluate(cage, &mut points)?;
-        let limits = refined
-            .limit_from_points(&points, 0..refined.vertex_count())
-            .positions;
-        let rings = (0..faces.vertex_count)
+        let rings: Vec<Option<[u32; 4]>> = (0..faces.vertex_count)
             .into_par_iter()
             .map_init(
                 || (Vec::new(), Vec::new()),
@@ -75,6 +72,8 @@ impl<'a> Isolated<'a> {
                 },
             )
             .collect();
+        // Only regular vertices' limits are read.
+        let limits = refined.limit_positions_where(&points, |v| rings[v].is_some());
         Ok(Isolated {
             faces,
             connectivity,
