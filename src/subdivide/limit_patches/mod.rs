@@ -335,7 +335,7 @@ struct Piece {
 /// Cuts the cage's faces `wanted` into pieces, each grown breadth first
 /// from the lowest face left (so that pieces are round and their rings
 /// thin) until its ring would make more than `budget` patches, or twice its
-/// first face's ring where that makes more: faces around a vertex of many
+/// first face's ring where that makes more (up to [`MAX_PIECE_PATCHES`]): faces around a vertex of many
 /// faces share most of their rings, and are refined together instead of
 /// one at a time. Faces that add nothing to a ring always join it.
 ///
@@ -413,7 +413,8 @@ fn pieces(
                 break;
             }
             if piece.faces.is_empty() {
-                piece_budget = budget.max(2 * patches);
+                // Within the most one face's ring may make, memory's bound.
+                piece_budget = budget.max(2 * patches).min(MAX_PIECE_PATCHES.max(budget));
             }
             taken[f] = true;
             piece.faces.push(f as u32);
